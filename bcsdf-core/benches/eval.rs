@@ -1,0 +1,59 @@
+//! Near- and far-field evaluation cost (RGB, all eight unscattered paths).
+//!
+//! Each iteration evaluates one query from a fixed, deterministic list spread over
+//! θ_i, θ_r ∈ ±80° and φ ∈ (−180°, 180°], so branch and cache behaviour is that of a renderer
+//! rather than of one repeated point.
+
+use bcsdf_core::{presets, Angles, FurBcsdf, FurParams};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+
+fn queries() -> Vec<(Angles, f32)> {
+    // A small LCG: deterministic, no dependency.
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        ((state >> 40) as f32) / (1u64 << 24) as f32
+    };
+    (0..256)
+        .map(|_| {
+            let a = Angles::from_degrees(
+                -80.0 + 160.0 * next(),
+                -80.0 + 160.0 * next(),
+                -180.0 + 360.0 * next(),
+            )
+            .unwrap();
+            (a, -1.0 + 2.0 * next())
+        })
+        .collect()
+}
+
+fn bench(c: &mut Criterion) {
+    let qs = queries();
+    for name in ["yan-row-a", "air-medulla", "human-hair"] {
+        let preset = presets::find(name).unwrap();
+        let model: FurBcsdf = FurBcsdf::new(FurParams::new(&preset.input).unwrap());
+        let mut i = 0usize;
+        c.bench_function(&format!("near_field/{name}"), |b| {
+            b.iter(|| {
+                let (a, h) = &qs[i % qs.len()];
+                i += 1;
+                black_box(model.eval_near(black_box(a), black_box(*h)).total())
+            })
+        });
+        let mut i = 0usize;
+        c.bench_function(&format!("far_field/{name}"), |b| {
+            b.iter(|| {
+                let (a, _) = &qs[i % qs.len()];
+                i += 1;
+                black_box(model.eval_far(black_box(a)).total())
+            })
+        });
+    }
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().sample_size(30).warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(2));
+    targets = bench
+}
+criterion_main!(benches);

@@ -1,0 +1,139 @@
+//! The fiber frame and the angles the model is written in (MODEL.md §1).
+//!
+//! Directions point away from the fiber: ω_i toward the light, ω_r toward the viewer.
+//! θ = asin(ω·u) is measured from the normal plane, and φ = φ_r − φ_i is the azimuth
+//! from ω_i to ω_r around u, for the right-handed frame (v, w, u), i.e. u = v × w.
+
+use crate::math::{asin_clamped, wrap_angle, Math, PI};
+use core::fmt;
+
+/// A 3-vector (not necessarily unit length).
+pub type Vec3 = [f32; 3];
+
+#[inline]
+fn dot(a: Vec3, b: Vec3) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+#[inline]
+fn cross(a: Vec3, b: Vec3) -> Vec3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// Why a set of angles or directions was rejected.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AngleError {
+    /// An angle or vector component is NaN or infinite.
+    NonFinite,
+    /// θ outside [−π/2, π/2].
+    ThetaOutOfRange,
+    /// A direction or the tangent has zero (or denormal) length.
+    Degenerate,
+}
+
+impl fmt::Display for AngleError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            AngleError::NonFinite => "angle or direction is not finite",
+            AngleError::ThetaOutOfRange => "theta must lie in [-90, 90] degrees",
+            AngleError::Degenerate => "direction or fiber tangent has zero length",
+        })
+    }
+}
+
+/// Validated query angles: θ_i, θ_r ∈ [−π/2, π/2] and φ = φ_r − φ_i ∈ (−π, π], radians.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Angles {
+    theta_i: f32,
+    theta_r: f32,
+    phi: f32,
+}
+
+impl Angles {
+    /// From radians; φ is wrapped to (−π, π].
+    pub fn new(theta_i: f32, theta_r: f32, phi: f32) -> Result<Angles, AngleError> {
+        if !(theta_i.is_finite() && theta_r.is_finite() && phi.is_finite()) {
+            return Err(AngleError::NonFinite);
+        }
+        let half = PI / 2.0;
+        if theta_i.abs() > half || theta_r.abs() > half {
+            return Err(AngleError::ThetaOutOfRange);
+        }
+        Ok(Angles {
+            theta_i,
+            theta_r,
+            phi: wrap_angle(phi),
+        })
+    }
+
+    /// From degrees; φ is wrapped to (−180°, 180°].
+    pub fn from_degrees(theta_i: f32, theta_r: f32, phi: f32) -> Result<Angles, AngleError> {
+        // θ a hair past ±90° after the degree conversion is clamped, not rejected.
+        let conv = |d: f32| {
+            let r = d.to_radians();
+            if d.abs() <= 90.0 {
+                r.clamp(-PI / 2.0, PI / 2.0)
+            } else {
+                r
+            }
+        };
+        Angles::new(conv(theta_i), conv(theta_r), phi.to_radians())
+    }
+
+    /// From world-space directions `wi` (toward the light), `wr` (toward the viewer) and the
+    /// fiber tangent `u`; none needs to be normalised.
+    pub fn from_directions<M: Math>(wi: Vec3, wr: Vec3, u: Vec3) -> Result<Angles, AngleError> {
+        if !(wi.iter().chain(wr.iter()).chain(u.iter())).all(|c| c.is_finite()) {
+            return Err(AngleError::NonFinite);
+        }
+        let norm = |v: Vec3| M::sqrt(dot(v, v));
+        let (ni, nr, nu) = (norm(wi), norm(wr), norm(u));
+        // Components up to f32::MAX can overflow the squared norm: treat as non-finite.
+        if !(ni.is_finite() && nr.is_finite() && nu.is_finite()) {
+            return Err(AngleError::NonFinite);
+        }
+        if ni < f32::MIN_POSITIVE || nr < f32::MIN_POSITIVE || nu < f32::MIN_POSITIVE {
+            return Err(AngleError::Degenerate);
+        }
+        let un = [u[0] / nu, u[1] / nu, u[2] / nu];
+        let (si, sr) = (dot(wi, un) / ni, dot(wr, un) / nr);
+        let theta_i = asin_clamped::<M>(si);
+        let theta_r = asin_clamped::<M>(sr);
+        // Azimuth from the projections onto the normal plane (atan2(0, 0) = 0 when one of
+        // them is parallel to the fiber, where φ carries no meaning).
+        let project = |v: Vec3, s: f32, n: f32| {
+            [
+                v[0] / n - s * un[0],
+                v[1] / n - s * un[1],
+                v[2] / n - s * un[2],
+            ]
+        };
+        let (pi, pr) = (project(wi, si, ni), project(wr, sr, nr));
+        let phi = M::atan2(dot(un, cross(pi, pr)), dot(pi, pr));
+        Angles::new(theta_i, theta_r, phi)
+    }
+
+    /// θ_i, longitudinal angle of the light direction (radians).
+    pub fn theta_i(&self) -> f32 {
+        self.theta_i
+    }
+    /// θ_r, longitudinal angle of the view direction (radians).
+    pub fn theta_r(&self) -> f32 {
+        self.theta_r
+    }
+    /// φ = φ_r − φ_i in (−π, π] (radians).
+    pub fn phi(&self) -> f32 {
+        self.phi
+    }
+    /// The same query with φ → −φ.
+    pub fn mirrored(&self) -> Angles {
+        Angles {
+            phi: wrap_angle(-self.phi),
+            ..*self
+        }
+    }
+}

@@ -1,0 +1,169 @@
+//! The 2D cross-section seen by the view ray (MODEL.md §1, §3).
+//!
+//! [`ViewSlice`] holds what depends only on θ_r (Bravais indices, refracted longitudinal
+//! cosines); [`Chord`] is one ray through the cross-section at offset h, with every angle the
+//! exit-azimuth rule needs.
+
+use crate::math::{asin_clamped, sqrt_pos, Math};
+use crate::params::FurParams;
+
+/// Per-θ_r quantities of the cross-section problem.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ViewSlice {
+    /// η'_c = √(η_c² − sin²θ_r)/cos θ_r (Bravais index of the cortex).
+    pub eta_c_prime: f32,
+    /// η'_m, Bravais index of the medulla.
+    pub eta_m_prime: f32,
+    /// 1/cos θ_tc with sin θ_tc = sin θ_r/η_c: 2D lengths → 3D lengths in the cortex.
+    pub inv_cos_tc: f32,
+    /// 1/cos θ_tm with sin θ_tm = sin θ_r/η_m: 2D lengths → 3D lengths in the medulla.
+    pub inv_cos_tm: f32,
+    /// κ, medulla radius / fiber radius.
+    pub kappa: f32,
+}
+
+/// Bravais' effective index for the normal-plane projection: √(η² − sin²θ)/cos θ.
+#[inline]
+pub fn bravais_index<M: Math>(eta: f32, sin_theta: f32) -> f32 {
+    let cos2 = (1.0 - sin_theta * sin_theta).max(1e-12);
+    M::sqrt(((eta * eta - sin_theta * sin_theta) / cos2).max(1.0))
+}
+
+impl ViewSlice {
+    /// The slice for a view direction at longitudinal angle `theta_r`.
+    pub fn new<M: Math>(params: &FurParams, theta_r: f32) -> ViewSlice {
+        let s = M::sin(theta_r).clamp(-1.0, 1.0);
+        let inv_cos_t = |eta: f32| {
+            let sin_t = s / eta;
+            1.0 / sqrt_pos::<M>(1.0 - sin_t * sin_t)
+        };
+        ViewSlice {
+            eta_c_prime: bravais_index::<M>(params.eta_c(), s),
+            eta_m_prime: bravais_index::<M>(params.eta_m(), s),
+            inv_cos_tc: inv_cos_t(params.eta_c()),
+            inv_cos_tm: inv_cos_t(params.eta_m()),
+            kappa: params.kappa(),
+        }
+    }
+
+    /// |h| above which the cortex ray misses the medulla: κ·η'_c.
+    pub fn h_medulla(&self) -> f32 {
+        self.kappa * self.eta_c_prime
+    }
+
+    /// |h| above which the medulla reflects totally: κ·η'_m.
+    pub fn h_tir(&self) -> f32 {
+        self.kappa * self.eta_m_prime
+    }
+}
+
+/// What the cortex ray does at the medulla.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MedullaEvent {
+    /// |b| ≥ κ: the ray misses the medulla.
+    Miss,
+    /// Hits at incidence `m` but is totally reflected (|h/(κη'_m)| ≥ 1).
+    TotalReflection {
+        /// m = asin(b/κ).
+        m: f32,
+        /// cos m.
+        cos_m: f32,
+    },
+    /// Hits at incidence `m` and refracts to `μ` inside the medulla.
+    Enter {
+        /// m = asin(b/κ).
+        m: f32,
+        /// cos m.
+        cos_m: f32,
+        /// μ = asin(h/(κη'_m)).
+        mu: f32,
+        /// cos μ.
+        cos_mu: f32,
+    },
+}
+
+/// Which angle parameterises a far-field h-segment: h = K·sin t with t = a, m or μ.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ChordVariable {
+    /// t = a, K = 1.
+    A,
+    /// t = m, K = κη'_c.
+    M,
+    /// t = μ, K = κη'_m.
+    Mu,
+}
+
+/// One ray of the cross-section at offset h (MODEL.md §3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Chord {
+    /// Offset h ∈ [−1, 1].
+    pub h: f32,
+    /// a = asin h, incidence at the cuticle.
+    pub a: f32,
+    /// cos a.
+    pub cos_a: f32,
+    /// c = asin(h/η'_c), refracted angle in the cortex.
+    pub c: f32,
+    /// cos c.
+    pub cos_c: f32,
+    /// The event at the medulla.
+    pub medulla: MedullaEvent,
+}
+
+impl Chord {
+    /// The chord at offset `h` (clamped to [−1, 1]).
+    pub fn at_offset<M: Math>(slice: &ViewSlice, h: f32) -> Chord {
+        let h = h.clamp(-1.0, 1.0);
+        Chord::build::<M>(slice, h, None)
+    }
+
+    /// The chord at h = K·sin t for the segment variable `var`; the variable's own angle and
+    /// cosine are taken from `t` directly, which keeps them exact where asin is singular.
+    pub fn at_variable<M: Math>(slice: &ViewSlice, var: ChordVariable, t: f32) -> Chord {
+        let (s, c) = (M::sin(t), M::cos(t).max(0.0));
+        let k = match var {
+            ChordVariable::A => 1.0,
+            ChordVariable::M => slice.h_medulla(),
+            ChordVariable::Mu => slice.h_tir(),
+        };
+        let h = (k * s).clamp(-1.0, 1.0);
+        Chord::build::<M>(slice, h, Some((var, t, c)))
+    }
+
+    fn build<M: Math>(slice: &ViewSlice, h: f32, exact: Option<(ChordVariable, f32, f32)>) -> Chord {
+        let pick = |v: ChordVariable, sin: f32| match exact {
+            Some((var, t, cos_t)) if var == v => (t, cos_t),
+            _ => (asin_clamped::<M>(sin), sqrt_pos::<M>(1.0 - sin * sin)),
+        };
+        let (a, cos_a) = pick(ChordVariable::A, h);
+        let sin_c = (h / slice.eta_c_prime).clamp(-1.0, 1.0);
+        let c = asin_clamped::<M>(sin_c);
+        let cos_c = sqrt_pos::<M>(1.0 - sin_c * sin_c);
+        let kappa = slice.kappa;
+        let medulla = if kappa > 0.0 && sin_c.abs() < kappa {
+            let (m, cos_m) = pick(ChordVariable::M, sin_c / kappa);
+            let sin_mu = h / (kappa * slice.eta_m_prime);
+            if sin_mu.abs() < 1.0 {
+                let (mu, cos_mu) = pick(ChordVariable::Mu, sin_mu);
+                MedullaEvent::Enter {
+                    m,
+                    cos_m,
+                    mu,
+                    cos_mu,
+                }
+            } else {
+                MedullaEvent::TotalReflection { m, cos_m }
+            }
+        } else {
+            MedullaEvent::Miss
+        };
+        Chord {
+            h,
+            a,
+            cos_a,
+            c,
+            cos_c,
+            medulla,
+        }
+    }
+}

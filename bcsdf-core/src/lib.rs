@@ -1,0 +1,48 @@
+//! # bcsdf-core
+//!
+//! The double-cylinder fur BCSDF of Yan, Tseng, Jensen and Ramamoorthi (SIGGRAPH Asia 2015),
+//! as specified in the project's `MODEL.md`, for embedding anywhere: `#![no_std]`, f32 only,
+//! no allocation on the evaluation path, deterministic math through `libm`.
+//!
+//! ```
+//! use bcsdf_core::{presets, Angles, FurBcsdf, FurParams};
+//!
+//! let preset = presets::find("yan-row-a").unwrap();
+//! let model: FurBcsdf = FurBcsdf::new(FurParams::new(&preset.input).unwrap());
+//! let angles = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
+//! let far = model.eval_far(&angles); // h integrated
+//! let near = model.eval_near(&angles, 0.3); // at offset h = 0.3
+//! assert!(far.total().0.iter().all(|v| v.is_finite() && *v >= 0.0));
+//! assert!(near.total().max_channel() >= 0.0);
+//! ```
+//!
+//! Data flow: [`FurParams`] (validated) → [`FurBcsdf`] → [`Lobes`] per evaluation. Module
+//! names follow the model: [`fresnel`], [`geometry`], [`unscattered`], [`longitudinal`],
+//! [`gaussian`], [`far_field`].
+#![no_std]
+#![deny(missing_docs)]
+
+pub mod far_field;
+pub mod frame;
+pub mod fresnel;
+pub mod gaussian;
+pub mod geometry;
+pub mod lobes;
+pub mod longitudinal;
+pub mod math;
+pub mod model;
+pub mod params;
+pub mod pigment;
+pub mod presets;
+pub mod spectrum;
+pub mod unscattered;
+
+pub use frame::{AngleError, Angles, Vec3};
+pub use lobes::{Lobe, LobeGroup, Lobes, LOBE_COUNT};
+#[cfg(feature = "micromath")]
+pub use math::FastMath;
+pub use math::{Libm, Math};
+pub use model::FurBcsdf;
+pub use params::{FurParams, FurParamsInput, ParamError, ParamName};
+pub use pigment::Pigment;
+pub use spectrum::Rgb;

@@ -1,0 +1,123 @@
+//! Lobe names and the per-lobe breakdown of an evaluation.
+
+use crate::spectrum::Rgb;
+
+/// One light path of the model (MODEL.md §3, §6). Uppercase events happen at the cuticle,
+/// lowercase at the medulla boundary.
+///
+/// The scattered lobes (TttT^s, TtrtT^s, TttRttT^s) join this enum with the medulla
+/// scattering issue; code matching on it should use `Lobe::ALL` and [`Lobe::name`].
+#[non_exhaustive]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Lobe {
+    /// Reflection off the cuticle.
+    R = 0,
+    /// Through the cortex, missing the medulla.
+    TT = 1,
+    /// Through the cortex with one internal reflection, missing the medulla.
+    TRT = 2,
+    /// Reflected off the medulla from the cortex side.
+    TrT = 3,
+    /// Straight through the medulla.
+    TttT = 4,
+    /// Into the medulla, reflected inside it, out.
+    TtrtT = 5,
+    /// Reflected off the medulla, the cuticle and the medulla again.
+    TrRrT = 6,
+    /// Through the medulla, reflected at the cuticle, through the medulla again.
+    TttRttT = 7,
+}
+
+/// Number of lobes in a [`Lobes`] breakdown.
+pub const LOBE_COUNT: usize = 8;
+
+/// The three cuticle groups that share tilt and roughness (MODEL.md §5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LobeGroup {
+    /// R: touches the cuticle once from outside.
+    R = 0,
+    /// TT, TrT, TttT, TtrtT: crosses the cuticle twice.
+    TT = 1,
+    /// TRT, TrRrT, TttRttT: crosses twice and reflects inside once.
+    TRT = 2,
+}
+
+impl Lobe {
+    /// All lobes in breakdown order.
+    pub const ALL: [Lobe; LOBE_COUNT] = [
+        Lobe::R,
+        Lobe::TT,
+        Lobe::TRT,
+        Lobe::TrT,
+        Lobe::TttT,
+        Lobe::TtrtT,
+        Lobe::TrRrT,
+        Lobe::TttRttT,
+    ];
+
+    /// The path's name as written in MODEL.md (`"TttRttT"`).
+    pub const fn name(self) -> &'static str {
+        match self {
+            Lobe::R => "R",
+            Lobe::TT => "TT",
+            Lobe::TRT => "TRT",
+            Lobe::TrT => "TrT",
+            Lobe::TttT => "TttT",
+            Lobe::TtrtT => "TtrtT",
+            Lobe::TrRrT => "TrRrT",
+            Lobe::TttRttT => "TttRttT",
+        }
+    }
+
+    /// Index into [`Lobes`].
+    pub const fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The cuticle group whose M_p and roughness this path uses.
+    pub const fn group(self) -> LobeGroup {
+        match self {
+            Lobe::R => LobeGroup::R,
+            Lobe::TT | Lobe::TrT | Lobe::TttT | Lobe::TtrtT => LobeGroup::TT,
+            Lobe::TRT | Lobe::TrRrT | Lobe::TttRttT => LobeGroup::TRT,
+        }
+    }
+}
+
+/// Per-lobe RGB values of one evaluation; [`Lobes::total`] is the BCSDF value.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Lobes {
+    values: [Rgb; LOBE_COUNT],
+}
+
+impl Lobes {
+    /// All lobes zero.
+    pub const ZERO: Lobes = Lobes {
+        values: [Rgb::ZERO; LOBE_COUNT],
+    };
+
+    /// From values in [`Lobe::ALL`] order.
+    pub const fn from_array(values: [Rgb; LOBE_COUNT]) -> Lobes {
+        Lobes { values }
+    }
+
+    /// One lobe's value.
+    pub fn get(&self, lobe: Lobe) -> Rgb {
+        self.values[lobe.index()]
+    }
+
+    /// All values in [`Lobe::ALL`] order.
+    pub fn as_array(&self) -> &[Rgb; LOBE_COUNT] {
+        &self.values
+    }
+
+    /// `(lobe, value)` pairs in [`Lobe::ALL`] order.
+    pub fn iter(&self) -> impl Iterator<Item = (Lobe, Rgb)> + '_ {
+        Lobe::ALL.iter().map(move |&l| (l, self.values[l.index()]))
+    }
+
+    /// The sum over all lobes: S.
+    pub fn total(&self) -> Rgb {
+        self.values.iter().fold(Rgb::ZERO, |acc, &v| acc + v)
+    }
+}

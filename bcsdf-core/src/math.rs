@@ -1,0 +1,130 @@
+//! Scalar math backends.
+//!
+//! Every transcendental function the model uses goes through the [`Math`] trait, so that the
+//! whole model is monomorphised over one backend:
+//!
+//! - [`Libm`] (default): the `libm` crate, a port of musl's libm. Pure Rust, no platform
+//!   intrinsics beyond IEEE arithmetic, so the same inputs give the same bits on every target.
+//! - `FastMath` (cargo feature `micromath`): `micromath` approximations of `sin`, `cos`,
+//!   `asin`, `atan2` and `exp`; `sqrt` stays exact (it is not transcendental and is a single
+//!   instruction on most targets). Its error against [`Libm`] is measured by the test
+//!   `tests/tests/fast_math.rs` and documented in `docs/accuracy.md`.
+//!
+//! Choosing the backend is explicit (`FurBcsdf<FastMath>`) rather than a global feature
+//! switch, so that one dependency enabling the feature cannot silently change the numbers
+//! of another.
+
+/// A set of f32 scalar functions the model is evaluated with.
+pub trait Math: Copy + Default + core::fmt::Debug + 'static {
+    /// Sine.
+    fn sin(x: f32) -> f32;
+    /// Cosine.
+    fn cos(x: f32) -> f32;
+    /// Arc sine; the argument is clamped to `[-1, 1]` by the callers.
+    fn asin(x: f32) -> f32;
+    /// Four-quadrant arc tangent of `y / x`.
+    fn atan2(y: f32, x: f32) -> f32;
+    /// Natural exponential.
+    fn exp(x: f32) -> f32;
+    /// Square root (exact in every backend).
+    #[inline]
+    fn sqrt(x: f32) -> f32 {
+        libm::sqrtf(x)
+    }
+}
+
+/// Deterministic backend on top of the `libm` crate (the default).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Libm;
+
+impl Math for Libm {
+    #[inline]
+    fn sin(x: f32) -> f32 {
+        libm::sinf(x)
+    }
+    #[inline]
+    fn cos(x: f32) -> f32 {
+        libm::cosf(x)
+    }
+    #[inline]
+    fn asin(x: f32) -> f32 {
+        libm::asinf(x)
+    }
+    #[inline]
+    fn atan2(y: f32, x: f32) -> f32 {
+        libm::atan2f(y, x)
+    }
+    #[inline]
+    fn exp(x: f32) -> f32 {
+        libm::expf(x)
+    }
+}
+
+/// Fast approximate backend on top of `micromath` (cargo feature `micromath`).
+#[cfg(feature = "micromath")]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FastMath;
+
+#[cfg(feature = "micromath")]
+impl Math for FastMath {
+    #[inline]
+    fn sin(x: f32) -> f32 {
+        micromath::F32Ext::sin(x)
+    }
+    #[inline]
+    fn cos(x: f32) -> f32 {
+        micromath::F32Ext::cos(x)
+    }
+    #[inline]
+    fn asin(x: f32) -> f32 {
+        micromath::F32Ext::asin(x)
+    }
+    #[inline]
+    fn atan2(y: f32, x: f32) -> f32 {
+        micromath::F32Ext::atan2(y, x)
+    }
+    #[inline]
+    fn exp(x: f32) -> f32 {
+        // micromath's exp is not defined for very negative arguments; absorption only ever
+        // asks for exp(-x) with x >= 0, and below -87 the f32 result is 0 anyway.
+        if x < -87.0 {
+            0.0
+        } else {
+            micromath::F32Ext::exp(x)
+        }
+    }
+}
+
+/// `π` in f32.
+pub const PI: f32 = core::f32::consts::PI;
+/// `2π` in f32.
+pub const TAU: f32 = core::f32::consts::TAU;
+
+/// Wraps an angle to `(-π, π]`. Non-finite input gives 0.
+#[inline]
+pub fn wrap_angle(x: f32) -> f32 {
+    if !x.is_finite() {
+        return 0.0;
+    }
+    let mut y = x - TAU * libm::floorf((x + PI) / TAU);
+    // floor-based wrap yields [-π, π); move the closed end to +π.
+    if y <= -PI {
+        y += TAU;
+    }
+    if y > PI {
+        y -= TAU;
+    }
+    y
+}
+
+/// `asin` with its argument clamped to `[-1, 1]` (rounding can push `sin` values just past 1).
+#[inline]
+pub fn asin_clamped<M: Math>(x: f32) -> f32 {
+    M::asin(x.clamp(-1.0, 1.0))
+}
+
+/// `sqrt(max(x, 0))`: a cosine from a sine without NaN from rounding.
+#[inline]
+pub fn sqrt_pos<M: Math>(x: f32) -> f32 {
+    M::sqrt(x.max(0.0))
+}

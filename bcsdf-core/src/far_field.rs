@@ -16,12 +16,12 @@
 //! up to 2π over a segment. Each segment is probed at [`PROBES`] + 1 points; on every probe
 //! panel and for every path, the range Φ_p covers (the chord between the panel ends, widened
 //! by a curvature bound from second differences) is compared with ±φ. A panel where no path
-//! comes within D_p's reach (6.2·β_N) is skipped; otherwise it is integrated with 4-point
+//! comes within D_p's reach (6.2·β_N) is skipped; otherwise it is integrated with 6-point
 //! Gauss–Legendre on sub-panels each spanning at most [`SUBPANEL_BETAS`]·β_N in Φ_p, which
-//! integrates a Gaussian to ~1e-6. The accuracy against a much finer reference is checked by
+//! integrates a Gaussian to ~6e-7 (2 nodes per β_N). The accuracy against a much finer reference is checked by
 //! `tests/tests/far_field_accuracy.rs` and stated in `docs/accuracy.md`.
 
-use crate::geometry::{Chord, ChordVariable, ViewSlice};
+use crate::geometry::{Chord, ChordVariable, Region, ViewSlice};
 use crate::lobes::{Lobe, LOBE_COUNT};
 use crate::longitudinal::GroupLobes;
 use crate::math::{asin_clamped, wrap_angle, Math, PI};
@@ -31,18 +31,27 @@ use crate::unscattered::{attenuations, exit_azimuths, Extinction};
 /// Probe panels per segment.
 pub const PROBES: usize = 12;
 /// Largest Φ-span of one Gauss–Legendre sub-panel, in units of β_N.
-pub const SUBPANEL_BETAS: f32 = 1.5;
+pub const SUBPANEL_BETAS: f32 = 4.0;
 /// Upper bound on sub-panels per probe panel (reached only for β_N near its minimum).
 const MAX_SUBPANELS: usize = 256;
 
-/// 4-point Gauss–Legendre nodes and weights on [−1, 1].
-const GL_NODES: [f32; 4] = [
-    -0.861_136_3,
-    -0.339_981_04,
-    0.339_981_04,
-    0.861_136_3,
+/// 6-point Gauss–Legendre nodes and weights on [−1, 1].
+const GL_NODES: [f32; 6] = [
+    -0.932_469_5,
+    -0.661_209_4,
+    -0.238_619_19,
+    0.238_619_19,
+    0.661_209_4,
+    0.932_469_5,
 ];
-const GL_WEIGHTS: [f32; 4] = [0.347_854_85, 0.652_145_15, 0.652_145_15, 0.347_854_85];
+const GL_WEIGHTS: [f32; 6] = [
+    0.171_324_49,
+    0.360_761_57,
+    0.467_913_93,
+    0.467_913_93,
+    0.360_761_57,
+    0.171_324_49,
+];
 
 /// Bit mask of lobes by [`Lobe::index`].
 type PathMask = u16;
@@ -80,6 +89,7 @@ struct Segment {
     t0: f32,
     t1: f32,
     paths: PathMask,
+    region: Region,
 }
 
 /// The segments of [0, 1] for this slice, at most three.
@@ -89,6 +99,7 @@ fn segments<M: Math>(slice: &ViewSlice, index_matched: bool) -> ([Segment; 3], u
         t0: 0.0,
         t1: 0.0,
         paths: 0,
+        region: Region::Miss,
     };
     let mut out = [empty; 3];
     let mut n = 0;
@@ -106,6 +117,7 @@ fn segments<M: Math>(slice: &ViewSlice, index_matched: bool) -> ([Segment; 3], u
             t0: 0.0,
             t1: PI / 2.0,
             paths: MISS_PATHS,
+            region: Region::Miss,
         };
         return (out, 1);
     }
@@ -127,6 +139,7 @@ fn segments<M: Math>(slice: &ViewSlice, index_matched: bool) -> ([Segment; 3], u
             t0: 0.0,
             t1: PI / 2.0,
             paths: ENTER_PATHS & strip,
+            region: Region::Enter,
         };
         n += 1;
         out[n] = Segment {
@@ -134,6 +147,7 @@ fn segments<M: Math>(slice: &ViewSlice, index_matched: bool) -> ([Segment; 3], u
             t0: t_of(h_tir, end_k),
             t1: t_of(hit_end, end_k),
             paths: TIR_PATHS & strip,
+            region: Region::TotalReflection,
         };
         n += 1;
     } else {
@@ -142,6 +156,7 @@ fn segments<M: Math>(slice: &ViewSlice, index_matched: bool) -> ([Segment; 3], u
             t0: 0.0,
             t1: t_of(hit_end, end_k),
             paths: ENTER_PATHS & strip,
+            region: Region::Enter,
         };
         n += 1;
     }
@@ -151,6 +166,7 @@ fn segments<M: Math>(slice: &ViewSlice, index_matched: bool) -> ([Segment; 3], u
             t0: t_of(h_med, 1.0),
             t1: PI / 2.0,
             paths: MISS_PATHS,
+            region: Region::Miss,
         };
         n += 1;
     }
@@ -195,14 +211,16 @@ impl FarFieldQuery<'_> {
         let mut probe = [[0.0f32; LOBE_COUNT]; PROBES + 1];
         for (j, row) in probe.iter_mut().enumerate() {
             let t = seg.t0 + dt * j as f32;
-            let chord = Chord::at_variable::<M>(self.slice, seg.var, t);
+            let chord = Chord::at_variable::<M>(self.slice, seg.var, t, seg.region);
             *row = exit_azimuths(&chord);
         }
         let lobes = Lobe::ALL;
         for j in 0..PROBES {
-            // Which paths come within reach of ±φ on this panel, and how finely to sample.
+            // Which paths come within reach of ±φ on this panel, over which part of it
+            // (s ∈ [0, 1] along the panel), and how densely that part must be sampled.
             let mut active: PathMask = 0;
-            let mut subpanels = 1usize;
+            let (mut s_lo, mut s_hi) = (1.0f32, 0.0f32);
+            let mut density = 0.0f32; // sub-panels per unit s
             for (p, lobe) in lobes.iter().enumerate() {
                 if seg.paths & (1 << p) == 0 {
                     continue;
@@ -219,30 +237,38 @@ impl FarFieldQuery<'_> {
                         (d1 - d0).abs()
                     }
                 };
+                // The chord of Φ over the panel is within Δ²Φ/8 of Φ; twice that is the margin.
                 let margin = 0.25 * curvature(j).max(curvature(j + 1));
-                let center = pa + 0.5 * span;
-                let half = 0.5 * span.abs() + margin;
-                let gap_plus = wrap_angle(phi - center).abs() - half;
-                let gap_minus = wrap_angle(-phi - center).abs() - half;
-                if gap_plus.min(gap_minus) < d.reach() {
+                let reach = d.reach() + margin;
+                let mut hit = false;
+                for target in [phi, -phi] {
+                    let Some((lo, hi)) = window(pa, span, target, reach) else {
+                        continue;
+                    };
+                    hit = true;
+                    s_lo = s_lo.min(lo);
+                    s_hi = s_hi.max(hi);
+                }
+                if hit {
                     active |= 1 << p;
                     let cover = span.abs() + 2.0 * margin;
-                    let need = libm::ceilf(cover / (SUBPANEL_BETAS * d.beta())) as usize;
-                    subpanels = subpanels.max(need.min(MAX_SUBPANELS));
+                    density = density.max(cover / (SUBPANEL_BETAS * d.beta()));
                 }
             }
-            if active == 0 {
+            if active == 0 || s_hi <= s_lo {
                 continue;
             }
-            let t_start = seg.t0 + dt * j as f32;
-            let dsub = dt / subpanels as f32;
+            let need = libm::ceilf(density * (s_hi - s_lo)).max(1.0) as usize;
+            let subpanels = need.min(MAX_SUBPANELS);
+            let t_start = seg.t0 + dt * (j as f32 + s_lo);
+            let dsub = dt * (s_hi - s_lo) / subpanels as f32;
             for s in 0..subpanels {
                 let mid = t_start + dsub * (s as f32 + 0.5);
                 for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS.iter()) {
                     let t = mid + 0.5 * dsub * x;
-                    let chord = Chord::at_variable::<M>(self.slice, seg.var, t);
-                    // ½ (far-field average) · dh/dt · quadrature weight.
-                    let weight = 0.5 * k * M::cos(t).max(0.0) * (0.5 * dsub * w);
+                    let chord = Chord::at_variable::<M>(self.slice, seg.var, t, seg.region);
+                    // ½ (far-field average) · dh/dt = K cos t · quadrature weight.
+                    let weight = 0.5 * k * chord.variable_cos(seg.var) * (0.5 * dsub * w);
                     let azimuths = exit_azimuths(&chord);
                     let att = attenuations::<M>(self.slice, &chord, self.extinction, self.layers);
                     for (p, lobe) in lobes.iter().enumerate() {
@@ -250,12 +276,30 @@ impl FarFieldQuery<'_> {
                             continue;
                         }
                         let d = self.groups.d(lobe.group());
-                        let dist =
-                            d.eval::<M>(phi - azimuths[p]) + d.eval::<M>(-phi - azimuths[p]);
+                        let dist = d.eval::<M>(phi - azimuths[p]) + d.eval::<M>(-phi - azimuths[p]);
                         acc[p] += att[p] * (weight * dist);
                     }
                 }
             }
         }
     }
+}
+
+/// The part `[s_lo, s_hi]` ⊂ [0, 1] of a panel on which Φ(s) = pa + span·s comes within
+/// `reach` of `target` (mod 2π); `None` when it never does. Wide reaches take the whole panel.
+fn window(pa: f32, span: f32, target: f32, reach: f32) -> Option<(f32, f32)> {
+    let center = pa + 0.5 * span;
+    let offset = wrap_angle(target - center);
+    let half = 0.5 * span.abs();
+    if offset.abs() - half >= reach {
+        return None;
+    }
+    if reach + half >= PI || half < 1e-6 {
+        return Some((0.0, 1.0));
+    }
+    // Nearest representative of the target, relative to the panel start, in units of span.
+    let rel = 0.5 * span + offset;
+    let (a, b) = ((rel - reach) / span, (rel + reach) / span);
+    let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+    Some((lo.max(0.0), hi.min(1.0)))
 }

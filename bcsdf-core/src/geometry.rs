@@ -93,6 +93,18 @@ pub enum ChordVariable {
     Mu,
 }
 
+/// Which of the three regions of h a chord lies in; far-field segments know theirs, so the
+/// classification of a node never depends on rounding at a segment end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Region {
+    /// |h| ≥ κη'_c: misses the medulla.
+    Miss,
+    /// Enters the medulla.
+    Enter,
+    /// Hits the medulla and is totally reflected.
+    TotalReflection,
+}
+
 /// One ray of the cross-section at offset h (MODEL.md §3).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Chord {
@@ -111,15 +123,34 @@ pub struct Chord {
 }
 
 impl Chord {
+    /// cos t of the segment variable t this chord was built from (see [`ChordVariable`]);
+    /// 0 when that angle is not defined at this chord.
+    #[inline]
+    pub fn variable_cos(&self, var: ChordVariable) -> f32 {
+        match (var, self.medulla) {
+            (ChordVariable::A, _) => self.cos_a,
+            (ChordVariable::M, MedullaEvent::Enter { cos_m, .. })
+            | (ChordVariable::M, MedullaEvent::TotalReflection { cos_m, .. }) => cos_m,
+            (ChordVariable::Mu, MedullaEvent::Enter { cos_mu, .. }) => cos_mu,
+            _ => 0.0,
+        }
+    }
+
     /// The chord at offset `h` (clamped to [−1, 1]).
     pub fn at_offset<M: Math>(slice: &ViewSlice, h: f32) -> Chord {
         let h = h.clamp(-1.0, 1.0);
-        Chord::build::<M>(slice, h, None)
+        Chord::build::<M>(slice, h, None, None)
     }
 
-    /// The chord at h = K·sin t for the segment variable `var`; the variable's own angle and
-    /// cosine are taken from `t` directly, which keeps them exact where asin is singular.
-    pub fn at_variable<M: Math>(slice: &ViewSlice, var: ChordVariable, t: f32) -> Chord {
+    /// The chord at h = K·sin t for the segment variable `var`, known to lie in `region`; the
+    /// variable's own angle and cosine are taken from `t` directly, which keeps them exact
+    /// where asin is singular.
+    pub fn at_variable<M: Math>(
+        slice: &ViewSlice,
+        var: ChordVariable,
+        t: f32,
+        region: Region,
+    ) -> Chord {
         let (s, c) = (M::sin(t), M::cos(t).max(0.0));
         let k = match var {
             ChordVariable::A => 1.0,
@@ -127,10 +158,15 @@ impl Chord {
             ChordVariable::Mu => slice.h_tir(),
         };
         let h = (k * s).clamp(-1.0, 1.0);
-        Chord::build::<M>(slice, h, Some((var, t, c)))
+        Chord::build::<M>(slice, h, Some((var, t, c)), Some(region))
     }
 
-    fn build<M: Math>(slice: &ViewSlice, h: f32, exact: Option<(ChordVariable, f32, f32)>) -> Chord {
+    fn build<M: Math>(
+        slice: &ViewSlice,
+        h: f32,
+        exact: Option<(ChordVariable, f32, f32)>,
+        region: Option<Region>,
+    ) -> Chord {
         let pick = |v: ChordVariable, sin: f32| match exact {
             Some((var, t, cos_t)) if var == v => (t, cos_t),
             _ => (asin_clamped::<M>(sin), sqrt_pos::<M>(1.0 - sin * sin)),
@@ -140,11 +176,18 @@ impl Chord {
         let c = asin_clamped::<M>(sin_c);
         let cos_c = sqrt_pos::<M>(1.0 - sin_c * sin_c);
         let kappa = slice.kappa;
-        let medulla = if kappa > 0.0 && sin_c.abs() < kappa {
-            let (m, cos_m) = pick(ChordVariable::M, sin_c / kappa);
-            let sin_mu = h / (kappa * slice.eta_m_prime);
-            if sin_mu.abs() < 1.0 {
-                let (mu, cos_mu) = pick(ChordVariable::Mu, sin_mu);
+        let sin_mu = h / (kappa * slice.eta_m_prime);
+        let region = region.unwrap_or(if !(kappa > 0.0 && sin_c.abs() < kappa) {
+            Region::Miss
+        } else if sin_mu.abs() < 1.0 {
+            Region::Enter
+        } else {
+            Region::TotalReflection
+        });
+        let medulla = if region != Region::Miss {
+            let (m, cos_m) = pick(ChordVariable::M, (sin_c / kappa).clamp(-1.0, 1.0));
+            if region == Region::Enter {
+                let (mu, cos_mu) = pick(ChordVariable::Mu, sin_mu.clamp(-1.0, 1.0));
                 MedullaEvent::Enter {
                     m,
                     cos_m,

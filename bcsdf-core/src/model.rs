@@ -80,8 +80,11 @@ impl<M: Math> FurBcsdf<M> {
         let paths = paths_at::<M>(&slice, &chord, &ext, self.params.l());
         for lobe in Lobe::ALL {
             let p = paths[lobe.index()];
-            let d = self.groups.d(lobe.group());
-            n[lobe.index()] = p.attenuation * d.eval::<M>(phi - p.exit_azimuth);
+            // Paths that do not exist at this h (or carry no energy) need no D_p.
+            if p.attenuation.max_channel() > 0.0 {
+                let d = self.groups.d(lobe.group());
+                n[lobe.index()] = p.attenuation * d.eval::<M>(phi - p.exit_azimuth);
+            }
         }
         n
     }

@@ -26,10 +26,15 @@ pub struct Extinction {
     pub medulla: f32,
 }
 
-/// Transmittance exp(−σ·L) per channel.
+/// Transmittance exp(−σ·L) per channel (one exponential when the channels are equal).
 #[inline]
 fn transmittance<M: Math>(sigma: Rgb, length: f32) -> Rgb {
-    sigma.map(|s| M::exp(-s * length))
+    let [r, g, b] = sigma.0;
+    if r == g && g == b {
+        Rgb::splat(M::exp(-r * length))
+    } else {
+        sigma.map(|s| M::exp(-s * length))
+    }
 }
 
 /// Exit azimuths Φ_p(h) of all eight paths at `chord` (MODEL.md §3 table), in

@@ -1,0 +1,41 @@
+//! Exercises the core from a `#![no_std]` staticlib: every public evaluation path with both
+//! math backends, so that the linker sees all of it.
+#![no_std]
+
+use bcsdf_core::{presets, Angles, FastMath, FurBcsdf, FurParams, Libm, Math};
+
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
+    loop {}
+}
+
+fn eval<M: Math>(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
+    let Some(p) = presets::PRESETS.get(preset) else {
+        return -1.0;
+    };
+    let Ok(params) = FurParams::new(&p.input) else {
+        return -1.0;
+    };
+    let model = FurBcsdf::<M>::new(params);
+    let Ok(angles) = Angles::new(ti, tr, phi) else {
+        return -1.0;
+    };
+    let far = model.eval_far(&angles).total();
+    let near = model.eval_near(&angles, h).total();
+    let dirs = model
+        .eval_far_dirs([1.0, 0.0, 0.2], [0.0, 1.0, -0.1], [0.0, 0.0, 1.0])
+        .total();
+    far.0[0] + near.0[1] + dirs.0[2]
+}
+
+/// C entry point: far + near + direction-based evaluation with the libm backend.
+#[no_mangle]
+pub extern "C" fn fur_eval_libm(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
+    eval::<Libm>(preset, ti, tr, phi, h)
+}
+
+/// C entry point: the same with the micromath backend.
+#[no_mangle]
+pub extern "C" fn fur_eval_fast(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
+    eval::<FastMath>(preset, ti, tr, phi, h)
+}

@@ -1,1 +1,19 @@
-//! placeholder during bring-up
+//! # bake
+//!
+//! The `std` side of the fur BCSDF (`bcsdf-core` is `no_std`): reading preset files and
+//! applying `key=value` parameter overrides. The LUT baker binary arrives in a later issue.
+//!
+//! ```
+//! let presets = bake::presets::builtin().unwrap();
+//! let row_a = bake::presets::find(&presets, "yan-row-a").unwrap();
+//! let mut input = row_a.input;
+//! bake::apply_overrides(&mut input, ["kappa=0.5", "sigma_ca=0.2,0.3,0.6"]).unwrap();
+//! assert!(bcsdf_core::FurParams::new(&input).is_ok());
+//! ```
+#![deny(missing_docs)]
+
+pub mod overrides;
+pub mod presets;
+
+pub use overrides::{apply_overrides, Override, OverrideError, OverrideErrorKind, OverrideValue};
+pub use presets::{NamedPreset, PresetError};

@@ -32,15 +32,17 @@ use crate::unscattered::{attenuations, exit_azimuths, Extinction};
 pub const PROBES: usize = 12;
 /// Largest Φ-span of one Gauss–Legendre sub-panel, in units of β_N.
 pub const SUBPANEL_BETAS: f32 = 4.0;
-/// Upper bound on sub-panels per probe panel (reached only for β_N near its minimum).
-const MAX_SUBPANELS: usize = 256;
+/// Upper bound on sub-panels per run of probe panels (reached only for β_N near its minimum).
+const MAX_SUBPANELS: usize = 1024;
+/// Fewest sub-panels per probe panel: resolves A_p and the Jacobian where Φ_p is flat.
+const MIN_DENSITY: f32 = 0.5;
 
 /// 6-point Gauss–Legendre nodes and weights on [−1, 1].
 const GL_NODES: [f32; 6] = [
     -0.932_469_5,
     -0.661_209_4,
-    -0.238_619_19,
-    0.238_619_19,
+    -0.238_619_2,
+    0.238_619_2,
     0.661_209_4,
     0.932_469_5,
 ];
@@ -206,83 +208,176 @@ impl FarFieldQuery<'_> {
             ChordVariable::M => self.slice.h_medulla(),
             ChordVariable::Mu => self.slice.h_tir(),
         };
-        let dt = (seg.t1 - seg.t0) / PROBES as f32;
-        // Exit azimuths at the probe points.
+        // Probe points, graded toward the segment's end (t_j = t0 + (t1 − t0)(1 − (1 − j/P)²)),
+        // where the segment's singular angle and grazing Fresnel make A_p change fastest.
+        let mut bounds = [0.0f32; PROBES + 1];
         let mut probe = [[0.0f32; LOBE_COUNT]; PROBES + 1];
-        for (j, row) in probe.iter_mut().enumerate() {
-            let t = seg.t0 + dt * j as f32;
-            let chord = Chord::at_variable::<M>(self.slice, seg.var, t, seg.region);
+        for (j, (row, tj)) in probe.iter_mut().zip(bounds.iter_mut()).enumerate() {
+            let x = 1.0 - j as f32 / PROBES as f32;
+            *tj = if j == PROBES {
+                seg.t1
+            } else {
+                seg.t0 + (seg.t1 - seg.t0) * (1.0 - x * x)
+            };
+            let chord = Chord::at_variable::<M>(self.slice, seg.var, *tj, seg.region);
             *row = exit_azimuths(&chord);
         }
-        let lobes = Lobe::ALL;
-        for j in 0..PROBES {
-            // Which paths come within reach of ±φ on this panel, over which part of it
-            // (s ∈ [0, 1] along the panel), and how densely that part must be sampled.
-            let mut active: PathMask = 0;
-            let (mut s_lo, mut s_hi) = (1.0f32, 0.0f32);
-            let mut density = 0.0f32; // sub-panels per unit s
-            for (p, lobe) in lobes.iter().enumerate() {
-                if seg.paths & (1 << p) == 0 {
-                    continue;
-                }
-                let d = self.groups.d(lobe.group());
-                let (pa, pb) = (probe[j][p], probe[j + 1][p]);
-                let span = wrap_angle(pb - pa);
-                let curvature = |i: usize| {
-                    if i == 0 || i >= PROBES {
-                        0.0
-                    } else {
-                        let d1 = wrap_angle(probe[i + 1][p] - probe[i][p]);
-                        let d0 = wrap_angle(probe[i][p] - probe[i - 1][p]);
-                        (d1 - d0).abs()
-                    }
-                };
-                // The chord of Φ over the panel is within Δ²Φ/8 of Φ; twice that is the margin.
-                let margin = 0.25 * curvature(j).max(curvature(j + 1));
-                let reach = d.reach() + margin;
-                let mut hit = false;
-                for target in [phi, -phi] {
-                    let Some((lo, hi)) = window(pa, span, target, reach) else {
-                        continue;
-                    };
-                    hit = true;
-                    s_lo = s_lo.min(lo);
-                    s_hi = s_hi.max(hi);
-                }
-                if hit {
-                    active |= 1 << p;
-                    let cover = span.abs() + 2.0 * margin;
-                    density = density.max(cover / (SUBPANEL_BETAS * d.beta()));
-                }
-            }
-            if active == 0 || s_hi <= s_lo {
+        // Pass 1: which paths come within reach of ±φ on each probe panel, over which part
+        // of it (s ∈ [0, 1] along the panel), and how densely that part must be sampled.
+        let mut panels = [Panel::default(); PROBES];
+        for (j, panel) in panels.iter_mut().enumerate() {
+            *panel = self.screen(seg, &probe, &bounds, j, phi);
+        }
+        // Pass 2: integrate each run of contiguous active panels as one piece, so that a
+        // window spread over several probe panels is not rounded up panel by panel.
+        let mut j = 0;
+        while j < PROBES {
+            if panels[j].active == 0 {
+                j += 1;
                 continue;
             }
-            let need = libm::ceilf(density * (s_hi - s_lo)).max(1.0) as usize;
-            let subpanels = need.min(MAX_SUBPANELS);
-            let t_start = seg.t0 + dt * (j as f32 + s_lo);
-            let dsub = dt * (s_hi - s_lo) / subpanels as f32;
-            for s in 0..subpanels {
-                let mid = t_start + dsub * (s as f32 + 0.5);
-                for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS.iter()) {
-                    let t = mid + 0.5 * dsub * x;
-                    let chord = Chord::at_variable::<M>(self.slice, seg.var, t, seg.region);
-                    // ½ (far-field average) · dh/dt = K cos t · quadrature weight.
-                    let weight = 0.5 * k * chord.variable_cos(seg.var) * (0.5 * dsub * w);
-                    let azimuths = exit_azimuths(&chord);
-                    let att = attenuations::<M>(self.slice, &chord, self.extinction, self.layers);
-                    for (p, lobe) in lobes.iter().enumerate() {
-                        if active & (1 << p) == 0 {
-                            continue;
-                        }
-                        let d = self.groups.d(lobe.group());
-                        let dist = d.eval::<M>(phi - azimuths[p]) + d.eval::<M>(-phi - azimuths[p]);
-                        acc[p] += att[p] * (weight * dist);
-                    }
-                }
+            let mut end = j;
+            while end + 1 < PROBES
+                && panels[end + 1].active != 0
+                && panels[end].hi >= 1.0
+                && panels[end + 1].lo <= 0.0
+            {
+                end += 1;
             }
+            self.run::<M>(seg, k, &bounds[j..=end + 1], &panels[j..=end], phi, acc);
+            j = end + 1;
         }
     }
+
+    /// Screens probe panel `j` of `seg` for the targets ±φ.
+    fn screen(
+        &self,
+        seg: &Segment,
+        probe: &[[f32; LOBE_COUNT]; PROBES + 1],
+        bounds: &[f32; PROBES + 1],
+        j: usize,
+        phi: f32,
+    ) -> Panel {
+        let width = |i: usize| bounds[i + 1] - bounds[i];
+        let mut out = Panel {
+            active: 0,
+            lo: 1.0,
+            hi: 0.0,
+            density: 0.0,
+        };
+        for (p, lobe) in Lobe::ALL.iter().enumerate() {
+            if seg.paths & (1 << p) == 0 {
+                continue;
+            }
+            let d = self.groups.d(lobe.group());
+            let (pa, pb) = (probe[j][p], probe[j + 1][p]);
+            let span = wrap_angle(pb - pa);
+            // |Φ''| at probe i from divided differences (0 at the segment ends).
+            let curvature = |i: usize| {
+                if i == 0 || i >= PROBES {
+                    0.0
+                } else {
+                    let d1 = wrap_angle(probe[i + 1][p] - probe[i][p]) / width(i);
+                    let d0 = wrap_angle(probe[i][p] - probe[i - 1][p]) / width(i - 1);
+                    2.0 * (d1 - d0).abs() / (width(i) + width(i - 1))
+                }
+            };
+            // The chord of Φ over the panel is within |Φ''|Δ²/8 of Φ; twice that is the margin.
+            let w = width(j);
+            let margin = 0.25 * curvature(j).max(curvature(j + 1)) * w * w;
+            let reach = d.reach() + margin;
+            let mut hit = false;
+            for target in [phi, -phi] {
+                if let Some((lo, hi)) = window(pa, span, target, reach) {
+                    hit = true;
+                    out.lo = out.lo.min(lo);
+                    out.hi = out.hi.max(hi);
+                }
+            }
+            if hit {
+                out.active |= 1 << p;
+                let cover = span.abs() + 2.0 * margin;
+                out.density = out.density.max(cover / (SUBPANEL_BETAS * d.beta()));
+            }
+        }
+        if out.hi <= out.lo {
+            out.active = 0;
+        }
+        out
+    }
+
+    /// Integrates a run of contiguous active panels (probe bounds `bounds`, one more than
+    /// panels) with Gauss–Legendre sub-panels placed at equal increments of required work.
+    #[allow(clippy::too_many_arguments)]
+    fn run<M: Math>(
+        &self,
+        seg: &Segment,
+        k: f32,
+        bounds: &[f32],
+        run: &[Panel],
+        phi: f32,
+        acc: &mut [Rgb; LOBE_COUNT],
+    ) {
+        // Work of each panel: sub-panels it needs (at least MIN_DENSITY per probe panel,
+        // so that A_p and the Jacobian are resolved even where Φ_p is flat).
+        let work = |p: &Panel| p.density.max(MIN_DENSITY) * (p.hi - p.lo);
+        let total: f32 = run.iter().map(work).sum();
+        let n = (libm::ceilf(total).max(1.0) as usize).min(MAX_SUBPANELS);
+        // t at cumulative work u, walking the panels in order.
+        let t_at = |u: f32| -> f32 {
+            let mut left = u;
+            for (i, p) in run.iter().enumerate() {
+                let w = work(p);
+                if left <= w || i + 1 == run.len() {
+                    let frac = if w > 0.0 {
+                        (left / w).clamp(0.0, 1.0)
+                    } else {
+                        1.0
+                    };
+                    let s = p.lo + frac * (p.hi - p.lo);
+                    return bounds[i] + s * (bounds[i + 1] - bounds[i]);
+                }
+                left -= w;
+            }
+            bounds[run.len()]
+        };
+        let mut ta = t_at(0.0);
+        for q in 0..n {
+            let tb = t_at(total * (q + 1) as f32 / n as f32);
+            let (mid, half) = (0.5 * (ta + tb), 0.5 * (tb - ta));
+            for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS.iter()) {
+                let t = mid + half * x;
+                let panel = bounds[1..run.len()].iter().take_while(|&&b| b <= t).count();
+                let active = run[panel].active;
+                let chord = Chord::at_variable::<M>(self.slice, seg.var, t, seg.region);
+                // ½ (far-field average) · dh/dt = K cos t · quadrature weight.
+                let weight = 0.5 * k * chord.variable_cos(seg.var) * (half * w);
+                let azimuths = exit_azimuths(&chord);
+                let att = attenuations::<M>(self.slice, &chord, self.extinction, self.layers);
+                for (p, lobe) in Lobe::ALL.iter().enumerate() {
+                    if active & (1 << p) == 0 {
+                        continue;
+                    }
+                    let d = self.groups.d(lobe.group());
+                    let dist = d.eval::<M>(phi - azimuths[p]) + d.eval::<M>(-phi - azimuths[p]);
+                    acc[p] += att[p] * (weight * dist);
+                }
+            }
+            ta = tb;
+        }
+    }
+}
+
+/// Screening result of one probe panel.
+#[derive(Clone, Copy, Debug, Default)]
+struct Panel {
+    /// Paths within reach of ±φ somewhere on the panel.
+    active: PathMask,
+    /// Part of the panel to integrate, s ∈ [lo, hi] ⊂ [0, 1].
+    lo: f32,
+    hi: f32,
+    /// Sub-panels needed per unit s.
+    density: f32,
 }
 
 /// The part `[s_lo, s_hi]` ⊂ [0, 1] of a panel on which Φ(s) = pa + span·s comes within

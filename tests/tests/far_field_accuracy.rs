@@ -119,7 +119,7 @@ fn far_field_matches_fine_reference_for_random_parameters() {
         (state >> 40) as f32 / (1u64 << 24) as f32
     };
     let mut overall = 0.0f64;
-    for _ in 0..16 {
+    for _ in 0..96 {
         let input = FurParamsInput {
             eta_c: 1.2 + 0.7 * u(),
             pigment: Pigment::Absorption(Rgb([3.0 * u(), 3.0 * u(), 3.0 * u()])),

@@ -1,1 +1,21 @@
-fn main() {}
+//! `viewer`: command-line access to the fur BCSDF (`viewer --help`).
+
+mod catalog;
+mod cli;
+mod error;
+mod json;
+mod probe;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let result = match cli::Cli::parse().command {
+        cli::Command::Presets(args) => catalog::list(&args),
+        cli::Command::Probe(args) => probe::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => e.report(),
+    }
+}

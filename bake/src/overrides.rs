@@ -1,0 +1,165 @@
+//! `key=value` parameter overrides (`viewer probe --set`).
+//!
+//! The key is a [`ParamName::key`] (`eta_c`, `sigma_ca`, `kappa`, …). The value is one number;
+//! `sigma_ca` also takes three, `r,g,b`. Each value is checked against its parameter's valid
+//! range when parsed. Overrides apply left to right with [`FurParamsInput::set`]'s meaning:
+//! `sigma_ca` replaces any melanin colour, and `eumelanin` / `pheomelanin` replace an RGB
+//! `sigma_ca` (the other concentration then starts from 0).
+
+use bcsdf_core::{FurParamsInput, ParamError, ParamName, Pigment, Rgb};
+use std::fmt;
+use std::str::FromStr;
+
+/// The value of one override.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum OverrideValue {
+    /// One number (for `sigma_ca`: all three channels).
+    Scalar(f32),
+    /// `r,g,b`; only `sigma_ca` takes it.
+    Rgb(Rgb),
+}
+
+/// One parsed `key=value` override.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Override {
+    /// The parameter to set.
+    pub name: ParamName,
+    /// Its new value (already range-checked).
+    pub value: OverrideValue,
+}
+
+/// What is wrong with an override.
+#[non_exhaustive]
+#[derive(Clone, Debug, PartialEq)]
+pub enum OverrideErrorKind {
+    /// No `=` in the text, or nothing before it.
+    NotKeyValue,
+    /// The key names no parameter (the unknown key).
+    UnknownKey(String),
+    /// A value component is not a number (the offending text).
+    NotANumber(String),
+    /// The wrong number of comma-separated components (how many were given).
+    WrongArity(usize),
+    /// A value outside the parameter's valid range.
+    OutOfRange(ParamError),
+}
+
+/// An override that could not be parsed. [`Display`](fmt::Display) gives one line starting
+/// with the override in backquotes, e.g.
+/// ``"`kappa=1.2`: invalid kappa = 1.2: valid range is [0, 0.99]"``.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OverrideError {
+    /// The override as given.
+    pub spec: String,
+    /// What is wrong.
+    pub kind: OverrideErrorKind,
+}
+
+/// All valid keys, comma-separated, in MODEL.md order.
+pub fn valid_keys() -> String {
+    ParamName::ALL
+        .iter()
+        .map(|p| p.key())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+impl fmt::Display for OverrideError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "`{}`: ", self.spec)?;
+        match &self.kind {
+            OverrideErrorKind::NotKeyValue => {
+                write!(f, "expected KEY=VALUE (valid keys: {})", valid_keys())
+            }
+            OverrideErrorKind::UnknownKey(key) => write!(
+                f,
+                "unknown parameter key `{key}` (valid keys: {})",
+                valid_keys()
+            ),
+            OverrideErrorKind::NotANumber(text) => write!(f, "`{text}` is not a number"),
+            OverrideErrorKind::WrongArity(n) => {
+                let key = self.spec.split('=').next().unwrap_or("").trim();
+                if key == ParamName::SigmaCa.key() {
+                    write!(f, "sigma_ca takes one value or three (r,g,b), got {n}")
+                } else {
+                    write!(f, "{key} takes one value, got {n}")
+                }
+            }
+            OverrideErrorKind::OutOfRange(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for OverrideError {}
+
+impl Override {
+    /// Parses `key=value` (spaces around the key and the values are ignored).
+    pub fn parse(spec: &str) -> Result<Override, OverrideError> {
+        let fail = |kind| OverrideError {
+            spec: spec.to_string(),
+            kind,
+        };
+        let (key, value) = spec
+            .split_once('=')
+            .filter(|(k, _)| !k.trim().is_empty())
+            .ok_or_else(|| fail(OverrideErrorKind::NotKeyValue))?;
+        let key = key.trim();
+        let name = ParamName::from_key(key)
+            .ok_or_else(|| fail(OverrideErrorKind::UnknownKey(key.to_string())))?;
+        let parts: Vec<&str> = value.split(',').map(str::trim).collect();
+        let rgb_ok = name == ParamName::SigmaCa;
+        if !(parts.len() == 1 || rgb_ok && parts.len() == 3) {
+            return Err(fail(OverrideErrorKind::WrongArity(parts.len())));
+        }
+        let mut numbers = [0.0f32; 3];
+        for (slot, text) in numbers.iter_mut().zip(&parts) {
+            let v: f32 = text
+                .parse()
+                .map_err(|_| fail(OverrideErrorKind::NotANumber(text.to_string())))?;
+            *slot = name
+                .check(v)
+                .map_err(|e| fail(OverrideErrorKind::OutOfRange(e)))?;
+        }
+        let value = if parts.len() == 3 {
+            OverrideValue::Rgb(Rgb(numbers))
+        } else {
+            OverrideValue::Scalar(numbers[0])
+        };
+        Ok(Override { name, value })
+    }
+
+    /// Applies this override to `input`.
+    pub fn apply(&self, input: &mut FurParamsInput) {
+        match self.value {
+            OverrideValue::Scalar(v) => input.set(self.name, v),
+            OverrideValue::Rgb(rgb) => input.pigment = Pigment::Absorption(rgb),
+        }
+    }
+}
+
+impl FromStr for Override {
+    type Err = OverrideError;
+    fn from_str(s: &str) -> Result<Override, OverrideError> {
+        Override::parse(s)
+    }
+}
+
+/// Parses and applies every override in `specs`, left to right. On error `input` is left
+/// unchanged.
+///
+/// Every value is range-checked on its own; the combination still has to pass
+/// [`bcsdf_core::FurParams::new`].
+pub fn apply_overrides<I>(input: &mut FurParamsInput, specs: I) -> Result<(), OverrideError>
+where
+    I: IntoIterator,
+    I::Item: AsRef<str>,
+{
+    let parsed = specs
+        .into_iter()
+        .map(|s| Override::parse(s.as_ref()))
+        .collect::<Result<Vec<_>, _>>()?;
+    for o in &parsed {
+        o.apply(input);
+    }
+    Ok(())
+}

@@ -1,0 +1,501 @@
+//! The `viewer` binary end to end: JSON output, far/near switching, `--set`, `--stdin`,
+//! `viewer presets`, and one-line `error:` messages with exit code 2 for bad input.
+//!
+//! The binary belongs to another package, so Cargo does not build it for this test: the test
+//! runs `cargo build -p viewer` once (into the target directory this test was built in, with
+//! the same profile directory) and runs the result. That is a no-op when it is up to date and
+//! guarantees the binary is never stale.
+
+use bcsdf_core::{presets, Angles, FurBcsdf, FurParams, Lobe, Lobes, Pigment, Rgb};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::sync::OnceLock;
+
+/// Path of an up-to-date `viewer` binary.
+fn viewer_path() -> &'static Path {
+    static BIN: OnceLock<PathBuf> = OnceLock::new();
+    BIN.get_or_init(|| {
+        // This test runs as <target-dir>/<profile-dir>/deps/cli-<hash>.
+        let exe = std::env::current_exe().expect("current_exe");
+        let profile_dir = exe.parent().and_then(Path::parent).expect("profile dir");
+        let target_dir = profile_dir.parent().expect("target dir");
+        let cargo = std::env::var_os("CARGO").unwrap_or_else(|| env!("CARGO").into());
+        let mut cmd = Command::new(cargo);
+        cmd.args([
+            "build",
+            "--quiet",
+            "-p",
+            "viewer",
+            "--bin",
+            "viewer",
+            "--target-dir",
+        ])
+        .arg(target_dir)
+        .current_dir(env!("CARGO_MANIFEST_DIR"));
+        match profile_dir.file_name().and_then(|n| n.to_str()) {
+            Some("debug") | None => {}
+            Some("release") => {
+                cmd.arg("--release");
+            }
+            Some(other) => {
+                cmd.args(["--profile", other]);
+            }
+        }
+        let status = cmd.status().expect("running cargo build -p viewer");
+        assert!(status.success(), "cargo build -p viewer failed");
+        let bin = profile_dir.join(format!("viewer{}", std::env::consts::EXE_SUFFIX));
+        assert!(bin.is_file(), "no viewer binary at {}", bin.display());
+        bin
+    })
+}
+
+fn viewer(args: &[&str], stdin: Option<&str>) -> Output {
+    let mut child = Command::new(viewer_path())
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawning viewer");
+    let mut pipe = child.stdin.take().unwrap();
+    if let Some(text) = stdin {
+        pipe.write_all(text.as_bytes()).unwrap();
+    }
+    drop(pipe);
+    child.wait_with_output().unwrap()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).expect("stderr is UTF-8")
+}
+
+/// Runs successfully and returns stdout.
+#[track_caller]
+fn ok(args: &[&str], stdin: Option<&str>) -> String {
+    let o = viewer(args, stdin);
+    assert!(
+        o.status.success(),
+        "viewer {args:?} failed: {}\n{}",
+        o.status,
+        stderr(&o)
+    );
+    assert!(o.stderr.is_empty(), "unexpected stderr: {}", stderr(&o));
+    stdout(&o)
+}
+
+/// Fails with exit code 2 and one `error:` line on stderr holding every needle; returns it.
+#[track_caller]
+fn bad_input(args: &[&str], stdin: Option<&str>, needles: &[&str]) -> Output {
+    let o = viewer(args, stdin);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "viewer {args:?}: {err}");
+    assert!(err.starts_with("error: "), "{err:?}");
+    assert_eq!(err.lines().count(), 1, "one line expected: {err:?}");
+    for needle in needles {
+        assert!(err.contains(needle), "{err:?} should contain {needle:?}");
+    }
+    o
+}
+
+/// One probe line: validated as JSON, then read exactly (each number parsed straight to f32).
+#[derive(Debug, PartialEq)]
+struct Probe {
+    total: [f32; 3],
+    lobes: Vec<(String, [f32; 3])>,
+}
+
+fn parse_probe(line: &str) -> Probe {
+    let json: serde_json::Value =
+        serde_json::from_str(line).unwrap_or_else(|e| panic!("not JSON ({e}): {line}"));
+    let obj = json.as_object().expect("an object");
+    assert_eq!(obj.len(), 2, "{line}");
+    assert_eq!(obj["total"].as_array().map(Vec::len), Some(3), "{line}");
+    let lobes = obj["lobes"].as_object().expect("lobes object");
+    assert_eq!(lobes.len(), Lobe::ALL.len(), "{line}");
+    // Fixed format: the tokens between the punctuation are "name" or a number.
+    let cleaned: String = line
+        .chars()
+        .map(|c| if "{}[]:,".contains(c) { ' ' } else { c })
+        .collect();
+    let mut names = Vec::new();
+    let mut numbers: Vec<Vec<f32>> = Vec::new();
+    for tok in cleaned.split_whitespace() {
+        if let Some(name) = tok.strip_prefix('"').and_then(|t| t.strip_suffix('"')) {
+            names.push(name.to_string());
+            numbers.push(Vec::new());
+        } else {
+            let v: f32 = tok.parse().unwrap_or_else(|_| panic!("bad number {tok}"));
+            numbers.last_mut().expect("number before any key").push(v);
+        }
+    }
+    assert_eq!(names[0], "total");
+    assert_eq!(names[1], "lobes");
+    assert!(numbers[1].is_empty());
+    let rgb = |v: &Vec<f32>| -> [f32; 3] { v.as_slice().try_into().expect("three numbers") };
+    Probe {
+        total: rgb(&numbers[0]),
+        lobes: names[2..]
+            .iter()
+            .cloned()
+            .zip(numbers[2..].iter().map(rgb))
+            .collect(),
+    }
+}
+
+fn lobe_names() -> Vec<String> {
+    Lobe::ALL.iter().map(|l| l.name().to_string()).collect()
+}
+
+fn model(preset: &str) -> FurBcsdf {
+    let p = presets::find(preset).unwrap();
+    FurBcsdf::new(FurParams::new(&p.input).unwrap())
+}
+
+/// The library's answer, for exact comparison (the model is deterministic f32 code with a
+/// pure-Rust libm, so the binary and this test compute the same bits).
+fn expected(lobes: &Lobes) -> Probe {
+    Probe {
+        total: lobes.total().0,
+        lobes: lobes
+            .iter()
+            .map(|(l, v)| (l.name().to_string(), v.0))
+            .collect(),
+    }
+}
+
+fn probe_args<'a>(preset: &'a str, angles: &[&'a str; 3]) -> Vec<&'a str> {
+    vec![
+        "probe",
+        "--preset",
+        preset,
+        "--theta-i",
+        angles[0],
+        "--theta-r",
+        angles[1],
+        "--phi",
+        angles[2],
+    ]
+}
+
+fn one_line(out: &str) -> &str {
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 1, "one line expected: {out:?}");
+    assert!(out.ends_with('\n'));
+    lines[0]
+}
+
+#[test]
+fn probe_prints_json_with_every_lobe_and_total_is_their_sum() {
+    let mut multi_lobe = 0;
+    for preset in presets::PRESETS.iter().map(|p| p.name) {
+        for angles in [
+            ["30", "-20", "45"],
+            ["20", "-25", "180"],
+            ["10", "-10", "30"],
+        ] {
+            let out = ok(&probe_args(preset, &angles), None);
+            let p = parse_probe(one_line(&out));
+            let names: Vec<String> = p.lobes.iter().map(|(n, _)| n.clone()).collect();
+            assert_eq!(names, lobe_names(), "lobes in Lobe::ALL order");
+            for ch in 0..3 {
+                let sum: f32 = p.lobes.iter().map(|(_, v)| v[ch]).sum();
+                let scale: f32 = p.lobes.iter().map(|(_, v)| v[ch].abs()).sum();
+                assert!(
+                    (p.total[ch] - sum).abs() <= 8.0 * f32::EPSILON * scale,
+                    "{preset} {angles:?}: total {} vs lobe sum {sum}",
+                    p.total[ch]
+                );
+            }
+            if p.lobes.iter().filter(|(_, v)| v[0] > 0.0).count() >= 3 {
+                multi_lobe += 1;
+            }
+            // And the numbers are the library's, bit for bit (round-trip printing).
+            let a: Vec<f32> = angles.iter().map(|s| s.parse().unwrap()).collect();
+            let lib = model(preset).eval_far(&Angles::from_degrees(a[0], a[1], a[2]).unwrap());
+            assert_eq!(p, expected(&lib), "{preset} {angles:?}");
+        }
+    }
+    assert!(
+        multi_lobe > 0,
+        "no query had several non-zero lobes: the sum check is vacuous"
+    );
+}
+
+#[test]
+fn h_switches_from_far_to_near_field() {
+    let angles = ["10", "-10", "30"];
+    let args = probe_args("air-medulla", &angles);
+    let far = parse_probe(one_line(&ok(&args, None)));
+    let a = Angles::from_degrees(10.0, -10.0, 30.0).unwrap();
+    let m = model("air-medulla");
+    assert_eq!(far, expected(&m.eval_far(&a)));
+    for h in ["0.2", "-0.7", "1", "-1", "0"] {
+        let mut near_args = args.clone();
+        near_args.extend(["--h", h]);
+        let near = parse_probe(one_line(&ok(&near_args, None)));
+        assert_eq!(
+            near,
+            expected(&m.eval_near(&a, h.parse().unwrap())),
+            "h = {h}"
+        );
+        if h == "0.2" {
+            assert_ne!(near, far, "--h must switch to the near field");
+        }
+    }
+    for h in ["1.5", "-1.01"] {
+        let mut near_args = args.clone();
+        near_args.extend(["--h", h]);
+        bad_input(&near_args, None, &["h = ", "[-1, 1]"]);
+    }
+}
+
+#[test]
+fn set_overrides_change_the_result() {
+    let angles = ["20", "-25", "180"];
+    let base_args = probe_args("human-hair", &angles);
+    let tt = |p: &Probe| p.lobes.iter().find(|(n, _)| n == "TT").unwrap().1;
+    let base = parse_probe(one_line(&ok(&base_args, None)));
+    assert!(
+        tt(&base)[0] > 0.0,
+        "TT should be lit at these angles: {base:?}"
+    );
+
+    let mut clear = base_args.clone();
+    clear.extend(["--set", "sigma_ca=0"]);
+    let clear = parse_probe(one_line(&ok(&clear, None)));
+    for ch in 0..3 {
+        assert!(
+            tt(&clear)[ch] > tt(&base)[ch],
+            "sigma_ca=0 must raise TT in every channel: {:?} vs {:?}",
+            tt(&clear),
+            tt(&base)
+        );
+    }
+
+    // Several overrides, including an RGB sigma_ca, equal the library with the same input.
+    let mut args = base_args.clone();
+    args.extend([
+        "--set",
+        "sigma_ca=0.1,0.2,0.4",
+        "--set",
+        "kappa=0.3",
+        "--set=eta_m=1.3",
+    ]);
+    let got = parse_probe(one_line(&ok(&args, None)));
+    let mut input = presets::find("human-hair").unwrap().input;
+    input.pigment = Pigment::Absorption(Rgb([0.1, 0.2, 0.4]));
+    input.kappa = 0.3;
+    input.eta_m = Some(1.3);
+    let m: FurBcsdf = FurBcsdf::new(FurParams::new(&input).unwrap());
+    let a = Angles::from_degrees(20.0, -25.0, 180.0).unwrap();
+    assert_eq!(got, expected(&m.eval_far(&a)));
+}
+
+#[test]
+fn stdin_answers_each_line_in_order_like_single_probes() {
+    let queries = [
+        ["30", "-20", "45", ""],
+        ["10", "-10", "30", "0.2"],
+        ["20", "-25", "180", ""],
+    ];
+    let mut singles = Vec::new();
+    for q in &queries {
+        let mut args = probe_args("air-medulla", &[q[0], q[1], q[2]]);
+        if !q[3].is_empty() {
+            args.extend(["--h", q[3]]);
+        }
+        singles.push(one_line(&ok(&args, None)).to_string());
+    }
+    let input = format!(
+        "# theta_i theta_r phi [h]\n{} {} {}\n\n   \t\n{}\t{}  {} {}\n  # more\n{} {} {}",
+        queries[0][0],
+        queries[0][1],
+        queries[0][2],
+        queries[1][0],
+        queries[1][1],
+        queries[1][2],
+        queries[1][3],
+        queries[2][0],
+        queries[2][1],
+        queries[2][2],
+    );
+    let out = ok(
+        &["probe", "--preset", "air-medulla", "--stdin"],
+        Some(&input),
+    );
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines, singles);
+    assert_ne!(lines[0], lines[2]);
+    // CRLF input works too.
+    let crlf = input.replace('\n', "\r\n");
+    let out = ok(
+        &["probe", "--preset", "air-medulla", "--stdin"],
+        Some(&crlf),
+    );
+    assert_eq!(out.lines().collect::<Vec<_>>(), singles);
+    // Empty input: no output, success.
+    assert_eq!(
+        ok(&["probe", "--preset", "air-medulla", "--stdin"], Some("")),
+        ""
+    );
+}
+
+#[test]
+fn malformed_stdin_line_is_reported_by_number_after_the_earlier_output() {
+    let args = ["probe", "--preset", "yan-row-a", "--stdin"];
+    let first = one_line(&ok(&probe_args("yan-row-a", &["30", "-20", "45"]), None)).to_string();
+    let o = bad_input(
+        &args,
+        Some("30 -20 45\n30 oops 45\n10 10 10\n"),
+        &["line 2", "oops"],
+    );
+    assert_eq!(
+        stdout(&o),
+        format!("{first}\n"),
+        "lines before the bad one are printed"
+    );
+    // Comment and blank lines count in the numbering.
+    bad_input(
+        &args,
+        Some("# c\n30 -20 45\n\n1 2\n"),
+        &["line 4:", "found 2"],
+    );
+    bad_input(&args, Some("30 -20 45 0.5 9\n"), &["line 1:", "found 5"]);
+    bad_input(
+        &args,
+        Some("0 0 0\n95 0 0\n"),
+        &["line 2:", "theta_i = 95", "[-90, 90]"],
+    );
+    bad_input(&args, Some("0 0 0 2\n"), &["line 1:", "h = 2"]);
+}
+
+#[test]
+fn bad_input_exits_2_with_one_error_line() {
+    let mut args = probe_args("no-such-fur", &["30", "-20", "45"]);
+    bad_input(
+        &args,
+        None,
+        &["no-such-fur", "yan-row-a", "human-hair", "air-medulla"],
+    );
+
+    args = probe_args("yan-row-a", &["30", "-20", "45"]);
+    let with = |extra: &[&'static str]| {
+        let mut a = args.clone();
+        a.extend_from_slice(extra);
+        a
+    };
+    bad_input(
+        &with(&["--set", "colour=1"]),
+        None,
+        &["colour", "eta_c", "kappa", "sigma_ca"],
+    );
+    bad_input(
+        &with(&["--set", "kappa=1.2"]),
+        None,
+        &["kappa", "1.2", "[0, 0.99]"],
+    );
+    bad_input(&with(&["--set", "kappa=abc"]), None, &["kappa", "abc"]);
+    bad_input(&with(&["--set", "sigma_ca=1,2"]), None, &["sigma_ca"]);
+    bad_input(
+        &probe_args("yan-row-a", &["91", "0", "0"]),
+        None,
+        &["theta_i = 91"],
+    );
+    bad_input(
+        &probe_args("yan-row-a", &["0", "-90.5", "0"]),
+        None,
+        &["theta_r = -90.5"],
+    );
+    bad_input(&probe_args("yan-row-a", &["0", "0", "nan"]), None, &["phi"]);
+
+    // Usage errors found by clap keep clap's format but still fail with code 2.
+    for argv in [
+        probe_args("yan-row-a", &["abc", "0", "0"]),
+        vec!["probe", "--preset", "yan-row-a", "--theta-i", "0"],
+        vec!["probe", "--preset", "yan-row-a", "--stdin", "--h", "0.5"],
+        vec!["probe", "--theta-i", "0", "--theta-r", "0", "--phi", "0"],
+        vec!["frobnicate"],
+    ] {
+        let o = viewer(&argv, None);
+        assert_eq!(o.status.code(), Some(2), "{argv:?}: {}", stderr(&o));
+        assert!(stderr(&o).starts_with("error:"), "{argv:?}: {}", stderr(&o));
+    }
+}
+
+#[test]
+fn presets_lists_every_builtin_as_name_tab_source() {
+    let out = ok(&["presets"], None);
+    let lines: Vec<&str> = out.lines().collect();
+    let want: Vec<String> = presets::PRESETS
+        .iter()
+        .map(|p| format!("{}\t{}", p.name, p.source))
+        .collect();
+    assert_eq!(lines.len(), 5);
+    assert_eq!(lines, want);
+}
+
+#[test]
+fn user_preset_file_is_listed_probed_and_checked() {
+    let path = format!(
+        "{}/cli-user-presets-{}.toml",
+        env!("CARGO_TARGET_TMPDIR"),
+        std::process::id()
+    );
+    let text = "[[preset]]\nname = \"my-fur\"\nsource = \"a test\"\neta_c = 1.5\n\
+                eumelanin = 0.4\nalpha_deg = 2\nbeta_m_deg = 9\nl = 0.5\nkappa = 0.6\n\
+                sigma_ms = 1\ng = 0.3\n";
+    std::fs::write(&path, text).unwrap();
+    assert_eq!(
+        ok(&["presets", "--presets", &path], None),
+        "my-fur\ta test\n"
+    );
+    let mut args = probe_args("my-fur", &["30", "-20", "45"]);
+    args.extend(["--presets", &path]);
+    let got = parse_probe(one_line(&ok(&args, None)));
+    let list = bake::presets::load_file(&path).unwrap();
+    let m: FurBcsdf = FurBcsdf::new(FurParams::new(&list[0].input).unwrap());
+    let a = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
+    assert_eq!(got, expected(&m.eval_far(&a)));
+    // The built-ins are not in a user file.
+    let mut args = probe_args("yan-row-a", &["30", "-20", "45"]);
+    args.extend(["--presets", &path]);
+    bad_input(&args, None, &["yan-row-a", "my-fur"]);
+
+    std::fs::write(&path, text.replace("kappa = 0.6", "kappa = 1.6")).unwrap();
+    let line9 = format!("{path}:9: preset \"my-fur\": invalid kappa = 1.6");
+    bad_input(&["presets", "--presets", &path], None, &[&line9]);
+    bad_input(&args, None, &[&line9]);
+    std::fs::remove_file(&path).unwrap();
+    bad_input(&["presets", "--presets", &path], None, &[&path]);
+}
+
+#[test]
+fn help_shows_usage_and_examples() {
+    for argv in [
+        vec!["--help"],
+        vec!["probe", "--help"],
+        vec!["presets", "--help"],
+    ] {
+        let out = ok(&argv, None);
+        assert!(out.contains("Usage:"), "{argv:?}: {out}");
+        assert!(out.contains("Examples:"), "{argv:?}: {out}");
+    }
+    let probe = ok(&["probe", "--help"], None);
+    for flag in [
+        "--preset",
+        "--presets",
+        "--set",
+        "--theta-i",
+        "--theta-r",
+        "--phi",
+        "--h",
+        "--stdin",
+    ] {
+        assert!(probe.contains(flag), "probe --help lacks {flag}");
+    }
+}

@@ -1,53 +1,16 @@
 //! The `viewer` binary end to end: JSON output, far/near switching, `--set`, `--stdin`,
 //! `viewer presets`, and one-line `error:` messages with exit code 2 for bad input.
 //!
-//! The binary belongs to another package, so Cargo does not build it for this test: the test
-//! runs `cargo build -p viewer` once (into the target directory this test was built in, with
-//! the same profile directory) and runs the result. That is a no-op when it is up to date and
-//! guarantees the binary is never stale.
+//! Cargo builds the binary for this test (`CARGO_BIN_EXE_viewer`), so it is never stale.
 
 use bcsdf_core::{presets, Angles, FurBcsdf, FurParams, Lobe, Lobes, Pigment, Rgb};
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
-use std::sync::OnceLock;
 
-/// Path of an up-to-date `viewer` binary.
+/// Path of the `viewer` binary Cargo built for this test.
 fn viewer_path() -> &'static Path {
-    static BIN: OnceLock<PathBuf> = OnceLock::new();
-    BIN.get_or_init(|| {
-        // This test runs as <target-dir>/<profile-dir>/deps/cli-<hash>.
-        let exe = std::env::current_exe().expect("current_exe");
-        let profile_dir = exe.parent().and_then(Path::parent).expect("profile dir");
-        let target_dir = profile_dir.parent().expect("target dir");
-        let cargo = std::env::var_os("CARGO").unwrap_or_else(|| env!("CARGO").into());
-        let mut cmd = Command::new(cargo);
-        cmd.args([
-            "build",
-            "--quiet",
-            "-p",
-            "viewer",
-            "--bin",
-            "viewer",
-            "--target-dir",
-        ])
-        .arg(target_dir)
-        .current_dir(env!("CARGO_MANIFEST_DIR"));
-        match profile_dir.file_name().and_then(|n| n.to_str()) {
-            Some("debug") | None => {}
-            Some("release") => {
-                cmd.arg("--release");
-            }
-            Some(other) => {
-                cmd.args(["--profile", other]);
-            }
-        }
-        let status = cmd.status().expect("running cargo build -p viewer");
-        assert!(status.success(), "cargo build -p viewer failed");
-        let bin = profile_dir.join(format!("viewer{}", std::env::consts::EXE_SUFFIX));
-        assert!(bin.is_file(), "no viewer binary at {}", bin.display());
-        bin
-    })
+    Path::new(env!("CARGO_BIN_EXE_viewer"))
 }
 
 fn viewer(args: &[&str], stdin: Option<&str>) -> Output {

@@ -8,7 +8,7 @@ const INV_SQRT_TAU: f32 = 0.398_942_3;
 
 /// Beyond this many standard deviations a Gaussian term is dropped (e^{−0.5·6.2²} ≈ 4.5e-9
 /// of the peak).
-const CUTOFF_SIGMAS: f32 = 6.2;
+pub const CUTOFF_SIGMAS: f32 = 6.2;
 
 /// A normalised Gaussian of standard deviation β.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -103,6 +103,16 @@ pub const TAU: f32 = core::f32::consts::TAU;
 /// Wraps an angle to `(-π, π]`. Non-finite input gives 0.
 #[inline]
 pub fn wrap_angle(x: f32) -> f32 {
+    // Fast path: one period away at most (the common case for sums of a few angles).
+    if x > -PI && x <= PI {
+        return x;
+    }
+    if x > PI && x <= PI + TAU {
+        return x - TAU;
+    }
+    if x <= -PI && x > -PI - TAU {
+        return x + TAU;
+    }
     if !x.is_finite() {
         return 0.0;
     }

@@ -31,7 +31,13 @@ fn queries() -> Vec<(Angles, f32)> {
 
 fn bench(c: &mut Criterion) {
     let qs = queries();
-    for name in ["yan-row-a", "air-medulla", "human-hair"] {
+    for name in [
+        "yan-row-a",
+        "yan-row-b",
+        "yan-row-c",
+        "human-hair",
+        "air-medulla",
+    ] {
         let preset = presets::find(name).unwrap();
         let model: FurBcsdf = FurBcsdf::new(FurParams::new(&preset.input).unwrap());
         let mut i = 0usize;
@@ -53,9 +59,39 @@ fn bench(c: &mut Criterion) {
     }
 }
 
+/// The same queries with the `FastMath` backend (`--features micromath`).
+#[cfg(feature = "micromath")]
+fn bench_fast(c: &mut Criterion) {
+    use bcsdf_core::FastMath;
+    let qs = queries();
+    for name in ["yan-row-a", "human-hair"] {
+        let preset = presets::find(name).unwrap();
+        let model = FurBcsdf::<FastMath>::new(FurParams::new(&preset.input).unwrap());
+        let mut i = 0usize;
+        c.bench_function(&format!("near_field_fastmath/{name}"), |b| {
+            b.iter(|| {
+                let (a, h) = &qs[i % qs.len()];
+                i += 1;
+                black_box(model.eval_near(black_box(a), black_box(*h)).total())
+            })
+        });
+        let mut i = 0usize;
+        c.bench_function(&format!("far_field_fastmath/{name}"), |b| {
+            b.iter(|| {
+                let (a, _) = &qs[i % qs.len()];
+                i += 1;
+                black_box(model.eval_far(black_box(a)).total())
+            })
+        });
+    }
+}
+
+#[cfg(not(feature = "micromath"))]
+fn bench_fast(_: &mut Criterion) {}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(30).warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(2));
-    targets = bench
+    targets = bench, bench_fast
 }
 criterion_main!(benches);

@@ -380,26 +380,27 @@ impl Probes {
             pr.phi[j] = exit_azimuths(&Chord::at_variable::<M>(slice, seg.var, t, seg.region));
         }
         for j in 0..PROBES {
-            for p in 0..LOBE_COUNT {
-                pr.span[j][p] = wrap_angle(pr.phi[j + 1][p] - pr.phi[j][p]);
+            let (a, b) = (pr.phi[j], pr.phi[j + 1]);
+            for (span, (pa, pb)) in pr.span[j].iter_mut().zip(a.iter().zip(b.iter())) {
+                *span = wrap_angle(pb - pa);
             }
         }
         // |Φ''| at interior probe i from divided differences (taken as 0 at the ends).
         let mut curv = [[0.0f32; LOBE_COUNT]; PROBES + 1];
-        for i in 1..PROBES {
+        for (i, row) in curv.iter_mut().enumerate().take(PROBES).skip(1) {
             let (w0, w1) = (
                 pr.bounds[i] - pr.bounds[i - 1],
                 pr.bounds[i + 1] - pr.bounds[i],
             );
-            for p in 0..LOBE_COUNT {
-                let slope_diff = pr.span[i][p] / w1 - pr.span[i - 1][p] / w0;
-                curv[i][p] = 2.0 * slope_diff.abs() / (w0 + w1);
+            let (s0, s1) = (pr.span[i - 1], pr.span[i]);
+            for (c, (d0, d1)) in row.iter_mut().zip(s0.iter().zip(s1.iter())) {
+                *c = 2.0 * (d1 / w1 - d0 / w0).abs() / (w0 + w1);
             }
         }
         for j in 0..PROBES {
             let w = pr.bounds[j + 1] - pr.bounds[j];
-            for p in 0..LOBE_COUNT {
-                pr.margin[j][p] = 0.25 * curv[j][p].max(curv[j + 1][p]) * w * w;
+            for (p, m) in pr.margin[j].iter_mut().enumerate() {
+                *m = 0.25 * curv[j][p].max(curv[j + 1][p]) * w * w;
             }
         }
         pr

@@ -7,6 +7,10 @@ use crate::math::{sqrt_pos, Math};
 /// Total internal reflection gives `(1, 1)`.
 #[inline]
 pub fn dielectric_sp<M: Math>(cos_i: f32, eta: f32) -> (f32, f32) {
+    // An index-matched boundary reflects nothing (exactly, not up to rounding).
+    if eta == 1.0 {
+        return (0.0, 0.0);
+    }
     let cos_i = cos_i.clamp(0.0, 1.0);
     let sin2_t = (1.0 - cos_i * cos_i) / (eta * eta);
     if sin2_t >= 1.0 {

@@ -24,22 +24,23 @@ pub struct ViewSlice {
 
 /// Bravais' effective index for the normal-plane projection: √(η² − sin²θ)/cos θ.
 #[inline]
-pub fn bravais_index<M: Math>(eta: f32, sin_theta: f32) -> f32 {
-    let cos2 = (1.0 - sin_theta * sin_theta).max(1e-12);
-    M::sqrt(((eta * eta - sin_theta * sin_theta) / cos2).max(1.0))
+pub fn bravais_index<M: Math>(eta: f32, sin_theta: f32, cos_theta: f32) -> f32 {
+    let cos = cos_theta.abs().max(1e-6);
+    (M::sqrt((eta * eta - sin_theta * sin_theta).max(0.0)) / cos).max(1.0)
 }
 
 impl ViewSlice {
     /// The slice for a view direction at longitudinal angle `theta_r`.
     pub fn new<M: Math>(params: &FurParams, theta_r: f32) -> ViewSlice {
         let s = M::sin(theta_r).clamp(-1.0, 1.0);
+        let c = M::cos(theta_r);
         let inv_cos_t = |eta: f32| {
             let sin_t = s / eta;
             1.0 / sqrt_pos::<M>(1.0 - sin_t * sin_t)
         };
         ViewSlice {
-            eta_c_prime: bravais_index::<M>(params.eta_c(), s),
-            eta_m_prime: bravais_index::<M>(params.eta_m(), s),
+            eta_c_prime: bravais_index::<M>(params.eta_c(), s, c),
+            eta_m_prime: bravais_index::<M>(params.eta_m(), s, c),
             inv_cos_tc: inv_cos_t(params.eta_c()),
             inv_cos_tm: inv_cos_t(params.eta_m()),
             kappa: params.kappa(),
@@ -169,14 +170,21 @@ impl Chord {
     ) -> Chord {
         let pick = |v: ChordVariable, sin: f32| match exact {
             Some((var, t, cos_t)) if var == v => (t, cos_t),
-            _ => (asin_clamped::<M>(sin), sqrt_pos::<M>(1.0 - sin * sin)),
+            // (1 − s)(1 + s) keeps cos accurate where s → 1 (grazing rays).
+            _ => (
+                asin_clamped::<M>(sin),
+                sqrt_pos::<M>((1.0 - sin) * (1.0 + sin)),
+            ),
         };
         let (a, cos_a) = pick(ChordVariable::A, h);
         let sin_c = (h / slice.eta_c_prime).clamp(-1.0, 1.0);
         let c = asin_clamped::<M>(sin_c);
-        let cos_c = sqrt_pos::<M>(1.0 - sin_c * sin_c);
+        let cos_c = sqrt_pos::<M>((1.0 - sin_c) * (1.0 + sin_c));
         let kappa = slice.kappa;
-        let sin_mu = h / (kappa * slice.eta_m_prime);
+        // sin μ = h/(κη'_m), written as sin m · η'_c/η'_m so that μ = m to the bit when the
+        // medulla is index-matched.
+        let sin_m = sin_c / kappa;
+        let sin_mu = sin_m * (slice.eta_c_prime / slice.eta_m_prime);
         let region = region.unwrap_or(if !(kappa > 0.0 && sin_c.abs() < kappa) {
             Region::Miss
         } else if sin_mu.abs() < 1.0 {
@@ -185,7 +193,7 @@ impl Chord {
             Region::TotalReflection
         });
         let medulla = if region != Region::Miss {
-            let (m, cos_m) = pick(ChordVariable::M, (sin_c / kappa).clamp(-1.0, 1.0));
+            let (m, cos_m) = pick(ChordVariable::M, sin_m.clamp(-1.0, 1.0));
             if region == Region::Enter {
                 let (mu, cos_mu) = pick(ChordVariable::Mu, sin_mu.clamp(-1.0, 1.0));
                 MedullaEvent::Enter {

@@ -46,7 +46,9 @@ fn reference(model: &FurBcsdf, theta_r: f32, phi: f32, panels: usize) -> Vec<f64
 }
 
 fn flatten(n: &[Rgb; LOBE_COUNT]) -> Vec<f64> {
-    n.iter().flat_map(|v| v.0.iter().map(|&c| c as f64)).collect()
+    n.iter()
+        .flat_map(|v| v.0.iter().map(|&c| c as f64))
+        .collect()
 }
 
 fn peak_total(vals: &[Vec<f64>]) -> f64 {
@@ -95,7 +97,11 @@ fn reference_itself_is_converged() {
             let (a, b) = (reference(&m, tr, phi, 400), reference(&m, tr, phi, 800));
             let peak = a.iter().fold(0.0f64, |x, y| x.max(y.abs()));
             for (x, y) in a.iter().zip(&b) {
-                assert!((x - y).abs() <= 1e-6 * peak.max(1e-12), "{}: {x} vs {y}", preset.name);
+                assert!(
+                    (x - y).abs() <= 1e-6 * peak.max(1e-12),
+                    "{}: {x} vs {y}",
+                    preset.name
+                );
             }
         }
     }
@@ -106,7 +112,11 @@ fn far_field_matches_fine_reference_for_presets() {
     for preset in presets::PRESETS.iter() {
         let worst = worst_error(&model(&preset.input), &[-60.0, -20.0, 0.0, 35.0, 70.0], 24);
         eprintln!("{}: worst relative error {worst:.2e}", preset.name);
-        assert!(worst <= TOLERANCE, "{}: worst relative error {worst:.3e}", preset.name);
+        assert!(
+            worst <= TOLERANCE,
+            "{}: worst relative error {worst:.3e}",
+            preset.name
+        );
     }
 }
 
@@ -137,7 +147,10 @@ fn far_field_matches_fine_reference_for_random_parameters() {
         let tr = -70.0 + 140.0 * u();
         let worst = worst_error(&m, &[tr], 12);
         overall = overall.max(worst);
-        assert!(worst <= TOLERANCE, "{input:?} θr={tr}: worst relative error {worst:.3e}");
+        assert!(
+            worst <= TOLERANCE,
+            "{input:?} θr={tr}: worst relative error {worst:.3e}"
+        );
     }
     eprintln!("random parameters: worst relative error {overall:.2e}");
 }

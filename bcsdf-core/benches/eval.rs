@@ -39,7 +39,7 @@ fn bench(c: &mut Criterion) {
         "air-medulla",
     ] {
         let preset = presets::find(name).unwrap();
-        let model: FurBcsdf = FurBcsdf::new(FurParams::new(&preset.input).unwrap());
+        let model: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&preset.input).unwrap());
         let mut i = 0usize;
         c.bench_function(&format!("near_field/{name}"), |b| {
             b.iter(|| {
@@ -66,7 +66,7 @@ fn bench_fast(c: &mut Criterion) {
     let qs = queries();
     for name in ["yan-row-a", "human-hair"] {
         let preset = presets::find(name).unwrap();
-        let model = FurBcsdf::<FastMath>::new(FurParams::new(&preset.input).unwrap());
+        let model = FurBcsdf::<FastMath>::unscattered(FurParams::new(&preset.input).unwrap());
         let mut i = 0usize;
         c.bench_function(&format!("near_field_fastmath/{name}"), |b| {
             b.iter(|| {

@@ -28,9 +28,11 @@
 //! the 1e-4 budget (`docs/accuracy.md`).
 
 use crate::geometry::{Chord, ChordVariable, Region, ViewSlice};
-use crate::lobes::{Lobe, LOBE_COUNT};
+use crate::lobes::{Lobe, UNSCATTERED_COUNT};
 use crate::longitudinal::GroupLobes;
 use crate::math::{asin_clamped, wrap_angle, Math, PI};
+use crate::medulla::MedullaProfiles;
+use crate::scattered::{azimuthal_at, scattered_paths, SCATTERED_COUNT};
 use crate::spectrum::Rgb;
 use crate::unscattered::{attenuations, exit_azimuths, Extinction};
 
@@ -61,6 +63,13 @@ const GL_WEIGHTS: [f32; 6] = [
     0.360_761_57,
     0.171_324_49,
 ];
+
+/// Panels of the scattered far-field rule.
+pub const SCATTER_PANELS: usize = 8;
+
+/// 4-point Gauss–Legendre nodes and weights on [−1, 1].
+const GL4_NODES: [f32; 4] = [-0.861_136_3, -0.339_981_04, 0.339_981_04, 0.861_136_3];
+const GL4_WEIGHTS: [f32; 4] = [0.347_854_85, 0.652_145_15, 0.652_145_15, 0.347_854_85];
 
 /// Bit mask of lobes by [`Lobe::index`].
 type PathMask = u16;
@@ -197,9 +206,9 @@ pub struct FarFieldQuery<'a> {
 }
 
 impl FarFieldQuery<'_> {
-    /// N_p(φ) for the eight unscattered paths, in [`Lobe::ALL`] order.
-    pub fn azimuthal<M: Math>(&self, phi: f32) -> [Rgb; LOBE_COUNT] {
-        let mut acc = [Rgb::ZERO; LOBE_COUNT];
+    /// N_p(φ) for the eight unscattered paths, in [`Lobe::UNSCATTERED`] order.
+    pub fn azimuthal<M: Math>(&self, phi: f32) -> [Rgb; UNSCATTERED_COUNT] {
+        let mut acc = [Rgb::ZERO; UNSCATTERED_COUNT];
         let (segs, n) = segments::<M>(self.slice, self.index_matched);
         for seg in &segs[..n] {
             if seg.t1 > seg.t0 {
@@ -209,12 +218,52 @@ impl FarFieldQuery<'_> {
         acc
     }
 
-    fn segment<M: Math>(&self, seg: &Segment, phi: f32, acc: &mut [Rgb; LOBE_COUNT]) {
-        let k = match seg.var {
-            ChordVariable::A => 1.0,
-            ChordVariable::M => self.slice.h_medulla(),
-            ChordVariable::Mu => self.slice.h_tir(),
+    /// Far-field N^s_p(φ) of the three scattered lobes, ½ ∫ N^s_p(h, φ) dh over the part of h
+    /// that enters the medulla. C^N is broad and tabulated, so a fixed composite rule does:
+    /// [`SCATTER_PANELS`] panels (graded toward the segment end) of 4-point Gauss–Legendre, in
+    /// the segment's smooth variable, folded onto h ≥ 0 like the unscattered lobes.
+    pub fn azimuthal_scattered<M: Math>(
+        &self,
+        profiles: &MedullaProfiles<'_>,
+        sigma_n: f32,
+        phi: f32,
+    ) -> [Rgb; SCATTERED_COUNT] {
+        let mut acc = [Rgb::ZERO; SCATTERED_COUNT];
+        let (segs, n) = segments::<M>(self.slice, false);
+        let Some(seg) = segs[..n].iter().find(|s| s.region == Region::Enter) else {
+            return acc;
         };
+        let k = segment_scale(self.slice, seg.var);
+        let bound = |j: usize| {
+            let x = 1.0 - j as f32 / SCATTER_PANELS as f32;
+            seg.t0 + (seg.t1 - seg.t0) * (1.0 - x * x)
+        };
+        for j in 0..SCATTER_PANELS {
+            let (ta, tb) = (bound(j), bound(j + 1));
+            let (mid, half) = (0.5 * (ta + tb), 0.5 * (tb - ta));
+            for (x, w) in GL4_NODES.iter().zip(GL4_WEIGHTS.iter()) {
+                let t = mid + half * x;
+                let chord = Chord::at_variable::<M>(self.slice, seg.var, t, seg.region);
+                let Some(paths) =
+                    scattered_paths::<M>(self.slice, &chord, self.extinction, self.layers)
+                else {
+                    continue;
+                };
+                let weight = 0.5 * k * chord.variable_cos(seg.var) * (half * w);
+                let plus =
+                    azimuthal_at::<M>(profiles, &paths, self.slice, self.extinction, sigma_n, phi);
+                let minus =
+                    azimuthal_at::<M>(profiles, &paths, self.slice, self.extinction, sigma_n, -phi);
+                for ((a, p), m) in acc.iter_mut().zip(plus).zip(minus) {
+                    *a += (p + m) * weight;
+                }
+            }
+        }
+        acc
+    }
+
+    fn segment<M: Math>(&self, seg: &Segment, phi: f32, acc: &mut [Rgb; UNSCATTERED_COUNT]) {
+        let k = segment_scale(self.slice, seg.var);
         let probes = Probes::new::<M>(self.slice, seg);
         // Pass 1: which paths come within reach of ±φ on each probe panel, over which part
         // of it (s ∈ [0, 1] along the panel), and how densely that part must be sampled.
@@ -258,11 +307,11 @@ impl FarFieldQuery<'_> {
             hi: 0.0,
             density: 0.0,
         };
-        for (p, lobe) in Lobe::ALL.iter().enumerate() {
+        for p in 0..UNSCATTERED_COUNT {
             if seg.paths & (1 << p) == 0 {
                 continue;
             }
-            let d = self.groups.d(lobe.group());
+            let d = self.groups.d(Lobe::unscattered_group(p));
             let (pa, span, margin) = (probes.phi[j][p], probes.span[j][p], probes.margin[j][p]);
             let reach = d.reach() + margin;
             let mut hit = false;
@@ -295,7 +344,7 @@ impl FarFieldQuery<'_> {
         bounds: &[f32],
         run: &[Panel],
         phi: f32,
-        acc: &mut [Rgb; LOBE_COUNT],
+        acc: &mut [Rgb; UNSCATTERED_COUNT],
     ) {
         // Work of each panel: sub-panels it needs (at least MIN_DENSITY per probe panel,
         // so that A_p and the Jacobian are resolved even where Φ_p is flat).
@@ -333,11 +382,11 @@ impl FarFieldQuery<'_> {
                 let weight = 0.5 * k * chord.variable_cos(seg.var) * (half * w);
                 let azimuths = exit_azimuths(&chord);
                 let att = attenuations::<M>(self.slice, &chord, self.extinction, self.layers);
-                for (p, lobe) in Lobe::ALL.iter().enumerate() {
+                for p in 0..UNSCATTERED_COUNT {
                     if active & (1 << p) == 0 {
                         continue;
                     }
-                    let d = self.groups.d(lobe.group());
+                    let d = self.groups.d(Lobe::unscattered_group(p));
                     let dist = d.eval::<M>(phi - azimuths[p]) + d.eval::<M>(-phi - azimuths[p]);
                     acc[p] += att[p] * (weight * dist);
                 }
@@ -352,20 +401,20 @@ struct Probes {
     /// Probe points t_j, graded toward the segment's end.
     bounds: [f32; PROBES + 1],
     /// Φ_p(t_j).
-    phi: [[f32; LOBE_COUNT]; PROBES + 1],
+    phi: [[f32; UNSCATTERED_COUNT]; PROBES + 1],
     /// Φ_p(t_{j+1}) − Φ_p(t_j), wrapped: the chord of Φ_p over panel j.
-    span: [[f32; LOBE_COUNT]; PROBES],
+    span: [[f32; UNSCATTERED_COUNT]; PROBES],
     /// How far Φ_p may stray from that chord inside panel j (twice |Φ''|Δ²/8).
-    margin: [[f32; LOBE_COUNT]; PROBES],
+    margin: [[f32; UNSCATTERED_COUNT]; PROBES],
 }
 
 impl Probes {
     fn new<M: Math>(slice: &ViewSlice, seg: &Segment) -> Probes {
         let mut pr = Probes {
             bounds: [0.0; PROBES + 1],
-            phi: [[0.0; LOBE_COUNT]; PROBES + 1],
-            span: [[0.0; LOBE_COUNT]; PROBES],
-            margin: [[0.0; LOBE_COUNT]; PROBES],
+            phi: [[0.0; UNSCATTERED_COUNT]; PROBES + 1],
+            span: [[0.0; UNSCATTERED_COUNT]; PROBES],
+            margin: [[0.0; UNSCATTERED_COUNT]; PROBES],
         };
         // t_j = t0 + (t1 − t0)(1 − (1 − j/P)²): denser toward the segment's end, where its
         // singular angle and grazing Fresnel make A_p change fastest.
@@ -386,7 +435,7 @@ impl Probes {
             }
         }
         // |Φ''| at interior probe i from divided differences (taken as 0 at the ends).
-        let mut curv = [[0.0f32; LOBE_COUNT]; PROBES + 1];
+        let mut curv = [[0.0f32; UNSCATTERED_COUNT]; PROBES + 1];
         for (i, row) in curv.iter_mut().enumerate().take(PROBES).skip(1) {
             let (w0, w1) = (
                 pr.bounds[i] - pr.bounds[i - 1],
@@ -404,6 +453,15 @@ impl Probes {
             }
         }
         pr
+    }
+}
+
+/// K in h = K·sin t for the segment variable.
+fn segment_scale(slice: &ViewSlice, var: ChordVariable) -> f32 {
+    match var {
+        ChordVariable::A => 1.0,
+        ChordVariable::M => slice.h_medulla(),
+        ChordVariable::Mu => slice.h_tir(),
     }
 }
 

@@ -8,7 +8,7 @@
 //! use bcsdf_core::{presets, Angles, FurBcsdf, FurParams};
 //!
 //! let preset = presets::find("yan-row-a").unwrap();
-//! let model: FurBcsdf = FurBcsdf::new(FurParams::new(&preset.input).unwrap());
+//! let model: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&preset.input).unwrap());
 //! let angles = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
 //! let far = model.eval_far(&angles); // h integrated
 //! let near = model.eval_near(&angles, 0.3); // at offset h = 0.3
@@ -30,18 +30,22 @@ pub mod geometry;
 pub mod lobes;
 pub mod longitudinal;
 pub mod math;
+pub mod medulla;
 pub mod model;
 pub mod params;
 pub mod pigment;
 pub mod presets;
+pub mod rng;
+pub mod scattered;
 pub mod spectrum;
 pub mod unscattered;
 
 pub use frame::{AngleError, Angles, Vec3};
-pub use lobes::{Lobe, LobeGroup, Lobes, LOBE_COUNT};
+pub use lobes::{Lobe, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
 #[cfg(feature = "micromath")]
 pub use math::FastMath;
 pub use math::{Libm, Math};
+pub use medulla::{MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout, Resolution};
 pub use model::FurBcsdf;
 pub use params::{FurParams, FurParamsInput, ParamError, ParamName};
 pub use pigment::Pigment;

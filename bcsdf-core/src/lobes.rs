@@ -5,8 +5,9 @@ use crate::spectrum::Rgb;
 /// One light path of the model (MODEL.md §3, §6). Uppercase events happen at the cuticle,
 /// lowercase at the medulla boundary.
 ///
-/// The scattered lobes (TttT^s, TtrtT^s, TttRttT^s) join this enum with the medulla
-/// scattering issue; code matching on it should use `Lobe::ALL` and [`Lobe::name`].
+/// The first eight are the unscattered paths (MODEL.md §3); the last three carry the light
+/// scattered inside the medulla (MODEL.md §6). Code matching on it should use `Lobe::ALL` and
+/// [`Lobe::name`].
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Lobe {
@@ -26,10 +27,19 @@ pub enum Lobe {
     TrRrT = 6,
     /// Through the medulla, reflected at the cuticle, through the medulla again.
     TttRttT = 7,
+    /// Scattered inside the medulla on the first medulla chord (TttT^s).
+    TttTs = 8,
+    /// Scattered on the chord after a reflection inside the medulla (TtrtT^s).
+    TtrtTs = 9,
+    /// Scattered on the medulla chord after the cuticle reflection (TttRttT^s).
+    TttRttTs = 10,
 }
 
 /// Number of lobes in a [`Lobes`] breakdown.
-pub const LOBE_COUNT: usize = 8;
+pub const LOBE_COUNT: usize = 11;
+
+/// Number of unscattered lobes (the first ones in [`Lobe::ALL`]).
+pub const UNSCATTERED_COUNT: usize = 8;
 
 /// The three cuticle groups that share tilt and roughness (MODEL.md §5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -53,6 +63,9 @@ impl Lobe {
         Lobe::TtrtT,
         Lobe::TrRrT,
         Lobe::TttRttT,
+        Lobe::TttTs,
+        Lobe::TtrtTs,
+        Lobe::TttRttTs,
     ];
 
     /// The path's name as written in MODEL.md (`"TttRttT"`).
@@ -66,21 +79,55 @@ impl Lobe {
             Lobe::TtrtT => "TtrtT",
             Lobe::TrRrT => "TrRrT",
             Lobe::TttRttT => "TttRttT",
+            Lobe::TttTs => "TttT_s",
+            Lobe::TtrtTs => "TtrtT_s",
+            Lobe::TttRttTs => "TttRttT_s",
         }
     }
+
+    /// The eight unscattered paths, in breakdown order.
+    pub const UNSCATTERED: [Lobe; UNSCATTERED_COUNT] = [
+        Lobe::R,
+        Lobe::TT,
+        Lobe::TRT,
+        Lobe::TrT,
+        Lobe::TttT,
+        Lobe::TtrtT,
+        Lobe::TrRrT,
+        Lobe::TttRttT,
+    ];
+
+    /// The three scattered lobes, in breakdown order.
+    pub const SCATTERED: [Lobe; 3] = [Lobe::TttTs, Lobe::TtrtTs, Lobe::TttRttTs];
 
     /// Index into [`Lobes`].
     pub const fn index(self) -> usize {
         self as usize
     }
 
-    /// The cuticle group whose M_p and roughness this path uses.
-    pub const fn group(self) -> LobeGroup {
+    /// The cuticle group whose M_p and roughness an unscattered path uses; `None` for the
+    /// scattered lobes, which share M^s.
+    pub const fn group(self) -> Option<LobeGroup> {
         match self {
-            Lobe::R => LobeGroup::R,
-            Lobe::TT | Lobe::TrT | Lobe::TttT | Lobe::TtrtT => LobeGroup::TT,
-            Lobe::TRT | Lobe::TrRrT | Lobe::TttRttT => LobeGroup::TRT,
+            Lobe::R => Some(LobeGroup::R),
+            Lobe::TT | Lobe::TrT | Lobe::TttT | Lobe::TtrtT => Some(LobeGroup::TT),
+            Lobe::TRT | Lobe::TrRrT | Lobe::TttRttT => Some(LobeGroup::TRT),
+            Lobe::TttTs | Lobe::TtrtTs | Lobe::TttRttTs => None,
         }
+    }
+
+    /// The cuticle group of unscattered path `index` (< [`UNSCATTERED_COUNT`]).
+    pub const fn unscattered_group(index: usize) -> LobeGroup {
+        match index {
+            0 => LobeGroup::R,
+            1 | 3 | 4 | 5 => LobeGroup::TT,
+            _ => LobeGroup::TRT,
+        }
+    }
+
+    /// True for the lobes scattered inside the medulla.
+    pub const fn is_scattered(self) -> bool {
+        self.group().is_none()
     }
 }
 

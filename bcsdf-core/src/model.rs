@@ -1,13 +1,16 @@
-//! The analytic double-cylinder BCSDF (MODEL.md §8, report eq. 1), unscattered part:
-//! S = Σ_p M_p·N_p / cos²θ_i, near field (at offset h) and far field (h integrated).
+//! The analytic double-cylinder BCSDF (MODEL.md §8, report eq. 1):
+//! S = [Σ_p M_p·N_p + M^s·Σ_p N^s_p] / cos²θ_i, near field (at offset h) and far field
+//! (h integrated).
 
 use crate::far_field::FarFieldQuery;
 use crate::frame::{Angles, Vec3};
 use crate::geometry::{Chord, ViewSlice};
-use crate::lobes::{Lobe, LobeGroup, Lobes, LOBE_COUNT};
+use crate::lobes::{Lobe, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
 use crate::longitudinal::GroupLobes;
 use crate::math::{Libm, Math};
+use crate::medulla::{MedullaProfiles, ProfileError};
 use crate::params::FurParams;
+use crate::scattered::{azimuthal_at, scattered_paths, ScatteredLongitudinal, SCATTERED_COUNT};
 use crate::spectrum::Rgb;
 use crate::unscattered::{paths_at, Extinction};
 use core::marker::PhantomData;
@@ -16,24 +19,62 @@ use core::marker::PhantomData;
 /// for grazing light.
 pub const MIN_COS2_THETA_I: f32 = 1e-4;
 
+/// The medulla-scattering part of a model: borrowed profiles and the precomputed M^s.
+#[derive(Clone, Copy, Debug)]
+struct Scattering<'a> {
+    profiles: MedullaProfiles<'a>,
+    longitudinal: ScatteredLongitudinal,
+}
+
 /// The analytic fur BCSDF for one parameter set, evaluated with the math backend `M`.
 ///
-/// Construction precomputes the per-group lobe constants; evaluation allocates nothing.
+/// Built with [`FurBcsdf::new`] from medulla profiles (the full model), or with
+/// [`FurBcsdf::unscattered`] (the eight unscattered paths only; the scattered lobes are then
+/// zero — exact when σ_ms = 0 or κ = 0). Construction precomputes the lobe constants;
+/// evaluation allocates nothing.
 #[derive(Clone, Copy, Debug)]
-pub struct FurBcsdf<M: Math = Libm> {
+pub struct FurBcsdf<'a, M: Math = Libm> {
     params: FurParams,
     groups: GroupLobes,
+    scattering: Option<Scattering<'a>>,
     _math: PhantomData<M>,
 }
 
-impl<M: Math> FurBcsdf<M> {
-    /// The model for validated `params`.
-    pub fn new(params: FurParams) -> FurBcsdf<M> {
+/// The unscattered lobes assembled with M_p, in breakdown order, plus the scattered ones.
+type Azimuthal = ([Rgb; UNSCATTERED_COUNT], [Rgb; SCATTERED_COUNT]);
+
+impl<M: Math> FurBcsdf<'static, M> {
+    /// The unscattered part of the model only (R … TttRttT); the scattered lobes are zero.
+    /// This is the whole model when σ_ms = 0 or κ = 0.
+    pub fn unscattered(params: FurParams) -> FurBcsdf<'static, M> {
         FurBcsdf {
             params,
             groups: GroupLobes::new(&params),
+            scattering: None,
             _math: PhantomData,
         }
+    }
+}
+
+impl<'a, M: Math> FurBcsdf<'a, M> {
+    /// The full model with the medulla profiles `profiles`, which must have been made for
+    /// these parameters ([`crate::medulla::ProfileLayout::for_params`]).
+    pub fn new(
+        params: FurParams,
+        profiles: MedullaProfiles<'a>,
+    ) -> Result<FurBcsdf<'a, M>, ProfileError> {
+        if !profiles.layout().matches(&params) {
+            return Err(ProfileError::Mismatch);
+        }
+        Ok(FurBcsdf {
+            params,
+            groups: GroupLobes::new(&params),
+            scattering: Some(Scattering {
+                profiles,
+                longitudinal: ScatteredLongitudinal::new::<M>(&params, &profiles),
+            }),
+            _math: PhantomData,
+        })
     }
 
     /// The parameters this model was built from.
@@ -41,17 +82,24 @@ impl<M: Math> FurBcsdf<M> {
         &self.params
     }
 
+    /// The medulla profiles, when the model has them.
+    pub fn profiles(&self) -> Option<&MedullaProfiles<'a>> {
+        self.scattering.as_ref().map(|s| &s.profiles)
+    }
+
     fn slice_and_extinction(&self, theta_r: f32) -> (ViewSlice, Extinction) {
         let slice = ViewSlice::new::<M>(&self.params, theta_r);
-        let ext = Extinction {
-            cortex: self.params.sigma_ca() * slice.inv_cos_tc,
-            medulla: (self.params.sigma_ms() + self.params.sigma_ma()) * slice.inv_cos_tm,
-        };
+        let ext = Extinction::new(&self.params, &slice);
         (slice, ext)
     }
 
-    /// Multiplies N_p by M_p and divides by cos²θ_i (report eq. 1).
-    fn assemble(&self, angles: &Angles, n: &[Rgb; LOBE_COUNT]) -> Lobes {
+    /// σ_N = σ_ms·κ/cos θ_tm, the medulla's 2D optical radius at this slice.
+    fn sigma_n(&self, slice: &ViewSlice) -> f32 {
+        self.params.sigma_ms() * self.params.kappa() * slice.inv_cos_tm
+    }
+
+    /// Multiplies N_p by M_p, N^s_p by M^s, and divides by cos²θ_i (report eq. 1).
+    fn assemble(&self, angles: &Angles, n: &Azimuthal) -> Lobes {
         let (ti, tr) = (angles.theta_i(), angles.theta_r());
         let cos_i = M::cos(ti);
         let inv_cos2 = 1.0 / (cos_i * cos_i).max(MIN_COS2_THETA_I);
@@ -60,61 +108,109 @@ impl<M: Math> FurBcsdf<M> {
             self.groups.m::<M>(LobeGroup::TT, ti, tr),
             self.groups.m::<M>(LobeGroup::TRT, ti, tr),
         ];
+        let ms = match &self.scattering {
+            Some(s) if n.1.iter().any(|v| v.max_channel() > 0.0) => {
+                s.longitudinal.eval::<M>(&s.profiles, ti, tr, angles.phi())
+            }
+            _ => 0.0,
+        };
         let mut out = [Rgb::ZERO; LOBE_COUNT];
-        for lobe in Lobe::ALL {
-            let v = n[lobe.index()] * (m[lobe.group() as usize] * inv_cos2);
-            // Never hand NaN or a negative value to a renderer.
-            out[lobe.index()] = v.map(|c| if c.is_finite() && c > 0.0 { c } else { 0.0 });
+        for (p, v) in n.0.iter().enumerate() {
+            out[p] = *v * (m[Lobe::unscattered_group(p) as usize] * inv_cos2);
+        }
+        for (k, v) in n.1.iter().enumerate() {
+            out[UNSCATTERED_COUNT + k] = *v * (ms * inv_cos2);
+        }
+        // Never hand NaN or a negative value to a renderer.
+        for v in out.iter_mut() {
+            *v = v.map(|c| if c.is_finite() && c > 0.0 { c } else { 0.0 });
         }
         Lobes::from_array(out)
     }
 
-    /// Near-field azimuthal lobes N_p(h, φ) = A_p(h)·D_p(φ − Φ_p(h)) (report eq. 4).
+    /// Near-field azimuthal lobes: N_p(h, φ) = A_p(h)·D_p(φ − Φ_p(h)) (report eq. 4) and the
+    /// scattered N^s_p(h, φ) (report eq. 6), in [`Lobe::ALL`] order.
     pub fn azimuthal_near(&self, theta_r: f32, phi: f32, h: f32) -> [Rgb; LOBE_COUNT] {
-        let mut n = [Rgb::ZERO; LOBE_COUNT];
-        if !(h.is_finite() && (-1.0..=1.0).contains(&h) && theta_r.is_finite()) {
-            return n;
+        let (u, s) = self.azimuthal_near_parts(theta_r, phi, h);
+        join(&u, &s)
+    }
+
+    fn azimuthal_near_parts(&self, theta_r: f32, phi: f32, h: f32) -> Azimuthal {
+        let mut n = [Rgb::ZERO; UNSCATTERED_COUNT];
+        let mut ns = [Rgb::ZERO; SCATTERED_COUNT];
+        if !(h.is_finite() && (-1.0..=1.0).contains(&h) && theta_r.is_finite() && phi.is_finite()) {
+            return (n, ns);
         }
         let (slice, ext) = self.slice_and_extinction(theta_r);
         let chord = Chord::at_offset::<M>(&slice, h);
         let paths = paths_at::<M>(&slice, &chord, &ext, self.params.l());
-        for lobe in Lobe::ALL {
-            let p = paths[lobe.index()];
+        for (p, path) in paths.iter().enumerate() {
             // Paths that do not exist at this h (or carry no energy) need no D_p.
-            if p.attenuation.max_channel() > 0.0 {
-                let d = self.groups.d(lobe.group());
-                n[lobe.index()] = p.attenuation * d.eval::<M>(phi - p.exit_azimuth);
+            if path.attenuation.max_channel() > 0.0 {
+                let d = self.groups.d(Lobe::unscattered_group(p));
+                n[p] = path.attenuation * d.eval::<M>(phi - path.exit_azimuth);
             }
         }
-        n
+        if let Some(s) = &self.scattering {
+            if let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, self.params.l()) {
+                ns = azimuthal_at::<M>(&s.profiles, &sp, &slice, &ext, self.sigma_n(&slice), phi);
+            }
+        }
+        (n, ns)
     }
 
-    /// Far-field azimuthal lobes N_p(φ) = ½ ∫ N_p(h, φ) dh (MODEL.md §5).
+    /// Far-field azimuthal lobes N_p(φ) = ½ ∫ N_p(h, φ) dh (MODEL.md §5, §6), in
+    /// [`Lobe::ALL`] order.
     pub fn azimuthal_far(&self, theta_r: f32, phi: f32) -> [Rgb; LOBE_COUNT] {
+        let (u, s) = self.azimuthal_far_parts(theta_r, phi);
+        join(&u, &s)
+    }
+
+    fn azimuthal_far_parts(&self, theta_r: f32, phi: f32) -> Azimuthal {
         if !(theta_r.is_finite() && phi.is_finite()) {
-            return [Rgb::ZERO; LOBE_COUNT];
+            return ([Rgb::ZERO; UNSCATTERED_COUNT], [Rgb::ZERO; SCATTERED_COUNT]);
         }
         let (slice, ext) = self.slice_and_extinction(theta_r);
-        FarFieldQuery {
+        let query = FarFieldQuery {
             slice: &slice,
             extinction: &ext,
             layers: self.params.l(),
             groups: &self.groups,
             index_matched: self.params.eta_m() == self.params.eta_c(),
+        };
+        let n = query.azimuthal::<M>(phi);
+        let ns = match &self.scattering {
+            Some(s) if ext.medulla_scattering > 0.0 => {
+                query.azimuthal_scattered::<M>(&s.profiles, self.sigma_n(&slice), phi)
+            }
+            _ => [Rgb::ZERO; SCATTERED_COUNT],
+        };
+        (n, ns)
+    }
+
+    /// M^s(θ_i, θ_r, φ), the longitudinal scattered lobe (0 without profiles).
+    pub fn longitudinal_scattered(&self, angles: &Angles) -> f32 {
+        match &self.scattering {
+            Some(s) => s.longitudinal.eval::<M>(
+                &s.profiles,
+                angles.theta_i(),
+                angles.theta_r(),
+                angles.phi(),
+            ),
+            None => 0.0,
         }
-        .azimuthal::<M>(phi)
     }
 
     /// Near-field S(ω_i, ω_r, h) per lobe. An offset outside [−1, 1] (or NaN) misses the
     /// fiber and gives zero.
     pub fn eval_near(&self, angles: &Angles, h: f32) -> Lobes {
-        let n = self.azimuthal_near(angles.theta_r(), angles.phi(), h);
+        let n = self.azimuthal_near_parts(angles.theta_r(), angles.phi(), h);
         self.assemble(angles, &n)
     }
 
     /// Far-field S(ω_i, ω_r) per lobe.
     pub fn eval_far(&self, angles: &Angles) -> Lobes {
-        let n = self.azimuthal_far(angles.theta_r(), angles.phi());
+        let n = self.azimuthal_far_parts(angles.theta_r(), angles.phi());
         self.assemble(angles, &n)
     }
 
@@ -134,4 +230,11 @@ impl<M: Math> FurBcsdf<M> {
             Err(_) => Lobes::ZERO,
         }
     }
+}
+
+fn join(u: &[Rgb; UNSCATTERED_COUNT], s: &[Rgb; SCATTERED_COUNT]) -> [Rgb; LOBE_COUNT] {
+    let mut out = [Rgb::ZERO; LOBE_COUNT];
+    out[..UNSCATTERED_COUNT].copy_from_slice(u);
+    out[UNSCATTERED_COUNT..].copy_from_slice(s);
+    out
 }

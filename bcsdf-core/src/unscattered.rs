@@ -2,7 +2,7 @@
 
 use crate::fresnel;
 use crate::geometry::{Chord, MedullaEvent, ViewSlice};
-use crate::lobes::LOBE_COUNT;
+use crate::lobes::UNSCATTERED_COUNT;
 use crate::math::{Math, PI};
 use crate::spectrum::Rgb;
 
@@ -16,19 +16,35 @@ pub struct PathSample {
     pub attenuation: Rgb,
 }
 
-/// Absorption coefficients along the chord, already divided by the refracted longitudinal
-/// cosines: σ_ca/cos θ_tc (RGB) and (σ_ms + σ_ma)/cos θ_tm.
+/// Absorption and scattering coefficients along the chord, already divided by the refracted
+/// longitudinal cosines (2D length → 3D length).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Extinction {
     /// σ_ca / cos θ_tc.
     pub cortex: Rgb,
     /// (σ_ms + σ_ma) / cos θ_tm: unscattered light leaves the medulla at full extinction.
     pub medulla: f32,
+    /// σ_ms / cos θ_tm: the chance of scattering on a medulla chord (MODEL.md §6, P).
+    pub medulla_scattering: f32,
+    /// σ_ma / cos θ_tm: absorption of the scattered light along its mean path ℓ̄.
+    pub medulla_absorption: f32,
+}
+
+impl Extinction {
+    /// The coefficients for `params` at the view slice `slice`.
+    pub fn new(params: &crate::params::FurParams, slice: &ViewSlice) -> Extinction {
+        Extinction {
+            cortex: params.sigma_ca() * slice.inv_cos_tc,
+            medulla: (params.sigma_ms() + params.sigma_ma()) * slice.inv_cos_tm,
+            medulla_scattering: params.sigma_ms() * slice.inv_cos_tm,
+            medulla_absorption: params.sigma_ma() * slice.inv_cos_tm,
+        }
+    }
 }
 
 /// Transmittance exp(−σ·L) per channel (one exponential when the channels are equal).
 #[inline]
-fn transmittance<M: Math>(sigma: Rgb, length: f32) -> Rgb {
+pub(crate) fn transmittance<M: Math>(sigma: Rgb, length: f32) -> Rgb {
     let [r, g, b] = sigma.0;
     if r == g && g == b {
         Rgb::splat(M::exp(-r * length))
@@ -38,15 +54,15 @@ fn transmittance<M: Math>(sigma: Rgb, length: f32) -> Rgb {
 }
 
 /// Exit azimuths Φ_p(h) of all eight paths at `chord` (MODEL.md §3 table), in
-/// [`crate::Lobe::ALL`] order; 0 for a path that does not exist at this chord.
+/// [`crate::Lobe::UNSCATTERED`] order; 0 for a path that does not exist at this chord.
 ///
 /// Each follows the event rule Φ = π + Σ events with outer refraction (c − a), internal
 /// reflection at the cuticle (π + 2c), medulla refraction (μ − m), reflection off the medulla
 /// from the cortex (π − 2m) and reflection inside the medulla (π + 2μ); R is Φ_R = −2a.
 #[inline]
-pub fn exit_azimuths(chord: &Chord) -> [f32; LOBE_COUNT] {
+pub fn exit_azimuths(chord: &Chord) -> [f32; UNSCATTERED_COUNT] {
     let (a, c) = (chord.a, chord.c);
-    let mut phi = [0.0; LOBE_COUNT];
+    let mut phi = [0.0; UNSCATTERED_COUNT];
     phi[0] = -2.0 * a;
     match chord.medulla {
         MedullaEvent::Miss => {
@@ -70,7 +86,7 @@ pub fn exit_azimuths(chord: &Chord) -> [f32; LOBE_COUNT] {
 
 /// Attenuations A_p(h) of all eight paths at `chord` (report eq. 5): the Fresnel product of
 /// the MODEL.md §3 table times exp(−σ_ca·L_c/cos θ_tc)·exp(−(σ_ms+σ_ma)·L_m/cos θ_tm), in
-/// [`crate::Lobe::ALL`] order; zero for a path that does not exist. `l` is the number of
+/// [`crate::Lobe::UNSCATTERED`] order; zero for a path that does not exist. `l` is the number of
 /// cuticle layers.
 #[inline]
 pub fn attenuations<M: Math>(
@@ -78,8 +94,8 @@ pub fn attenuations<M: Math>(
     chord: &Chord,
     ext: &Extinction,
     l: f32,
-) -> [Rgb; LOBE_COUNT] {
-    let mut out = [Rgb::ZERO; LOBE_COUNT];
+) -> [Rgb; UNSCATTERED_COUNT] {
+    let mut out = [Rgb::ZERO; UNSCATTERED_COUNT];
     let f = fresnel::cuticle::<M>(chord.cos_a, slice.eta_c_prime, l);
     let t = 1.0 - f;
     let base = t * t;
@@ -117,22 +133,22 @@ pub fn attenuations<M: Math>(
 
 /// ℓ_c = cos c − κ cos m: the cortex leg between the outer circle and the medulla.
 #[inline]
-fn cortex_leg(slice: &ViewSlice, chord: &Chord, cos_m: f32) -> f32 {
+pub(crate) fn cortex_leg(slice: &ViewSlice, chord: &Chord, cos_m: f32) -> f32 {
     (chord.cos_c - slice.kappa * cos_m).max(0.0)
 }
 
-/// Φ_p and A_p of all eight paths at `chord`, in [`crate::Lobe::ALL`] order.
+/// Φ_p and A_p of all eight paths at `chord`, in [`crate::Lobe::UNSCATTERED`] order.
 #[inline]
 pub fn paths_at<M: Math>(
     slice: &ViewSlice,
     chord: &Chord,
     ext: &Extinction,
     l: f32,
-) -> [PathSample; LOBE_COUNT] {
+) -> [PathSample; UNSCATTERED_COUNT] {
     let phi = exit_azimuths(chord);
     let att = attenuations::<M>(slice, chord, ext, l);
-    let mut out = [PathSample::default(); LOBE_COUNT];
-    for i in 0..LOBE_COUNT {
+    let mut out = [PathSample::default(); UNSCATTERED_COUNT];
+    for i in 0..UNSCATTERED_COUNT {
         out[i] = PathSample {
             exit_azimuth: phi[i],
             attenuation: att[i],

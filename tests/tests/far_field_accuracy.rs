@@ -84,8 +84,8 @@ fn worst_error(model: &FurBcsdf, thetas_deg: &[f32], n_phi: usize) -> f64 {
     worst
 }
 
-fn model(input: &FurParamsInput) -> FurBcsdf {
-    FurBcsdf::new(FurParams::new(input).unwrap())
+fn model(input: &FurParamsInput) -> FurBcsdf<'static> {
+    FurBcsdf::unscattered(FurParams::new(input).unwrap())
 }
 
 #[test]

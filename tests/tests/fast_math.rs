@@ -78,7 +78,7 @@ fn fast_math_error_is_bounded() {
     for preset in presets::PRESETS.iter() {
         let p = FurParams::new(&preset.input).unwrap();
         let (exact, fast): (FurBcsdf<Libm>, FurBcsdf<FastMath>) =
-            (FurBcsdf::new(p), FurBcsdf::new(p));
+            (FurBcsdf::unscattered(p), FurBcsdf::unscattered(p));
         let near: Vec<(Lobes, Lobes)> = angles
             .iter()
             .flat_map(|a| HS.iter().map(move |&h| (a, h)))
@@ -215,7 +215,8 @@ fn error_attribution() {
         let mut all = Stats::default();
         for preset in presets::PRESETS.iter() {
             let p = FurParams::new(&preset.input).unwrap();
-            let (exact, fast): (FurBcsdf<Libm>, FurBcsdf<M>) = (FurBcsdf::new(p), FurBcsdf::new(p));
+            let (exact, fast): (FurBcsdf<Libm>, FurBcsdf<M>) =
+                (FurBcsdf::unscattered(p), FurBcsdf::unscattered(p));
             let pairs: Vec<(Lobes, Lobes)> = angles
                 .iter()
                 .flat_map(|a| HS.iter().map(move |&h| (a, h)))

@@ -18,7 +18,7 @@
 
 use bcsdf_core::geometry::{Chord, ViewSlice};
 use bcsdf_core::unscattered::{attenuations, exit_azimuths, Extinction};
-use bcsdf_core::{FurParams, FurParamsInput, Libm, Pigment, Rgb, LOBE_COUNT};
+use bcsdf_core::{FurParams, FurParamsInput, Libm, Pigment, Rgb, UNSCATTERED_COUNT as LOBE_COUNT};
 use fur_tests::tracer::{trace, wrap, CrossSection, SplitMix64, PATHS};
 
 /// Relative distance (in h) to a discontinuity of the path set (|h| = κη'_c or κη'_m) below
@@ -116,6 +116,8 @@ fn core_sample(c: &Case) -> CoreSample {
         let ext = Extinction {
             cortex: Rgb::splat(cortex),
             medulla,
+            medulla_scattering: 0.0,
+            medulla_absorption: 0.0,
         };
         attenuations::<Libm>(&slice, &chord, &ext, c.l).map(|a| a.0[0] as f64)
     };

@@ -88,7 +88,7 @@ fn no_medulla_leaves_marschner_lobes() {
     for mut input in inputs {
         input.kappa = 0.0;
         let p = FurParams::new(&input).unwrap();
-        let model: FurBcsdf = FurBcsdf::new(p);
+        let model: FurBcsdf = FurBcsdf::unscattered(p);
         // Angles and offsets, then the lobes' peak values to scale the comparison.
         let cases: Vec<(Angles, f32)> = (0..200)
             .map(|_| (random_angles(&mut rng), rng.range_f32(-0.999, 0.999)))
@@ -175,7 +175,8 @@ fn index_matched_medulla_is_cortex_near_field() {
     let mut compared = 0;
     for _ in 0..60 {
         let (with, without) = matched_pair(&mut rng);
-        let (m1, m0): (FurBcsdf, FurBcsdf) = (FurBcsdf::new(with), FurBcsdf::new(without));
+        let (m1, m0): (FurBcsdf, FurBcsdf) =
+            (FurBcsdf::unscattered(with), FurBcsdf::unscattered(without));
         let shapes = group_shapes_of(&without);
         for _ in 0..100 {
             let a = random_angles(&mut rng);
@@ -235,7 +236,7 @@ fn index_matched_medulla_reflections_vanish_near_field() {
         let mut input = random_input(&mut rng);
         input.eta_m = Some(input.eta_c);
         let p = FurParams::new(&input).unwrap();
-        let model: FurBcsdf = FurBcsdf::new(p);
+        let model: FurBcsdf = FurBcsdf::unscattered(p);
         for _ in 0..100 {
             let a = random_angles(&mut rng);
             let edge = p.kappa() as f64 * bravais(p.eta_c() as f64, a.theta_r() as f64);
@@ -276,7 +277,8 @@ fn index_matched_medulla_is_cortex_far_field() {
     let mut worst = 0.0f64;
     for _ in 0..12 {
         let (with, without) = matched_pair(&mut rng);
-        let (m1, m0): (FurBcsdf, FurBcsdf) = (FurBcsdf::new(with), FurBcsdf::new(without));
+        let (m1, m0): (FurBcsdf, FurBcsdf) =
+            (FurBcsdf::unscattered(with), FurBcsdf::unscattered(without));
         let theta_r = rng.range_f32(-80.0, 80.0);
         let theta_i = rng.range_f32(-60.0, 60.0);
         let grid: Vec<Angles> = (0..48)

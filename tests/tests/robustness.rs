@@ -126,7 +126,7 @@ proptest! {
         ti in any_f32(), tr in any_f32(), phi in any_f32(), h in any_f32(),
         wi in any_vec(), wr in any_vec(), u in any_vec(),
     ) {
-        let model: FurBcsdf = FurBcsdf::new(FurParams::new(&input).expect("valid input"));
+        let model: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&input).expect("valid input"));
         // Angles: raw radians (rejected unless valid), degrees, and clamped into range.
         let half = core::f32::consts::FRAC_PI_2;
         let clamp = |x: f32| if x.is_finite() { x.clamp(-half, half) } else { 0.3 };
@@ -153,7 +153,7 @@ proptest! {
     fn invalid_directions_give_zero_or_valid_values(
         wi in any_vec(), wr in any_vec(), u in any_vec(), h in -1.0f32..=1.0,
     ) {
-        let model: FurBcsdf = FurBcsdf::new(FurParams::new(&presets::PRESETS[4].input).unwrap());
+        let model: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&presets::PRESETS[4].input).unwrap());
         let near = model.eval_near_dirs(wi, wr, u, h);
         assert_valid(&near, "eval_near_dirs");
         let non_finite = wi.iter().chain(&wr).chain(&u).any(|c| !c.is_finite());
@@ -172,7 +172,7 @@ proptest! {
         ti in any_f32(), tr in any_f32(), phi in any_f32(),
         wi in any_vec(), wr in any_vec(), u in any_vec(),
     ) {
-        let model: FurBcsdf = FurBcsdf::new(FurParams::new(&input).expect("valid input"));
+        let model: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&input).expect("valid input"));
         if let Ok(a) = Angles::new(ti, tr, phi) {
             assert_valid(&model.eval_far(&a), "eval_far");
         }

@@ -86,7 +86,7 @@ fn far_field_is_mirror_symmetric_in_phi() {
     let mut checked = 0;
     let mut nonzero = 0;
     for (name, p) in parameter_sets() {
-        let model: FurBcsdf = FurBcsdf::new(p);
+        let model: FurBcsdf = FurBcsdf::unscattered(p);
         for a in angle_samples(&mut rng, 40) {
             let m = a.mirrored();
             assert!(
@@ -120,7 +120,7 @@ fn near_field_is_symmetric_under_h_and_phi_mirror() {
     let (mut worst, mut pairs, mut bitwise) = (0.0f64, 0usize, 0usize);
     let mut worst_rel = 0.0f64;
     for (name, p) in parameter_sets() {
-        let model: FurBcsdf = FurBcsdf::new(p);
+        let model: FurBcsdf = FurBcsdf::unscattered(p);
         let angles = angle_samples(&mut rng, 60);
         let hs: Vec<f32> = (0..40)
             .map(|_| rng.range_f32(-1.0, 1.0))

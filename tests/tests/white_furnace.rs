@@ -45,7 +45,7 @@ struct Outcome {
 }
 
 fn check(label: &str, p: &FurParams, thetas_deg: &[f64]) -> Outcome {
-    let model: FurBcsdf = FurBcsdf::new(*p);
+    let model: FurBcsdf = FurBcsdf::unscattered(*p);
     let mut out = Outcome {
         worst: 0.0,
         max_rho: 0.0,
@@ -275,7 +275,7 @@ fn deficit_is_energy_beyond_trt() {
             g: 0.0,
         })
         .unwrap();
-        let model: FurBcsdf = FurBcsdf::new(p);
+        let model: FurBcsdf = FurBcsdf::unscattered(p);
         for t in [0.0f32, 30.0, 70.0] {
             let theta_r = t.to_radians();
             let rho = furnace(&model, theta_r, n_phi(&p))[0];

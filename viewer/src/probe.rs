@@ -76,14 +76,14 @@ pub fn parse_line(line: &str) -> Result<Option<Query>, String> {
 }
 
 /// The model for the chosen preset with the `--set` overrides applied.
-fn model(args: &ProbeArgs) -> Result<FurBcsdf, Error> {
+fn model(args: &ProbeArgs) -> Result<FurBcsdf<'static>, Error> {
     let list = catalog::load(&args.presets)?;
     let preset = catalog::find(&list, &args.preset)?;
     let mut input = preset.input;
     bake::apply_overrides(&mut input, &args.set).map_err(|e| Error::input(format!("--set {e}")))?;
     let params = FurParams::new(&input)
         .map_err(|e| Error::input(format!("preset `{}` with the overrides: {e}", preset.name)))?;
-    Ok(FurBcsdf::new(params))
+    Ok(FurBcsdf::unscattered(params))
 }
 
 /// `viewer probe`.

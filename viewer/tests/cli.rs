@@ -114,9 +114,9 @@ fn lobe_names() -> Vec<String> {
     Lobe::ALL.iter().map(|l| l.name().to_string()).collect()
 }
 
-fn model(preset: &str) -> FurBcsdf {
+fn model(preset: &str) -> FurBcsdf<'static> {
     let p = presets::find(preset).unwrap();
-    FurBcsdf::new(FurParams::new(&p.input).unwrap())
+    FurBcsdf::unscattered(FurParams::new(&p.input).unwrap())
 }
 
 /// The library's answer, for exact comparison (the model is deterministic f32 code with a
@@ -254,7 +254,7 @@ fn set_overrides_change_the_result() {
     input.pigment = Pigment::Absorption(Rgb([0.1, 0.2, 0.4]));
     input.kappa = 0.3;
     input.eta_m = Some(1.3);
-    let m: FurBcsdf = FurBcsdf::new(FurParams::new(&input).unwrap());
+    let m: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&input).unwrap());
     let a = Angles::from_degrees(20.0, -25.0, 180.0).unwrap();
     assert_eq!(got, expected(&m.eval_far(&a)));
 }
@@ -421,7 +421,7 @@ fn user_preset_file_is_listed_probed_and_checked() {
     args.extend(["--presets", &path]);
     let got = parse_probe(one_line(&ok(&args, None)));
     let list = bake::presets::load_file(&path).unwrap();
-    let m: FurBcsdf = FurBcsdf::new(FurParams::new(&list[0].input).unwrap());
+    let m: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&list[0].input).unwrap());
     let a = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
     assert_eq!(got, expected(&m.eval_far(&a)));
     // The built-ins are not in a user file.

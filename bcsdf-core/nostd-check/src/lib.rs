@@ -16,7 +16,7 @@ fn eval<M: Math>(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
     let Ok(params) = FurParams::new(&p.input) else {
         return -1.0;
     };
-    let model = FurBcsdf::<M>::new(params);
+    let model = FurBcsdf::<M>::unscattered(params);
     let Ok(angles) = Angles::new(ti, tr, phi) else {
         return -1.0;
     };

@@ -1,4 +1,5 @@
-//! Near- and far-field evaluation cost (RGB, all eight unscattered paths).
+//! Near- and far-field evaluation cost (RGB): the eight unscattered paths alone
+//! (`near_field/`, `far_field/`) and the full model with the scattered lobes (`*_full/`).
 //!
 //! Each iteration evaluates one query from a fixed, deterministic list spread over
 //! θ_i, θ_r ∈ ±80° and φ ∈ (−180°, 180°], so branch and cache behaviour is that of a renderer
@@ -59,6 +60,45 @@ fn bench(c: &mut Criterion) {
     }
 }
 
+/// The full model (unscattered + scattered lobes). Profiles at a small photon budget: the
+/// evaluation cost does not depend on how many photons made the tables.
+fn bench_full(c: &mut Criterion) {
+    use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
+    let qs = queries();
+    for name in ["yan-row-a", "yan-row-b", "yan-row-c", "air-medulla"] {
+        let params = FurParams::new(&presets::find(name).unwrap().input).unwrap();
+        let layout = ProfileLayout::for_params(&params, Resolution::DEFAULT);
+        let budget = PhotonBudget {
+            per_cn_cell: 2_000,
+            per_cm_row: 4_000,
+        };
+        let (mut cn, mut lbar, mut cm) = (
+            vec![0.0; layout.cn_len()],
+            vec![0.0; layout.cn_len()],
+            vec![0.0; layout.cm_len()],
+        );
+        generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).unwrap();
+        let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+        let model: FurBcsdf = FurBcsdf::new(params, profiles).unwrap();
+        let mut i = 0usize;
+        c.bench_function(&format!("near_field_full/{name}"), |b| {
+            b.iter(|| {
+                let (a, h) = &qs[i % qs.len()];
+                i += 1;
+                black_box(model.eval_near(black_box(a), black_box(*h)).total())
+            })
+        });
+        let mut i = 0usize;
+        c.bench_function(&format!("far_field_full/{name}"), |b| {
+            b.iter(|| {
+                let (a, _) = &qs[i % qs.len()];
+                i += 1;
+                black_box(model.eval_far(black_box(a)).total())
+            })
+        });
+    }
+}
+
 /// The same queries with the `FastMath` backend (`--features micromath`).
 #[cfg(feature = "micromath")]
 fn bench_fast(c: &mut Criterion) {
@@ -92,6 +132,6 @@ fn bench_fast(_: &mut Criterion) {}
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(30).warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(2));
-    targets = bench, bench_fast
+    targets = bench, bench_full, bench_fast
 }
 criterion_main!(benches);

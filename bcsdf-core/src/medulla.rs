@@ -544,6 +544,14 @@ pub enum Half {
     Front = 1,
 }
 
+/// A prepared C^N / ℓ̄ lookup at fixed σ_N and h_m ([`MedullaProfiles::n_row`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NRow {
+    offsets: [usize; 4],
+    weights: [f32; 4],
+    flip: bool,
+}
+
 /// Validated profiles over borrowed tables.
 #[derive(Clone, Copy, Debug)]
 pub struct MedullaProfiles<'a> {
@@ -601,43 +609,94 @@ impl<'a> MedullaProfiles<'a> {
         (self.cn, self.lbar, self.cm)
     }
 
-    /// Trilinear lookup of a `[σ][h][ψ]` table, circular in ψ, with the h → −h symmetry.
-    fn lookup_n(&self, table: &[f32], sigma_n: f32, h_m: f32, psi: f32) -> f32 {
+    /// Prepares C^N / ℓ̄ lookups at fixed σ_N and h_m: the four (σ, h) corner rows and their
+    /// bilinear weights, with the h → −h symmetry folded in.
+    pub fn n_row(&self, sigma_n: f32, h_m: f32) -> NRow {
         let r = self.layout.res;
-        let (h, psi) = if h_m < 0.0 { (-h_m, -psi) } else { (h_m, psi) };
         let sig_step = if r.n_sigma > 1 {
             (self.layout.sigma_n_max - self.layout.sigma_n_min) / (r.n_sigma - 1) as f32
         } else {
             0.0
         };
         let (ks, ws) = locate(sigma_n, self.layout.sigma_n_min, sig_step, r.n_sigma);
-        let (jh, wh) = locate(h, 0.0, 1.0 / r.n_h as f32, r.n_h);
-        // ψ bin centres at −π + (b + ½)·w; circular interpolation.
-        let w = TAU / r.n_psi as f32;
-        let u = (wrap_angle(psi) + PI) / w - 0.5;
-        let b0f = libm::floorf(u);
-        let wp = u - b0f;
-        let n = r.n_psi as isize;
-        let b0 = (((b0f as isize) % n) + n) % n;
-        let b1 = (b0 + 1) % n;
-        let at = |k: usize, j: usize, b: isize| -> f32 {
-            let k = k.min(r.n_sigma - 1);
-            let j = j.min(r.n_h - 1);
-            table[(k * r.n_h + j) * r.n_psi + b as usize]
-        };
-        let in_psi = |k: usize, j: usize| at(k, j, b0) * (1.0 - wp) + at(k, j, b1) * wp;
-        let in_h = |k: usize| in_psi(k, jh) * (1.0 - wh) + in_psi(k, jh + 1) * wh;
-        in_h(ks) * (1.0 - ws) + in_h(ks + 1) * ws
+        let (jh, wh) = locate(h_m.abs(), 0.0, 1.0 / r.n_h as f32, r.n_h);
+        let row = |k: usize, j: usize| (k.min(r.n_sigma - 1) * r.n_h + j.min(r.n_h - 1)) * r.n_psi;
+        NRow {
+            offsets: [
+                row(ks, jh),
+                row(ks, jh + 1),
+                row(ks + 1, jh),
+                row(ks + 1, jh + 1),
+            ],
+            weights: [
+                (1.0 - ws) * (1.0 - wh),
+                (1.0 - ws) * wh,
+                ws * (1.0 - wh),
+                ws * wh,
+            ],
+            flip: h_m < 0.0,
+        }
     }
 
-    /// C^N(ψ | h_m, σ_N, g): pdf over ψ of the rotation of scattered photons.
+    /// ψ interpolation position: the two neighbouring bin centres and the upper weight.
+    #[inline]
+    fn psi_position(&self, row: &NRow, psi: f32) -> (usize, usize, f32) {
+        let n_psi = self.layout.res.n_psi;
+        let psi = if row.flip { -psi } else { psi };
+        // ψ bin centres at −π + (b + ½)·w; circular interpolation between them.
+        let u = (wrap_angle(psi) + PI) * (n_psi as f32 / TAU) - 0.5;
+        let b0f = libm::floorf(u);
+        let wp = u - b0f;
+        let b0 = if b0f < 0.0 {
+            n_psi - 1
+        } else {
+            (b0f as usize).min(n_psi - 1)
+        };
+        let b1 = if b0 + 1 == n_psi { 0 } else { b0 + 1 };
+        (b0, b1, wp)
+    }
+
+    /// Interpolates a `[σ][h][ψ]` table along a prepared row at a ψ position.
+    #[inline]
+    fn at_position(table: &[f32], row: &NRow, (b0, b1, wp): (usize, usize, f32)) -> f32 {
+        let mut v = 0.0;
+        for (o, wt) in row.offsets.iter().zip(row.weights.iter()) {
+            v += wt * (table[o + b0] * (1.0 - wp) + table[o + b1] * wp);
+        }
+        v
+    }
+
+    /// C^N(ψ) along a prepared row (see [`MedullaProfiles::n_row`]).
+    #[inline]
+    pub fn cn_at(&self, row: &NRow, psi: f32) -> f32 {
+        Self::at_position(self.cn, row, self.psi_position(row, psi))
+    }
+
+    /// ℓ̄(ψ) along a prepared row.
+    #[inline]
+    pub fn mean_length_at(&self, row: &NRow, psi: f32) -> f32 {
+        Self::at_position(self.lbar, row, self.psi_position(row, psi))
+    }
+
+    /// (C^N(ψ), ℓ̄(ψ)) along a prepared row, sharing the interpolation position.
+    #[inline]
+    pub fn cn_and_mean_length_at(&self, row: &NRow, psi: f32) -> (f32, f32) {
+        let pos = self.psi_position(row, psi);
+        (
+            Self::at_position(self.cn, row, pos),
+            Self::at_position(self.lbar, row, pos),
+        )
+    }
+
+    /// C^N(ψ | h_m, σ_N, g): pdf over ψ of the rotation of scattered photons; trilinear,
+    /// circular in ψ, with C^N(ψ | −h_m) = C^N(−ψ | h_m).
     pub fn cn(&self, sigma_n: f32, h_m: f32, psi: f32) -> f32 {
-        self.lookup_n(self.cn, sigma_n, h_m, psi)
+        self.cn_at(&self.n_row(sigma_n, h_m), psi)
     }
 
     /// ℓ̄(ψ | h_m, σ_N, g): mean path length (medulla radii) of the scattered photons.
     pub fn mean_length(&self, sigma_n: f32, h_m: f32, psi: f32) -> f32 {
-        self.lookup_n(self.lbar, sigma_n, h_m, psi)
+        self.mean_length_at(&self.n_row(sigma_n, h_m), psi)
     }
 
     /// C^M_half(θ'_out | θ'_in, σ_M, g) (travel-direction angles), bilinear, with the

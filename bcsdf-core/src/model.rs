@@ -10,7 +10,9 @@ use crate::longitudinal::GroupLobes;
 use crate::math::{Libm, Math};
 use crate::medulla::{MedullaProfiles, ProfileError};
 use crate::params::FurParams;
-use crate::scattered::{azimuthal_at, scattered_paths, ScatteredLongitudinal, SCATTERED_COUNT};
+use crate::scattered::{
+    azimuthal_at, exit_transmittance, scattered_paths, ScatteredLongitudinal, SCATTERED_COUNT,
+};
 use crate::spectrum::Rgb;
 use crate::unscattered::{paths_at, Extinction};
 use core::marker::PhantomData;
@@ -152,7 +154,8 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             }
         }
         if let Some(s) = &self.scattering {
-            if let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, self.params.l()) {
+            let exit = exit_transmittance::<M>(&slice, &ext);
+            if let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, self.params.l(), exit) {
                 ns = azimuthal_at::<M>(&s.profiles, &sp, &slice, &ext, self.sigma_n(&slice), phi);
             }
         }

@@ -8,7 +8,7 @@
 use crate::fresnel;
 use crate::geometry::{Chord, MedullaEvent, ViewSlice};
 use crate::math::{asin_clamped, sqrt_pos, Math, PI};
-use crate::medulla::{Half, MedullaProfiles, MAX_N_IN};
+use crate::medulla::{Half, MedullaProfiles, NRow, MAX_N_IN};
 use crate::params::FurParams;
 use crate::spectrum::Rgb;
 use crate::unscattered::{cortex_leg, transmittance, Extinction};
@@ -37,12 +37,16 @@ pub struct ScatteredPaths {
 /// - A^s_TtrtT = (1−f)(1−f_m)·E_c·U·f_m·P·A'_tT, Φ^s = (c − a) + (μ − m) + (π + 2μ)
 /// - A^s_TttRttT = (1−f)(1−f_m)·E_c·U·(1−f_m)·E_c·f·E_c·(1−f_m)·P·A'_tT,
 ///   Φ^s = (c − a) + 3(μ − m) + (π + 2c)
+///
+/// `exit` is A'_tT = exp(−σ_ca·(1 − κ)/cos θ_tc), which depends only on θ_r
+/// ([`exit_transmittance`]).
 #[inline]
 pub fn scattered_paths<M: Math>(
     slice: &ViewSlice,
     chord: &Chord,
     ext: &Extinction,
     l: f32,
+    exit: Rgb,
 ) -> Option<ScatteredPaths> {
     let MedullaEvent::Enter {
         m,
@@ -58,7 +62,6 @@ pub fn scattered_paths<M: Math>(
     let fm = fresnel::medulla::<M>(cos_m, slice.eta_m_prime / slice.eta_c_prime);
     let ell_m = 2.0 * slice.kappa * cos_mu;
     let ec = transmittance::<M>(ext.cortex, cortex_leg(slice, chord, cos_m));
-    let exit = transmittance::<M>(ext.cortex, 1.0 - slice.kappa);
     let p = 1.0 - M::exp(-ext.medulla_scattering * ell_m);
     let u = M::exp(-ext.medulla * ell_m);
     let base = ec * exit * ((1.0 - f) * (1.0 - fm) * p);
@@ -78,6 +81,12 @@ pub fn scattered_paths<M: Math>(
     })
 }
 
+/// A'_tT = exp(−σ_ca·(1 − κ)/cos θ_tc): the radial exit through the cortex (report eq. 7–9).
+#[inline]
+pub fn exit_transmittance<M: Math>(slice: &ViewSlice, ext: &Extinction) -> Rgb {
+    transmittance::<M>(ext.cortex, 1.0 - slice.kappa)
+}
+
 /// N^s_p(h, φ) = A^s_p(h)·C^N(φ − π − Φ^s_p(h); h_m, σ_N, g)·exp(−σ_ma·κ·ℓ̄(ψ)/cos θ_tm)
 /// (report eq. 6, 10), for the three lobes. `sigma_n` = σ_ms·κ/cos θ_tm is the medulla's 2D
 /// optical radius; ℓ̄ is tabulated in medulla radii, hence the factor κ.
@@ -90,6 +99,20 @@ pub fn azimuthal_at<M: Math>(
     sigma_n: f32,
     phi: f32,
 ) -> [Rgb; SCATTERED_COUNT] {
+    let row = profiles.n_row(sigma_n, paths.h_m);
+    azimuthal_on_row::<M>(profiles, &row, paths, slice, ext, phi)
+}
+
+/// [`azimuthal_at`] with the C^N row already prepared (shared by ±φ in the far field).
+#[inline]
+pub fn azimuthal_on_row<M: Math>(
+    profiles: &MedullaProfiles<'_>,
+    row: &NRow,
+    paths: &ScatteredPaths,
+    slice: &ViewSlice,
+    ext: &Extinction,
+    phi: f32,
+) -> [Rgb; SCATTERED_COUNT] {
     let mut out = [Rgb::ZERO; SCATTERED_COUNT];
     let absorb = ext.medulla_absorption * slice.kappa;
     for (k, o) in out.iter_mut().enumerate() {
@@ -97,10 +120,12 @@ pub fn azimuthal_at<M: Math>(
             continue;
         }
         let psi = phi - PI - paths.rotation[k];
-        let mut v = profiles.cn(sigma_n, paths.h_m, psi);
-        if absorb > 0.0 {
-            v *= M::exp(-absorb * profiles.mean_length(sigma_n, paths.h_m, psi));
-        }
+        let v = if absorb > 0.0 {
+            let (c, ell) = profiles.cn_and_mean_length_at(row, psi);
+            c * M::exp(-absorb * ell)
+        } else {
+            profiles.cn_at(row, psi)
+        };
         *o = paths.attenuation[k] * v;
     }
     out
@@ -189,7 +214,7 @@ impl ScatteredLongitudinal {
     /// times that of the cuticle (incidence θ_i − α from outside, index η_c, layers l), for
     /// the radial exit of the report's simplification, in full 3D.
     #[inline]
-    pub fn exit_transmittance<M: Math>(&self, theta_i: f32) -> f32 {
+    pub fn fresnel_exit<M: Math>(&self, theta_i: f32) -> f32 {
         let e = theta_i - self.alpha;
         let s = M::sin(e) / self.eta_m;
         let cos_p = sqrt_pos::<M>((1.0 - s) * (1.0 + s));
@@ -211,7 +236,7 @@ impl ScatteredLongitudinal {
         let (theta_r_p, _) = self.refract::<M>(theta_r);
         let theta_in = -theta_r_p;
         let (theta_i_p, jac) = self.refract::<M>(theta_i);
-        let ft = self.exit_transmittance::<M>(theta_i);
+        let ft = self.fresnel_exit::<M>(theta_i);
         let w = (phi.abs() / PI).clamp(0.0, 1.0);
         let lobe = |half: Half| self.mu(half, theta_in) * profiles.cm(half, theta_i_p, theta_in);
         ft * jac * ((1.0 - w) * lobe(Half::Back) + w * lobe(Half::Front))

@@ -2,6 +2,7 @@
 //! math backends, so that the linker sees all of it.
 #![no_std]
 
+use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
 use bcsdf_core::{presets, Angles, FastMath, FurBcsdf, FurParams, Libm, Math};
 
 #[panic_handler]
@@ -38,4 +39,55 @@ pub extern "C" fn fur_eval_libm(preset: usize, ti: f32, tr: f32, phi: f32, h: f3
 #[no_mangle]
 pub extern "C" fn fur_eval_fast(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
     eval::<FastMath>(preset, ti, tr, phi, h)
+}
+
+/// Small profile tables, generated in caller (stack) memory, then the full model.
+const RES: Resolution = Resolution {
+    n_sigma: 2,
+    n_h: 4,
+    n_psi: 16,
+    n_in: 2,
+    n_out: 8,
+};
+
+fn eval_full<M: Math>(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
+    let Some(p) = presets::PRESETS.get(preset) else {
+        return -1.0;
+    };
+    let Ok(params) = FurParams::new(&p.input) else {
+        return -1.0;
+    };
+    let layout = ProfileLayout::for_params(&params, RES);
+    let mut cn = [0.0f32; 2 * 4 * 16];
+    let mut lbar = [0.0f32; 2 * 4 * 16];
+    let mut cm = [0.0f32; 2 * 2 * 8];
+    let budget = PhotonBudget {
+        per_cn_cell: 64,
+        per_cm_row: 64,
+    };
+    if generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).is_err() {
+        return -1.0;
+    }
+    let Ok(profiles) = MedullaProfiles::new(layout, &cn, &lbar, &cm) else {
+        return -1.0;
+    };
+    let Ok(model) = FurBcsdf::<M>::new(params, profiles) else {
+        return -1.0;
+    };
+    let Ok(angles) = Angles::new(ti, tr, phi) else {
+        return -1.0;
+    };
+    model.eval_far(&angles).total().0[0] + model.eval_near(&angles, h).total().0[1]
+}
+
+/// C entry point: the full model (profiles generated in place) with the libm backend.
+#[no_mangle]
+pub extern "C" fn fur_eval_full_libm(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
+    eval_full::<Libm>(preset, ti, tr, phi, h)
+}
+
+/// C entry point: the full model with the micromath backend.
+#[no_mangle]
+pub extern "C" fn fur_eval_full_fast(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
+    eval_full::<FastMath>(preset, ti, tr, phi, h)
 }

@@ -1,7 +1,9 @@
 //! # bake
 //!
-//! The `std` side of the fur BCSDF (`bcsdf-core` is `no_std`): reading preset files and
-//! applying `key=value` parameter overrides. The LUT baker binary arrives in a later issue.
+//! The `std` side of the fur BCSDF (`bcsdf-core` is `no_std`): reading preset files,
+//! applying `key=value` parameter overrides, and generating (in parallel) and caching the
+//! medulla profiles the full model needs ([`profiles`]). The LUT baker binary arrives in a
+//! later issue.
 //!
 //! ```
 //! let presets = bake::presets::builtin().unwrap();
@@ -14,6 +16,7 @@
 
 pub mod overrides;
 pub mod presets;
+pub mod profiles;
 
 pub use overrides::{apply_overrides, Override, OverrideError, OverrideErrorKind, OverrideValue};
 pub use presets::{NamedPreset, PresetError};

@@ -148,7 +148,7 @@ pub struct ScatteredLongitudinal {
     /// θ'_in nodes: −θ_max … θ_max, `2·n_in − 1` of them.
     nodes: usize,
     theta_in_max: f32,
-    /// μ per half and node.
+    /// 1/μ (the normalisation integral) per half and node.
     mu: [[f32; MU_NODES]; 2],
 }
 
@@ -178,7 +178,9 @@ impl ScatteredLongitudinal {
                     let (theta_p, jac) = s.refract::<M>(theta_i);
                     integral += profiles.cm(half, theta_p, theta_in) * jac * step;
                 }
-                s.mu[half as usize][j] = if integral > 0.0 { 1.0 / integral } else { 0.0 };
+                // Stored as the integral: C^M is linear in the θ'_in weight between nodes, so
+                // interpolating the integral and inverting normalises exactly in between.
+                s.mu[half as usize][j] = integral;
             }
         }
         s
@@ -199,7 +201,8 @@ impl ScatteredLongitudinal {
         (asin_clamped::<M>(s), M::cos(e).abs() / (self.eta_m * cos_p))
     }
 
-    /// μ_x at θ'_in, linear between nodes.
+    /// μ_x at θ'_in: the inverse of the normalisation integral interpolated linearly between
+    /// nodes (exact, because the C^M lookup is linear in θ'_in there).
     fn mu(&self, half: Half, theta_in: f32) -> f32 {
         let half_nodes = (self.nodes - 1) / 2;
         let u = ((theta_in / self.theta_in_max + 1.0) * half_nodes as f32)
@@ -207,7 +210,12 @@ impl ScatteredLongitudinal {
         let i = (u as usize).min(self.nodes - 2);
         let w = u - i as f32;
         let row = &self.mu[half as usize];
-        row[i] * (1.0 - w) + row[i + 1] * w
+        let integral = row[i] * (1.0 - w) + row[i + 1] * w;
+        if integral > 0.0 {
+            1.0 / integral
+        } else {
+            0.0
+        }
     }
 
     /// F_t(θ_i): Fresnel transmittance leaving the medulla (incidence θ'_i, index η_c/η_m)

@@ -6,7 +6,10 @@
 //!   ±π/2), with ⟨A_p⟩_h = ½∫A_p(h)dh integrated over h from the brute-force ray tracer
 //!   ([`crate::tracer`]) and the M mass from erf (written here).
 //!
-//! Nothing here calls the core's geometry, Fresnel, Gaussian or quadrature code.
+//! Nothing here calls the core's geometry, Fresnel, Gaussian or quadrature code. For the full
+//! model (scattered lobes), [`furnace_on`] with [`theta_i_nodes_with`] breaks the θ_i panels
+//! at the kinks of M^s, and `crate::profiles_ref::predicted_rho_full` adds the scattered energy
+//! to the prediction.
 
 use crate::quadrature::gauss_legendre;
 use crate::tracer::{bravais, cos_refracted, cuticle, trace, CrossSection, PATHS};
@@ -278,6 +281,18 @@ pub fn energy_beyond_trt(eta_c: f64, layers: f64, theta_r: f64, panels: usize) -
 /// broken at the poles' clamp edges (cos²θ_i = MIN_COS2), one β_M apart around each group's
 /// peak θ_i = α_p − θ_r out to ±8β_M, and at most 0.1 rad wide elsewhere.
 pub fn theta_i_nodes(theta_r: f64, shapes: &[GroupShape; 3]) -> Vec<(f64, f64)> {
+    theta_i_nodes_with(theta_r, shapes, &[], 0.1)
+}
+
+/// [`theta_i_nodes`] with further break points `extra` (those outside (−π/2, π/2) are
+/// ignored) and panels at most `max_width` wide: for the full model, whose M^s has kinks where
+/// the tabulated C^M is piecewise linear (`crate::profiles_ref::m_s_kinks`).
+pub fn theta_i_nodes_with(
+    theta_r: f64,
+    shapes: &[GroupShape; 3],
+    extra: &[f64],
+    max_width: f64,
+) -> Vec<(f64, f64)> {
     let tc = MIN_COS2.sqrt().acos();
     let mut br = vec![-FRAC_PI_2, -tc, tc, FRAC_PI_2];
     for g in shapes {
@@ -286,13 +301,14 @@ pub fn theta_i_nodes(theta_r: f64, shapes: &[GroupShape; 3]) -> Vec<(f64, f64)> 
             br.push(c + k as f64 * g.beta_m);
         }
     }
+    br.extend(extra.iter().copied());
     br.retain(|x| x.abs() <= FRAC_PI_2);
     br.sort_by(|a, b| a.partial_cmp(b).unwrap());
     br.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
     let gl = gauss_legendre(4);
     let mut nodes = Vec::new();
     for w in br.windows(2) {
-        let n = ((w[1] - w[0]) / 0.1).ceil().max(1.0) as usize;
+        let n = ((w[1] - w[0]) / max_width).ceil().max(1.0) as usize;
         let step = (w[1] - w[0]) / n as f64;
         for j in 0..n {
             let a = w[0] + step * j as f64;
@@ -310,9 +326,19 @@ pub fn theta_i_nodes(theta_r: f64, shapes: &[GroupShape; 3]) -> Vec<(f64, f64)> 
 pub fn furnace<M: Math>(model: &FurBcsdf<M>, theta_r: f32, n_phi: usize) -> [f64; 3] {
     let shapes = group_shapes_of(model.params());
     let nodes = theta_i_nodes(theta_r as f64, &shapes);
+    furnace_on(model, theta_r, n_phi, &nodes)
+}
+
+/// [`furnace`] on given θ_i nodes and weights (e.g. [`theta_i_nodes_with`]).
+pub fn furnace_on<M: Math>(
+    model: &FurBcsdf<M>,
+    theta_r: f32,
+    n_phi: usize,
+    nodes: &[(f64, f64)],
+) -> [f64; 3] {
     let dphi = TAU / n_phi as f64;
     let mut rho = [0.0; 3];
-    for &(ti, wi) in &nodes {
+    for &(ti, wi) in nodes {
         let c2 = ti.cos().powi(2);
         for j in 0..n_phi {
             let phi = -PI + dphi * (j as f64 + 0.5);

@@ -9,8 +9,7 @@
 
 use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
 use bcsdf_core::{
-    presets, FurBcsdf, FurParams, FurParamsInput, Lobe, Pigment, Rgb, LOBE_COUNT,
-    UNSCATTERED_COUNT,
+    presets, FurBcsdf, FurParams, FurParamsInput, Lobe, Pigment, Rgb, LOBE_COUNT, UNSCATTERED_COUNT,
 };
 use fur_tests::quadrature::integrate_smoothstep_into;
 
@@ -167,9 +166,7 @@ fn far_field_matches_fine_reference_for_random_parameters() {
 /// Worst relative error of the summed scattered lobes' far field, against the same brute-force
 /// integral of the near field (same metric; peak = largest scattered total over φ).
 fn worst_scattered_error(model: &FurBcsdf, thetas_deg: &[f32], n_phi: usize) -> f64 {
-    let scattered = |v: &[f64]| -> f64 {
-        (UNSCATTERED_COUNT..LOBE_COUNT).map(|l| v[3 * l]).sum()
-    };
+    let scattered = |v: &[f64]| -> f64 { (UNSCATTERED_COUNT..LOBE_COUNT).map(|l| v[3 * l]).sum() };
     let mut worst = 0.0f64;
     for &tr_deg in thetas_deg {
         let tr = tr_deg.to_radians();
@@ -206,7 +203,9 @@ fn scattered_far_field_matches_fine_reference() {
         generate(&layout, &budget, 3, &mut cn, &mut lbar, &mut cm).unwrap();
         let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
         let model: FurBcsdf = FurBcsdf::new(params, profiles).unwrap();
-        assert!(Lobe::ALL[UNSCATTERED_COUNT..].iter().all(|l| l.is_scattered()));
+        assert!(Lobe::ALL[UNSCATTERED_COUNT..]
+            .iter()
+            .all(|l| l.is_scattered()));
         let worst = worst_scattered_error(&model, &[-65.0, -20.0, 10.0, 60.0], 16);
         eprintln!("{name}: scattered far field, worst relative error {worst:.2e}");
         assert!(worst <= SCATTERED_TOLERANCE, "{name}: {worst:.3e}");

@@ -12,6 +12,7 @@ Examples:
       --theta-i 10 --theta-r -10 --phi 180
   printf '30 -20 45\\n30 -20 45 0.3\\n' | viewer probe --preset yan-row-a --stdin
   viewer probe --presets my-presets.toml --preset my-fur --theta-i 0 --theta-r 0 --phi 0
+  viewer probe --preset yan-row-b --no-cache --photons-scale 0.1 --theta-i 30 --theta-r -20 --phi 45
 
 Bad input (unknown preset or key, out-of-range value, malformed angle or stdin line) prints
 one line starting with `error:` on stderr and exits with code 2.";
@@ -19,7 +20,11 @@ one line starting with `error:` on stderr and exits with code 2.";
 const PROBE_EXAMPLES: &str = "\
 Output: one JSON line per query,
   {\"total\":[r,g,b],\"lobes\":{\"R\":[r,g,b],\"TT\":[r,g,b],...}}
-with the lobes in the model's order; numbers print with enough digits to round-trip f32.
+with the lobes in the model's order (the eight unscattered paths, then the medulla-scattered
+TttT_s, TtrtT_s, TttRttT_s); numbers print with enough digits to round-trip f32.
+
+The scattered lobes need medulla profiles, generated once per parameter set (7-13 s on two
+cores) and cached (see --cache-dir); presets with sigma_ms = 0 or kappa = 0 need none.
 
 Examples:
   viewer probe --preset yan-row-a --theta-i 30 --theta-r -20 --phi 45          (far field)
@@ -28,6 +33,8 @@ Examples:
       --theta-i 20 --theta-r -15 --phi 170
   printf '# theta_i theta_r phi [h]\\n30 -20 45\\n30 -20 45 0.3\\n' \\
       | viewer probe --preset yan-row-a --stdin
+  viewer probe --preset yan-row-a --cache-dir /tmp/fur-cache --seed 2 \\
+      --theta-i 30 --theta-r -20 --phi 45
 
 Bad input prints one line starting with `error:` on stderr and exits with code 2; with
 --stdin the message starts `error: line N:` and the lines before it have been printed.";
@@ -124,4 +131,38 @@ pub struct ProbeArgs {
     /// starting with # are skipped. Prints one JSON line per query, in order.
     #[arg(long)]
     pub stdin: bool,
+
+    #[command(flatten)]
+    pub profiles: ProfileArgs,
+}
+
+/// Where the medulla profiles of the scattered lobes come from (only presets with
+/// sigma_ms > 0 and kappa > 0 need them).
+#[derive(Debug, Args)]
+#[command(next_help_heading = "Medulla profiles")]
+pub struct ProfileArgs {
+    /// Cache the generated medulla profiles in DIR (default: $FUR_BCSDF_CACHE, else
+    /// ${XDG_CACHE_HOME:-$HOME/.cache}/fur-bcsdf; no cache if none is set). A stale or
+    /// corrupt cache file is regenerated and rewritten, with a one-line note on stderr; an
+    /// unwritable directory is an error (exit code 1).
+    #[arg(long, value_name = "DIR", conflicts_with = "no_cache")]
+    pub cache_dir: Option<PathBuf>,
+
+    /// Generate the profiles without reading or writing any cache.
+    #[arg(long)]
+    pub no_cache: bool,
+
+    /// Seed of the profile generator (the same seed always gives the same bits).
+    #[arg(long, value_name = "N", default_value_t = bake::profiles::DEFAULT_SEED)]
+    pub seed: u64,
+
+    /// Multiply the photons simulated per profile cell by F (1: noise below 1 % RMS;
+    /// smaller is faster and noisier).
+    #[arg(long, value_name = "F", default_value_t = 1.0)]
+    pub photons_scale: f64,
+
+    /// Threads generating the profiles (default: one per core). The profiles are the same
+    /// bits for any count.
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
 }

@@ -1,4 +1,5 @@
-//! Errors and exit codes: bad input exits 2 (like clap's usage errors), I/O failures 1.
+//! Errors and exit codes: bad input exits 2 (like clap's usage errors), I/O and other
+//! failures 1.
 
 use std::fmt;
 use std::io::{self, Write};
@@ -11,6 +12,9 @@ pub enum Error {
     Input(String),
     /// Reading or writing failed: exit code 1 (a closed stdout ends the run quietly).
     Io(io::Error),
+    /// Anything else that is not the input's fault (e.g. an unwritable profile cache
+    /// directory): exit code 1.
+    Failure(String),
 }
 
 impl Error {
@@ -26,6 +30,7 @@ impl Error {
             // `viewer probe --stdin | head`: the reader has gone, nothing left to say.
             Error::Io(e) if e.kind() == io::ErrorKind::BrokenPipe => return ExitCode::SUCCESS,
             Error::Io(e) => (format!("I/O error: {e}"), 1),
+            Error::Failure(m) => (m, 1),
         };
         let _ = writeln!(io::stderr().lock(), "error: {message}");
         ExitCode::from(code)

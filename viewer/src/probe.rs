@@ -1,11 +1,12 @@
 //! `viewer probe`: one query from the flags, or many from stdin.
 
 use crate::catalog;
-use crate::cli::ProbeArgs;
+use crate::cli::{ProbeArgs, ProfileArgs};
 use crate::error::Error;
 use crate::json::write_lobes;
-use bcsdf_core::{Angles, FurBcsdf, FurParams, Lobes};
-use std::io::{self, BufRead, BufWriter, Write};
+use bake::profiles::{self, CacheOutcome, OwnedModel, ProfileKey, ProfileOptions};
+use bcsdf_core::{Angles, FurBcsdf, FurParams, Lobes, PhotonBudget, ProfileLayout, Resolution};
+use std::io::{self, BufRead, BufWriter, IsTerminal, Write};
 
 /// One validated query: the angles and, for the near field, the offset h.
 #[derive(Clone, Copy, Debug)]
@@ -75,20 +76,77 @@ pub fn parse_line(line: &str) -> Result<Option<Query>, String> {
     Query::new(values[0], values[1], values[2], h).map(Some)
 }
 
-/// The model for the chosen preset with the `--set` overrides applied.
-fn model(args: &ProbeArgs) -> Result<FurBcsdf<'static>, Error> {
+/// The profile options `args` select: the cache directory (`--cache-dir`, else the default
+/// one, none with `--no-cache`), the seed, the scaled photon budget and the thread count.
+pub fn profile_options(args: &ProfileArgs) -> Result<ProfileOptions, Error> {
+    let budget =
+        profiles::scale_budget(PhotonBudget::DEFAULT, args.photons_scale).ok_or_else(|| {
+            Error::input(format!(
+                "--photons-scale {} must be a positive finite number",
+                args.photons_scale
+            ))
+        })?;
+    let cache_dir = if args.no_cache {
+        None
+    } else {
+        args.cache_dir.clone().or_else(profiles::default_cache_dir)
+    };
+    Ok(ProfileOptions {
+        res: Resolution::DEFAULT,
+        budget,
+        seed: args.seed,
+        cache_dir,
+        threads: args.threads,
+    })
+}
+
+/// The model for the chosen preset with the `--set` overrides applied: the full model, its
+/// medulla profiles from the cache or generated. A rejected (stale or corrupt) cache file is
+/// reported as one `note:` line on stderr.
+fn model(args: &ProbeArgs) -> Result<OwnedModel, Error> {
     let list = catalog::load(&args.presets)?;
     let preset = catalog::find(&list, &args.preset)?;
     let mut input = preset.input;
     bake::apply_overrides(&mut input, &args.set).map_err(|e| Error::input(format!("--set {e}")))?;
     let params = FurParams::new(&input)
         .map_err(|e| Error::input(format!("preset `{}` with the overrides: {e}", preset.name)))?;
-    Ok(FurBcsdf::unscattered(params))
+    let opts = profile_options(&args.profiles)?;
+    announce_generation(&params, &opts);
+    let (model, outcome) =
+        profiles::build_model(params, &opts).map_err(|e| Error::Failure(e.to_string()))?;
+    if let Some(note) = outcome.as_ref().and_then(CacheOutcome::note) {
+        let _ = writeln!(io::stderr().lock(), "note: {note}");
+    }
+    Ok(model)
+}
+
+/// On a terminal, says that the profiles are about to be generated (it takes seconds) when
+/// the parameters need them and the cache holds no file for them. Pipes and scripts get
+/// nothing: stderr stays quiet unless a cache file is rejected.
+fn announce_generation(params: &FurParams, opts: &ProfileOptions) {
+    if !profiles::needs_profiles(params) || !io::stderr().is_terminal() {
+        return;
+    }
+    let key = ProfileKey {
+        layout: ProfileLayout::for_params(params, opts.res),
+        budget: opts.budget,
+        seed: opts.seed,
+    };
+    let where_to = match &opts.cache_dir {
+        Some(dir) if dir.join(key.file_name()).is_file() => return,
+        Some(dir) => format!("cached in {}", dir.display()),
+        None => "not cached".to_string(),
+    };
+    let _ = writeln!(
+        io::stderr().lock(),
+        "note: generating the medulla profiles for these parameters ({where_to})"
+    );
 }
 
 /// `viewer probe`.
 pub fn run(args: &ProbeArgs) -> Result<(), Error> {
-    let model = model(args)?;
+    let owned = model(args)?;
+    let model = owned.model();
     let mut out = BufWriter::new(io::stdout().lock());
     if args.stdin {
         return run_stdin(&model, &mut io::stdin().lock(), &mut out);

@@ -1,21 +1,66 @@
 //! The `viewer` binary end to end: JSON output, far/near switching, `--set`, `--stdin`,
-//! `viewer presets`, and one-line `error:` messages with exit code 2 for bad input.
+//! `viewer presets`, one-line `error:` messages with exit code 2 for bad input, and the
+//! medulla profile cache (`--cache-dir`, `--no-cache`, `--seed`, `--photons-scale`, the
+//! default directory, stale and corrupt files).
 //!
 //! Cargo builds the binary for this test (`CARGO_BIN_EXE_viewer`), so it is never stale.
+//! Every probe runs with a small photon budget (`--photons-scale`, added by [`viewer`]) and
+//! with `FUR_BCSDF_CACHE` pointing at a temporary directory, so the tests stay fast and never
+//! touch the user's cache.
 
-use bcsdf_core::{presets, Angles, FurBcsdf, FurParams, Lobe, Lobes, Pigment, Rgb};
+use bake::profiles::{self, OwnedModel, ProfileOptions};
+use bcsdf_core::{presets, Angles, FurParams, Lobe, Lobes, PhotonBudget, Pigment, Rgb};
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
+use std::sync::OnceLock;
+
+/// The photon scale every probe of these tests runs with (2 000 photons per C^N cell).
+const SCALE: &str = "0.01";
 
 /// Path of the `viewer` binary Cargo built for this test.
 fn viewer_path() -> &'static Path {
     Path::new(env!("CARGO_BIN_EXE_viewer"))
 }
 
-fn viewer(args: &[&str], stdin: Option<&str>) -> Output {
-    let mut child = Command::new(viewer_path())
-        .args(args)
+/// The profile cache shared by the tests that do not set their own: a fresh directory under
+/// Cargo's per-target temporary directory.
+fn shared_cache() -> &'static Path {
+    static DIR: OnceLock<tempfile::TempDir> = OnceLock::new();
+    DIR.get_or_init(|| {
+        tempfile::Builder::new()
+            .prefix("viewer-cli-cache-")
+            .tempdir_in(env!("CARGO_TARGET_TMPDIR"))
+            .unwrap()
+    })
+    .path()
+}
+
+/// A fresh temporary directory (removed when dropped).
+fn temp_dir() -> tempfile::TempDir {
+    tempfile::Builder::new()
+        .prefix("viewer-cli-")
+        .tempdir_in(env!("CARGO_TARGET_TMPDIR"))
+        .unwrap()
+}
+
+/// Runs the viewer. `probe` commands get `--photons-scale SCALE`; the environment has
+/// `FUR_BCSDF_CACHE` = [`shared_cache`] unless `env` says otherwise (`None` removes a
+/// variable).
+fn viewer_env(args: &[&str], stdin: Option<&str>, env: &[(&str, Option<&Path>)]) -> Output {
+    let mut cmd = Command::new(viewer_path());
+    cmd.args(args);
+    if args.first() == Some(&"probe") && !args.contains(&"--photons-scale") {
+        cmd.args(["--photons-scale", SCALE]);
+    }
+    cmd.env("FUR_BCSDF_CACHE", shared_cache());
+    for (name, value) in env {
+        match value {
+            Some(v) => cmd.env(name, v),
+            None => cmd.env_remove(name),
+        };
+    }
+    let mut child = cmd
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -27,6 +72,10 @@ fn viewer(args: &[&str], stdin: Option<&str>) -> Output {
     }
     drop(pipe);
     child.wait_with_output().unwrap()
+}
+
+fn viewer(args: &[&str], stdin: Option<&str>) -> Output {
+    viewer_env(args, stdin, &[])
 }
 
 fn stdout(o: &Output) -> String {
@@ -114,9 +163,25 @@ fn lobe_names() -> Vec<String> {
     Lobe::ALL.iter().map(|l| l.name().to_string()).collect()
 }
 
-fn model(preset: &str) -> FurBcsdf<'static> {
+/// The options the viewer uses under [`viewer`]: default resolution and seed, the photon
+/// budget scaled by [`SCALE`]; no cache (the library generates its own copy, so the binary's
+/// cached profiles are checked against an independent generation).
+fn options(seed: u64) -> ProfileOptions {
+    ProfileOptions {
+        budget: profiles::scale_budget(PhotonBudget::DEFAULT, SCALE.parse().unwrap()).unwrap(),
+        seed,
+        ..ProfileOptions::default()
+    }
+}
+
+/// The full model for `params`, built like the viewer builds it.
+fn build(params: FurParams, seed: u64) -> OwnedModel {
+    profiles::build_model(params, &options(seed)).unwrap().0
+}
+
+fn model(preset: &str) -> OwnedModel {
     let p = presets::find(preset).unwrap();
-    FurBcsdf::unscattered(FurParams::new(&p.input).unwrap())
+    build(FurParams::new(&p.input).unwrap(), 1)
 }
 
 /// The library's answer, for exact comparison (the model is deterministic f32 code with a
@@ -155,6 +220,7 @@ fn one_line(out: &str) -> &str {
 #[test]
 fn probe_prints_json_with_every_lobe_and_total_is_their_sum() {
     let mut multi_lobe = 0;
+    let mut lit_scattered = Vec::new();
     for preset in presets::PRESETS.iter().map(|p| p.name) {
         for angles in [
             ["30", "-20", "45"],
@@ -177,9 +243,17 @@ fn probe_prints_json_with_every_lobe_and_total_is_their_sum() {
             if p.lobes.iter().filter(|(_, v)| v[0] > 0.0).count() >= 3 {
                 multi_lobe += 1;
             }
+            let scattered = p.lobes[bcsdf_core::UNSCATTERED_COUNT..]
+                .iter()
+                .any(|(_, v)| v[0] > 0.0);
+            if scattered {
+                lit_scattered.push(preset);
+            }
             // And the numbers are the library's, bit for bit (round-trip printing).
             let a: Vec<f32> = angles.iter().map(|s| s.parse().unwrap()).collect();
-            let lib = model(preset).eval_far(&Angles::from_degrees(a[0], a[1], a[2]).unwrap());
+            let lib = model(preset)
+                .model()
+                .eval_far(&Angles::from_degrees(a[0], a[1], a[2]).unwrap());
             assert_eq!(p, expected(&lib), "{preset} {angles:?}");
         }
     }
@@ -187,6 +261,15 @@ fn probe_prints_json_with_every_lobe_and_total_is_their_sum() {
         multi_lobe > 0,
         "no query had several non-zero lobes: the sum check is vacuous"
     );
+    // Every preset that scatters in the medulla shows it in at least one query; the one that
+    // does not (human-hair: kappa = 0) never does.
+    for preset in ["yan-row-a", "yan-row-b", "yan-row-c", "air-medulla"] {
+        assert!(
+            lit_scattered.contains(&preset),
+            "{preset}: {lit_scattered:?}"
+        );
+    }
+    assert!(!lit_scattered.contains(&"human-hair"));
 }
 
 #[test]
@@ -195,7 +278,8 @@ fn h_switches_from_far_to_near_field() {
     let args = probe_args("air-medulla", &angles);
     let far = parse_probe(one_line(&ok(&args, None)));
     let a = Angles::from_degrees(10.0, -10.0, 30.0).unwrap();
-    let m = model("air-medulla");
+    let owned = model("air-medulla");
+    let m = owned.model();
     assert_eq!(far, expected(&m.eval_far(&a)));
     for h in ["0.2", "-0.7", "1", "-1", "0"] {
         let mut near_args = args.clone();
@@ -248,15 +332,21 @@ fn set_overrides_change_the_result() {
         "--set",
         "kappa=0.3",
         "--set=eta_m=1.3",
+        "--set",
+        "sigma_ms=1.5",
     ]);
     let got = parse_probe(one_line(&ok(&args, None)));
     let mut input = presets::find("human-hair").unwrap().input;
     input.pigment = Pigment::Absorption(Rgb([0.1, 0.2, 0.4]));
     input.kappa = 0.3;
     input.eta_m = Some(1.3);
-    let m: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&input).unwrap());
+    input.sigma_ms = 1.5;
+    let m = build(FurParams::new(&input).unwrap(), 1);
+    assert!(m.profiles().is_some(), "kappa and sigma_ms > 0 scatter");
+    let ts = got.lobes.iter().find(|(n, _)| n == "TttT_s").unwrap().1;
+    assert!(ts[0] > 0.0, "the scattered lobe is lit here: {got:?}");
     let a = Angles::from_degrees(20.0, -25.0, 180.0).unwrap();
-    assert_eq!(got, expected(&m.eval_far(&a)));
+    assert_eq!(got, expected(&m.model().eval_far(&a)));
 }
 
 #[test]
@@ -421,9 +511,9 @@ fn user_preset_file_is_listed_probed_and_checked() {
     args.extend(["--presets", &path]);
     let got = parse_probe(one_line(&ok(&args, None)));
     let list = bake::presets::load_file(&path).unwrap();
-    let m: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&list[0].input).unwrap());
+    let m = build(FurParams::new(&list[0].input).unwrap(), 1);
     let a = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
-    assert_eq!(got, expected(&m.eval_far(&a)));
+    assert_eq!(got, expected(&m.model().eval_far(&a)));
     // The built-ins are not in a user file.
     let mut args = probe_args("yan-row-a", &["30", "-20", "45"]);
     args.extend(["--presets", &path]);
@@ -458,7 +548,238 @@ fn help_shows_usage_and_examples() {
         "--phi",
         "--h",
         "--stdin",
+        "--cache-dir",
+        "--no-cache",
+        "--seed",
+        "--photons-scale",
+        "--threads",
+        "FUR_BCSDF_CACHE",
     ] {
         assert!(probe.contains(flag), "probe --help lacks {flag}");
     }
+}
+
+/// The cache files in `dir` (sorted).
+fn cache_files(dir: &Path) -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = match std::fs::read_dir(dir) {
+        Ok(rd) => rd.map(|e| e.unwrap().path()).collect(),
+        Err(_) => Vec::new(),
+    };
+    files.sort();
+    files
+}
+
+fn lobe<'a>(p: &'a Probe, name: &str) -> &'a [f32; 3] {
+    &p.lobes.iter().find(|(n, _)| n == name).unwrap().1
+}
+
+#[test]
+fn profiles_are_cached_per_parameter_set_and_reused() {
+    let dir = temp_dir();
+    let d = dir.path().to_str().unwrap();
+    let angles = ["30", "-20", "45"];
+    let mut args = probe_args("yan-row-a", &angles);
+    args.extend(["--cache-dir", d]);
+    let first = ok(&args, None);
+    let p = parse_probe(one_line(&first));
+    assert!(lobe(&p, "TttT_s")[0] > 0.0, "{p:?}");
+    let files = cache_files(dir.path());
+    assert_eq!(files.len(), 1, "{files:?}");
+    let name = files[0].file_name().unwrap().to_str().unwrap();
+    assert!(
+        name.starts_with("medulla-") && name.ends_with(".furprof"),
+        "{name}"
+    );
+    let bytes = std::fs::read(&files[0]).unwrap();
+    // A hit: same answer, file untouched, nothing on stderr.
+    assert_eq!(ok(&args, None), first);
+    assert_eq!(std::fs::read(&files[0]).unwrap(), bytes);
+    // Another parameter set, or another seed, gets its own file.
+    let mut other = args.clone();
+    other.extend(["--set", "g=0.5"]);
+    ok(&other, None);
+    let mut seeded = args.clone();
+    seeded.extend(["--seed", "2"]);
+    ok(&seeded, None);
+    assert_eq!(cache_files(dir.path()).len(), 3);
+    assert_eq!(std::fs::read(&files[0]).unwrap(), bytes);
+    // A preset that needs no profiles (kappa = 0) writes nothing.
+    let hair = temp_dir();
+    let mut args = probe_args("human-hair", &angles);
+    args.extend(["--cache-dir", hair.path().to_str().unwrap()]);
+    ok(&args, None);
+    assert!(cache_files(hair.path()).is_empty());
+}
+
+#[test]
+fn stale_or_corrupt_cache_is_noted_regenerated_and_rewritten() {
+    let dir = temp_dir();
+    let mut args = probe_args("air-medulla", &["10", "-10", "30"]);
+    args.extend(["--cache-dir", dir.path().to_str().unwrap()]);
+    let good_out = ok(&args, None);
+    let file = cache_files(dir.path()).pop().unwrap();
+    let good = std::fs::read(&file).unwrap();
+    let mut flipped = good.clone();
+    flipped[200] ^= 0x10;
+    let mut stale = good.clone();
+    stale[12] = stale[12].wrapping_add(1); // generator version, with a valid checksum
+    let body = stale.len() - 8;
+    let sum = profiles::fnv1a64(&stale[..body]);
+    stale[body..].copy_from_slice(&sum.to_le_bytes());
+    let cases: [(&str, Vec<u8>); 4] = [
+        ("truncated", good[..good.len() / 2].to_vec()),
+        ("checksum", flipped),
+        ("generator version", stale),
+        ("bad magic", b"not a cache".to_vec()),
+    ];
+    for (needle, bytes) in cases {
+        std::fs::write(&file, &bytes).unwrap();
+        let o = viewer(&args, None);
+        assert!(o.status.success(), "{needle}: {}", stderr(&o));
+        assert_eq!(
+            stdout(&o),
+            good_out,
+            "{needle}: stdout stays the pure JSON answer"
+        );
+        let err = stderr(&o);
+        assert_eq!(err.lines().count(), 1, "{needle}: one note line: {err:?}");
+        assert!(err.starts_with("note: "), "{err:?}");
+        for want in [needle, "regenerated", file.to_str().unwrap()] {
+            assert!(err.contains(want), "{err:?} should contain {want:?}");
+        }
+        assert_eq!(
+            std::fs::read(&file).unwrap(),
+            good,
+            "{needle}: the good file is rewritten"
+        );
+        // And it is used quietly from then on.
+        assert_eq!(ok(&args, None), good_out);
+    }
+    assert_eq!(
+        cache_files(dir.path()),
+        vec![file],
+        "no stray temporary files"
+    );
+}
+
+#[test]
+fn no_cache_env_var_and_default_directories() {
+    let args = probe_args("yan-row-c", &["20", "-25", "180"]);
+    let reference = ok(&args, None);
+
+    // --no-cache: same bits, nothing written anywhere.
+    let env_dir = temp_dir();
+    let mut no_cache = args.clone();
+    no_cache.push("--no-cache");
+    let o = viewer_env(
+        &no_cache,
+        None,
+        &[("FUR_BCSDF_CACHE", Some(env_dir.path()))],
+    );
+    assert!(o.status.success() && o.stderr.is_empty(), "{}", stderr(&o));
+    assert_eq!(stdout(&o), reference);
+    assert!(cache_files(env_dir.path()).is_empty());
+
+    // $FUR_BCSDF_CACHE.
+    let o = viewer_env(&args, None, &[("FUR_BCSDF_CACHE", Some(env_dir.path()))]);
+    assert!(o.status.success() && o.stderr.is_empty(), "{}", stderr(&o));
+    assert_eq!(stdout(&o), reference);
+    assert_eq!(cache_files(env_dir.path()).len(), 1);
+
+    // --cache-dir wins over the variable.
+    let flag_dir = temp_dir();
+    let mut flagged = args.clone();
+    flagged.extend(["--cache-dir", flag_dir.path().to_str().unwrap()]);
+    let o = viewer_env(&flagged, None, &[("FUR_BCSDF_CACHE", Some(env_dir.path()))]);
+    assert_eq!(stdout(&o), reference);
+    assert_eq!(cache_files(flag_dir.path()).len(), 1);
+    assert_eq!(cache_files(env_dir.path()).len(), 1);
+
+    // ${XDG_CACHE_HOME}/fur-bcsdf, else $HOME/.cache/fur-bcsdf.
+    let xdg = temp_dir();
+    let o = viewer_env(
+        &args,
+        None,
+        &[
+            ("FUR_BCSDF_CACHE", None),
+            ("XDG_CACHE_HOME", Some(xdg.path())),
+        ],
+    );
+    assert_eq!(stdout(&o), reference, "{}", stderr(&o));
+    assert_eq!(cache_files(&xdg.path().join("fur-bcsdf")).len(), 1);
+    let home = temp_dir();
+    let o = viewer_env(
+        &args,
+        None,
+        &[
+            ("FUR_BCSDF_CACHE", None),
+            ("XDG_CACHE_HOME", None),
+            ("HOME", Some(home.path())),
+        ],
+    );
+    assert_eq!(stdout(&o), reference, "{}", stderr(&o));
+    assert_eq!(
+        cache_files(&home.path().join(".cache").join("fur-bcsdf")).len(),
+        1
+    );
+}
+
+#[test]
+fn seed_threads_and_photon_scale() {
+    let angles = ["30", "-20", "45"];
+    let args = probe_args("yan-row-b", &angles);
+    let base = parse_probe(one_line(&ok(&args, None)));
+    let mut seeded = args.clone();
+    seeded.extend(["--seed", "2", "--threads", "1"]);
+    let two = parse_probe(one_line(&ok(&seeded, None)));
+    // Another seed: other scattered lobes, the same unscattered ones.
+    assert_eq!(
+        base.lobes[..bcsdf_core::UNSCATTERED_COUNT],
+        two.lobes[..bcsdf_core::UNSCATTERED_COUNT]
+    );
+    assert_ne!(lobe(&base, "TttT_s"), lobe(&two, "TttT_s"));
+    let params = FurParams::new(&presets::find("yan-row-b").unwrap().input).unwrap();
+    let a = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
+    assert_eq!(two, expected(&build(params, 2).model().eval_far(&a)));
+    // The thread count does not change the bits.
+    let mut threads = args.clone();
+    threads.extend(["--threads", "2", "--no-cache"]);
+    assert_eq!(parse_probe(one_line(&ok(&threads, None))), base);
+    // Another photon count: other profiles.
+    let mut scaled = args.clone();
+    scaled.extend(["--photons-scale", "0.02", "--no-cache"]);
+    let scaled = parse_probe(one_line(&ok(&scaled, None)));
+    assert_ne!(lobe(&base, "TttT_s"), lobe(&scaled, "TttT_s"));
+    for bad in ["0", "-1", "nan", "inf"] {
+        let mut a = args.clone();
+        a.extend(["--photons-scale", bad]);
+        let o = viewer(&a, None);
+        assert_eq!(o.status.code(), Some(2), "{bad}: {}", stderr(&o));
+        assert!(stderr(&o).starts_with("error:"), "{}", stderr(&o));
+    }
+    let mut both = args.clone();
+    both.extend(["--no-cache", "--cache-dir", "/tmp"]);
+    assert_eq!(viewer(&both, None).status.code(), Some(2));
+}
+
+#[test]
+fn unwritable_cache_directory_is_an_error_naming_it() {
+    let dir = temp_dir();
+    let blocker = dir.path().join("a-file");
+    std::fs::write(&blocker, "not a directory").unwrap();
+    let bad = blocker.join("cache");
+    let mut args = probe_args("yan-row-a", &["30", "-20", "45"]);
+    args.extend(["--cache-dir", bad.to_str().unwrap()]);
+    let o = viewer(&args, None);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(o.stdout.is_empty());
+    assert_eq!(err.lines().count(), 1, "{err:?}");
+    assert!(err.starts_with("error: "), "{err:?}");
+    assert!(err.contains(bad.to_str().unwrap()), "{err:?}");
+    assert!(err.contains("not writable"), "{err:?}");
+    // A preset that needs no profiles does not touch the cache, so it still works.
+    let mut hair = probe_args("human-hair", &["30", "-20", "45"]);
+    hair.extend(["--cache-dir", bad.to_str().unwrap()]);
+    ok(&hair, None);
 }

@@ -67,9 +67,9 @@ const GL_WEIGHTS: [f32; 6] = [
 /// Most panel bounds of the scattered far-field rule.
 const MAX_SCATTER_BOUNDS: usize = 72;
 
-/// Gauss–Legendre nodes per panel of the scattered far-field rule (3 points).
-const SCATTER_NODES: [f32; 3] = [-0.774_596_7, 0.0, 0.774_596_7];
-const SCATTER_WEIGHTS: [f32; 3] = [0.555_555_6, 0.888_888_9, 0.555_555_6];
+/// Gauss–Legendre nodes per panel of the scattered far-field rule (2 points).
+const SCATTER_NODES: [f32; 2] = [-0.577_350_26, 0.577_350_26];
+const SCATTER_WEIGHTS: [f32; 2] = [1.0, 1.0];
 
 /// Bit mask of lobes by [`Lobe::index`].
 type PathMask = u16;
@@ -222,8 +222,8 @@ impl FarFieldQuery<'_> {
     /// that enters the medulla, folded onto h ≥ 0 like the unscattered lobes. C^N is broad
     /// but tabulated with linear interpolation, so the integrand is smooth between the h where
     /// h_m crosses a table node: panels end there (and at graded points toward the segment
-    /// end), each integrated with 3-point Gauss–Legendre in the segment's smooth variable.
-    /// Measured against a fine reference: ≤ 1.5e-3 relative (docs/accuracy.md), below the
+    /// end), each integrated with 2-point Gauss–Legendre in the segment's smooth variable.
+    /// Measured against a fine reference: ≤ 1.2e-3 relative (docs/accuracy.md), below the
     /// tables' own Monte Carlo noise.
     pub fn azimuthal_scattered<M: Math>(
         &self,

@@ -68,7 +68,7 @@ impl PhotonBudget {
     /// (measured from two seeds, docs/profiles.md).
     pub const DEFAULT: PhotonBudget = PhotonBudget {
         per_cn_cell: 800_000,
-        per_cm_row: 1_200_000,
+        per_cm_row: 1_500_000,
     };
 }
 

@@ -15,9 +15,10 @@ use fur_tests::quadrature::integrate_smoothstep_into;
 
 const TOLERANCE: f64 = 1e-4;
 
-/// Budget for the scattered far field (MODEL.md gives none): its rule is built for tabulated,
-/// linearly interpolated profiles and is measured at ≤ 1.4e-3 (4k-photon tables); the tables' own Monte Carlo
-/// noise is ~1 % RMS (docs/profiles.md), so this error is well below what the tables carry.
+/// Budget for the scattered far field (MODEL.md gives none). Its rule is built for tabulated,
+/// linearly interpolated profiles; measured ≤ 1.2e-3 with 100k-photon tables (noisier tables
+/// have sharper kinks and a larger error). The tables' own Monte Carlo noise is ~1 % RMS at
+/// the default budget (docs/profiles.md), well above this.
 const SCATTERED_TOLERANCE: f64 = 5e-3;
 
 /// Bravais index, written here from MODEL.md §3.
@@ -192,7 +193,7 @@ fn scattered_far_field_matches_fine_reference() {
         let params = FurParams::new(&presets::find(name).unwrap().input).unwrap();
         let layout = ProfileLayout::for_params(&params, Resolution::DEFAULT);
         let budget = PhotonBudget {
-            per_cn_cell: 4_000,
+            per_cn_cell: 100_000,
             per_cm_row: 4_000,
         };
         let (mut cn, mut lbar, mut cm) = (

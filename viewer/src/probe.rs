@@ -110,10 +110,18 @@ fn model(args: &ProbeArgs) -> Result<OwnedModel, Error> {
     bake::apply_overrides(&mut input, &args.set).map_err(|e| Error::input(format!("--set {e}")))?;
     let params = FurParams::new(&input)
         .map_err(|e| Error::input(format!("preset `{}` with the overrides: {e}", preset.name)))?;
-    let opts = profile_options(&args.profiles)?;
+    let mut opts = profile_options(&args.profiles)?;
     announce_generation(&params, &opts);
-    let (model, outcome) =
-        profiles::build_model(params, &opts).map_err(|e| Error::Failure(e.to_string()))?;
+    let (model, outcome) = match profiles::build_model(params, &opts) {
+        // The default cache directory is a convenience: when it cannot be used, say so and
+        // go on without a cache. A directory the user named is an error.
+        Err(e @ profiles::Error::CacheDir { .. }) if args.profiles.cache_dir.is_none() => {
+            let _ = writeln!(io::stderr().lock(), "note: {e}; continuing without a cache");
+            opts.cache_dir = None;
+            profiles::build_model(params, &opts).map_err(|e| Error::Failure(e.to_string()))?
+        }
+        result => result.map_err(|e| Error::Failure(e.to_string()))?,
+    };
     if let Some(note) = outcome.as_ref().and_then(CacheOutcome::note) {
         let _ = writeln!(io::stderr().lock(), "note: {note}");
     }

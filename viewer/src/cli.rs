@@ -143,8 +143,9 @@ pub struct ProbeArgs {
 pub struct ProfileArgs {
     /// Cache the generated medulla profiles in DIR (default: $FUR_BCSDF_CACHE, else
     /// ${XDG_CACHE_HOME:-$HOME/.cache}/fur-bcsdf; no cache if none is set). A stale or
-    /// corrupt cache file is regenerated and rewritten, with a one-line note on stderr; an
-    /// unwritable directory is an error (exit code 1).
+    /// corrupt cache file is regenerated and rewritten, with a one-line note on stderr. A
+    /// DIR given here that cannot be written is an error (exit code 1); an unusable default
+    /// directory is skipped with a note.
     #[arg(long, value_name = "DIR", conflicts_with = "no_cache")]
     pub cache_dir: Option<PathBuf>,
 

@@ -11,7 +11,7 @@
 //! at the kinks of M^s, and `crate::profiles_ref::predicted_rho_full` adds the scattered energy
 //! to the prediction.
 
-use crate::quadrature::gauss_legendre;
+use crate::quadrature::{composite_gl_nodes, gauss_legendre};
 use crate::tracer::{bravais, cos_refracted, cuticle, trace, CrossSection, PATHS};
 use bcsdf_core::{Angles, FurBcsdf, FurParams, Math};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
@@ -305,19 +305,7 @@ pub fn theta_i_nodes_with(
     br.retain(|x| x.abs() <= FRAC_PI_2);
     br.sort_by(|a, b| a.partial_cmp(b).unwrap());
     br.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
-    let gl = gauss_legendre(4);
-    let mut nodes = Vec::new();
-    for w in br.windows(2) {
-        let n = ((w[1] - w[0]) / max_width).ceil().max(1.0) as usize;
-        let step = (w[1] - w[0]) / n as f64;
-        for j in 0..n {
-            let a = w[0] + step * j as f64;
-            for &(u, wt) in &gl {
-                nodes.push((a + 0.5 * step * (1.0 + u), 0.5 * step * wt));
-            }
-        }
-    }
-    nodes
+    composite_gl_nodes(&br, max_width)
 }
 
 /// ρ(θ_r) = ∫ S_far(ω_i, ω_r) cos θ_i dω_i, integrated numerically: θ_i by

@@ -14,7 +14,7 @@
 //! (`MedullaProfiles::cn`, `mean_length`, `cm`), which `tests/tests/profiles.rs` checks on its
 //! own. Nothing here calls the core's geometry, Fresnel, scattered or far-field code.
 
-use crate::quadrature::gauss_legendre;
+use crate::quadrature::{composite_gl_nodes, gauss_legendre};
 use crate::tracer::{bravais, cos_refracted, cuticle, dielectric, wrap};
 use bcsdf_core::medulla::{generate, Half};
 use bcsdf_core::{FurParams, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
@@ -210,19 +210,7 @@ pub fn panel_nodes(breaks: &[f64], max_width: f64) -> Vec<(f64, f64)> {
     br.extend([-FRAC_PI_2, FRAC_PI_2]);
     br.sort_by(|a, b| a.partial_cmp(b).unwrap());
     br.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
-    let gl = gauss_legendre(4);
-    let mut nodes = Vec::new();
-    for w in br.windows(2) {
-        let n = ((w[1] - w[0]) / max_width).ceil().max(1.0) as usize;
-        let step = (w[1] - w[0]) / n as f64;
-        for j in 0..n {
-            let a = w[0] + step * j as f64;
-            for &(u, wt) in &gl {
-                nodes.push((a + 0.5 * step * (1.0 + u), 0.5 * step * wt));
-            }
-        }
-    }
-    nodes
+    composite_gl_nodes(&br, max_width)
 }
 
 /// ⟨F_t⟩ for one half of C^M at view angle `theta_r`: ∫ F_t·C^M·J·k dθ_i / ∫ C^M·J dθ_i over

@@ -36,18 +36,27 @@ pub fn integrate_smoothstep(
     order: usize,
     mut f: impl FnMut(f64) -> f64,
 ) -> f64 {
-    let gl = gauss_legendre(order);
-    let mut sum = 0.0;
-    for j in 0..panels {
-        let (s0, s1) = (j as f64 / panels as f64, (j + 1) as f64 / panels as f64);
-        for &(x, w) in &gl {
-            let s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * x;
-            let h = a + (b - a) * (3.0 * s * s - 2.0 * s * s * s);
-            let jac = (b - a) * (6.0 * s - 6.0 * s * s);
-            sum += 0.5 * (s1 - s0) * w * jac * f(h);
+    let mut acc = [0.0];
+    integrate_smoothstep_into(a, b, panels, order, &mut acc, |x, out| out[0] = f(x));
+    acc[0]
+}
+
+/// Nodes and weights of composite 4-point Gauss–Legendre over the sorted, deduplicated
+/// `breaks` (at least two), each interval split into panels at most `max_width` wide.
+pub fn composite_gl_nodes(breaks: &[f64], max_width: f64) -> Vec<(f64, f64)> {
+    let gl = gauss_legendre(4);
+    let mut nodes = Vec::new();
+    for w in breaks.windows(2) {
+        let n = ((w[1] - w[0]) / max_width).ceil().max(1.0) as usize;
+        let step = (w[1] - w[0]) / n as f64;
+        for j in 0..n {
+            let a = w[0] + step * j as f64;
+            for &(u, wt) in &gl {
+                nodes.push((a + 0.5 * step * (1.0 + u), 0.5 * step * wt));
+            }
         }
     }
-    sum
+    nodes
 }
 
 /// Like [`integrate_smoothstep`] for a vector-valued integrand: adds ∫ f into `acc`, where

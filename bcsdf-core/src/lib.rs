@@ -5,20 +5,31 @@
 //! no allocation on the evaluation path, deterministic math through `libm`.
 //!
 //! ```
-//! use bcsdf_core::{presets, Angles, FurBcsdf, FurParams};
+//! use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
+//! use bcsdf_core::{presets, Angles, FurBcsdf, FurParams, Lobe};
 //!
-//! let preset = presets::find("yan-row-a").unwrap();
-//! let model: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&preset.input).unwrap());
+//! let params = FurParams::new(&presets::find("yan-row-a").unwrap().input).unwrap();
+//! // Medulla scattering profiles for these parameters, into caller memory (a small photon
+//! // budget here; `PhotonBudget::DEFAULT` reaches 1 % noise).
+//! let layout = ProfileLayout::for_params(&params, Resolution::DEFAULT);
+//! let (mut cn, mut lbar, mut cm) =
+//!     (vec![0.0; layout.cn_len()], vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
+//! let budget = PhotonBudget { per_cn_cell: 500, per_cm_row: 500 };
+//! generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).unwrap();
+//! let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+//! let model: FurBcsdf = FurBcsdf::new(params, profiles).unwrap();
+//!
 //! let angles = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
-//! let far = model.eval_far(&angles); // h integrated
+//! let far = model.eval_far(&angles); // h integrated, 11 lobes
 //! let near = model.eval_near(&angles, 0.3); // at offset h = 0.3
 //! assert!(far.total().0.iter().all(|v| v.is_finite() && *v >= 0.0));
-//! assert!(near.total().max_channel() >= 0.0);
+//! assert!(near.get(Lobe::TttTs).max_channel() > 0.0);
 //! ```
 //!
-//! Data flow: [`FurParams`] (validated) → [`FurBcsdf`] → [`Lobes`] per evaluation. Module
-//! names follow the model: [`fresnel`], [`geometry`], [`unscattered`], [`longitudinal`],
-//! [`gaussian`], [`far_field`].
+//! Data flow: [`FurParams`] (validated) → [`medulla`] profiles → [`FurBcsdf`] → [`Lobes`] per
+//! evaluation. Module names follow the model: [`fresnel`], [`geometry`], [`unscattered`],
+//! [`scattered`], [`medulla`], [`longitudinal`], [`gaussian`], [`far_field`].
+//! [`FurBcsdf::unscattered`] builds the model without profiles (exact when σ_ms = 0 or κ = 0).
 #![no_std]
 #![deny(missing_docs)]
 

@@ -195,7 +195,15 @@ impl Chord {
         let medulla = if region != Region::Miss {
             let (m, cos_m) = pick(ChordVariable::M, sin_m.clamp(-1.0, 1.0));
             if region == Region::Enter {
-                let (mu, cos_mu) = pick(ChordVariable::Mu, sin_mu.clamp(-1.0, 1.0));
+                // An index-matched medulla does not bend the ray: μ = m.
+                let (mu, cos_mu) = if slice.eta_m_prime == slice.eta_c_prime {
+                    match exact {
+                        Some((ChordVariable::Mu, t, cos_t)) => (t, cos_t),
+                        _ => (m, cos_m),
+                    }
+                } else {
+                    pick(ChordVariable::Mu, sin_mu.clamp(-1.0, 1.0))
+                };
                 MedullaEvent::Enter {
                     m,
                     cos_m,

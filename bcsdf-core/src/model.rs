@@ -4,7 +4,7 @@
 
 use crate::far_field::FarFieldQuery;
 use crate::frame::{Angles, Vec3};
-use crate::geometry::{Chord, ViewSlice};
+use crate::geometry::{Chord, MedullaEvent, ViewSlice};
 use crate::lobes::{Lobe, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
 use crate::longitudinal::GroupLobes;
 use crate::math::{Libm, Math};
@@ -153,7 +153,8 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
                 n[p] = path.attenuation * d.eval::<M>(phi - path.exit_azimuth);
             }
         }
-        if let Some(s) = &self.scattering {
+        let enters = matches!(chord.medulla, MedullaEvent::Enter { .. });
+        if let (Some(s), true) = (&self.scattering, enters) {
             let exit = exit_transmittance::<M>(&slice, &ext);
             if let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, self.params.l(), exit) {
                 ns = azimuthal_at::<M>(&s.profiles, &sp, &slice, &ext, self.sigma_n(&slice), phi);

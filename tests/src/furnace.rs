@@ -11,7 +11,7 @@
 //! at the kinks of M^s, and `crate::profiles_ref::predicted_rho_full` adds the scattered energy
 //! to the prediction.
 
-use crate::quadrature::{composite_gl_nodes, gauss_legendre};
+use crate::quadrature::{composite_gl_nodes, gauss_legendre, smoothstep_nodes};
 use crate::tracer::{bravais, cos_refracted, cuticle, trace, CrossSection, PATHS};
 use bcsdf_core::{Angles, FurBcsdf, FurParams, Math};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
@@ -220,17 +220,9 @@ impl Fiber {
 /// Calls `f(h, weight)` at the nodes of ½ ∫_{−1}^{1} · dh split at `cuts` (which must include
 /// ±1), smoothstep-substituted Gauss–Legendre, 8 points per panel.
 pub fn average_over_h(cuts: &[f64], panels: usize, mut f: impl FnMut(f64, f64)) {
-    let gl = gauss_legendre(8);
     for w in cuts.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        for j in 0..panels {
-            let (s0, s1) = (j as f64 / panels as f64, (j + 1) as f64 / panels as f64);
-            for &(x, wt) in &gl {
-                let s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * x;
-                let h = a + (b - a) * (3.0 * s * s - 2.0 * s * s * s);
-                let jac = (b - a) * (6.0 * s - 6.0 * s * s);
-                f(h, 0.5 * 0.5 * (s1 - s0) * wt * jac);
-            }
+        for (h, wt) in smoothstep_nodes(w[0], w[1], panels, 8) {
+            f(h, 0.5 * wt);
         }
     }
 }

@@ -59,6 +59,23 @@ pub fn composite_gl_nodes(breaks: &[f64], max_width: f64) -> Vec<(f64, f64)> {
     nodes
 }
 
+/// Nodes and weights of ∫ over [a, b] with `panels` panels of `order`-point Gauss–Legendre
+/// after the smoothstep substitution x = a + (b − a)(3s² − 2s³).
+pub fn smoothstep_nodes(a: f64, b: f64, panels: usize, order: usize) -> Vec<(f64, f64)> {
+    let gl = gauss_legendre(order);
+    let mut nodes = Vec::with_capacity(panels * order);
+    for j in 0..panels {
+        let (s0, s1) = (j as f64 / panels as f64, (j + 1) as f64 / panels as f64);
+        for &(x, w) in &gl {
+            let s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * x;
+            let h = a + (b - a) * (3.0 * s * s - 2.0 * s * s * s);
+            let jac = (b - a) * (6.0 * s - 6.0 * s * s);
+            nodes.push((h, 0.5 * (s1 - s0) * w * jac));
+        }
+    }
+    nodes
+}
+
 /// Like [`integrate_smoothstep`] for a vector-valued integrand: adds ∫ f into `acc`, where
 /// `f(x, out)` writes its values into `out` (same length as `acc`).
 pub fn integrate_smoothstep_into(
@@ -69,19 +86,11 @@ pub fn integrate_smoothstep_into(
     acc: &mut [f64],
     mut f: impl FnMut(f64, &mut [f64]),
 ) {
-    let gl = gauss_legendre(order);
     let mut tmp = vec![0.0; acc.len()];
-    for j in 0..panels {
-        let (s0, s1) = (j as f64 / panels as f64, (j + 1) as f64 / panels as f64);
-        for &(x, w) in &gl {
-            let s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * x;
-            let h = a + (b - a) * (3.0 * s * s - 2.0 * s * s * s);
-            let jac = (b - a) * (6.0 * s - 6.0 * s * s);
-            f(h, &mut tmp);
-            let wt = 0.5 * (s1 - s0) * w * jac;
-            for (a, t) in acc.iter_mut().zip(&tmp) {
-                *a += wt * t;
-            }
+    for (h, wt) in smoothstep_nodes(a, b, panels, order) {
+        f(h, &mut tmp);
+        for (a, t) in acc.iter_mut().zip(&tmp) {
+            *a += wt * t;
         }
     }
 }

@@ -14,9 +14,11 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod metrics;
 pub mod overrides;
 pub mod presets;
 pub mod profiles;
+pub mod tables;
 
 pub use overrides::{apply_overrides, Override, OverrideError, OverrideErrorKind, OverrideValue};
 pub use presets::{NamedPreset, PresetError};

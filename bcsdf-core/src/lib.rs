@@ -33,6 +33,7 @@
 #![no_std]
 #![deny(missing_docs)]
 
+pub mod baked;
 pub mod far_field;
 pub mod frame;
 pub mod fresnel;
@@ -40,6 +41,7 @@ pub mod gaussian;
 pub mod geometry;
 pub mod lobes;
 pub mod longitudinal;
+pub mod lut;
 pub mod math;
 pub mod medulla;
 pub mod model;
@@ -52,12 +54,14 @@ pub mod spectrum;
 pub mod unscattered;
 
 pub use frame::{AngleError, Angles, Vec3};
-pub use lobes::{Lobe, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
+pub use lobes::{
+    Families, Lobe, LobeFamily, LobeGroup, Lobes, FAMILY_COUNT, LOBE_COUNT, UNSCATTERED_COUNT,
+};
 #[cfg(feature = "micromath")]
 pub use math::FastMath;
 pub use math::{Libm, Math};
 pub use medulla::{MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout, Resolution};
-pub use model::FurBcsdf;
+pub use model::{FarField, FurBcsdf, MODEL_VERSION};
 pub use params::{FurParams, FurParamsInput, ParamError, ParamName};
 pub use pigment::Pigment;
 pub use spectrum::Rgb;

@@ -168,3 +168,95 @@ impl Lobes {
         self.values.iter().fold(Rgb::ZERO, |acc, &v| acc + v)
     }
 }
+
+/// Number of lobe families ([`LobeFamily`]).
+pub const FAMILY_COUNT: usize = 4;
+
+/// The four families a baked table keeps apart: the three cuticle groups of the unscattered
+/// paths (each shares one M_p, MODEL.md §5) and the medulla-scattered lobes (which share M^s,
+/// MODEL.md §6).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LobeFamily {
+    /// R.
+    R = 0,
+    /// TT, TrT, TttT, TtrtT.
+    TT = 1,
+    /// TRT, TrRrT, TttRttT.
+    TRT = 2,
+    /// TttT^s, TtrtT^s, TttRttT^s.
+    Scattered = 3,
+}
+
+impl LobeFamily {
+    /// All families in order.
+    pub const ALL: [LobeFamily; FAMILY_COUNT] = [
+        LobeFamily::R,
+        LobeFamily::TT,
+        LobeFamily::TRT,
+        LobeFamily::Scattered,
+    ];
+
+    /// Short name: `R`, `TT`, `TRT`, `scattered`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            LobeFamily::R => "R",
+            LobeFamily::TT => "TT",
+            LobeFamily::TRT => "TRT",
+            LobeFamily::Scattered => "scattered",
+        }
+    }
+
+    /// The family a lobe belongs to.
+    pub const fn of(lobe: Lobe) -> LobeFamily {
+        match lobe.group() {
+            Some(LobeGroup::R) => LobeFamily::R,
+            Some(LobeGroup::TT) => LobeFamily::TT,
+            Some(LobeGroup::TRT) => LobeFamily::TRT,
+            None => LobeFamily::Scattered,
+        }
+    }
+}
+
+/// Per-family RGB values of one far-field evaluation; [`Families::total`] is S.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Families {
+    values: [Rgb; FAMILY_COUNT],
+}
+
+impl Families {
+    /// All families zero.
+    pub const ZERO: Families = Families {
+        values: [Rgb::ZERO; FAMILY_COUNT],
+    };
+
+    /// From values in [`LobeFamily::ALL`] order.
+    pub const fn from_array(values: [Rgb; FAMILY_COUNT]) -> Families {
+        Families { values }
+    }
+
+    /// One family's value.
+    pub fn get(&self, family: LobeFamily) -> Rgb {
+        self.values[family as usize]
+    }
+
+    /// All values in [`LobeFamily::ALL`] order.
+    pub fn as_array(&self) -> &[Rgb; FAMILY_COUNT] {
+        &self.values
+    }
+
+    /// The sum over all families: S.
+    pub fn total(&self) -> Rgb {
+        self.values.iter().fold(Rgb::ZERO, |acc, &v| acc + v)
+    }
+}
+
+impl Lobes {
+    /// The lobes summed per [`LobeFamily`].
+    pub fn families(&self) -> Families {
+        let mut out = [Rgb::ZERO; FAMILY_COUNT];
+        for (lobe, v) in self.iter() {
+            out[LobeFamily::of(lobe) as usize] += v;
+        }
+        Families::from_array(out)
+    }
+}

@@ -5,7 +5,7 @@
 use crate::far_field::FarFieldQuery;
 use crate::frame::{Angles, Vec3};
 use crate::geometry::{Chord, MedullaEvent, ViewSlice};
-use crate::lobes::{Lobe, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
+use crate::lobes::{Families, Lobe, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
 use crate::longitudinal::GroupLobes;
 use crate::math::{Libm, Math};
 use crate::medulla::{MedullaProfiles, ProfileError};
@@ -20,6 +20,30 @@ use core::marker::PhantomData;
 /// Smallest cos²θ_i the 1/cos²θ_i factor of eq. 1 divides by (θ_i ≈ ±89.4°): keeps S finite
 /// for grazing light.
 pub const MIN_COS2_THETA_I: f32 = 1e-4;
+
+/// Version of the model's formulas: any change to what S evaluates to bumps it, so baked
+/// tables made by an older model are recognised (`lut` header).
+pub const MODEL_VERSION: u32 = 1;
+
+/// 1/cos²θ_i of eq. 1, with cos²θ_i kept at or above [`MIN_COS2_THETA_I`]. The analytic and
+/// the baked evaluators both divide by this.
+#[inline]
+pub fn inv_cos2_theta_i(cos_theta_i: f32) -> f32 {
+    1.0 / (cos_theta_i * cos_theta_i).max(MIN_COS2_THETA_I)
+}
+
+/// The far field of MODEL.md §8 per lobe family, as the analytic model ([`FurBcsdf`]) and
+/// the baked tables (`crate::baked::BakedBcsdf`) both provide it; the shared error metrics
+/// compare two such evaluators.
+pub trait FarField {
+    /// Far-field S(ω_i, ω_r) per [`LobeFamily`](crate::LobeFamily).
+    fn eval_far_families(&self, angles: &Angles) -> Families;
+
+    /// Far-field S(ω_i, ω_r), all families summed.
+    fn eval_far_total(&self, angles: &Angles) -> Rgb {
+        self.eval_far_families(angles).total()
+    }
+}
 
 /// The medulla-scattering part of a model: borrowed profiles and the precomputed M^s.
 #[derive(Clone, Copy, Debug)]
@@ -103,8 +127,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     /// Multiplies N_p by M_p, N^s_p by M^s, and divides by cos²θ_i (report eq. 1).
     fn assemble(&self, angles: &Angles, n: &Azimuthal) -> Lobes {
         let (ti, tr) = (angles.theta_i(), angles.theta_r());
-        let cos_i = M::cos(ti);
-        let inv_cos2 = 1.0 / (cos_i * cos_i).max(MIN_COS2_THETA_I);
+        let inv_cos2 = inv_cos2_theta_i(M::cos(ti));
         let m = [
             self.groups.m::<M>(LobeGroup::R, ti, tr),
             self.groups.m::<M>(LobeGroup::TT, ti, tr),
@@ -192,6 +215,11 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         (n, ns)
     }
 
+    /// M_p(θ_i, θ_r) = G(θ_r + θ_i − α_p; β_M) of one cuticle group (report eq. 2–3).
+    pub fn longitudinal(&self, group: LobeGroup, theta_i: f32, theta_r: f32) -> f32 {
+        self.groups.m::<M>(group, theta_i, theta_r)
+    }
+
     /// M^s(θ_i, θ_r, φ), the longitudinal scattered lobe (0 without profiles).
     pub fn longitudinal_scattered(&self, angles: &Angles) -> f32 {
         match &self.scattering {
@@ -233,6 +261,12 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             Ok(a) => self.eval_far(&a),
             Err(_) => Lobes::ZERO,
         }
+    }
+}
+
+impl<M: Math> FarField for FurBcsdf<'_, M> {
+    fn eval_far_families(&self, angles: &Angles) -> Families {
+        self.eval_far(angles).families()
     }
 }
 

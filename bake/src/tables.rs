@@ -1,0 +1,260 @@
+//! Baking: samples the analytic far field into the tables of `bcsdf_core::lut` and encodes
+//! them as a half-float blob.
+//!
+//! Every value comes from the analytic model's own functions (`FurBcsdf::longitudinal`,
+//! `azimuthal_far`, `longitudinal_scattered`), so no formula is restated here. Table rows are
+//! sampled in parallel, each value independently, so the blob has the same bits for any
+//! thread count.
+
+use bcsdf_core::lut::{
+    self, LutHeader, LutResolution, ProfileProvenance, Table, HEADER_LEN, TABLE_COUNT,
+};
+use bcsdf_core::medulla::GENERATOR_VERSION;
+use bcsdf_core::{Angles, FurBcsdf, FurParamsInput, Lobe, LobeFamily, LobeGroup};
+use half::f16;
+use rayon::prelude::*;
+use std::f32::consts::PI;
+
+use crate::profiles::OwnedModel;
+
+/// The tables before quantisation, [`Table::ALL`] order, each row-major with its channels
+/// adjacent.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TableValues {
+    /// Node counts.
+    pub res: LutResolution,
+    /// The values.
+    pub tables: [Vec<f32>; TABLE_COUNT],
+}
+
+/// Node `k` of `nodes` uniformly spaced nodes over [lo, lo + span] (the `lut` axes).
+pub fn node(lo: f32, span: f32, k: usize, nodes: u32) -> f32 {
+    lo + span * (k as f32 / (nodes - 1) as f32)
+}
+
+/// Angles with θ clamped onto [−π/2, π/2] (an f32 node may land a rounding step outside).
+fn angles(theta_i: f32, theta_r: f32, phi: f32) -> Angles {
+    let c = |t: f32| t.clamp(-PI / 2.0, PI / 2.0);
+    Angles::new(c(theta_i), c(theta_r), phi).expect("clamped finite angles are valid")
+}
+
+/// Samples every table of `model` at its nodes.
+pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
+    let mut tables: [Vec<f32>; TABLE_COUNT] = Default::default();
+
+    // M_g(x), x = θ_i + θ_r: evaluated as M_g(θ_i = x, θ_r = 0).
+    tables[Table::M as usize] = (0..res.n_sum as usize)
+        .flat_map(|k| {
+            let x = node(-PI, 2.0 * PI, k, res.n_sum);
+            [LobeGroup::R, LobeGroup::TT, LobeGroup::TRT].map(|g| model.longitudinal(g, x, 0.0))
+        })
+        .collect();
+
+    // N_g(|θ_r|, |φ|): one far-field azimuthal evaluation per node gives all four families.
+    let rows: Vec<Vec<[[f32; 3]; 4]>> = (0..res.n_theta_r as usize)
+        .into_par_iter()
+        .map(|r| {
+            let theta_r = node(0.0, PI / 2.0, r, res.n_theta_r);
+            (0..res.n_phi as usize)
+                .map(|c| {
+                    let phi = node(0.0, PI, c, res.n_phi);
+                    let lobes = model.azimuthal_far(theta_r.min(PI / 2.0), phi);
+                    let mut fam = [[0.0f32; 3]; 4];
+                    for lobe in Lobe::ALL {
+                        let f = LobeFamily::of(lobe) as usize;
+                        for ch in 0..3 {
+                            fam[f][ch] += lobes[lobe.index()].0[ch];
+                        }
+                    }
+                    fam
+                })
+                .collect()
+        })
+        .collect();
+    for f in 0..4 {
+        tables[Table::azimuthal(f) as usize] = rows
+            .iter()
+            .flat_map(|row| row.iter().flat_map(move |fam| fam[f]))
+            .collect();
+    }
+
+    // M^s_back and M^s_front: M^s at φ = 0 and φ = π, where the blend weight is exactly 0 / 1.
+    tables[Table::MS as usize] = (0..res.n_ms_r as usize)
+        .into_par_iter()
+        .flat_map_iter(|r| {
+            let theta_r = node(-PI / 2.0, PI, r, res.n_ms_r);
+            (0..res.n_ms_i as usize).flat_map(move |c| {
+                let theta_i = node(-PI / 2.0, PI, c, res.n_ms_i);
+                [0.0, PI].map(|phi| model.longitudinal_scattered(&angles(theta_i, theta_r, phi)))
+            })
+        })
+        .collect();
+
+    TableValues { res, tables }
+}
+
+/// The power-of-two scale that stores a table whose largest value is `max` in [2^14, 2^15)
+/// (1 for an all-zero table).
+pub fn scale_for(max: f32) -> f32 {
+    if !(max > 0.0 && max.is_finite()) {
+        return 1.0;
+    }
+    let e = max.log2().floor() as i32 - 14;
+    let (lo, hi) = lut::SCALE_RANGE;
+    2f32.powi(e).clamp(lo, hi)
+}
+
+/// f32 → f16 bits of `v / scale`, round to nearest even; values that would be subnormal
+/// halves (below 2^−14, i.e. 2^−28 of the table's peak) become 0, negative or non-finite
+/// values become 0.
+pub fn quantise(v: f32, scale: f32) -> u16 {
+    let x = v / scale;
+    if !(x.is_finite() && x > 0.0) {
+        return 0;
+    }
+    let h = f16::from_f32(x);
+    if h.is_infinite() {
+        f16::MAX.to_bits()
+    } else if !h.is_normal() {
+        0 // subnormal (or rounded to zero)
+    } else {
+        h.to_bits()
+    }
+}
+
+/// Encodes sampled tables with their parameters and profile provenance as a sealed blob.
+pub fn encode(
+    values: &TableValues,
+    params: &FurParamsInput,
+    profiles: Option<ProfileProvenance>,
+) -> Vec<u8> {
+    let res = values.res;
+    let mut scales = [1.0f32; TABLE_COUNT];
+    for t in Table::ALL {
+        let max =
+            values.tables[t as usize]
+                .iter()
+                .fold(0.0f32, |m, &v| if v.is_finite() { m.max(v) } else { m });
+        scales[t as usize] = scale_for(max);
+    }
+    let header = LutHeader {
+        res,
+        scales,
+        params: *params,
+        profiles,
+    };
+    let mut blob = vec![0u8; res.blob_len()];
+    blob[..HEADER_LEN].copy_from_slice(&header.encode());
+    for t in Table::ALL {
+        let range = res.byte_range(t);
+        let src = &values.tables[t as usize];
+        assert_eq!(src.len() * 2, range.len(), "table {} size", t.name());
+        for (dst, &v) in blob[range].chunks_exact_mut(2).zip(src) {
+            dst.copy_from_slice(&quantise(v, scales[t as usize]).to_le_bytes());
+        }
+    }
+    lut::seal(&mut blob);
+    blob
+}
+
+/// Where the profiles of a model came from, for the LUT header.
+pub fn provenance(model: &OwnedModel) -> Option<ProfileProvenance> {
+    model.profiles().map(|p| ProfileProvenance {
+        generator_version: GENERATOR_VERSION,
+        seed: p.seed(),
+        budget: p.budget(),
+        res: p.layout().res,
+    })
+}
+
+/// Why the analytic model behind a LUT could not be rebuilt.
+#[derive(Debug)]
+pub enum RebuildError {
+    /// The LUT's profiles came from another profile generator version.
+    GeneratorVersion {
+        /// Version in the LUT.
+        found: u32,
+    },
+    /// Making or loading the profiles failed.
+    Profiles(crate::profiles::Error),
+    /// The stored parameters are invalid.
+    Params(bcsdf_core::ParamError),
+}
+
+impl std::fmt::Display for RebuildError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RebuildError::GeneratorVersion { found } => write!(
+                f,
+                "the LUT's medulla profiles come from generator version {found}, this build has version {GENERATOR_VERSION}: rebake it"
+            ),
+            RebuildError::Profiles(e) => write!(f, "{e}"),
+            RebuildError::Params(e) => write!(f, "LUT parameters: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for RebuildError {}
+
+/// Rebuilds the analytic model a LUT was baked from: its parameters, and profiles
+/// regenerated (or loaded from `cache_dir`) with the stored seed, budget and resolution, so
+/// the model is the same bits as at bake time.
+pub fn rebuild_model(
+    header: &LutHeader,
+    cache_dir: Option<std::path::PathBuf>,
+    threads: Option<usize>,
+) -> Result<OwnedModel, RebuildError> {
+    let params = bcsdf_core::FurParams::new(&header.params).map_err(RebuildError::Params)?;
+    match header.profiles {
+        None => OwnedModel::new(params, None)
+            .map_err(|e| RebuildError::Profiles(crate::profiles::Error::Profile(e))),
+        Some(p) => {
+            if p.generator_version != GENERATOR_VERSION {
+                return Err(RebuildError::GeneratorVersion {
+                    found: p.generator_version,
+                });
+            }
+            let opts = crate::profiles::ProfileOptions {
+                res: p.res,
+                budget: p.budget,
+                seed: p.seed,
+                cache_dir,
+                threads,
+            };
+            crate::profiles::build_model(params, &opts)
+                .map(|(m, _)| m)
+                .map_err(RebuildError::Profiles)
+        }
+    }
+}
+
+/// Samples and encodes `model` (made from `input`) at resolution `res`: the LUT blob.
+pub fn bake(model: &OwnedModel, input: &FurParamsInput, res: LutResolution) -> Vec<u8> {
+    let values = sample(&model.model(), res);
+    encode(&values, input, provenance(model))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scales_put_the_peak_in_the_top_binade() {
+        for max in [1e-6f32, 0.3, 1.0, 7.5, 4000.0] {
+            let s = scale_for(max);
+            let x = max / s;
+            assert!((16384.0..32768.0).contains(&x), "{max} -> {x}");
+            assert_eq!(s.to_bits() & 0x007f_ffff, 0, "power of two");
+        }
+        assert_eq!(scale_for(0.0), 1.0);
+    }
+
+    #[test]
+    fn quantise_rounds_flushes_and_never_goes_negative() {
+        assert_eq!(quantise(1.0, 1.0), f16::ONE.to_bits());
+        assert_eq!(quantise(-1.0, 1.0), 0);
+        assert_eq!(quantise(f32::NAN, 1.0), 0);
+        assert_eq!(quantise(1e-6, 1.0), 0, "subnormal half flushed");
+        assert_eq!(quantise(1e9, 1.0), f16::MAX.to_bits());
+    }
+}

@@ -1,0 +1,237 @@
+//! The baked far-field evaluator: reads the half-float tables of [`crate::lut`] in place
+//! (borrowed bytes, no allocation, no std) and evaluates
+//!
+//! S = [Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s(|θ_r|, |φ|)] / cos²θ_i
+//!
+//! with linear interpolation in every table axis. The data is validated once, in
+//! [`BakedBcsdf::from_bytes`]; evaluation then never fails, never panics and never returns NaN.
+
+use crate::frame::{Angles, Vec3};
+use crate::lobes::{Families, FAMILY_COUNT};
+use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
+use crate::math::{Libm, Math, PI};
+use crate::model::{inv_cos2_theta_i, FarField};
+use crate::params::FurParams;
+use crate::spectrum::Rgb;
+use core::marker::PhantomData;
+
+/// One uniform table axis over [lo, lo + span] with `nodes` nodes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Axis {
+    lo: f32,
+    inv_step: f32,
+    last: f32,
+    nodes: usize,
+}
+
+impl Axis {
+    fn new(lo: f32, span: f32, nodes: u32) -> Axis {
+        Axis {
+            lo,
+            inv_step: (nodes - 1) as f32 / span,
+            last: (nodes - 1) as f32,
+            nodes: nodes as usize,
+        }
+    }
+
+    /// Lower node index and weight of the upper node for `x` (clamped to the axis ends).
+    #[inline(always)]
+    fn locate(&self, x: f32) -> (usize, f32) {
+        // `max` first: NaN becomes 0 (the callers pass finite angles anyway).
+        let u = ((x - self.lo) * self.inv_step).max(0.0).min(self.last);
+        let i = (u as usize).min(self.nodes - 2);
+        (i, u - i as f32)
+    }
+}
+
+/// A validated LUT, borrowed, evaluated with math backend `M` (only cos θ_i and the
+/// direction-to-angle conversion use it).
+#[derive(Clone, Copy, Debug)]
+pub struct BakedBcsdf<'a, M: Math = Libm> {
+    header: LutHeader,
+    params: FurParams,
+    tables: [&'a [u8]; TABLE_COUNT],
+    /// Table scale × 2^112 (see [`lut::f16_biased`]).
+    unbias: [f32; TABLE_COUNT],
+    sum: Axis,
+    theta_r: Axis,
+    phi: Axis,
+    ms_i: Axis,
+    ms_r: Axis,
+    _math: PhantomData<M>,
+}
+
+/// `C` channels of texel `index` of a table, converted (× 2^−112, see [`lut::f16_biased`]).
+#[inline(always)]
+fn texel<const C: usize>(data: &[u8], index: usize) -> [f32; C] {
+    let mut out = [0.0; C];
+    // Validation guarantees the range; a miss would read zeros, never panic.
+    if let Some(bytes) = data.get(2 * C * index..2 * C * (index + 1)) {
+        for (o, b) in out.iter_mut().zip(bytes.chunks_exact(2)) {
+            *o = f16_biased(u16::from_le_bytes([b[0], b[1]]));
+        }
+    }
+    out
+}
+
+#[inline(always)]
+fn lerp<const C: usize>(a: [f32; C], b: [f32; C], w: f32) -> [f32; C] {
+    let mut out = [0.0; C];
+    for c in 0..C {
+        out[c] = a[c] + w * (b[c] - a[c]);
+    }
+    out
+}
+
+#[inline(always)]
+fn scaled<const C: usize>(v: [f32; C], k: f32) -> [f32; C] {
+    v.map(|x| x * k)
+}
+
+/// Bilinear lookup in a row-major table of width `width`.
+#[inline(always)]
+fn bilinear<const C: usize>(
+    data: &[u8],
+    width: usize,
+    (row, wy): (usize, f32),
+    (col, wx): (usize, f32),
+    k: f32,
+) -> [f32; C] {
+    let i0 = row * width + col;
+    let i1 = i0 + width;
+    let top = lerp(
+        scaled(texel::<C>(data, i0), k),
+        scaled(texel::<C>(data, i0 + 1), k),
+        wx,
+    );
+    let bottom = lerp(
+        scaled(texel::<C>(data, i1), k),
+        scaled(texel::<C>(data, i1 + 1), k),
+        wx,
+    );
+    lerp(top, bottom, wy)
+}
+
+impl<'a> BakedBcsdf<'a, Libm> {
+    /// Validates `bytes` (header, lengths, versions, checksum, every value) and borrows it.
+    /// With the default `Libm` backend; see [`BakedBcsdf::from_bytes_with`] for another.
+    pub fn from_bytes(bytes: &'a [u8]) -> Result<BakedBcsdf<'a, Libm>, LutError> {
+        Self::from_bytes_with(bytes)
+    }
+}
+
+impl<'a, M: Math> BakedBcsdf<'a, M> {
+    /// Validates `bytes` and borrows it, evaluating with math backend `M`.
+    pub fn from_bytes_with(bytes: &'a [u8]) -> Result<BakedBcsdf<'a, M>, LutError> {
+        let header = lut::validate(bytes)?;
+        let params = FurParams::new(&header.params).map_err(LutError::Params)?;
+        let res = header.res;
+        let mut tables: [&'a [u8]; TABLE_COUNT] = [&[]; TABLE_COUNT];
+        let mut unbias = [0.0; TABLE_COUNT];
+        for t in Table::ALL {
+            tables[t as usize] = &bytes[res.byte_range(t)];
+            unbias[t as usize] = header.scales[t as usize] * F16_UNBIAS;
+        }
+        Ok(BakedBcsdf {
+            header,
+            params,
+            tables,
+            unbias,
+            sum: Axis::new(-PI, 2.0 * PI, res.n_sum),
+            theta_r: Axis::new(0.0, PI / 2.0, res.n_theta_r),
+            phi: Axis::new(0.0, PI, res.n_phi),
+            ms_i: Axis::new(-PI / 2.0, PI, res.n_ms_i),
+            ms_r: Axis::new(-PI / 2.0, PI, res.n_ms_r),
+            _math: PhantomData,
+        })
+    }
+
+    /// The header: resolution, scales, parameters, profile provenance.
+    pub fn header(&self) -> &LutHeader {
+        &self.header
+    }
+
+    /// The validated parameters the tables were baked from.
+    pub fn params(&self) -> &FurParams {
+        &self.params
+    }
+
+    /// One stored value (× its table scale) at texel (x, y), channel c; 0 outside the table.
+    pub fn value(&self, table: Table, x: usize, y: usize, c: usize) -> f32 {
+        let (w, h) = self.header.res.dims(table);
+        let ch = table.channels();
+        if x >= w || y >= h || c >= ch {
+            return 0.0;
+        }
+        let i = 2 * ((y * w + x) * ch + c);
+        match self.tables[table as usize].get(i..i + 2) {
+            Some(b) => f16_biased(u16::from_le_bytes([b[0], b[1]])) * self.unbias[table as usize],
+            None => 0.0,
+        }
+    }
+
+    /// Far-field S(ω_i, ω_r) per lobe family, from the tables.
+    #[inline]
+    pub fn eval_far(&self, angles: &Angles) -> Families {
+        let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
+        let abs_phi = phi.abs();
+        let inv_cos2 = inv_cos2_theta_i(M::cos(ti));
+        let res = &self.header.res;
+
+        // M_g(θ_i + θ_r), the three cuticle groups side by side.
+        let (i, w) = self.sum.locate(ti + tr);
+        let km = self.unbias[Table::M as usize];
+        let m_data = self.tables[Table::M as usize];
+        let m = lerp(
+            scaled(texel::<3>(m_data, i), km),
+            scaled(texel::<3>(m_data, i + 1), km),
+            w,
+        );
+
+        // M^s(θ_i, θ_r, |φ|) = (1 − |φ|/π)·back + (|φ|/π)·front.
+        let kms = self.unbias[Table::MS as usize];
+        let [back, front] = bilinear::<2>(
+            self.tables[Table::MS as usize],
+            res.n_ms_i as usize,
+            self.ms_r.locate(tr),
+            self.ms_i.locate(ti),
+            kms,
+        );
+        let wf = (abs_phi * (1.0 / PI)).min(1.0);
+        let ms = back + wf * (front - back);
+
+        // N_g(|θ_r|, |φ|) for the three groups and the scattered lobes.
+        let row = self.theta_r.locate(tr.abs());
+        let col = self.phi.locate(abs_phi);
+        let width = res.n_phi as usize;
+        let longitudinal = [m[0], m[1], m[2], ms];
+        let mut out = [Rgb::ZERO; FAMILY_COUNT];
+        for (f, o) in out.iter_mut().enumerate() {
+            let t = Table::azimuthal(f);
+            let n = bilinear::<3>(
+                self.tables[t as usize],
+                width,
+                row,
+                col,
+                self.unbias[t as usize],
+            );
+            *o = Rgb(n) * (longitudinal[f] * inv_cos2);
+        }
+        Families::from_array(out)
+    }
+
+    /// Far-field S from world-space directions (see [`Angles::from_directions`]); invalid
+    /// directions give zero.
+    pub fn eval_far_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
+        match Angles::from_directions::<M>(wi, wr, tangent) {
+            Ok(a) => self.eval_far(&a),
+            Err(_) => Families::ZERO,
+        }
+    }
+}
+
+impl<M: Math> FarField for BakedBcsdf<'_, M> {
+    fn eval_far_families(&self, angles: &Angles) -> Families {
+        self.eval_far(angles)
+    }
+}

@@ -1,0 +1,690 @@
+//! The baked LUT format: the far-field BCSDF of MODEL.md §8, both components, factored along
+//! the model's own structure into six half-float tables, and the little-endian byte layout
+//! the core reads in place (from `include_bytes!`, a memory map or a loaded file).
+//!
+//! The far field is
+//!
+//! S(θ_i, θ_r, φ) = [Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s(|θ_r|, |φ|)]
+//! / cos²θ_i
+//!
+//! with g over the cuticle groups R, TT, TRT. N_g is the sum of the far-field N_p of the
+//! group's paths and N^s that of the three scattered lobes; both depend on θ_r only through
+//! sin²θ_r (Bravais indices, refraction) and are even in φ, so they are stored over |θ_r| and
+//! |φ|. M^s = (1 − |φ|/π)·M^s_back + (|φ|/π)·M^s_front is stored as its two halves. The
+//! 1/cos²θ_i factor and the back/front blend are evaluated exactly, not tabulated.
+//!
+//! | table | value | axes (x: columns, y: rows) | channels |
+//! |---|---|---|---|
+//! | `M` | M_g(x) | x = θ_i + θ_r ∈ [−π, π] | R, TT, TRT |
+//! | `N_R`, `N_TT`, `N_TRT` | N_g | x = \|φ\| ∈ [0, π], y = \|θ_r\| ∈ [0, π/2] | R, G, B |
+//! | `N_s` | Σ N^s_p | as above | R, G, B |
+//! | `M_s` | M^s_back, M^s_front | x = θ_i, y = θ_r, both ∈ [−π/2, π/2] | back, front |
+//!
+//! Every axis has uniformly spaced nodes, the first and last on the interval ends; values are
+//! point samples at the nodes, interpolated linearly (bilinearly in 2D).
+//!
+//! Each table stores value / scale as IEEE binary16 with one power-of-two `scale` per table,
+//! chosen by the baker so that the table's largest value is stored in [2^14, 2^15): the
+//! physical value is `f16 × scale`, exactly. This keeps the whole f16 range for the data
+//! (values below 2^−28 of a table's peak are stored as 0) and lets the evaluator convert a
+//! half with a shift and one multiply.
+//!
+//! Byte layout (all little-endian), [`HEADER_LEN`] bytes of header, then the tables in
+//! [`Table::ALL`] order, each row-major with the channels of a texel adjacent:
+//!
+//! | offset | field |
+//! |---|---|
+//! | 0 | magic `FURLUT\0\0` |
+//! | 8 | format version (u32, [`FORMAT_VERSION`]) |
+//! | 12 | model version (u32, [`crate::MODEL_VERSION`]) |
+//! | 16 | resolution: n_sum, n_theta_r, n_phi, n_ms_i, n_ms_r (5 × u32) |
+//! | 36 | scales (6 × f32, [`Table::ALL`] order) |
+//! | 60 | parameters: η_c, pigment kind (u32: 0 σ_ca, 1 melanin), pigment (3 × f32), α°, β_m°, β_n°, l, κ, η_m, σ_ms, σ_ma, g |
+//! | 116 | has profiles (u32 0/1), profile generator version (u32) |
+//! | 124 | profile seed (u64) |
+//! | 132 | photon budget: per C^N cell, per C^M row (2 × u32) |
+//! | 140 | profile resolution: n_sigma, n_h, n_psi, n_in, n_out (5 × u32) |
+//! | 160 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
+//! | 168 | reserved, zero (8 bytes) |
+//! | 176 | table data (u16 halves) |
+
+use crate::medulla::{PhotonBudget, Resolution};
+use crate::params::{FurParams, FurParamsInput, ParamError};
+use crate::pigment::Pigment;
+use crate::spectrum::Rgb;
+use core::fmt;
+use core::ops::Range;
+
+/// First eight bytes of every LUT blob.
+pub const MAGIC: [u8; 8] = *b"FURLUT\0\0";
+
+/// Version of this layout; a blob of another version is rejected.
+pub const FORMAT_VERSION: u32 = 1;
+
+/// Length of the fixed header in bytes.
+pub const HEADER_LEN: usize = 176;
+
+/// Byte range of the checksum field.
+const CHECKSUM: Range<usize> = 160..168;
+
+/// Largest node count accepted on any axis.
+pub const MAX_NODES: u32 = 8192;
+
+/// Largest number of f16 values (all tables together) accepted: 64 Mi values, 128 MiB.
+pub const MAX_VALUES: usize = 1 << 26;
+
+/// Smallest and largest accepted table scale (powers of two); the bounds keep every product
+/// the evaluator forms finite.
+pub const SCALE_RANGE: (f32, f32) = (1.0 / (1u64 << 60) as f32, (1u32 << 15) as f32);
+
+/// FNV-1a 64 (the LUT checksum; also used by the profile cache).
+pub fn fnv1a64(bytes: &[u8]) -> u64 {
+    fnv1a64_continue(0xcbf2_9ce4_8422_2325, bytes)
+}
+
+fn fnv1a64_continue(mut h: u64, bytes: &[u8]) -> u64 {
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
+}
+
+/// One of the six tables.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Table {
+    /// M_g(θ_i + θ_r) for the three cuticle groups.
+    M = 0,
+    /// N_R(|θ_r|, |φ|).
+    NR = 1,
+    /// N_TT(|θ_r|, |φ|): TT + TrT + TttT + TtrtT.
+    NTT = 2,
+    /// N_TRT(|θ_r|, |φ|): TRT + TrRrT + TttRttT.
+    NTRT = 3,
+    /// Σ N^s_p(|θ_r|, |φ|) of the three scattered lobes.
+    NS = 4,
+    /// M^s_back(θ_i, θ_r) and M^s_front(θ_i, θ_r).
+    MS = 5,
+}
+
+/// Number of tables.
+pub const TABLE_COUNT: usize = 6;
+
+impl Table {
+    /// All tables in blob order.
+    pub const ALL: [Table; TABLE_COUNT] = [
+        Table::M,
+        Table::NR,
+        Table::NTT,
+        Table::NTRT,
+        Table::NS,
+        Table::MS,
+    ];
+
+    /// Layer name in the EXR file and in messages.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Table::M => "M",
+            Table::NR => "N_R",
+            Table::NTT => "N_TT",
+            Table::NTRT => "N_TRT",
+            Table::NS => "N_s",
+            Table::MS => "M_s",
+        }
+    }
+
+    /// Channel names, in texel order.
+    pub const fn channel_names(self) -> &'static [&'static str] {
+        match self {
+            Table::M => &["R", "TT", "TRT"],
+            Table::MS => &["back", "front"],
+            _ => &["R", "G", "B"],
+        }
+    }
+
+    /// Channels per texel.
+    pub const fn channels(self) -> usize {
+        self.channel_names().len()
+    }
+
+    /// The N table of an unscattered group or the scattered lobes, by family index 0..4.
+    pub const fn azimuthal(family: usize) -> Table {
+        match family {
+            0 => Table::NR,
+            1 => Table::NTT,
+            2 => Table::NTRT,
+            _ => Table::NS,
+        }
+    }
+}
+
+/// Node counts of the table axes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LutResolution {
+    /// Nodes of x = θ_i + θ_r ∈ [−π, π] (table `M`).
+    pub n_sum: u32,
+    /// Nodes of |θ_r| ∈ [0, π/2] (the N tables' rows).
+    pub n_theta_r: u32,
+    /// Nodes of |φ| ∈ [0, π] (the N tables' columns).
+    pub n_phi: u32,
+    /// Nodes of θ_i ∈ [−π/2, π/2] (table `M_s` columns).
+    pub n_ms_i: u32,
+    /// Nodes of θ_r ∈ [−π/2, π/2] (table `M_s` rows).
+    pub n_ms_r: u32,
+}
+
+impl LutResolution {
+    /// The default resolution (docs/lut.md gives the error it was chosen by).
+    pub const DEFAULT: LutResolution = LutResolution {
+        n_sum: 1024,
+        n_theta_r: 48,
+        n_phi: 128,
+        n_ms_i: 96,
+        n_ms_r: 96,
+    };
+
+    /// The node counts with their names, for messages and metadata.
+    pub fn axes(&self) -> [(&'static str, u32); 5] {
+        [
+            ("n_sum", self.n_sum),
+            ("n_theta_r", self.n_theta_r),
+            ("n_phi", self.n_phi),
+            ("n_ms_i", self.n_ms_i),
+            ("n_ms_r", self.n_ms_r),
+        ]
+    }
+
+    /// Checks every axis has 2 ..= [`MAX_NODES`] nodes and the tables hold at most
+    /// [`MAX_VALUES`] values.
+    pub fn validate(&self) -> Result<(), LutError> {
+        for (axis, nodes) in self.axes() {
+            if !(2..=MAX_NODES).contains(&nodes) {
+                return Err(LutError::Resolution { axis, nodes });
+            }
+        }
+        if self.total_values() > MAX_VALUES {
+            return Err(LutError::TooLarge {
+                values: self.total_values(),
+            });
+        }
+        Ok(())
+    }
+
+    /// (width, height) of a table in texels.
+    pub fn dims(&self, table: Table) -> (usize, usize) {
+        match table {
+            Table::M => (self.n_sum as usize, 1),
+            Table::MS => (self.n_ms_i as usize, self.n_ms_r as usize),
+            _ => (self.n_phi as usize, self.n_theta_r as usize),
+        }
+    }
+
+    /// Number of f16 values in a table.
+    pub fn values(&self, table: Table) -> usize {
+        let (w, h) = self.dims(table);
+        w * h * table.channels()
+    }
+
+    /// Number of f16 values in all tables.
+    pub fn total_values(&self) -> usize {
+        Table::ALL.iter().map(|&t| self.values(t)).sum()
+    }
+
+    /// Byte range of a table inside the blob.
+    pub fn byte_range(&self, table: Table) -> Range<usize> {
+        let start = HEADER_LEN
+            + Table::ALL[..table as usize]
+                .iter()
+                .map(|&t| 2 * self.values(t))
+                .sum::<usize>();
+        start..start + 2 * self.values(table)
+    }
+
+    /// Length of the whole blob in bytes.
+    pub fn blob_len(&self) -> usize {
+        HEADER_LEN + 2 * self.total_values()
+    }
+}
+
+/// How the medulla profiles behind the scattered tables were made, so that the analytic
+/// model the tables were baked from can be rebuilt bit for bit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProfileProvenance {
+    /// Profile generator version ([`crate::medulla::GENERATOR_VERSION`]).
+    pub generator_version: u32,
+    /// Seed of the random streams.
+    pub seed: u64,
+    /// Photons per cell.
+    pub budget: PhotonBudget,
+    /// Table resolution.
+    pub res: Resolution,
+}
+
+/// Everything in a LUT besides the table data.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LutHeader {
+    /// Node counts.
+    pub res: LutResolution,
+    /// Per-table scale (value = f16 × scale), [`Table::ALL`] order.
+    pub scales: [f32; TABLE_COUNT],
+    /// The parameters the tables were baked from.
+    pub params: FurParamsInput,
+    /// The profiles the scattered tables were baked from (`None`: the model had none, the
+    /// scattered tables are zero).
+    pub profiles: Option<ProfileProvenance>,
+}
+
+/// Why a LUT blob was rejected.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LutError {
+    /// Shorter than the header.
+    TooShort {
+        /// Bytes given.
+        len: usize,
+    },
+    /// Does not start with [`MAGIC`].
+    BadMagic,
+    /// Made for another layout version.
+    FormatVersion {
+        /// Version found.
+        found: u32,
+    },
+    /// Made by another model version.
+    ModelVersion {
+        /// Version found.
+        found: u32,
+    },
+    /// An axis has too few or too many nodes.
+    Resolution {
+        /// Axis name.
+        axis: &'static str,
+        /// Nodes found.
+        nodes: u32,
+    },
+    /// The tables would be larger than [`MAX_VALUES`].
+    TooLarge {
+        /// Values the header asks for.
+        values: usize,
+    },
+    /// The blob length does not match the header's resolution (truncated or padded).
+    Length {
+        /// Bytes the header implies.
+        expected: usize,
+        /// Bytes given.
+        found: usize,
+    },
+    /// A table scale is not a power of two within [`SCALE_RANGE`].
+    Scale {
+        /// Table.
+        table: Table,
+        /// Value found.
+        value: f32,
+    },
+    /// A stored value is negative, infinite or NaN.
+    Value {
+        /// Table.
+        table: Table,
+        /// Index of the value within the table.
+        index: usize,
+        /// Its bits.
+        bits: u16,
+    },
+    /// The stored parameters are invalid.
+    Params(ParamError),
+    /// A field that must be 0/1 or zero is not.
+    Field {
+        /// Field name.
+        field: &'static str,
+    },
+    /// The checksum does not match: the data was changed after baking.
+    Checksum {
+        /// Checksum stored.
+        stored: u64,
+        /// Checksum of the bytes given.
+        computed: u64,
+    },
+}
+
+impl fmt::Display for LutError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            LutError::TooShort { len } => write!(
+                f,
+                "LUT is truncated: {len} bytes, shorter than the {HEADER_LEN}-byte header"
+            ),
+            LutError::BadMagic => f.write_str("not a fur LUT (bad magic)"),
+            LutError::FormatVersion { found } => write!(
+                f,
+                "LUT format version {found} is not supported (this build reads version {FORMAT_VERSION})"
+            ),
+            LutError::ModelVersion { found } => write!(
+                f,
+                "LUT was baked by model version {found}; this build is model version {}: rebake it",
+                crate::model::MODEL_VERSION
+            ),
+            LutError::Resolution { axis, nodes } => write!(
+                f,
+                "LUT axis {axis} has {nodes} nodes (valid: 2 to {MAX_NODES})"
+            ),
+            LutError::TooLarge { values } => write!(
+                f,
+                "LUT asks for {values} values, more than the limit of {MAX_VALUES}"
+            ),
+            LutError::Length { expected, found } => write!(
+                f,
+                "LUT is {found} bytes but its header describes {expected} bytes ({})",
+                if found < expected { "truncated" } else { "trailing data" }
+            ),
+            LutError::Scale { table, value } => write!(
+                f,
+                "LUT table {} has scale {value}, not a power of two in [2^-60, 2^15]",
+                table.name()
+            ),
+            LutError::Value { table, index, bits } => write!(
+                f,
+                "LUT table {} value {index} is negative or not finite (f16 bits {bits:#06x})",
+                table.name()
+            ),
+            LutError::Params(e) => write!(f, "LUT parameters are invalid: {e}"),
+            LutError::Field { field } => write!(f, "LUT header field {field} is invalid"),
+            LutError::Checksum { stored, computed } => write!(
+                f,
+                "LUT is corrupt: checksum {computed:016x} does not match the stored {stored:016x}"
+            ),
+        }
+    }
+}
+
+/// f16 bits → f32 for non-negative finite halves (the only ones a valid LUT holds), exact:
+/// shifting the bits into place gives the value times 2^−112 (normal and subnormal halves
+/// alike), which the caller multiplies back, usually folded into the table scale
+/// ([`F16_UNBIAS`]).
+#[inline(always)]
+pub fn f16_biased(bits: u16) -> f32 {
+    f32::from_bits(u32::from(bits) << 13)
+}
+
+/// 2^112: [`f16_biased`]`(bits) × F16_UNBIAS` is the half's value.
+pub const F16_UNBIAS: f32 = f32::from_bits((127 + 112) << 23);
+
+/// Checks that the bits are a non-negative finite half (sign bit clear, exponent not all
+/// ones).
+#[inline]
+pub fn is_valid_value(bits: u16) -> bool {
+    bits & 0x8000 == 0 && bits & 0x7c00 != 0x7c00
+}
+
+fn is_valid_scale(s: f32) -> bool {
+    s.is_finite() && (SCALE_RANGE.0..=SCALE_RANGE.1).contains(&s) && s.to_bits() & 0x007f_ffff == 0
+}
+
+struct Writer<'a> {
+    out: &'a mut [u8; HEADER_LEN],
+    at: usize,
+}
+
+impl Writer<'_> {
+    fn bytes(&mut self, b: &[u8]) {
+        self.out[self.at..self.at + b.len()].copy_from_slice(b);
+        self.at += b.len();
+    }
+    fn u32(&mut self, v: u32) {
+        self.bytes(&v.to_le_bytes());
+    }
+    fn u64(&mut self, v: u64) {
+        self.bytes(&v.to_le_bytes());
+    }
+    fn f32(&mut self, v: f32) {
+        self.bytes(&v.to_le_bytes());
+    }
+}
+
+struct Reader<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl Reader<'_> {
+    fn take<const N: usize>(&mut self) -> [u8; N] {
+        let mut b = [0u8; N];
+        // The caller checked the header length; a short read would leave zeros, never panic.
+        if let Some(src) = self.bytes.get(self.at..self.at + N) {
+            b.copy_from_slice(src);
+        }
+        self.at += N;
+        b
+    }
+    fn u32(&mut self) -> u32 {
+        u32::from_le_bytes(self.take())
+    }
+    fn u64(&mut self) -> u64 {
+        u64::from_le_bytes(self.take())
+    }
+    fn f32(&mut self) -> f32 {
+        f32::from_le_bytes(self.take())
+    }
+}
+
+impl LutHeader {
+    /// The header as bytes, checksum field zero (see [`seal`]).
+    pub fn encode(&self) -> [u8; HEADER_LEN] {
+        let mut out = [0u8; HEADER_LEN];
+        let mut w = Writer {
+            out: &mut out,
+            at: 0,
+        };
+        w.bytes(&MAGIC);
+        w.u32(FORMAT_VERSION);
+        w.u32(crate::model::MODEL_VERSION);
+        for (_, n) in self.res.axes() {
+            w.u32(n);
+        }
+        for s in self.scales {
+            w.f32(s);
+        }
+        let p = &self.params;
+        w.f32(p.eta_c);
+        let (kind, pig) = match p.pigment {
+            Pigment::Absorption(s) => (0, s.0),
+            Pigment::Melanin {
+                eumelanin,
+                pheomelanin,
+            } => (1, [eumelanin, pheomelanin, 0.0]),
+        };
+        w.u32(kind);
+        for v in pig {
+            w.f32(v);
+        }
+        for v in [
+            p.alpha_deg,
+            p.beta_m_deg,
+            p.beta_n_deg.unwrap_or(p.beta_m_deg),
+            p.l,
+            p.kappa,
+            p.eta_m.unwrap_or(p.eta_c),
+            p.sigma_ms,
+            p.sigma_ma,
+            p.g,
+        ] {
+            w.f32(v);
+        }
+        match &self.profiles {
+            Some(pr) => {
+                w.u32(1);
+                w.u32(pr.generator_version);
+                w.u64(pr.seed);
+                w.u32(pr.budget.per_cn_cell);
+                w.u32(pr.budget.per_cm_row);
+                for n in [
+                    pr.res.n_sigma,
+                    pr.res.n_h,
+                    pr.res.n_psi,
+                    pr.res.n_in,
+                    pr.res.n_out,
+                ] {
+                    w.u32(n as u32);
+                }
+            }
+            None => w.bytes(&[0u8; 44]),
+        }
+        debug_assert_eq!(w.at, CHECKSUM.start);
+        out
+    }
+
+    /// Reads and checks the header of `bytes` (magic, versions, resolution, total length,
+    /// scales, parameters, flags); the table values and checksum are checked by
+    /// [`validate`].
+    pub fn decode(bytes: &[u8]) -> Result<LutHeader, LutError> {
+        if bytes.len() < HEADER_LEN {
+            return Err(LutError::TooShort { len: bytes.len() });
+        }
+        if bytes[..8] != MAGIC {
+            return Err(LutError::BadMagic);
+        }
+        let mut r = Reader { bytes, at: 8 };
+        let format = r.u32();
+        if format != FORMAT_VERSION {
+            return Err(LutError::FormatVersion { found: format });
+        }
+        let model = r.u32();
+        if model != crate::model::MODEL_VERSION {
+            return Err(LutError::ModelVersion { found: model });
+        }
+        let res = LutResolution {
+            n_sum: r.u32(),
+            n_theta_r: r.u32(),
+            n_phi: r.u32(),
+            n_ms_i: r.u32(),
+            n_ms_r: r.u32(),
+        };
+        res.validate()?;
+        if bytes.len() != res.blob_len() {
+            return Err(LutError::Length {
+                expected: res.blob_len(),
+                found: bytes.len(),
+            });
+        }
+        let mut scales = [0.0; TABLE_COUNT];
+        for (t, s) in Table::ALL.iter().zip(scales.iter_mut()) {
+            *s = r.f32();
+            if !is_valid_scale(*s) {
+                return Err(LutError::Scale {
+                    table: *t,
+                    value: *s,
+                });
+            }
+        }
+        let eta_c = r.f32();
+        let kind = r.u32();
+        let pig = [r.f32(), r.f32(), r.f32()];
+        let pigment = match kind {
+            0 => Pigment::Absorption(Rgb(pig)),
+            1 if pig[2] == 0.0 => Pigment::Melanin {
+                eumelanin: pig[0],
+                pheomelanin: pig[1],
+            },
+            _ => return Err(LutError::Field { field: "pigment" }),
+        };
+        let mut v = [0.0f32; 9];
+        for x in v.iter_mut() {
+            *x = r.f32();
+        }
+        let params = FurParamsInput {
+            eta_c,
+            pigment,
+            alpha_deg: v[0],
+            beta_m_deg: v[1],
+            beta_n_deg: Some(v[2]),
+            l: v[3],
+            kappa: v[4],
+            eta_m: Some(v[5]),
+            sigma_ms: v[6],
+            sigma_ma: v[7],
+            g: v[8],
+        };
+        FurParams::new(&params).map_err(LutError::Params)?;
+        let has_profiles = r.u32();
+        let generator_version = r.u32();
+        let seed = r.u64();
+        let budget = PhotonBudget {
+            per_cn_cell: r.u32(),
+            per_cm_row: r.u32(),
+        };
+        let pres = Resolution {
+            n_sigma: r.u32() as usize,
+            n_h: r.u32() as usize,
+            n_psi: r.u32() as usize,
+            n_in: r.u32() as usize,
+            n_out: r.u32() as usize,
+        };
+        let profiles = match has_profiles {
+            0 => {
+                if bytes[116..CHECKSUM.start].iter().any(|&b| b != 0) {
+                    return Err(LutError::Field { field: "profiles" });
+                }
+                None
+            }
+            1 => Some(ProfileProvenance {
+                generator_version,
+                seed,
+                budget,
+                res: pres,
+            }),
+            _ => {
+                return Err(LutError::Field {
+                    field: "has_profiles",
+                })
+            }
+        };
+        if bytes[CHECKSUM.end..HEADER_LEN].iter().any(|&b| b != 0) {
+            return Err(LutError::Field { field: "reserved" });
+        }
+        Ok(LutHeader {
+            res,
+            scales,
+            params,
+            profiles,
+        })
+    }
+}
+
+/// The checksum of a blob: FNV-1a 64 over every byte except the checksum field.
+pub fn checksum(blob: &[u8]) -> u64 {
+    let head = blob.get(..CHECKSUM.start).unwrap_or(blob);
+    let tail = blob.get(CHECKSUM.end..).unwrap_or(&[]);
+    fnv1a64_continue(fnv1a64(head), tail)
+}
+
+/// Writes the checksum of a complete blob (header and tables filled in) into its field.
+/// Blobs shorter than the header are left alone.
+pub fn seal(blob: &mut [u8]) {
+    if blob.len() >= HEADER_LEN {
+        let sum = checksum(blob);
+        blob[CHECKSUM].copy_from_slice(&sum.to_le_bytes());
+    }
+}
+
+/// Checks a whole blob: header ([`LutHeader::decode`]), checksum, and that every stored value
+/// is a non-negative finite half.
+pub fn validate(bytes: &[u8]) -> Result<LutHeader, LutError> {
+    let header = LutHeader::decode(bytes)?;
+    let stored = u64::from_le_bytes(bytes[CHECKSUM].try_into().unwrap_or([0; 8]));
+    let computed = checksum(bytes);
+    if stored != computed {
+        return Err(LutError::Checksum { stored, computed });
+    }
+    for t in Table::ALL {
+        let data = &bytes[header.res.byte_range(t)];
+        for (index, pair) in data.chunks_exact(2).enumerate() {
+            let bits = u16::from_le_bytes([pair[0], pair[1]]);
+            if !is_valid_value(bits) {
+                return Err(LutError::Value {
+                    table: t,
+                    index,
+                    bits,
+                });
+            }
+        }
+    }
+    Ok(header)
+}

@@ -210,7 +210,7 @@ impl ErrorBudget {
         for ((metric, values), budget) in summary.rows().into_iter().zip(bounds) {
             for (c, channel) in ["R", "G", "B"].into_iter().enumerate() {
                 // NaN counts as exceeded.
-                if !(values[c] <= budget) {
+                if values[c].is_nan() || values[c] > budget {
                     out.push(Exceeded {
                         metric,
                         channel,

@@ -62,8 +62,8 @@ pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
                     let mut fam = [[0.0f32; 3]; 4];
                     for lobe in Lobe::ALL {
                         let f = LobeFamily::of(lobe) as usize;
-                        for ch in 0..3 {
-                            fam[f][ch] += lobes[lobe.index()].0[ch];
+                        for (acc, v) in fam[f].iter_mut().zip(lobes[lobe.index()].0) {
+                            *acc += v;
                         }
                     }
                     fam

@@ -71,12 +71,10 @@ pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
                 .collect()
         })
         .collect();
-    for f in 0..4 {
-        tables[Table::azimuthal(f) as usize] = rows
-            .iter()
-            .flat_map(|row| row.iter().flat_map(move |fam| fam[f]))
-            .collect();
-    }
+    tables[Table::N as usize] = rows
+        .iter()
+        .flat_map(|row| row.iter().flat_map(|fam| fam.iter().flatten().copied()))
+        .collect();
 
     // M^s_back and M^s_front: M^s at φ = 0 and φ = π, where the blend weight is exactly 0 / 1.
     tables[Table::MS as usize] = (0..res.n_ms_r as usize)

@@ -9,7 +9,7 @@
 use crate::frame::{Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
 use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
-use crate::math::{Libm, Math, PI};
+use crate::math::{cos_within_half_pi, Libm, Math, PI};
 use crate::model::{inv_cos2_theta_i, FarField};
 use crate::params::FurParams;
 use crate::spectrum::Rgb;
@@ -39,13 +39,15 @@ impl Axis {
     fn locate(&self, x: f32) -> (usize, f32) {
         // `max` first: NaN becomes 0 (the callers pass finite angles anyway).
         let u = ((x - self.lo) * self.inv_step).max(0.0).min(self.last);
-        let i = (u as usize).min(self.nodes - 2);
-        (i, u - i as f32)
+        // u ∈ [0, nodes − 1] here; the i32 conversions are the cheap ones on every target.
+        let i = (u as i32).min(self.nodes as i32 - 2);
+        (i as u32 as usize, u - i as f32)
     }
 }
 
-/// A validated LUT, borrowed, evaluated with math backend `M` (only cos θ_i and the
-/// direction-to-angle conversion use it).
+/// A validated LUT, borrowed. The math backend `M` serves only the direction-to-angle
+/// conversion of [`BakedBcsdf::eval_far_dirs`]; cos θ_i comes from
+/// [`cos_within_half_pi`](crate::math::cos_within_half_pi).
 #[derive(Clone, Copy, Debug)]
 pub struct BakedBcsdf<'a, M: Math = Libm> {
     header: LutHeader,
@@ -61,55 +63,69 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     _math: PhantomData<M>,
 }
 
-/// `C` channels of texel `index` of a table, converted (× 2^−112, see [`lut::f16_biased`]).
+/// The `B` bytes of texels `index` and `index + 1` of a table with `C` channels
+/// (`B` = 4·C), as a fixed-size array so that the per-channel loops below carry no bounds
+/// checks.
 #[inline(always)]
-fn texel<const C: usize>(data: &[u8], index: usize) -> [f32; C] {
-    let mut out = [0.0; C];
-    // Validation guarantees the range; a miss would read zeros, never panic.
-    if let Some(bytes) = data.get(2 * C * index..2 * C * (index + 1)) {
-        for (o, b) in out.iter_mut().zip(bytes.chunks_exact(2)) {
-            *o = f16_biased(u16::from_le_bytes([b[0], b[1]]));
+fn texel_pair<const C: usize, const B: usize>(data: &[u8], index: usize) -> Option<&[u8; B]> {
+    let start = 2 * C * index;
+    data.get(start..)
+        .and_then(|s| s.get(..B))
+        .and_then(|s| s.try_into().ok())
+}
+
+/// The `H` = 2·C halves of a texel pair, converted (× 2^−112, see [`lut::f16_biased`]).
+#[inline(always)]
+fn decode<const B: usize, const H: usize>(bytes: Option<&[u8; B]>) -> [f32; H] {
+    let mut out = [0.0; H];
+    // Validation guarantees the range; a miss reads zeros, never panics.
+    if let Some(bytes) = bytes {
+        for (o, pair) in out.iter_mut().zip(bytes.chunks_exact(2)) {
+            *o = f16_biased(u16::from_le_bytes([pair[0], pair[1]]));
         }
     }
     out
 }
 
+/// Linear lookup between texels `index` and `index + 1` (`C` channels each, `B` = 4·C bytes,
+/// `H` = 2·C halves) with weight `w` of the upper one; `k` (table scale × 2^112) is folded
+/// into the weights.
 #[inline(always)]
-fn lerp<const C: usize>(a: [f32; C], b: [f32; C], w: f32) -> [f32; C] {
+fn linear<const C: usize, const B: usize, const H: usize>(
+    data: &[u8],
+    (index, w): (usize, f32),
+    k: f32,
+) -> [f32; C] {
+    let (w0, w1) = ((1.0 - w) * k, w * k);
+    let t: [f32; H] = decode(texel_pair::<C, B>(data, index));
     let mut out = [0.0; C];
     for c in 0..C {
-        out[c] = a[c] + w * (b[c] - a[c]);
+        out[c] = w0 * t[c] + w1 * t[C + c];
     }
     out
 }
 
+/// Bilinear lookup in a row-major table of width `width` (`C` channels, `B` = 4·C bytes and
+/// `H` = 2·C halves per texel pair), rows by `row`, columns by `col`; `k` (table scale ×
+/// 2^112) is folded into the four corner weights.
 #[inline(always)]
-fn scaled<const C: usize>(v: [f32; C], k: f32) -> [f32; C] {
-    v.map(|x| x * k)
-}
-
-/// Bilinear lookup in a row-major table of width `width`.
-#[inline(always)]
-fn bilinear<const C: usize>(
+fn bilinear<const C: usize, const B: usize, const H: usize>(
     data: &[u8],
     width: usize,
     (row, wy): (usize, f32),
     (col, wx): (usize, f32),
     k: f32,
 ) -> [f32; C] {
+    let (ky0, ky1) = ((1.0 - wy) * k, wy * k);
+    let w = [ky0 * (1.0 - wx), ky0 * wx, ky1 * (1.0 - wx), ky1 * wx];
     let i0 = row * width + col;
-    let i1 = i0 + width;
-    let top = lerp(
-        scaled(texel::<C>(data, i0), k),
-        scaled(texel::<C>(data, i0 + 1), k),
-        wx,
-    );
-    let bottom = lerp(
-        scaled(texel::<C>(data, i1), k),
-        scaled(texel::<C>(data, i1 + 1), k),
-        wx,
-    );
-    lerp(top, bottom, wy)
+    let t: [f32; H] = decode(texel_pair::<C, B>(data, i0));
+    let b: [f32; H] = decode(texel_pair::<C, B>(data, i0 + width));
+    let mut out = [0.0; C];
+    for c in 0..C {
+        out[c] = w[0] * t[c] + w[1] * t[C + c] + w[2] * b[c] + w[3] * b[C + c];
+    }
+    out
 }
 
 impl<'a> BakedBcsdf<'a, Libm> {
@@ -175,22 +191,17 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     pub fn eval_far(&self, angles: &Angles) -> Families {
         let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
         let abs_phi = phi.abs();
-        let inv_cos2 = inv_cos2_theta_i(M::cos(ti));
+        let inv_cos2 = inv_cos2_theta_i(cos_within_half_pi(ti));
         let res = &self.header.res;
 
         // M_g(θ_i + θ_r), the three cuticle groups side by side.
         let (i, w) = self.sum.locate(ti + tr);
         let km = self.unbias[Table::M as usize];
-        let m_data = self.tables[Table::M as usize];
-        let m = lerp(
-            scaled(texel::<3>(m_data, i), km),
-            scaled(texel::<3>(m_data, i + 1), km),
-            w,
-        );
+        let m = linear::<3, 12, 6>(self.tables[Table::M as usize], (i, w), km);
 
         // M^s(θ_i, θ_r, |φ|) = (1 − |φ|/π)·back + (|φ|/π)·front.
         let kms = self.unbias[Table::MS as usize];
-        let [back, front] = bilinear::<2>(
+        let [back, front] = bilinear::<2, 8, 4>(
             self.tables[Table::MS as usize],
             res.n_ms_i as usize,
             self.ms_r.locate(tr),
@@ -200,22 +211,22 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let wf = (abs_phi * (1.0 / PI)).min(1.0);
         let ms = back + wf * (front - back);
 
-        // N_g(|θ_r|, |φ|) for the three groups and the scattered lobes.
+        // N_g(|θ_r|, |φ|) for the three groups and the scattered lobes, one 12-channel table.
         let row = self.theta_r.locate(tr.abs());
         let col = self.phi.locate(abs_phi);
         let width = res.n_phi as usize;
         let longitudinal = [m[0], m[1], m[2], ms];
+        let n = bilinear::<12, 48, 24>(
+            self.tables[Table::N as usize],
+            width,
+            row,
+            col,
+            self.unbias[Table::N as usize],
+        );
         let mut out = [Rgb::ZERO; FAMILY_COUNT];
         for (f, o) in out.iter_mut().enumerate() {
-            let t = Table::azimuthal(f);
-            let n = bilinear::<3>(
-                self.tables[t as usize],
-                width,
-                row,
-                col,
-                self.unbias[t as usize],
-            );
-            *o = Rgb(n) * (longitudinal[f] * inv_cos2);
+            let weight = longitudinal[f] * inv_cos2;
+            *o = Rgb([n[3 * f], n[3 * f + 1], n[3 * f + 2]]) * weight;
         }
         Families::from_array(out)
     }

@@ -230,11 +230,13 @@ impl Families {
     };
 
     /// From values in [`LobeFamily::ALL`] order.
+    #[inline]
     pub const fn from_array(values: [Rgb; FAMILY_COUNT]) -> Families {
         Families { values }
     }
 
     /// One family's value.
+    #[inline]
     pub fn get(&self, family: LobeFamily) -> Rgb {
         self.values[family as usize]
     }
@@ -245,6 +247,7 @@ impl Families {
     }
 
     /// The sum over all families: S.
+    #[inline]
     pub fn total(&self) -> Rgb {
         self.values.iter().fold(Rgb::ZERO, |acc, &v| acc + v)
     }

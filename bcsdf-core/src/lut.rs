@@ -16,9 +16,11 @@
 //! | table | value | axes (x: columns, y: rows) | channels |
 //! |---|---|---|---|
 //! | `M` | M_g(x) | x = θ_i + θ_r ∈ [−π, π] | R, TT, TRT |
-//! | `N_R`, `N_TT`, `N_TRT` | N_g | x = \|φ\| ∈ [0, π], y = \|θ_r\| ∈ [0, π/2] | R, G, B |
-//! | `N_s` | Σ N^s_p | as above | R, G, B |
+//! | `N` | N_R, N_TT, N_TRT, Σ N^s_p (RGB each) | x = \|φ\| ∈ [0, π], y = \|θ_r\| ∈ [0, π/2] | R.R, R.G, R.B, TT.R, …, s.B |
 //! | `M_s` | M^s_back, M^s_front | x = θ_i, y = θ_r, both ∈ [−π/2, π/2] | back, front |
+//!
+//! The four azimuthal functions share their axes, so they are one 12-channel table: a lookup
+//! reads two runs of 24 adjacent halves instead of sixteen scattered texels.
 //!
 //! Every axis has uniformly spaced nodes, the first and last on the interval ends; values are
 //! point samples at the nodes, interpolated linearly (bilinearly in 2D).
@@ -38,15 +40,15 @@
 //! | 8 | format version (u32, [`FORMAT_VERSION`]) |
 //! | 12 | model version (u32, [`crate::MODEL_VERSION`]) |
 //! | 16 | resolution: n_sum, n_theta_r, n_phi, n_ms_i, n_ms_r (5 × u32) |
-//! | 36 | scales (6 × f32, [`Table::ALL`] order) |
-//! | 60 | parameters: η_c, pigment kind (u32: 0 σ_ca, 1 melanin), pigment (3 × f32), α°, β_m°, β_n°, l, κ, η_m, σ_ms, σ_ma, g |
-//! | 116 | has profiles (u32 0/1), profile generator version (u32) |
-//! | 124 | profile seed (u64) |
-//! | 132 | photon budget: per C^N cell, per C^M row (2 × u32) |
-//! | 140 | profile resolution: n_sigma, n_h, n_psi, n_in, n_out (5 × u32) |
-//! | 160 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
-//! | 168 | reserved, zero (8 bytes) |
-//! | 176 | table data (u16 halves) |
+//! | 36 | scales (3 × f32, [`Table::ALL`] order) |
+//! | 48 | parameters: η_c, pigment kind (u32: 0 σ_ca, 1 melanin), pigment (3 × f32), α°, β_m°, β_n°, l, κ, η_m, σ_ms, σ_ma, g |
+//! | 104 | has profiles (u32 0/1), profile generator version (u32) |
+//! | 112 | profile seed (u64) |
+//! | 120 | photon budget: per C^N cell, per C^M row (2 × u32) |
+//! | 128 | profile resolution: n_sigma, n_h, n_psi, n_in, n_out (5 × u32) |
+//! | 148 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
+//! | 156 | reserved, zero (4 bytes) |
+//! | 160 | table data (u16 halves) |
 
 use crate::medulla::{PhotonBudget, Resolution};
 use crate::params::{FurParams, FurParamsInput, ParamError};
@@ -62,10 +64,13 @@ pub const MAGIC: [u8; 8] = *b"FURLUT\0\0";
 pub const FORMAT_VERSION: u32 = 1;
 
 /// Length of the fixed header in bytes.
-pub const HEADER_LEN: usize = 176;
+pub const HEADER_LEN: usize = 160;
+
+/// Byte offset of the profile provenance block.
+const PROFILES: usize = 104;
 
 /// Byte range of the checksum field.
-const CHECKSUM: Range<usize> = 160..168;
+pub const CHECKSUM: Range<usize> = 148..156;
 
 /// Largest node count accepted on any axis.
 pub const MAX_NODES: u32 = 8192;
@@ -90,45 +95,36 @@ fn fnv1a64_continue(mut h: u64, bytes: &[u8]) -> u64 {
     h
 }
 
-/// One of the six tables.
+/// One of the three tables.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Table {
     /// M_g(θ_i + θ_r) for the three cuticle groups.
     M = 0,
-    /// N_R(|θ_r|, |φ|).
-    NR = 1,
-    /// N_TT(|θ_r|, |φ|): TT + TrT + TttT + TtrtT.
-    NTT = 2,
-    /// N_TRT(|θ_r|, |φ|): TRT + TrRrT + TttRttT.
-    NTRT = 3,
-    /// Σ N^s_p(|θ_r|, |φ|) of the three scattered lobes.
-    NS = 4,
+    /// N_g(|θ_r|, |φ|) of the R, TT and TRT groups (each the sum of its paths' far-field
+    /// N_p) and Σ N^s_p of the scattered lobes, RGB each: [`LobeFamily`](crate::LobeFamily)
+    /// order, channels within.
+    N = 1,
     /// M^s_back(θ_i, θ_r) and M^s_front(θ_i, θ_r).
-    MS = 5,
+    MS = 2,
 }
 
 /// Number of tables.
-pub const TABLE_COUNT: usize = 6;
+pub const TABLE_COUNT: usize = 3;
+
+/// Channels of table `N`: family, then RGB.
+const N_CHANNELS: [&str; 12] = [
+    "R.R", "R.G", "R.B", "TT.R", "TT.G", "TT.B", "TRT.R", "TRT.G", "TRT.B", "s.R", "s.G", "s.B",
+];
 
 impl Table {
     /// All tables in blob order.
-    pub const ALL: [Table; TABLE_COUNT] = [
-        Table::M,
-        Table::NR,
-        Table::NTT,
-        Table::NTRT,
-        Table::NS,
-        Table::MS,
-    ];
+    pub const ALL: [Table; TABLE_COUNT] = [Table::M, Table::N, Table::MS];
 
     /// Layer name in the EXR file and in messages.
     pub const fn name(self) -> &'static str {
         match self {
             Table::M => "M",
-            Table::NR => "N_R",
-            Table::NTT => "N_TT",
-            Table::NTRT => "N_TRT",
-            Table::NS => "N_s",
+            Table::N => "N",
             Table::MS => "M_s",
         }
     }
@@ -137,24 +133,14 @@ impl Table {
     pub const fn channel_names(self) -> &'static [&'static str] {
         match self {
             Table::M => &["R", "TT", "TRT"],
+            Table::N => &N_CHANNELS,
             Table::MS => &["back", "front"],
-            _ => &["R", "G", "B"],
         }
     }
 
     /// Channels per texel.
     pub const fn channels(self) -> usize {
         self.channel_names().len()
-    }
-
-    /// The N table of an unscattered group or the scattered lobes, by family index 0..4.
-    pub const fn azimuthal(family: usize) -> Table {
-        match family {
-            0 => Table::NR,
-            1 => Table::NTT,
-            2 => Table::NTRT,
-            _ => Table::NS,
-        }
     }
 }
 
@@ -214,8 +200,8 @@ impl LutResolution {
     pub fn dims(&self, table: Table) -> (usize, usize) {
         match table {
             Table::M => (self.n_sum as usize, 1),
+            Table::N => (self.n_phi as usize, self.n_theta_r as usize),
             Table::MS => (self.n_ms_i as usize, self.n_ms_r as usize),
-            _ => (self.n_phi as usize, self.n_theta_r as usize),
         }
     }
 
@@ -525,7 +511,7 @@ impl LutHeader {
                     w.u32(n as u32);
                 }
             }
-            None => w.bytes(&[0u8; 44]),
+            None => w.bytes(&[0u8; CHECKSUM.start - PROFILES]),
         }
         debug_assert_eq!(w.at, CHECKSUM.start);
         out
@@ -619,7 +605,7 @@ impl LutHeader {
         };
         let profiles = match has_profiles {
             0 => {
-                if bytes[116..CHECKSUM.start].iter().any(|&b| b != 0) {
+                if bytes[PROFILES..CHECKSUM.start].iter().any(|&b| b != 0) {
                     return Err(LutError::Field { field: "profiles" });
                 }
                 None

@@ -133,6 +133,28 @@ pub const TAU: f32 = core::f32::consts::TAU;
 
 /// Wraps an angle to `(-π, π]`. Non-finite input gives 0.
 #[inline]
+pub fn cos_within_half_pi(x: f32) -> f32 {
+    // Taylor coefficients (−1)^k/(2k)! for k = 0..7, highest first; the first omitted term
+    // is below (π/2)^16/16! ≈ 6.6e-11.
+    const C: [f32; 8] = [
+        -1.0 / 87_178_291_200.0,
+        1.0 / 479_001_600.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 40_320.0,
+        -1.0 / 720.0,
+        1.0 / 24.0,
+        -0.5,
+        1.0,
+    ];
+    let y = x * x;
+    let mut acc = C[0];
+    for c in &C[1..] {
+        acc = acc * y + c;
+    }
+    acc
+}
+
+/// Wraps an angle to `(-π, π]`. Non-finite input gives 0.
 pub fn wrap_angle(x: f32) -> f32 {
     // Fast path: one period away at most (the common case for sums of a few angles).
     if x > -PI && x <= PI {

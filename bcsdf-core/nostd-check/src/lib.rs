@@ -3,6 +3,8 @@
 #![no_std]
 
 use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::lut::{self, LutHeader, LutResolution};
 use bcsdf_core::{presets, Angles, FastMath, FurBcsdf, FurParams, Libm, Math};
 
 #[panic_handler]
@@ -90,4 +92,71 @@ pub extern "C" fn fur_eval_full_libm(preset: usize, ti: f32, tr: f32, phi: f32, 
 #[no_mangle]
 pub extern "C" fn fur_eval_full_fast(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
     eval_full::<FastMath>(preset, ti, tr, phi, h)
+}
+
+/// A baked LUT borrowed from caller memory (an engine's memory-mapped file or
+/// `include_bytes!`): validated, then evaluated. −1 for a rejected blob.
+///
+/// # Safety
+/// `data` must point to `len` readable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn fur_eval_baked(
+    data: *const u8,
+    len: usize,
+    ti: f32,
+    tr: f32,
+    phi: f32,
+) -> f32 {
+    if data.is_null() {
+        return -1.0;
+    }
+    // SAFETY: the caller promises `len` readable bytes at `data`.
+    let bytes = unsafe { core::slice::from_raw_parts(data, len) };
+    eval_baked(bytes, ti, tr, phi)
+}
+
+fn eval_baked(bytes: &[u8], ti: f32, tr: f32, phi: f32) -> f32 {
+    let Ok(lut) = BakedBcsdf::from_bytes(bytes) else {
+        return -1.0;
+    };
+    let Ok(angles) = Angles::new(ti, tr, phi) else {
+        return -1.0;
+    };
+    let dirs = lut
+        .eval_far_dirs([1.0, 0.0, 0.2], [0.0, 1.0, -0.1], [0.0, 0.0, 1.0])
+        .total();
+    lut.eval_far(&angles).total().0[0] + dirs.0[1]
+}
+
+/// The smallest LUT (two nodes per axis), written into a stack buffer with the core's own
+/// header encoder and checksum, every value 1.0, then evaluated.
+#[no_mangle]
+pub extern "C" fn fur_eval_baked_small(preset: usize, ti: f32, tr: f32, phi: f32) -> f32 {
+    const RES: LutResolution = LutResolution {
+        n_sum: 2,
+        n_theta_r: 2,
+        n_phi: 2,
+        n_ms_i: 2,
+        n_ms_r: 2,
+    };
+    const LEN: usize = lut::HEADER_LEN + 2 * (2 * 3 + 4 * (2 * 2 * 3) + 2 * 2 * 2);
+    let Some(p) = presets::PRESETS.get(preset) else {
+        return -1.0;
+    };
+    if RES.blob_len() != LEN {
+        return -1.0;
+    }
+    let header = LutHeader {
+        res: RES,
+        scales: [1.0; lut::TABLE_COUNT],
+        params: p.input,
+        profiles: None,
+    };
+    let mut blob = [0u8; LEN];
+    blob[..lut::HEADER_LEN].copy_from_slice(&header.encode());
+    for pair in blob[lut::HEADER_LEN..].chunks_exact_mut(2) {
+        pair.copy_from_slice(&0x3c00u16.to_le_bytes()); // 1.0 as f16
+    }
+    lut::seal(&mut blob);
+    eval_baked(&blob, ti, tr, phi)
 }

@@ -18,13 +18,24 @@ fn main() {
     let lut = BakedBcsdf::from_bytes(&blob).unwrap();
     let mut state = 0x2545_f491_4f6c_dd1du64;
     let mut next = move || {
-        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         ((state >> 40) as f32) / (1u64 << 24) as f32
     };
     let qs: Vec<Angles> = (0..256)
-        .map(|_| Angles::from_degrees(-80.0 + 160.0 * next(), -80.0 + 160.0 * next(), -180.0 + 360.0 * next()).unwrap())
+        .map(|_| {
+            Angles::from_degrees(
+                -80.0 + 160.0 * next(),
+                -80.0 + 160.0 * next(),
+                -180.0 + 360.0 * next(),
+            )
+            .unwrap()
+        })
         .collect();
-    let n: usize = std::env::args().nth(1).map_or(20_000_000, |s| s.parse().unwrap());
+    let n: usize = std::env::args()
+        .nth(1)
+        .map_or(20_000_000, |s| s.parse().unwrap());
     let t = Instant::now();
     let mut acc = 0.0f32;
     for i in 0..n {

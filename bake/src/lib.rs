@@ -14,8 +14,10 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod lutfile;
 pub mod metrics;
 pub mod overrides;
+pub mod pipeline;
 pub mod presets;
 pub mod profiles;
 pub mod tables;

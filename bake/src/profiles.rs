@@ -553,6 +553,14 @@ impl AtomicWriter {
     /// Flushes the temporary file to disk and renames it to the destination (replacing any
     /// file there).
     pub fn commit(mut self) -> io::Result<()> {
+        // A temporary file is private (0600); the result is an ordinary readable file.
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            self.tmp
+                .as_file()
+                .set_permissions(std::fs::Permissions::from_mode(0o644))?;
+        }
         self.tmp.as_file_mut().flush()?;
         self.tmp.as_file().sync_all()?;
         self.tmp.persist(&self.path).map_err(|e| e.error)?;

@@ -1,0 +1,208 @@
+//! One preset from parameters to files: profiles → analytic model → sampled tables → f16 blob
+//! → measured error → `<out>/<preset>.exr` and `<out>/<preset>.furlut`, both written
+//! atomically.
+
+use crate::lutfile::{self, LutFile, LutFileError, LutMeta};
+use crate::metrics::{compare, ErrorSummary, MetricSet};
+use crate::presets::NamedPreset;
+use crate::profiles::{self, build_model, CacheOutcome, ProfileOptions};
+use crate::tables;
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::{FurParams, ParamError};
+use std::fmt;
+use std::io;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// File extension of the raw blob.
+pub const BLOB_EXTENSION: &str = "furlut";
+
+/// What [`bake_preset`] does.
+#[derive(Clone, Debug)]
+pub struct BakeOptions {
+    /// Table resolution.
+    pub res: LutResolution,
+    /// Where the medulla profiles come from.
+    pub profiles: ProfileOptions,
+    /// Output directory (must exist and be writable, see [`prepare_out_dir`]).
+    pub out_dir: PathBuf,
+    /// The set the error metrics are measured on (`None`: skip the measurement).
+    pub metrics: Option<MetricSet>,
+}
+
+/// The steps of a bake, reported as they start.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Step {
+    /// Generating or loading the medulla profiles.
+    Profiles,
+    /// Sampling the analytic model into tables.
+    Tables,
+    /// Measuring baked against analytic.
+    Metrics,
+    /// Writing the files.
+    Writing,
+}
+
+impl Step {
+    /// What the step does, for a progress line.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Step::Profiles => "medulla profiles",
+            Step::Tables => "sampling tables",
+            Step::Metrics => "measuring error",
+            Step::Writing => "writing files",
+        }
+    }
+}
+
+/// What a bake made and measured.
+#[derive(Debug)]
+pub struct BakeReport {
+    /// Preset name.
+    pub preset: String,
+    /// The EXR file.
+    pub exr: PathBuf,
+    /// The raw blob.
+    pub blob: PathBuf,
+    /// Bytes of f16 table data.
+    pub table_bytes: usize,
+    /// Bytes of the raw blob (header included).
+    pub blob_bytes: usize,
+    /// Bytes of the EXR file.
+    pub exr_bytes: u64,
+    /// Seconds spent on profiles (generation or cache load).
+    pub profile_seconds: f64,
+    /// Seconds spent sampling and encoding the tables.
+    pub table_seconds: f64,
+    /// Seconds spent measuring the error.
+    pub metric_seconds: f64,
+    /// The measured error, when measured.
+    pub errors: Option<ErrorSummary>,
+    /// What the profile cache did (`None`: the preset needs no profiles).
+    pub cache: Option<CacheOutcome>,
+}
+
+impl BakeReport {
+    /// Profiles plus tables: the time to bake the preset.
+    pub fn bake_seconds(&self) -> f64 {
+        self.profile_seconds + self.table_seconds
+    }
+}
+
+/// Why a bake failed.
+#[derive(Debug)]
+pub enum BakeError {
+    /// The preset's parameters are invalid.
+    Params {
+        /// Preset name.
+        preset: String,
+        /// The first invalid parameter.
+        error: ParamError,
+    },
+    /// The profiles could not be made or cached.
+    Profiles(profiles::Error),
+    /// The output directory cannot be created or written to.
+    OutDir {
+        /// The directory.
+        dir: PathBuf,
+        /// What the system said.
+        source: io::Error,
+    },
+    /// Writing a LUT file failed (the previous file, if any, is untouched).
+    Write(LutFileError),
+    /// The freshly baked blob did not validate (a bug; reported, never written).
+    Invalid(bcsdf_core::lut::LutError),
+}
+
+impl fmt::Display for BakeError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BakeError::Params { preset, error } => write!(f, "preset {preset}: {error}"),
+            BakeError::Profiles(e) => write!(f, "{e}"),
+            BakeError::OutDir { dir, source } => write!(
+                f,
+                "output directory {} is not writable: {source}",
+                dir.display()
+            ),
+            BakeError::Write(e) => write!(f, "{e}"),
+            BakeError::Invalid(e) => write!(f, "baked LUT failed validation: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for BakeError {}
+
+/// Creates `dir` if needed and checks a file can be created in it.
+pub fn prepare_out_dir(dir: &Path) -> Result<(), BakeError> {
+    let err = |source| BakeError::OutDir {
+        dir: dir.to_path_buf(),
+        source,
+    };
+    std::fs::create_dir_all(dir).map_err(err)?;
+    tempfile::Builder::new()
+        .prefix(".bake-probe-")
+        .tempfile_in(dir)
+        .map(drop)
+        .map_err(err)
+}
+
+/// Bakes one preset into `opts.out_dir`; `on_step` hears each step as it starts.
+pub fn bake_preset(
+    preset: &NamedPreset,
+    opts: &BakeOptions,
+    on_step: &dyn Fn(Step),
+) -> Result<BakeReport, BakeError> {
+    let params = FurParams::new(&preset.input).map_err(|error| BakeError::Params {
+        preset: preset.name.clone(),
+        error,
+    })?;
+
+    on_step(Step::Profiles);
+    let t = Instant::now();
+    let (model, cache) = build_model(params, &opts.profiles).map_err(BakeError::Profiles)?;
+    let profile_seconds = t.elapsed().as_secs_f64();
+
+    on_step(Step::Tables);
+    let t = Instant::now();
+    let blob = tables::bake(&model, &preset.input, opts.res);
+    let table_seconds = t.elapsed().as_secs_f64();
+    let baked = BakedBcsdf::from_bytes(&blob).map_err(BakeError::Invalid)?;
+
+    let t = Instant::now();
+    let errors = opts.metrics.map(|set| {
+        on_step(Step::Metrics);
+        compare(&model.model(), &baked, &set)
+    });
+    let metric_seconds = t.elapsed().as_secs_f64();
+
+    on_step(Step::Writing);
+    let exr = opts.out_dir.join(format!("{}.exr", preset.name));
+    let blob_path = opts
+        .out_dir
+        .join(format!("{}.{BLOB_EXTENSION}", preset.name));
+    let file = LutFile {
+        blob,
+        meta: LutMeta {
+            preset: preset.name.clone(),
+            errors,
+        },
+    };
+    lutfile::write_exr(&exr, &file).map_err(BakeError::Write)?;
+    lutfile::write_blob(&blob_path, &file.blob).map_err(BakeError::Write)?;
+    let exr_bytes = std::fs::metadata(&exr).map(|m| m.len()).unwrap_or(0);
+
+    Ok(BakeReport {
+        preset: preset.name.clone(),
+        exr,
+        blob: blob_path,
+        table_bytes: 2 * opts.res.total_values(),
+        blob_bytes: file.blob.len(),
+        exr_bytes,
+        profile_seconds,
+        table_seconds,
+        metric_seconds,
+        errors,
+        cache,
+    })
+}

@@ -1,9 +1,11 @@
 //! # bake
 //!
-//! The `std` side of the fur BCSDF (`bcsdf-core` is `no_std`): reading preset files,
-//! applying `key=value` parameter overrides, and generating (in parallel) and caching the
-//! medulla profiles the full model needs ([`profiles`]). The LUT baker binary arrives in a
-//! later issue.
+//! The `std` side of the fur BCSDF (`bcsdf-core` is `no_std`): the LUT baker — sampling the
+//! analytic far field into half-float tables ([`tables`]), writing and reading them as
+//! OpenEXR and raw blobs ([`lutfile`]), the shared baked-vs-analytic error metrics
+//! ([`metrics`]), one preset end to end ([`pipeline`], used by the `bake` binary) — plus
+//! preset files, `key=value` parameter overrides, and generating (in parallel) and caching
+//! the medulla profiles the full model needs ([`profiles`]).
 //!
 //! ```
 //! let presets = bake::presets::builtin().unwrap();

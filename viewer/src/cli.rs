@@ -13,6 +13,8 @@ Examples:
   printf '30 -20 45\\n30 -20 45 0.3\\n' | viewer probe --preset yan-row-a --stdin
   viewer probe --presets my-presets.toml --preset my-fur --theta-i 0 --theta-r 0 --phi 0
   viewer probe --preset yan-row-b --no-cache --photons-scale 0.1 --theta-i 30 --theta-r -20 --phi 45
+  viewer compare luts/yan-row-a.exr
+  viewer compare --all luts --budget 1%,0.5%,2%
 
 Bad input (unknown preset or key, out-of-range value, malformed angle or stdin line) prints
 one line starting with `error:` on stderr and exits with code 2.";
@@ -59,6 +61,91 @@ pub enum Command {
     /// Evaluate the BCSDF of a preset: far field, or near field at offset h with --h.
     #[command(after_help = PROBE_EXAMPLES)]
     Probe(ProbeArgs),
+    /// Check a baked LUT against the analytic model it was baked from: error metrics per RGB
+    /// channel against a budget, heat maps, polar lobe plots, fur renders, a summary page.
+    #[command(after_help = COMPARE_EXAMPLES)]
+    Compare(CompareArgs),
+}
+
+const COMPARE_EXAMPLES: &str = "\
+The analytic model is rebuilt from the parameters stored in the LUT; its medulla profiles
+are regenerated from the seed, photon budget and resolution stored there (or loaded from the
+profile cache), so it is the model the tables were baked from.
+
+Output: a table per LUT on stdout (rows E1, E_albedo, E_peak; columns R, G, B in percent,
+the budget and PASS/FAIL; a `render` row with the mean relative difference of the fur
+renders), and in the output folder:
+  heatmap.png     1394 x 942  S cos^2(theta_i) over theta_i in [-85, 85] x phi in [-180, 180]
+                              for theta_r = -30, 0, 30, 60: analytic | baked (log colour
+                              scale, 4 decades) | relative error (+/- the E_peak budget);
+                              each panel 360 x 170, one pixel per degree
+  polar.png       1016 x 870  S over phi at (theta_i, theta_r) = (30, -20), (0, 0), (60, -50),
+                              one panel per lobe family R, TT, TRT, scattered; analytic solid,
+                              baked dashed; radius log10 S over 3 decades
+  analytic.png     512 x 384  a patch of 500 curved fibers lit by one directional light,
+  baked.png        512 x 384  rendered with the analytic and the baked far field (same
+                              exposure)
+  difference.png   512 x 384  |baked - analytic| amplified by 1 / (E1 budget), scale written on it
+  families.png     512 x 384  the analytic render split by lobe family (2 x 2, half size)
+  index.html                  the page putting it together; compare.json: the numbers
+With --all DIR: one `<lut-stem>-compare/` folder per LUT under the output folder (default
+DIR), a combined table at the end and `index.html` linking every LUT's page.
+
+Exit codes: 0 within the budget; 3 when a metric exceeds it (stderr names each metric and
+channel); 2 for bad input (missing, corrupt or incompatible LUT, malformed --budget, a
+folder without *.exr); 1 when the output folder cannot be written (checked before any work)
+or the profiles cannot be made. --all reports every LUT first, then exits 2 if any could not
+be read, else 3 if any exceeded the budget.
+
+Examples:
+  viewer compare luts/yan-row-a.exr
+  viewer compare luts/yan-row-a.exr --out /tmp/row-a --budget 0.5%,0.5%,1%
+  viewer compare luts/human-hair.exr --no-images
+  viewer compare --all luts --cache-dir /tmp/fur-cache --threads 2";
+
+/// `viewer compare` arguments.
+#[derive(Debug, Args)]
+pub struct CompareArgs {
+    /// The LUT to check: an .exr written by `bake`.
+    #[arg(
+        value_name = "LUT.exr",
+        required_unless_present = "all",
+        conflicts_with = "all"
+    )]
+    pub lut: Option<PathBuf>,
+
+    /// Check every *.exr in DIR instead (by name), then print one combined summary.
+    #[arg(long, value_name = "DIR")]
+    pub all: Option<PathBuf>,
+
+    /// Output folder (created if needed). Default: `<lut-stem>-compare/` beside the LUT;
+    /// with --all, DIR itself (one `<lut-stem>-compare/` per LUT and `index.html`).
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+
+    /// Largest acceptable E1, E_albedo and E_peak: fractions (0.01,0.005,0.02) or
+    /// percentages (1%,0.5%,2%).
+    #[arg(long, value_name = "E1,E_ALBEDO,E_PEAK", default_value = "1%,0.5%,2%")]
+    pub budget: String,
+
+    /// Measure and print only: no images, no pages, nothing written.
+    #[arg(long)]
+    pub no_images: bool,
+
+    /// Cache of the medulla profiles (default: $FUR_BCSDF_CACHE, else
+    /// ${XDG_CACHE_HOME:-$HOME/.cache}/fur-bcsdf). A DIR given here that cannot be written
+    /// is an error (exit code 1); an unusable default directory is skipped with a note.
+    #[arg(long, value_name = "DIR", conflicts_with = "no_cache")]
+    pub cache_dir: Option<PathBuf>,
+
+    /// Regenerate the profiles without reading or writing any cache.
+    #[arg(long)]
+    pub no_cache: bool,
+
+    /// Worker threads for the profiles, metrics and images (default: one per core; 0 also
+    /// means the default). Results are the same bits for any count.
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
 }
 
 /// Where presets come from.

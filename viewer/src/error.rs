@@ -1,5 +1,5 @@
 //! Errors and exit codes: bad input exits 2 (like clap's usage errors), I/O and other
-//! failures 1.
+//! failures 1, a LUT over its error budget (`viewer compare`) 3.
 
 use std::fmt;
 use std::io::{self, Write};
@@ -15,6 +15,8 @@ pub enum Error {
     /// Anything else that is not the input's fault (e.g. an unwritable profile cache
     /// directory): exit code 1.
     Failure(String),
+    /// `viewer compare`: a metric exceeds the budget: exit code 3.
+    Budget(String),
 }
 
 impl Error {
@@ -31,6 +33,7 @@ impl Error {
             Error::Io(e) if e.kind() == io::ErrorKind::BrokenPipe => return ExitCode::SUCCESS,
             Error::Io(e) => (format!("I/O error: {e}"), 1),
             Error::Failure(m) => (m, 1),
+            Error::Budget(m) => (m, 3),
         };
         let _ = writeln!(io::stderr().lock(), "error: {message}");
         ExitCode::from(code)

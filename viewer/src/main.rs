@@ -2,9 +2,14 @@
 
 mod catalog;
 mod cli;
+mod compare;
 mod error;
+mod figures;
 mod json;
+mod plot;
 mod probe;
+mod render;
+mod summary;
 
 use clap::Parser;
 use std::process::ExitCode;
@@ -13,6 +18,7 @@ fn main() -> ExitCode {
     let result = match cli::Cli::parse().command {
         cli::Command::Presets(args) => catalog::list(&args),
         cli::Command::Probe(args) => probe::run(&args),
+        cli::Command::Compare(args) => compare::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -47,7 +47,7 @@ impl Axis {
 
 /// A validated LUT, borrowed. The math backend `M` serves only the direction-to-angle
 /// conversion of [`BakedBcsdf::eval_far_dirs`]; cos θ_i comes from
-/// [`cos_within_half_pi`](crate::math::cos_within_half_pi).
+/// [`cos_within_half_pi`].
 #[derive(Clone, Copy, Debug)]
 pub struct BakedBcsdf<'a, M: Math = Libm> {
     header: LutHeader,
@@ -67,22 +67,22 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
 /// (`B` = 4·C), as a fixed-size array so that the per-channel loops below carry no bounds
 /// checks.
 #[inline(always)]
-fn texel_pair<const C: usize, const B: usize>(data: &[u8], index: usize) -> Option<&[u8; B]> {
+fn texel_pair<const C: usize, const B: usize>(data: &[u8], index: usize) -> &[u8; B] {
     let start = 2 * C * index;
-    data.get(start..)
-        .and_then(|s| s.get(..B))
-        .and_then(|s| s.try_into().ok())
+    // Validation guarantees the range; a miss would read zeros (a pointer select, so the
+    // decoding below stays branch- and blend-free), never panic.
+    match data.get(start..).and_then(|s| s.get(..B)) {
+        Some(s) => s.try_into().unwrap_or(&[0; B]),
+        None => &[0; B],
+    }
 }
 
 /// The `H` = 2·C halves of a texel pair, converted (× 2^−112, see [`lut::f16_biased`]).
 #[inline(always)]
-fn decode<const B: usize, const H: usize>(bytes: Option<&[u8; B]>) -> [f32; H] {
+fn decode<const B: usize, const H: usize>(bytes: &[u8; B]) -> [f32; H] {
     let mut out = [0.0; H];
-    // Validation guarantees the range; a miss reads zeros, never panics.
-    if let Some(bytes) = bytes {
-        for (o, pair) in out.iter_mut().zip(bytes.chunks_exact(2)) {
-            *o = f16_biased(u16::from_le_bytes([pair[0], pair[1]]));
-        }
+    for (o, pair) in out.iter_mut().zip(bytes.chunks_exact(2)) {
+        *o = f16_biased(u16::from_le_bytes([pair[0], pair[1]]));
     }
     out
 }

@@ -93,12 +93,7 @@ pub const DEFAULT_SEED: u64 = 1;
 
 /// FNV-1a 64 of `bytes` (the cache checksum and file-name hash).
 pub fn fnv1a64(bytes: &[u8]) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for &b in bytes {
-        h ^= u64::from(b);
-        h = h.wrapping_mul(0x0000_0100_0000_01b3);
-    }
-    h
+    bcsdf_core::lut::fnv1a64(bytes)
 }
 
 /// Everything that determines the tables' bits: the generator ([`GENERATOR_VERSION`]) aside,

@@ -16,7 +16,7 @@
 //! Rows are evaluated in parallel and merged in row order, so the result has the same bits
 //! for any thread count.
 
-use bcsdf_core::{Angles, FarField, Rgb};
+use bcsdf_core::{Angles, Bcsdf, Rgb};
 use rayon::prelude::*;
 use std::fmt;
 
@@ -234,14 +234,14 @@ struct Row {
     max_reference: [f64; 3],
 }
 
-fn eval_row<A: FarField, B: FarField>(reference: &A, baked: &B, set: &MetricSet, j: usize) -> Row {
+fn eval_row<A: Bcsdf, B: Bcsdf>(reference: &A, baked: &B, set: &MetricSet, j: usize) -> Row {
     let mut row = Row::default();
     for i in 0..set.n_theta_i {
         for k in 0..set.n_phi {
             let angles = set.point(j, i, k);
             let w = f64::from(angles.theta_i().cos()).powi(2);
-            let a: Rgb = reference.eval_far_total(&angles);
-            let b: Rgb = baked.eval_far_total(&angles);
+            let a: Rgb = reference.eval(&angles).total();
+            let b: Rgb = baked.eval(&angles).total();
             for c in 0..3 {
                 let (sa, sb) = (f64::from(a.0[c]) * w, f64::from(b.0[c]) * w);
                 let d = (sb - sa).abs();
@@ -260,8 +260,8 @@ fn eval_row<A: FarField, B: FarField>(reference: &A, baked: &B, set: &MetricSet,
 /// pool; the result does not depend on the thread count).
 pub fn compare<A, B>(reference: &A, baked: &B, set: &MetricSet) -> ErrorSummary
 where
-    A: FarField + Sync,
-    B: FarField + Sync,
+    A: Bcsdf + Sync,
+    B: Bcsdf + Sync,
 {
     let rows: Vec<Row> = (0..set.n_theta_r)
         .into_par_iter()
@@ -313,11 +313,18 @@ mod tests {
     use bcsdf_core::{Families, LobeFamily};
 
     struct Constant(f32);
-    impl FarField for Constant {
-        fn eval_far_families(&self, _: &Angles) -> Families {
+    impl Bcsdf for Constant {
+        type Math = bcsdf_core::Libm;
+        fn eval(&self, _: &Angles) -> Families {
             let mut v = [Rgb::ZERO; 4];
             v[LobeFamily::R as usize] = Rgb::splat(self.0);
             Families::from_array(v)
+        }
+        fn pdf(&self, _: &Angles) -> f32 {
+            0.0
+        }
+        fn sample_direction(&self, _: f32, _: [f32; 3]) -> Option<bcsdf_core::SampledDirection> {
+            None
         }
     }
 

@@ -1,27 +1,29 @@
 //! The baked far-field evaluator: reads the half-float tables of [`crate::lut`] in place
-//! (borrowed bytes, no allocation, no std) and evaluates
+//! (borrowed bytes, no allocation, no std) and evaluates (docs/model.md §8)
 //!
 //! S = [Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s(|θ_r|, |φ|)] / cos²θ_i
 //!
 //! with linear interpolation in every table axis. The data is validated once, in
 //! [`BakedBcsdf::from_bytes`]; evaluation then never fails, never panics and never returns NaN.
+//! Sampling and pdf ([`crate::Bcsdf`]) are in [`crate::sampling::baked`].
 
 use crate::frame::{Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
+use crate::lut::cdf::Nodes;
 use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
 use crate::math::{cos_within_half_pi, Libm, Math, PI};
-use crate::model::{inv_cos2_theta_i, FarField};
+use crate::model::inv_cos2_theta_i;
 use crate::params::FurParams;
 use crate::spectrum::Rgb;
 use core::marker::PhantomData;
 
 /// One uniform table axis over [lo, lo + span] with `nodes` nodes.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Axis {
-    lo: f32,
+pub(crate) struct Axis {
+    pub(crate) lo: f32,
     inv_step: f32,
     last: f32,
-    nodes: usize,
+    pub(crate) nodes: usize,
 }
 
 impl Axis {
@@ -36,7 +38,7 @@ impl Axis {
 
     /// Lower node index and weight of the upper node for `x` (clamped to the axis ends).
     #[inline(always)]
-    fn locate(&self, x: f32) -> (usize, f32) {
+    pub(crate) fn locate(&self, x: f32) -> (usize, f32) {
         // `max` first: NaN becomes 0 (the callers pass finite angles anyway).
         let u = ((x - self.lo) * self.inv_step).max(0.0).min(self.last);
         // u ∈ [0, nodes − 1] here; the i32 conversions are the cheap ones on every target.
@@ -50,17 +52,36 @@ impl Axis {
 /// [`cos_within_half_pi`].
 #[derive(Clone, Copy, Debug)]
 pub struct BakedBcsdf<'a, M: Math = Libm> {
-    header: LutHeader,
+    pub(crate) header: LutHeader,
     params: FurParams,
     tables: [&'a [u8]; TABLE_COUNT],
     /// Table scale × 2^112 (see [`lut::f16_biased`]).
     unbias: [f32; TABLE_COUNT],
-    sum: Axis,
-    theta_r: Axis,
-    phi: Axis,
-    ms_i: Axis,
-    ms_r: Axis,
+    /// Node values as the sampling section sees them.
+    pub(crate) nodes: Nodes<'a>,
+    /// The whole blob (the sampling section is read from it).
+    pub(crate) blob: &'a [u8],
+    pub(crate) sum: Axis,
+    pub(crate) theta_r: Axis,
+    pub(crate) phi: Axis,
+    pub(crate) ms_i: Axis,
+    pub(crate) ms_r: Axis,
     _math: PhantomData<M>,
+}
+
+/// The table lookups of one query, shared by evaluation and pdf.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Lookups {
+    /// M_g(θ_i + θ_r), g = R, TT, TRT.
+    pub(crate) m: [f32; 3],
+    /// M^s_back(θ_i, θ_r), M^s_front(θ_i, θ_r).
+    pub(crate) ms: [f32; 2],
+    /// N (12 channels: family, then RGB) at (|θ_r|, |φ|).
+    pub(crate) n: [f32; 12],
+    /// |φ|/π, the front weight of M^s.
+    pub(crate) front: f32,
+    /// 1/cos²θ_i, guarded.
+    pub(crate) inv_cos2: f32,
 }
 
 /// The `B` bytes of texels `index` and `index + 1` of a table with `C` channels
@@ -153,6 +174,8 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             params,
             tables,
             unbias,
+            nodes: Nodes::new(bytes, res, header.scales),
+            blob: bytes,
             sum: Axis::new(-PI, 2.0 * PI, res.n_sum),
             theta_r: Axis::new(0.0, PI / 2.0, res.n_theta_r),
             phi: Axis::new(0.0, PI, res.n_phi),
@@ -186,12 +209,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// Far-field S(ω_i, ω_r) per lobe family, from the tables.
+    /// The table lookups of one query.
     #[inline]
-    pub fn eval_far(&self, angles: &Angles) -> Families {
+    pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
         let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
         let abs_phi = phi.abs();
-        let inv_cos2 = inv_cos2_theta_i(cos_within_half_pi(ti));
         let res = &self.header.res;
 
         // M_g(θ_i + θ_r), the three cuticle groups side by side.
@@ -199,36 +221,53 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let km = self.unbias[Table::M as usize];
         let m = linear::<3, 12, 6>(self.tables[Table::M as usize], (i, w), km);
 
-        // M^s(θ_i, θ_r, |φ|) = (1 − |φ|/π)·back + (|φ|/π)·front.
+        // M^s_back and M^s_front at (θ_i, θ_r).
         let kms = self.unbias[Table::MS as usize];
-        let [back, front] = bilinear::<2, 8, 4>(
+        let ms = bilinear::<2, 8, 4>(
             self.tables[Table::MS as usize],
             res.n_ms_i as usize,
             self.ms_r.locate(tr),
             self.ms_i.locate(ti),
             kms,
         );
-        let wf = (abs_phi * (1.0 / PI)).min(1.0);
-        let ms = back + wf * (front - back);
 
         // N_g(|θ_r|, |φ|) for the three groups and the scattered lobes, one 12-channel table.
-        let row = self.theta_r.locate(tr.abs());
-        let col = self.phi.locate(abs_phi);
-        let width = res.n_phi as usize;
-        let longitudinal = [m[0], m[1], m[2], ms];
         let n = bilinear::<12, 48, 24>(
             self.tables[Table::N as usize],
-            width,
-            row,
-            col,
+            res.n_phi as usize,
+            self.theta_r.locate(tr.abs()),
+            self.phi.locate(abs_phi),
             self.unbias[Table::N as usize],
         );
+        Lookups {
+            m,
+            ms,
+            n,
+            front: (abs_phi * (1.0 / PI)).min(1.0),
+            inv_cos2: inv_cos2_theta_i(cos_within_half_pi(ti)),
+        }
+    }
+
+    /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and
+    /// M^s·N^s with M^s = (1 − |φ|/π)·back + (|φ|/π)·front, each over cos²θ_i.
+    #[inline]
+    pub(crate) fn assemble(l: &Lookups) -> Families {
+        let [back, front] = l.ms;
+        let ms = back + l.front * (front - back);
+        let longitudinal = [l.m[0], l.m[1], l.m[2], ms];
         let mut out = [Rgb::ZERO; FAMILY_COUNT];
         for (f, o) in out.iter_mut().enumerate() {
-            let weight = longitudinal[f] * inv_cos2;
-            *o = Rgb([n[3 * f], n[3 * f + 1], n[3 * f + 2]]) * weight;
+            let weight = longitudinal[f] * l.inv_cos2;
+            *o = Rgb([l.n[3 * f], l.n[3 * f + 1], l.n[3 * f + 2]]) * weight;
         }
         Families::from_array(out)
+    }
+
+    /// Far-field S(ω_i, ω_r) per lobe family, from the tables (docs/model.md §8).
+    #[inline]
+    #[must_use]
+    pub fn eval_far(&self, angles: &Angles) -> Families {
+        Self::assemble(&self.lookups(angles))
     }
 
     /// Far-field S from world-space directions (see [`Angles::from_directions`]); invalid
@@ -241,8 +280,3 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     }
 }
 
-impl<M: Math> FarField for BakedBcsdf<'_, M> {
-    fn eval_far_families(&self, angles: &Angles) -> Families {
-        self.eval_far(angles)
-    }
-}

@@ -1,5 +1,9 @@
 //! Far-field azimuthal lobes N_p(φ) = ½ ∫ A_p(h)·D_p(φ − Φ_p(h)) dh (MODEL.md §5).
 //!
+//! The same pass can integrate a second integrand with the same nodes: the sampling
+//! density of the analytic sampler (docs/model.md §10), Σ_p c_p·½ ∫ D_p(φ − Φ_p(h)) dh over
+//! the h where path p exists, for per-path constants c_p ([`FarFieldQuery::azimuthal_with_density`]).
+//!
 //! # Quadrature
 //!
 //! A_p and Φ_p are odd/even in h (Φ_p(−h) = −Φ_p(h), A_p(−h) = A_p(h)) and D_p is even, so
@@ -100,18 +104,19 @@ const TIR_PATHS: PathMask = mask(&[Lobe::R, Lobe::TrT, Lobe::TrRrT]);
 /// Paths that carry a medulla reflection f_m and vanish when η_m = η_c.
 const MEDULLA_REFLECTION_PATHS: PathMask = mask(&[Lobe::TrT, Lobe::TtrtT, Lobe::TrRrT]);
 
-/// One smooth piece of h ∈ [0, 1].
+/// One smooth piece of h ∈ [0, 1]: h = K·sin t for t ∈ [t0, t1] (K from [`segment_scale`]).
 #[derive(Clone, Copy, Debug)]
-struct Segment {
-    var: ChordVariable,
-    t0: f32,
-    t1: f32,
-    paths: PathMask,
-    region: Region,
+pub(crate) struct Segment {
+    pub(crate) var: ChordVariable,
+    pub(crate) t0: f32,
+    pub(crate) t1: f32,
+    /// Bit p set: unscattered path p ([`Lobe::index`]) exists on this segment.
+    pub(crate) paths: PathMask,
+    pub(crate) region: Region,
 }
 
 /// The segments of [0, 1] for this slice, at most three.
-fn segments<M: Math>(slice: &ViewSlice, index_matched: bool) -> ([Segment; 3], usize) {
+pub(crate) fn segments<M: Math>(slice: &ViewSlice, index_matched: bool) -> ([Segment; 3], usize) {
     let empty = Segment {
         var: ChordVariable::A,
         t0: 0.0,
@@ -208,14 +213,30 @@ pub struct FarFieldQuery<'a> {
 impl FarFieldQuery<'_> {
     /// N_p(φ) for the eight unscattered paths, in [`Lobe::UNSCATTERED`] order.
     pub fn azimuthal<M: Math>(&self, phi: f32) -> [Rgb; UNSCATTERED_COUNT] {
-        let mut acc = [Rgb::ZERO; UNSCATTERED_COUNT];
+        self.azimuthal_with_density::<M>(phi, &[0.0; UNSCATTERED_COUNT])
+            .0
+    }
+
+    /// N_p(φ) as [`FarFieldQuery::azimuthal`], and with the same nodes
+    /// Σ_p c_p·½ ∫ [D_p(φ − Φ_p(h)) + D_p(−φ − Φ_p(h))] dh over h ∈ [0, 1] where path p exists
+    /// (the analytic sampler's density, docs/model.md §10), for `coeffs` c_p.
+    pub fn azimuthal_with_density<M: Math>(
+        &self,
+        phi: f32,
+        coeffs: &[f32; UNSCATTERED_COUNT],
+    ) -> ([Rgb; UNSCATTERED_COUNT], f32) {
+        let mut acc = Accumulator {
+            value: [Rgb::ZERO; UNSCATTERED_COUNT],
+            density: 0.0,
+            coeffs,
+        };
         let (segs, n) = segments::<M>(self.slice, self.index_matched);
         for seg in &segs[..n] {
             if seg.t1 > seg.t0 {
                 self.segment::<M>(seg, phi, &mut acc);
             }
         }
-        acc
+        (acc.value, acc.density)
     }
 
     /// Far-field N^s_p(φ) of the three scattered lobes, ½ ∫ N^s_p(h, φ) dh over the part of h
@@ -231,10 +252,26 @@ impl FarFieldQuery<'_> {
         sigma_n: f32,
         phi: f32,
     ) -> [Rgb; SCATTERED_COUNT] {
+        self.azimuthal_scattered_with_density::<M>(profiles, sigma_n, phi, &[0.0; SCATTERED_COUNT])
+            .0
+    }
+
+    /// N^s_p(φ) as [`FarFieldQuery::azimuthal_scattered`], and with the same nodes
+    /// Σ_k c_k·½ ∫ [C^N(φ − π − Φ^s_k) + C^N(−φ − π − Φ^s_k)]/‖C^N row‖ dh over the h that
+    /// enter the medulla (the analytic sampler's density, docs/model.md §10).
+    pub fn azimuthal_scattered_with_density<M: Math>(
+        &self,
+        profiles: &MedullaProfiles<'_>,
+        sigma_n: f32,
+        phi: f32,
+        coeffs: &[f32; SCATTERED_COUNT],
+    ) -> ([Rgb; SCATTERED_COUNT], f32) {
         let mut acc = [Rgb::ZERO; SCATTERED_COUNT];
+        let mut density = 0.0;
+        let want_density = coeffs.iter().any(|c| *c > 0.0);
         let (segs, n) = segments::<M>(self.slice, false);
         let Some(seg) = segs[..n].iter().find(|s| s.region == Region::Enter) else {
-            return acc;
+            return (acc, density);
         };
         let k = segment_scale(self.slice, seg.var);
         let exit = exit_transmittance::<M>(self.slice, self.extinction);
@@ -284,12 +321,24 @@ impl FarFieldQuery<'_> {
                 for ((a, p), m) in acc.iter_mut().zip(plus).zip(minus) {
                     *a += (p + m) * weight;
                 }
+                if want_density {
+                    let mass = profiles.row_mass(&row);
+                    if mass > 0.0 {
+                        for (c, rot) in coeffs.iter().zip(paths.rotation) {
+                            if *c > 0.0 {
+                                let d = profiles.cn_at(&row, phi - PI - rot)
+                                    + profiles.cn_at(&row, -phi - PI - rot);
+                                density += c * weight * d / mass;
+                            }
+                        }
+                    }
+                }
             }
         }
-        acc
+        (acc, density)
     }
 
-    fn segment<M: Math>(&self, seg: &Segment, phi: f32, acc: &mut [Rgb; UNSCATTERED_COUNT]) {
+    fn segment<M: Math>(&self, seg: &Segment, phi: f32, acc: &mut Accumulator<'_>) {
         let k = segment_scale(self.slice, seg.var);
         let probes = Probes::new::<M>(self.slice, seg);
         // Pass 1: which paths come within reach of ±φ on each probe panel, over which part
@@ -371,7 +420,7 @@ impl FarFieldQuery<'_> {
         bounds: &[f32],
         run: &[Panel],
         phi: f32,
-        acc: &mut [Rgb; UNSCATTERED_COUNT],
+        acc: &mut Accumulator<'_>,
     ) {
         // Work of each panel: sub-panels it needs (at least MIN_DENSITY per probe panel,
         // so that A_p and the Jacobian are resolved even where Φ_p is flat).
@@ -415,12 +464,20 @@ impl FarFieldQuery<'_> {
                     }
                     let d = self.groups.d(Lobe::unscattered_group(p));
                     let dist = d.eval::<M>(phi - azimuths[p]) + d.eval::<M>(-phi - azimuths[p]);
-                    acc[p] += att[p] * (weight * dist);
+                    acc.value[p] += att[p] * (weight * dist);
+                    acc.density += acc.coeffs[p] * (weight * dist);
                 }
             }
             ta = tb;
         }
     }
+}
+
+/// What one far-field pass accumulates: N_p per path, and the sampling density.
+struct Accumulator<'c> {
+    value: [Rgb; UNSCATTERED_COUNT],
+    density: f32,
+    coeffs: &'c [f32; UNSCATTERED_COUNT],
 }
 
 /// Exit azimuths at a segment's probe points, with per-panel spans and curvature margins.
@@ -484,7 +541,7 @@ impl Probes {
 }
 
 /// K in h = K·sin t for the segment variable.
-fn segment_scale(slice: &ViewSlice, var: ChordVariable) -> f32 {
+pub(crate) fn segment_scale(slice: &ViewSlice, var: ChordVariable) -> f32 {
     match var {
         ChordVariable::A => 1.0,
         ChordVariable::M => slice.h_medulla(),

@@ -130,10 +130,96 @@ impl Angles {
         self.phi
     }
     /// The same query with φ → −φ.
+    #[must_use]
     pub fn mirrored(&self) -> Angles {
         Angles {
             phi: wrap_angle(-self.phi),
             ..*self
         }
+    }
+}
+
+/// The fiber frame (v, w, u) of one view direction (docs/model.md §1): u the unit tangent,
+/// v the unit projection of ω_r onto the normal plane (so that φ_r = 0), w = u × v. It turns
+/// sampled angles back into a world-space direction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frame {
+    v: Vec3,
+    w: Vec3,
+    u: Vec3,
+    theta_r: f32,
+}
+
+impl Frame {
+    /// The frame whose axes are the coordinate axes (v = x, w = y, u = z), θ_r = 0: vectors
+    /// in it are fiber-frame components.
+    #[must_use]
+    pub const fn canonical() -> Frame {
+        Frame {
+            v: [1.0, 0.0, 0.0],
+            w: [0.0, 1.0, 0.0],
+            u: [0.0, 0.0, 1.0],
+            theta_r: 0.0,
+        }
+    }
+
+    /// The frame of view direction `wr` around the fiber tangent `tangent` (neither needs to
+    /// be unit length). When `wr` is parallel to the fiber, v is any unit normal. `None` for
+    /// non-finite or zero-length input.
+    #[must_use]
+    pub fn from_view<M: Math>(wr: Vec3, tangent: Vec3) -> Option<Frame> {
+        if !wr.iter().chain(tangent.iter()).all(|c| c.is_finite()) {
+            return None;
+        }
+        let norm = |v: Vec3| M::sqrt(dot(v, v));
+        let (nr, nu) = (norm(wr), norm(tangent));
+        if !(nr.is_finite() && nu.is_finite() && nr >= f32::MIN_POSITIVE && nu >= f32::MIN_POSITIVE)
+        {
+            return None;
+        }
+        let u = [tangent[0] / nu, tangent[1] / nu, tangent[2] / nu];
+        let wr = [wr[0] / nr, wr[1] / nr, wr[2] / nr];
+        let s = dot(wr, u).clamp(-1.0, 1.0);
+        let p = [wr[0] - s * u[0], wr[1] - s * u[1], wr[2] - s * u[2]];
+        let np = norm(p);
+        let v = if np > 1e-6 {
+            [p[0] / np, p[1] / np, p[2] / np]
+        } else {
+            // ω_r along the fiber: any normal will do; take the axis least aligned with u.
+            let a = if u[0].abs() < 0.6 {
+                [1.0, 0.0, 0.0]
+            } else {
+                [0.0, 1.0, 0.0]
+            };
+            let q = cross(cross(u, a), u);
+            let nq = norm(q);
+            [q[0] / nq, q[1] / nq, q[2] / nq]
+        };
+        Some(Frame {
+            v,
+            w: cross(u, v),
+            u,
+            theta_r: asin_clamped::<M>(s),
+        })
+    }
+
+    /// θ_r of the view direction the frame was built from.
+    #[must_use]
+    pub fn theta_r(&self) -> f32 {
+        self.theta_r
+    }
+
+    /// ω_i for `angles` (θ_i and φ = φ_r − φ_i with φ_r = 0), as a unit vector in the frame's
+    /// space: sin θ_i·u + cos θ_i·(cos φ·v − sin φ·w).
+    #[must_use]
+    pub fn to_world(&self, angles: &Angles) -> Vec3 {
+        let (st, ct) = (libm::sinf(angles.theta_i), libm::cosf(angles.theta_i));
+        let (sp, cp) = (libm::sinf(angles.phi), libm::cosf(angles.phi));
+        let (a, b) = (ct * cp, -ct * sp);
+        [
+            st * self.u[0] + a * self.v[0] + b * self.w[0],
+            st * self.u[1] + a * self.v[1] + b * self.w[1],
+            st * self.u[2] + a * self.v[2] + b * self.w[2],
+        ]
     }
 }

@@ -34,6 +34,7 @@
 #![deny(missing_docs)]
 
 pub mod baked;
+pub mod bcsdf;
 pub mod far_field;
 pub mod frame;
 pub mod fresnel;
@@ -49,11 +50,13 @@ pub mod params;
 pub mod pigment;
 pub mod presets;
 pub mod rng;
+pub mod sampling;
 pub mod scattered;
 pub mod spectrum;
 pub mod unscattered;
 
-pub use frame::{AngleError, Angles, Vec3};
+pub use bcsdf::{Bcsdf, Sample, SampledDirection};
+pub use frame::{AngleError, Angles, Frame, Vec3};
 pub use lobes::{
     Families, Lobe, LobeFamily, LobeGroup, Lobes, FAMILY_COUNT, LOBE_COUNT, UNSCATTERED_COUNT,
 };
@@ -61,7 +64,7 @@ pub use lobes::{
 pub use math::FastMath;
 pub use math::{Libm, Math};
 pub use medulla::{MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout, Resolution};
-pub use model::{FarField, FurBcsdf, MODEL_VERSION};
+pub use model::{FurBcsdf, MODEL_VERSION};
 pub use params::{FurParams, FurParamsInput, ParamError, ParamName};
 pub use pigment::Pigment;
 pub use spectrum::Rgb;

@@ -700,6 +700,59 @@ impl<'a> MedullaProfiles<'a> {
         )
     }
 
+    /// ∫ C^N(ψ) dψ over the circle along a prepared row: 1 for rows with scattered photons
+    /// (each tabulated row is a pdf, and linear interpolation between bin centres keeps the
+    /// integral), 0 for empty ones. Exact for the interpolant: bin width × Σ of the blended
+    /// bin values.
+    #[must_use]
+    pub fn row_mass(&self, row: &NRow) -> f32 {
+        let n_psi = self.layout.res.n_psi;
+        let mut sum = 0.0;
+        for b in 0..n_psi {
+            sum += self.row_value(row, b);
+        }
+        sum * (TAU / n_psi as f32)
+    }
+
+    /// The blended row value at bin centre `b` (before the h_m flip).
+    #[inline]
+    fn row_value(&self, row: &NRow, b: usize) -> f32 {
+        let mut v = 0.0;
+        for (o, wt) in row.offsets.iter().zip(row.weights.iter()) {
+            v += wt * self.cn.get(o + b).copied().unwrap_or(0.0);
+        }
+        v
+    }
+
+    /// Draws ψ from C^N along a prepared row (density [`MedullaProfiles::cn_at`] /
+    /// [`MedullaProfiles::row_mass`]): picks a segment between adjacent bin centres (circular)
+    /// by its mass and inverts the linear interpolant inside it. `None` for an empty row.
+    #[must_use]
+    pub fn sample_psi(&self, row: &NRow, u: f32) -> Option<f32> {
+        let n_psi = self.layout.res.n_psi;
+        let w = TAU / n_psi as f32;
+        let total = self.row_mass(row);
+        if !(total > 0.0 && total.is_finite()) {
+            return None;
+        }
+        let target = crate::sampling::unit(u) * total;
+        let mut acc = 0.0;
+        let mut psi = PI;
+        for b in 0..n_psi {
+            let (v0, v1) = (self.row_value(row, b), self.row_value(row, (b + 1) % n_psi));
+            let m = crate::sampling::linear_mass(v0, v1, w);
+            if target - acc < m || b + 1 == n_psi {
+                let s = crate::sampling::invert_linear(v0, v1, w, target - acc);
+                // Bin centre b sits at −π + (b + ½)·w.
+                psi = -PI + (b as f32 + 0.5) * w + s;
+                break;
+            }
+            acc += m;
+        }
+        let psi = wrap_angle(psi);
+        Some(if row.flip { -psi } else { psi })
+    }
+
     /// C^N(ψ | h_m, σ_N, g): pdf over ψ of the rotation of scattered photons; trilinear,
     /// circular in ψ, with C^N(ψ | −h_m) = C^N(−ψ | h_m).
     pub fn cn(&self, sigma_n: f32, h_m: f32, psi: f32) -> f32 {

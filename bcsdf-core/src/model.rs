@@ -32,24 +32,11 @@ pub fn inv_cos2_theta_i(cos_theta_i: f32) -> f32 {
     1.0 / (cos_theta_i * cos_theta_i).max(MIN_COS2_THETA_I)
 }
 
-/// The far field of MODEL.md §8 per lobe family, as the analytic model ([`FurBcsdf`]) and
-/// the baked tables (`crate::baked::BakedBcsdf`) both provide it; the shared error metrics
-/// compare two such evaluators.
-pub trait FarField {
-    /// Far-field S(ω_i, ω_r) per [`LobeFamily`](crate::LobeFamily).
-    fn eval_far_families(&self, angles: &Angles) -> Families;
-
-    /// Far-field S(ω_i, ω_r), all families summed.
-    fn eval_far_total(&self, angles: &Angles) -> Rgb {
-        self.eval_far_families(angles).total()
-    }
-}
-
 /// The medulla-scattering part of a model: borrowed profiles and the precomputed M^s.
 #[derive(Clone, Copy, Debug)]
-struct Scattering<'a> {
-    profiles: MedullaProfiles<'a>,
-    longitudinal: ScatteredLongitudinal,
+pub(crate) struct Scattering<'a> {
+    pub(crate) profiles: MedullaProfiles<'a>,
+    pub(crate) longitudinal: ScatteredLongitudinal,
 }
 
 /// The analytic fur BCSDF for one parameter set, evaluated with the math backend `M`.
@@ -61,13 +48,13 @@ struct Scattering<'a> {
 #[derive(Clone, Copy, Debug)]
 pub struct FurBcsdf<'a, M: Math = Libm> {
     params: FurParams,
-    groups: GroupLobes,
-    scattering: Option<Scattering<'a>>,
+    pub(crate) groups: GroupLobes,
+    pub(crate) scattering: Option<Scattering<'a>>,
     _math: PhantomData<M>,
 }
 
 /// The unscattered lobes assembled with M_p, in breakdown order, plus the scattered ones.
-type Azimuthal = ([Rgb; UNSCATTERED_COUNT], [Rgb; SCATTERED_COUNT]);
+pub(crate) type Azimuthal = ([Rgb; UNSCATTERED_COUNT], [Rgb; SCATTERED_COUNT]);
 
 impl<M: Math> FurBcsdf<'static, M> {
     /// The unscattered part of the model only (R … TttRttT); the scattered lobes are zero.
@@ -113,19 +100,19 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         self.scattering.as_ref().map(|s| &s.profiles)
     }
 
-    fn slice_and_extinction(&self, theta_r: f32) -> (ViewSlice, Extinction) {
+    pub(crate) fn slice_and_extinction(&self, theta_r: f32) -> (ViewSlice, Extinction) {
         let slice = ViewSlice::new::<M>(&self.params, theta_r);
         let ext = Extinction::new(&self.params, &slice);
         (slice, ext)
     }
 
     /// σ_N = σ_ms·κ/cos θ_tm, the medulla's 2D optical radius at this slice.
-    fn sigma_n(&self, slice: &ViewSlice) -> f32 {
+    pub(crate) fn sigma_n(&self, slice: &ViewSlice) -> f32 {
         self.params.sigma_ms() * self.params.kappa() * slice.inv_cos_tm
     }
 
     /// Multiplies N_p by M_p, N^s_p by M^s, and divides by cos²θ_i (report eq. 1).
-    fn assemble(&self, angles: &Angles, n: &Azimuthal) -> Lobes {
+    pub(crate) fn assemble(&self, angles: &Angles, n: &Azimuthal) -> Lobes {
         let (ti, tr) = (angles.theta_i(), angles.theta_r());
         let inv_cos2 = inv_cos2_theta_i(M::cos(ti));
         let m = [
@@ -194,8 +181,26 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     }
 
     fn azimuthal_far_parts(&self, theta_r: f32, phi: f32) -> Azimuthal {
+        let zero = ([0.0; UNSCATTERED_COUNT], [0.0; SCATTERED_COUNT]);
+        self.azimuthal_far_with_density(theta_r, phi, &zero).0
+    }
+
+    /// True when η_m = η_c (f_m ≡ 0: the medulla-reflection paths vanish).
+    pub(crate) fn index_matched(&self) -> bool {
+        self.params.eta_m() == self.params.eta_c()
+    }
+
+    /// The far-field azimuthal parts and, with the same quadrature nodes, the analytic
+    /// sampler's φ density for per-path constants `coeffs` (unscattered, scattered); see
+    /// [`FarFieldQuery::azimuthal_with_density`].
+    pub(crate) fn azimuthal_far_with_density(
+        &self,
+        theta_r: f32,
+        phi: f32,
+        coeffs: &([f32; UNSCATTERED_COUNT], [f32; SCATTERED_COUNT]),
+    ) -> (Azimuthal, f32) {
         if !(theta_r.is_finite() && phi.is_finite()) {
-            return ([Rgb::ZERO; UNSCATTERED_COUNT], [Rgb::ZERO; SCATTERED_COUNT]);
+            return (([Rgb::ZERO; UNSCATTERED_COUNT], [Rgb::ZERO; SCATTERED_COUNT]), 0.0);
         }
         let (slice, ext) = self.slice_and_extinction(theta_r);
         let query = FarFieldQuery {
@@ -203,16 +208,20 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             extinction: &ext,
             layers: self.params.l(),
             groups: &self.groups,
-            index_matched: self.params.eta_m() == self.params.eta_c(),
+            index_matched: self.index_matched(),
         };
-        let n = query.azimuthal::<M>(phi);
-        let ns = match &self.scattering {
-            Some(s) if ext.medulla_scattering > 0.0 => {
-                query.azimuthal_scattered::<M>(&s.profiles, self.sigma_n(&slice), phi)
-            }
-            _ => [Rgb::ZERO; SCATTERED_COUNT],
+        let (n, dens) = query.azimuthal_with_density::<M>(phi, &coeffs.0);
+        let (ns, dens_s) = match &self.scattering {
+            Some(s) if ext.medulla_scattering > 0.0 => query
+                .azimuthal_scattered_with_density::<M>(
+                    &s.profiles,
+                    self.sigma_n(&slice),
+                    phi,
+                    &coeffs.1,
+                ),
+            _ => ([Rgb::ZERO; SCATTERED_COUNT], 0.0),
         };
-        (n, ns)
+        ((n, ns), dens + dens_s)
     }
 
     /// M_p(θ_i, θ_r) = G(θ_r + θ_i − α_p; β_M) of one cuticle group (report eq. 2–3).
@@ -240,10 +249,18 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         self.assemble(angles, &n)
     }
 
-    /// Far-field S(ω_i, ω_r) per lobe.
-    pub fn eval_far(&self, angles: &Angles) -> Lobes {
+    /// Far-field S(ω_i, ω_r) per lobe (the eleven-lobe breakdown of [`FurBcsdf::eval_far`]).
+    #[must_use]
+    pub fn eval_far_lobes(&self, angles: &Angles) -> Lobes {
         let n = self.azimuthal_far_parts(angles.theta_r(), angles.phi());
         self.assemble(angles, &n)
+    }
+
+    /// Far-field S(ω_i, ω_r) per lobe family, the type both evaluators return
+    /// (docs/model.md §8); [`FurBcsdf::eval_far_lobes`] has the per-lobe breakdown.
+    #[must_use]
+    pub fn eval_far(&self, angles: &Angles) -> Families {
+        self.eval_far_lobes(angles).families()
     }
 
     /// Near-field S from world-space directions (see [`Angles::from_directions`]); invalid
@@ -255,18 +272,13 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         }
     }
 
-    /// Far-field S from world-space directions; invalid directions give zero.
+    /// Far-field S per lobe from world-space directions; invalid directions give zero.
+    #[must_use]
     pub fn eval_far_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Lobes {
         match Angles::from_directions::<M>(wi, wr, tangent) {
-            Ok(a) => self.eval_far(&a),
+            Ok(a) => self.eval_far_lobes(&a),
             Err(_) => Lobes::ZERO,
         }
-    }
-}
-
-impl<M: Math> FarField for FurBcsdf<'_, M> {
-    fn eval_far_families(&self, angles: &Angles) -> Families {
-        self.eval_far(angles).families()
     }
 }
 

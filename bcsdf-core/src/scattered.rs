@@ -194,11 +194,53 @@ impl ScatteredLongitudinal {
     /// θ' inside the medulla for an outside angle θ (sin θ' = sin(θ − α)/η_m, MODEL.md §6)
     /// and the Jacobian |dθ'/dθ| = |cos(θ − α)|/(η_m cos θ').
     #[inline]
-    fn refract<M: Math>(&self, theta: f32) -> (f32, f32) {
+    pub fn refract<M: Math>(&self, theta: f32) -> (f32, f32) {
         let e = theta - self.alpha;
         let s = M::sin(e) / self.eta_m;
         let cos_p = sqrt_pos::<M>((1.0 - s) * (1.0 + s)).max(1e-6);
         (asin_clamped::<M>(s), M::cos(e).abs() / (self.eta_m * cos_p))
+    }
+
+    /// θ'_in = −θ'_r, the view ray's travel direction inside the medulla at θ_r.
+    #[must_use]
+    pub fn theta_in<M: Math>(&self, theta_r: f32) -> f32 {
+        -self.refract::<M>(theta_r).0
+    }
+
+    /// The θ' ranges that θ_i ∈ [−π/2, π/2] maps onto under [`ScatteredLongitudinal::refract`],
+    /// one per monotonic branch: with t = θ − α, the main branch is t ∈ [−π/2, π/2] ∩ range and
+    /// the fold is the part of the range beyond ±π/2 (|α| wide, where sin t turns back), which
+    /// covers some θ' a second time. Each entry is (θ'_lo, θ'_hi) with θ'_lo < θ'_hi, or
+    /// `None` when the branch is empty (the fold when α = 0).
+    #[must_use]
+    pub fn branches<M: Math>(&self) -> [Option<(f32, f32)>; 2] {
+        let half = PI / 2.0;
+        let (t_lo, t_hi) = (-half - self.alpha, half - self.alpha);
+        let out = |t: f32| asin_clamped::<M>(M::sin(t) / self.eta_m);
+        let main = (out(t_lo.max(-half)), out(t_hi.min(half)));
+        let fold = if t_lo < -half {
+            // sin t falls from sin(t_lo) to −1: θ' from out(t_lo) down to −θ'_max.
+            Some((out(-half), out(t_lo)))
+        } else if t_hi > half {
+            Some((out(t_hi), out(half)))
+        } else {
+            None
+        };
+        let ok = |r: (f32, f32)| if r.1 > r.0 { Some(r) } else { None };
+        [ok(main), fold.and_then(ok)]
+    }
+
+    /// The outside angle θ on branch `branch` (0 main, 1 fold, see
+    /// [`ScatteredLongitudinal::branches`]) whose refracted angle is θ'.
+    #[must_use]
+    pub fn unrefract<M: Math>(&self, theta_p: f32, branch: usize) -> f32 {
+        let t0 = asin_clamped::<M>(self.eta_m * M::sin(theta_p));
+        let t = match branch {
+            0 => t0,
+            _ if self.alpha > 0.0 => -PI - t0,
+            _ => PI - t0,
+        };
+        (t + self.alpha).clamp(-PI / 2.0, PI / 2.0)
     }
 
     /// μ_x at θ'_in: the inverse of the normalisation integral interpolated linearly between

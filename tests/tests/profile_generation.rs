@@ -545,7 +545,7 @@ fn build_model_uses_profiles_only_when_the_medulla_scatters() {
         let (m, outcome) = build_model(p, &opts).unwrap();
         assert!(m.profiles().is_none() && outcome.is_none());
         let direct: FurBcsdf = FurBcsdf::unscattered(p);
-        assert_eq!(m.model().eval_far(&a), direct.eval_far(&a));
+        assert_eq!(m.model().eval_far_lobes(&a), direct.eval_far_lobes(&a));
     }
 
     // yan-row-a scatters: profiles for its layout, and the same model as FurBcsdf::new.
@@ -558,8 +558,8 @@ fn build_model_uses_profiles_only_when_the_medulla_scatters() {
     let prof = m.profiles().unwrap();
     assert!(prof.layout().matches(&p));
     let direct: FurBcsdf = FurBcsdf::new(p, prof.view()).unwrap();
-    let got = m.model().eval_far(&a);
-    assert_eq!(got, direct.eval_far(&a));
+    let got = m.model().eval_far_lobes(&a);
+    assert_eq!(got, direct.eval_far_lobes(&a));
     assert!(got.get(bcsdf_core::Lobe::TttTs).max_channel() > 0.0);
 
     // Profiles for other parameters are refused.

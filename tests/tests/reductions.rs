@@ -97,7 +97,7 @@ fn no_medulla_leaves_marschner_lobes() {
         let shapes = group_shapes_of(&p);
         for (a, h) in &cases {
             let near = model.eval_near(a, *h);
-            let far = model.eval_far(a);
+            let far = model.eval_far_lobes(a);
             for lobe in MEDULLA_PATHS {
                 assert_eq!(near.get(lobe), Rgb::ZERO, "near {} with κ = 0", lobe.name());
                 assert_eq!(far.get(lobe), Rgb::ZERO, "far {} with κ = 0", lobe.name());
@@ -284,8 +284,8 @@ fn index_matched_medulla_is_cortex_far_field() {
         let grid: Vec<Angles> = (0..48)
             .map(|j| Angles::from_degrees(theta_i, theta_r, -180.0 + 7.5 * j as f32 + 1.3).unwrap())
             .collect();
-        let v1: Vec<_> = grid.iter().map(|a| m1.eval_far(a)).collect();
-        let v0: Vec<_> = grid.iter().map(|a| m0.eval_far(a)).collect();
+        let v1: Vec<_> = grid.iter().map(|a| m1.eval_far_lobes(a)).collect();
+        let v0: Vec<_> = grid.iter().map(|a| m0.eval_far_lobes(a)).collect();
         for (twin, parts) in [
             (Lobe::TT, [Lobe::TT, Lobe::TttT]),
             (Lobe::TRT, [Lobe::TRT, Lobe::TttRttT]),

@@ -335,7 +335,7 @@ fn index_matched_model_has_the_five_2017_lobes() {
         for i in 0..600 {
             let (a, h) = random_angles(&mut rng);
             let lobes = if i % 3 == 0 {
-                model.eval_far(&a)
+                model.eval_far_lobes(&a)
             } else {
                 model.eval_near(&a, h)
             };

@@ -13,7 +13,7 @@ use crate::plot::{
     colour_bar, decade_label, diverging, sequential, text_width, Canvas, ANALYTIC_COLOUR,
     BAKED_COLOUR, BLACK, GREY, LIGHT_GREY, WHITE,
 };
-use bcsdf_core::{Angles, FarField, LobeFamily, Rgb};
+use bcsdf_core::{Angles, Bcsdf, LobeFamily, Rgb};
 use rayon::prelude::*;
 
 /// Luminance (Rec. 709 weights) of a linear RGB value.
@@ -71,8 +71,8 @@ fn panel_angles(px: usize, py: usize) -> (f32, f32) {
 /// at the ends of the diverging colour bar (the E_peak budget).
 pub fn heat_maps<A, B>(analytic: &A, baked: &B, title: &str, error_scale: f64) -> Canvas
 where
-    A: FarField + Sync,
-    B: FarField + Sync,
+    A: Bcsdf + Sync,
+    B: Bcsdf + Sync,
 {
     // One line of one panel pair per task: (row, py) → PANEL_W values each.
     let rows = HEATMAP_THETA_R.len();
@@ -87,8 +87,8 @@ where
                 let angles = Angles::from_degrees(ti, HEATMAP_THETA_R[j], phi)
                     .expect("heat-map angles are in range");
                 let w = f64::from(ti.to_radians().cos()).powi(2);
-                a.push(luminance(analytic.eval_far_total(&angles)) * w);
-                b.push(luminance(baked.eval_far_total(&angles)) * w);
+                a.push(luminance(analytic.eval(&angles).total()) * w);
+                b.push(luminance(baked.eval(&angles).total()) * w);
             }
             (a, b)
         })
@@ -239,8 +239,8 @@ fn fmt_percent(f: f64) -> String {
 /// Draws the polar-plot figure: per (θ_i, θ_r) row and lobe family column, S over φ.
 pub fn polar_plots<A, B>(analytic: &A, baked: &B, title: &str) -> Canvas
 where
-    A: FarField + Sync,
-    B: FarField + Sync,
+    A: Bcsdf + Sync,
+    B: Bcsdf + Sync,
 {
     let (w, h) = POLAR_SIZE;
     let mut c = Canvas::new(w, h, WHITE);
@@ -279,8 +279,8 @@ where
                         .collect()
                 };
                 [
-                    eval(&|a| analytic.eval_far_families(a).get(family)),
-                    eval(&|a| baked.eval_far_families(a).get(family)),
+                    eval(&|a| analytic.eval(a).get(family)),
+                    eval(&|a| baked.eval(a).get(family)),
                 ]
             })
         })
@@ -396,9 +396,16 @@ mod tests {
 
     /// A far field that is 1 for the R family everywhere.
     struct Flat(f32);
-    impl FarField for Flat {
-        fn eval_far_families(&self, _: &Angles) -> Families {
+    impl Bcsdf for Flat {
+        type Math = bcsdf_core::Libm;
+        fn eval(&self, _: &Angles) -> Families {
             Families::from_array([Rgb::splat(self.0), Rgb::ZERO, Rgb::ZERO, Rgb::ZERO])
+        }
+        fn pdf(&self, _: &Angles) -> f32 {
+            0.0
+        }
+        fn sample_direction(&self, _: f32, _: [f32; 3]) -> Option<bcsdf_core::SampledDirection> {
+            None
         }
     }
 

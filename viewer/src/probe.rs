@@ -43,7 +43,7 @@ impl Query {
     pub fn eval(&self, model: &FurBcsdf) -> Lobes {
         match self.h {
             Some(h) => model.eval_near(&self.angles, h),
-            None => model.eval_far(&self.angles),
+            None => model.eval_far_lobes(&self.angles),
         }
     }
 }

@@ -15,7 +15,7 @@
 //! family, at the exposure of the full picture).
 
 use crate::plot::Canvas;
-use bcsdf_core::{Angles, FarField, Libm, LobeFamily, Rgb, Vec3, FAMILY_COUNT};
+use bcsdf_core::{Angles, Bcsdf, Libm, LobeFamily, Rgb, Vec3, FAMILY_COUNT};
 use rayon::prelude::*;
 
 /// Width of the rendered pictures.
@@ -130,8 +130,8 @@ fn scale(f: &[Rgb; FAMILY_COUNT], k: f32) -> [Rgb; FAMILY_COUNT] {
 /// fixed order: the same bits for any thread count).
 pub fn render<A, B>(analytic: &A, baked: &B) -> Renders
 where
-    A: FarField + Sync,
-    B: FarField + Sync,
+    A: Bcsdf + Sync,
+    B: Bcsdf + Sync,
 {
     let fibers = scene();
     let radiance: Vec<Vec<SegmentRadiance>> = fibers
@@ -146,8 +146,8 @@ where
                         Ok(angles) => {
                             let cos_i = angles.theta_i().cos();
                             (
-                                scale(analytic.eval_far_families(&angles).as_array(), cos_i),
-                                scale(baked.eval_far_families(&angles).as_array(), cos_i),
+                                scale(analytic.eval(&angles).as_array(), cos_i),
+                                scale(baked.eval(&angles).as_array(), cos_i),
                             )
                         }
                         Err(_) => ([Rgb::ZERO; FAMILY_COUNT], [Rgb::ZERO; FAMILY_COUNT]),
@@ -395,9 +395,16 @@ mod tests {
 
     /// S = `k` in the R family everywhere.
     struct Flat(f32);
-    impl FarField for Flat {
-        fn eval_far_families(&self, _: &Angles) -> Families {
+    impl Bcsdf for Flat {
+        type Math = bcsdf_core::Libm;
+        fn eval(&self, _: &Angles) -> Families {
             Families::from_array([Rgb::splat(self.0), Rgb::ZERO, Rgb::ZERO, Rgb::ZERO])
+        }
+        fn pdf(&self, _: &Angles) -> f32 {
+            0.0
+        }
+        fn sample_direction(&self, _: f32, _: [f32; 3]) -> Option<bcsdf_core::SampledDirection> {
+            None
         }
     }
 

@@ -253,7 +253,7 @@ fn probe_prints_json_with_every_lobe_and_total_is_their_sum() {
             let a: Vec<f32> = angles.iter().map(|s| s.parse().unwrap()).collect();
             let lib = model(preset)
                 .model()
-                .eval_far(&Angles::from_degrees(a[0], a[1], a[2]).unwrap());
+                .eval_far_lobes(&Angles::from_degrees(a[0], a[1], a[2]).unwrap());
             assert_eq!(p, expected(&lib), "{preset} {angles:?}");
         }
     }
@@ -280,7 +280,7 @@ fn h_switches_from_far_to_near_field() {
     let a = Angles::from_degrees(10.0, -10.0, 30.0).unwrap();
     let owned = model("air-medulla");
     let m = owned.model();
-    assert_eq!(far, expected(&m.eval_far(&a)));
+    assert_eq!(far, expected(&m.eval_far_lobes(&a)));
     for h in ["0.2", "-0.7", "1", "-1", "0"] {
         let mut near_args = args.clone();
         near_args.extend(["--h", h]);
@@ -346,7 +346,7 @@ fn set_overrides_change_the_result() {
     let ts = got.lobes.iter().find(|(n, _)| n == "TttT_s").unwrap().1;
     assert!(ts[0] > 0.0, "the scattered lobe is lit here: {got:?}");
     let a = Angles::from_degrees(20.0, -25.0, 180.0).unwrap();
-    assert_eq!(got, expected(&m.model().eval_far(&a)));
+    assert_eq!(got, expected(&m.model().eval_far_lobes(&a)));
 }
 
 #[test]
@@ -513,7 +513,7 @@ fn user_preset_file_is_listed_probed_and_checked() {
     let list = bake::presets::load_file(&path).unwrap();
     let m = build(FurParams::new(&list[0].input).unwrap(), 1);
     let a = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
-    assert_eq!(got, expected(&m.model().eval_far(&a)));
+    assert_eq!(got, expected(&m.model().eval_far_lobes(&a)));
     // The built-ins are not in a user file.
     let mut args = probe_args("yan-row-a", &["30", "-20", "45"]);
     args.extend(["--presets", &path]);
@@ -740,7 +740,7 @@ fn seed_threads_and_photon_scale() {
     assert_ne!(lobe(&base, "TttT_s"), lobe(&two, "TttT_s"));
     let params = FurParams::new(&presets::find("yan-row-b").unwrap().input).unwrap();
     let a = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
-    assert_eq!(two, expected(&build(params, 2).model().eval_far(&a)));
+    assert_eq!(two, expected(&build(params, 2).model().eval_far_lobes(&a)));
     // The thread count does not change the bits.
     let mut threads = args.clone();
     threads.extend(["--threads", "2", "--no-cache"]);

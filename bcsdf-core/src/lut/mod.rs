@@ -1,5 +1,6 @@
-//! The baked LUT format: the far-field BCSDF of MODEL.md §8, both components, factored along
-//! the model's own structure into six half-float tables, and the little-endian byte layout
+//! The baked LUT format: the far-field BCSDF of docs/model.md §8, both components, factored
+//! along the model's own structure into three half-float tables plus the data the baked
+//! sampler needs (docs/model.md §10), and the little-endian byte layout
 //! the core reads in place (from `include_bytes!`, a memory map or a loaded file).
 //!
 //! The far field is
@@ -49,6 +50,9 @@
 //! | 148 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
 //! | 156 | reserved, zero (4 bytes) |
 //! | 160 | table data (u16 halves) |
+//! | [`LutResolution::sampling_start`] | sampling section (f32 prefix sums, [`cdf`]) |
+
+pub mod cdf;
 
 use crate::medulla::{PhotonBudget, Resolution};
 use crate::params::{FurParams, FurParamsInput, ParamError};
@@ -60,8 +64,9 @@ use core::ops::Range;
 /// First eight bytes of every LUT blob.
 pub const MAGIC: [u8; 8] = *b"FURLUT\0\0";
 
-/// Version of this layout; a blob of another version is rejected.
-pub const FORMAT_VERSION: u32 = 1;
+/// Version of this layout; a blob of another version is rejected. Version 2 added the
+/// sampling section ([`cdf`]).
+pub const FORMAT_VERSION: u32 = 2;
 
 /// Length of the fixed header in bytes.
 pub const HEADER_LEN: usize = 160;
@@ -226,9 +231,9 @@ impl LutResolution {
         start..start + 2 * self.values(table)
     }
 
-    /// Length of the whole blob in bytes.
+    /// Length of the whole blob in bytes: header, tables and sampling section.
     pub fn blob_len(&self) -> usize {
-        HEADER_LEN + 2 * self.total_values()
+        self.sampling_start() + 4 * self.sampling_values()
     }
 }
 
@@ -322,6 +327,11 @@ pub enum LutError {
         /// Field name.
         field: &'static str,
     },
+    /// The sampling section does not hold the prefix sums of the tables.
+    Sampling {
+        /// Index of the first wrong entry in the section.
+        entry: usize,
+    },
     /// The checksum does not match: the data was changed after baking.
     Checksum {
         /// Checksum stored.
@@ -341,11 +351,11 @@ impl fmt::Display for LutError {
             LutError::BadMagic => f.write_str("not a fur LUT (bad magic)"),
             LutError::FormatVersion { found } => write!(
                 f,
-                "LUT format version {found} is not supported (this build reads version {FORMAT_VERSION})"
+                "LUT format version {found} is not supported (this build reads version {FORMAT_VERSION}): re-bake it with this version's `bake`"
             ),
             LutError::ModelVersion { found } => write!(
                 f,
-                "LUT was baked by model version {found}; this build is model version {}: rebake it",
+                "LUT was baked by model version {found}; this build is model version {}: re-bake it with this version's `bake`",
                 crate::model::MODEL_VERSION
             ),
             LutError::Resolution { axis, nodes } => write!(
@@ -373,6 +383,10 @@ impl fmt::Display for LutError {
             ),
             LutError::Params(e) => write!(f, "LUT parameters are invalid: {e}"),
             LutError::Field { field } => write!(f, "LUT header field {field} is invalid"),
+            LutError::Sampling { entry } => write!(
+                f,
+                "LUT sampling data entry {entry} does not match its tables: the file is corrupt, re-bake it"
+            ),
             LutError::Checksum { stored, computed } => write!(
                 f,
                 "LUT is corrupt: checksum {computed:016x} does not match the stored {stored:016x}"
@@ -641,17 +655,22 @@ pub fn checksum(blob: &[u8]) -> u64 {
     fnv1a64_continue(fnv1a64(head), tail)
 }
 
-/// Writes the checksum of a complete blob (header and tables filled in) into its field.
-/// Blobs shorter than the header are left alone.
+/// Completes a blob whose header and tables are filled in: writes the sampling section
+/// derived from the tables ([`cdf`]), then the checksum. Blobs shorter than the header are
+/// left alone; a blob whose header does not decode gets only its checksum.
 pub fn seal(blob: &mut [u8]) {
     if blob.len() >= HEADER_LEN {
+        if let Ok(header) = LutHeader::decode(blob) {
+            cdf::write(blob, header.res, header.scales);
+        }
         let sum = checksum(blob);
         blob[CHECKSUM].copy_from_slice(&sum.to_le_bytes());
     }
 }
 
-/// Checks a whole blob: header ([`LutHeader::decode`]), checksum, and that every stored value
-/// is a non-negative finite half.
+/// Checks a whole blob: header ([`LutHeader::decode`]), checksum, that every stored value
+/// is a non-negative finite half, and that the sampling section holds exactly the prefix
+/// sums of the tables.
 pub fn validate(bytes: &[u8]) -> Result<LutHeader, LutError> {
     let header = LutHeader::decode(bytes)?;
     let stored = u64::from_le_bytes(bytes[CHECKSUM].try_into().unwrap_or([0; 8]));
@@ -672,5 +691,6 @@ pub fn validate(bytes: &[u8]) -> Result<LutHeader, LutError> {
             }
         }
     }
+    cdf::check(bytes, header.res, header.scales).map_err(|entry| LutError::Sampling { entry })?;
     Ok(header)
 }

@@ -1,0 +1,147 @@
+//! The engine-facing interface: one trait, [`Bcsdf`], for the analytic far field
+//! ([`crate::FurBcsdf`]) and the baked tables ([`crate::baked::BakedBcsdf`]): evaluation,
+//! importance sampling and the sampling density (docs/model.md §10).
+//!
+//! Conventions (docs/model.md §10):
+//! - `eval` is the far-field S(ω_i, ω_r) of docs/model.md §8, per [`LobeFamily`].
+//! - `pdf` is the density of ω_i given ω_r **per unit solid angle**, of the whole mixture the
+//!   sampler draws from (not of the family it happened to pick). With dω_i = cos θ_i dθ_i dφ,
+//!   p_ω = p(θ_i, φ) / cos θ_i ([`solid_angle_pdf`]).
+//! - A [`Sample`] carries ω_i, p_ω (the same number `pdf` returns for that direction), the
+//!   family it was drawn from and the weight S·cos θ_i / p_ω, the Monte Carlo estimate of
+//!   the reflected radiance for unit incident radiance from ω_i.
+
+use crate::frame::{Angles, Frame, Vec3};
+use crate::lobes::{Families, LobeFamily};
+use crate::math::Math;
+use crate::spectrum::Rgb;
+
+/// Smallest cos θ_i the solid-angle conversion p_ω = p(θ_i, φ)/cos θ_i divides by. Only
+/// directions within 1e-6 rad of the fiber axis are affected, a solid angle of order 1e-12.
+pub const MIN_COS_THETA_PDF: f32 = 1e-6;
+
+/// p_ω = p(θ_i, φ)/cos θ_i: a density over (θ_i, φ) as a density per unit solid angle
+/// (docs/model.md §10), with cos θ_i kept at or above [`MIN_COS_THETA_PDF`].
+#[inline]
+#[must_use]
+pub fn solid_angle_pdf(p_theta_phi: f32, cos_theta_i: f32) -> f32 {
+    p_theta_phi / cos_theta_i.max(MIN_COS_THETA_PDF)
+}
+
+/// An importance-sampled incident direction (docs/model.md §10).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    /// The sampled ω_i as angles: θ_i, the given θ_r, and φ = φ_r − φ_i.
+    pub angles: Angles,
+    /// ω_i as a unit vector. From [`Bcsdf::sample_dirs`]: in world space. From
+    /// [`Bcsdf::sample`]: in the fiber frame (v, w, u) whose v is ω_r's projection onto the
+    /// normal plane (φ_r = 0) and u the fiber tangent, as components (v, w, u).
+    pub wi: Vec3,
+    /// Density of ω_i per unit solid angle: equals [`Bcsdf::pdf`] for the same direction.
+    pub pdf: f32,
+    /// S(ω_i, ω_r)·cos θ_i / pdf, RGB.
+    pub weight: Rgb,
+    /// The family whose lobe was sampled.
+    pub family: LobeFamily,
+}
+
+/// A sampled direction before evaluation: angles, and the family it came from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SampledDirection {
+    /// θ_i, θ_r, φ.
+    pub angles: Angles,
+    /// The family whose lobe was sampled.
+    pub family: LobeFamily,
+}
+
+/// A far-field fur BCSDF as a path tracer or an engine uses it: evaluation, sampling and
+/// the sampling density, from angles and from world-space vectors (docs/model.md §8, §10).
+///
+/// Implemented by the analytic model ([`crate::FurBcsdf`]) and the baked tables
+/// ([`crate::baked::BakedBcsdf`]). No method allocates, panics or returns NaN.
+pub trait Bcsdf {
+    /// The math backend used for direction-to-angle conversions.
+    type Math: Math;
+
+    /// Far-field S(ω_i, ω_r) per [`LobeFamily`]; [`Families::total`] is S (docs/model.md §8).
+    #[must_use]
+    fn eval(&self, angles: &Angles) -> Families;
+
+    /// Density per unit solid angle with which [`Bcsdf::sample`] draws ω_i given ω_r
+    /// (docs/model.md §10); 0 where it never samples. Positive wherever `eval` is.
+    #[must_use]
+    fn pdf(&self, angles: &Angles) -> f32;
+
+    /// `eval` and `pdf` of one direction, sharing their work.
+    #[must_use]
+    fn eval_with_pdf(&self, angles: &Angles) -> (Families, f32) {
+        (self.eval(angles), self.pdf(angles))
+    }
+
+    /// Draws ω_i given θ_r from three uniform numbers in [0, 1) (values outside are
+    /// clamped) without evaluating S; `None` when θ_r is invalid or nothing can be sampled
+    /// (zero albedo).
+    #[must_use]
+    fn sample_direction(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection>;
+
+    /// Importance-samples ω_i given θ_r (radians) from three uniform numbers in [0, 1):
+    /// direction, density, weight S·cos θ_i/pdf and family. `None` when θ_r is not finite or
+    /// outside [−π/2, π/2], or when nothing can be sampled (zero albedo).
+    #[must_use]
+    fn sample(&self, theta_r: f32, u: [f32; 3]) -> Option<Sample> {
+        let d = self.sample_direction(theta_r, u)?;
+        let (value, pdf) = self.eval_with_pdf(&d.angles);
+        let frame = Frame::canonical();
+        finish(d, value, pdf, frame.to_world(&d.angles))
+    }
+
+    /// [`Bcsdf::eval`] from world-space directions `wi` (toward the light), `wr` (toward
+    /// the viewer) and the fiber tangent (none needs to be unit length); zero for invalid
+    /// directions.
+    #[must_use]
+    fn eval_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
+        match Angles::from_directions::<Self::Math>(wi, wr, tangent) {
+            Ok(a) => self.eval(&a),
+            Err(_) => Families::ZERO,
+        }
+    }
+
+    /// [`Bcsdf::pdf`] from world-space directions; zero for invalid directions.
+    #[must_use]
+    fn pdf_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> f32 {
+        match Angles::from_directions::<Self::Math>(wi, wr, tangent) {
+            Ok(a) => self.pdf(&a),
+            Err(_) => 0.0,
+        }
+    }
+
+    /// [`Bcsdf::sample`] from the world-space view direction `wr` and fiber tangent; the
+    /// sample's `wi` is a world-space unit vector. `None` for invalid directions.
+    #[must_use]
+    fn sample_dirs(&self, wr: Vec3, tangent: Vec3, u: [f32; 3]) -> Option<Sample> {
+        let frame = Frame::from_view::<Self::Math>(wr, tangent)?;
+        let d = self.sample_direction(frame.theta_r(), u)?;
+        let (value, pdf) = self.eval_with_pdf(&d.angles);
+        finish(d, value, pdf, frame.to_world(&d.angles))
+    }
+}
+
+/// Assembles a [`Sample`]: weight = S·cos θ_i / pdf; `None` unless the density is positive
+/// and finite.
+fn finish(d: SampledDirection, value: Families, pdf: f32, wi: Vec3) -> Option<Sample> {
+    if !(pdf > 0.0 && pdf.is_finite()) {
+        return None;
+    }
+    let cos_theta_i = crate::math::cos_within_half_pi(d.angles.theta_i()).max(0.0);
+    let k = cos_theta_i / pdf;
+    let weight = value
+        .total()
+        .map(|c| if (c * k).is_finite() { (c * k).max(0.0) } else { 0.0 });
+    Some(Sample {
+        angles: d.angles,
+        wi,
+        pdf,
+        weight,
+        family: d.family,
+    })
+}

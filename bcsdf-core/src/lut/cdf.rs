@@ -1,0 +1,271 @@
+//! The sampling section of a LUT (format version 2, docs/lut.md "Sampling data",
+//! docs/model.md §10): running integrals ("prefix sums") of the piecewise-linear densities
+//! the baked sampler draws from, stored after the tables as little-endian f32.
+//!
+//! Each density is one table row read as a function of its column axis, linearly
+//! interpolated between nodes exactly as the baked evaluator interpolates it:
+//!
+//! | density | table | row | value at a node | nodes | prefix every |
+//! |---|---|---|---|---|---|
+//! | [`Density::M`]`(g)` | `M` | the single row | channel g | n_sum over x = θ_i + θ_r ∈ [−π, π] | node ([`M_BLOCK`]) |
+//! | [`Density::N`]`(f)` | `N` | each \|θ_r\| row | mean of family f's R, G, B | n_phi over \|φ\| ∈ [0, π] | [`N_BLOCK`] nodes |
+//! | [`Density::MS`]`(x)` | `M_s` | each θ_r row | channel x (back, front) | n_ms_i over θ_i ∈ [−π/2, π/2] | [`MS_BLOCK`] nodes |
+//!
+//! Entry k of a row's prefix is ∫ of the density from the first node to node min(k·B, n − 1)
+//! (B the block), summed segment by segment in f32 as len·(v_j + v_{j+1})/2, in this order:
+//! `M` channels 0..3, then `N` families 0..4 × rows, then `M_s` halves 0..2 × rows. The last
+//! entry of a row is its total. The data is derived from the tables: [`super::seal`] writes
+//! it and [`super::validate`] recomputes it and requires the same bits.
+
+use super::{f16_biased, LutResolution, Table, F16_UNBIAS, HEADER_LEN, TABLE_COUNT};
+use crate::math::PI;
+use crate::sampling::linear_mass;
+use core::ops::Range;
+
+/// Nodes per prefix entry of the `M` densities (every node: the pdf needs the CDF at two
+/// arbitrary points per query).
+pub const M_BLOCK: usize = 1;
+/// Nodes per prefix entry of the `N` densities.
+pub const N_BLOCK: usize = 8;
+/// Nodes per prefix entry of the `M_s` densities.
+pub const MS_BLOCK: usize = 8;
+
+/// One family of sampled densities.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Density {
+    /// M_g over x = θ_i + θ_r, g = 0, 1, 2 (R, TT, TRT).
+    M(usize),
+    /// N_f over |φ| at one |θ_r| row, f = 0..4 ([`crate::LobeFamily`] order), as the mean of
+    /// its three channels.
+    N(usize),
+    /// M^s_back (0) or M^s_front (1) over θ_i at one θ_r row.
+    MS(usize),
+}
+
+/// Number of prefix entries of a row of `nodes` nodes with blocks of `block` nodes.
+#[must_use]
+pub const fn entries(nodes: usize, block: usize) -> usize {
+    (nodes - 1).div_ceil(block) + 1
+}
+
+impl Density {
+    /// The table the density reads.
+    #[must_use]
+    pub const fn table(self) -> Table {
+        match self {
+            Density::M(_) => Table::M,
+            Density::N(_) => Table::N,
+            Density::MS(_) => Table::MS,
+        }
+    }
+
+    /// Nodes per prefix entry.
+    #[must_use]
+    pub const fn block(self) -> usize {
+        match self {
+            Density::M(_) => M_BLOCK,
+            Density::N(_) => N_BLOCK,
+            Density::MS(_) => MS_BLOCK,
+        }
+    }
+
+    /// (first channel, channels averaged) of a node value.
+    const fn channels(self) -> (usize, usize) {
+        match self {
+            Density::M(g) => (g, 1),
+            Density::N(f) => (3 * f, 3),
+            Density::MS(x) => (x, 1),
+        }
+    }
+
+    /// Index of the density in section order (`M` 0..3, `N` 3..7, `M_s` 7..9).
+    const fn index(self) -> usize {
+        match self {
+            Density::M(g) => g,
+            Density::N(f) => 3 + f,
+            Density::MS(x) => 7 + x,
+        }
+    }
+
+    /// All densities in section order.
+    pub const ALL: [Density; 9] = [
+        Density::M(0),
+        Density::M(1),
+        Density::M(2),
+        Density::N(0),
+        Density::N(1),
+        Density::N(2),
+        Density::N(3),
+        Density::MS(0),
+        Density::MS(1),
+    ];
+}
+
+impl LutResolution {
+    /// (rows, nodes per row) of a density's table.
+    #[must_use]
+    pub fn density_dims(&self, d: Density) -> (usize, usize) {
+        let (w, h) = self.dims(d.table());
+        (h, w)
+    }
+
+    /// Node spacing along a density's axis (radians).
+    #[must_use]
+    pub fn density_step(&self, d: Density) -> f32 {
+        let (_, nodes) = self.density_dims(d);
+        let span = match d {
+            Density::M(_) => 2.0 * PI,
+            Density::N(_) | Density::MS(_) => PI,
+        };
+        span / (nodes - 1) as f32
+    }
+
+    /// Prefix entries per row of a density.
+    #[must_use]
+    pub fn prefix_entries(&self, d: Density) -> usize {
+        entries(self.density_dims(d).1, d.block())
+    }
+
+    /// f32 values of one density (all its rows).
+    fn density_values(&self, d: Density) -> usize {
+        self.density_dims(d).0 * self.prefix_entries(d)
+    }
+
+    /// Number of f32 values in the sampling section.
+    #[must_use]
+    pub fn sampling_values(&self) -> usize {
+        Density::ALL.iter().map(|&d| self.density_values(d)).sum()
+    }
+
+    /// Byte offset of the sampling section in the blob.
+    #[must_use]
+    pub fn sampling_start(&self) -> usize {
+        HEADER_LEN + 2 * self.total_values()
+    }
+
+    /// Byte range of one density's prefix entries (all rows, row-major).
+    #[must_use]
+    pub fn prefix_range(&self, d: Density) -> Range<usize> {
+        let before: usize = Density::ALL[..d.index()]
+            .iter()
+            .map(|&e| self.density_values(e))
+            .sum();
+        let start = self.sampling_start() + 4 * before;
+        start..start + 4 * self.density_values(d)
+    }
+}
+
+/// Read access to the node values of the tables, as the evaluator decodes them.
+#[derive(Clone, Copy, Debug)]
+pub struct Nodes<'a> {
+    tables: [&'a [u8]; TABLE_COUNT],
+    /// Table scale × 2^112 (see [`f16_biased`]).
+    unbias: [f32; TABLE_COUNT],
+    res: LutResolution,
+}
+
+impl<'a> Nodes<'a> {
+    /// Over the table bytes of a blob whose header gave `res` and `scales` (lengths are
+    /// checked by the caller; a short table reads as zeros).
+    #[must_use]
+    pub fn new(blob: &'a [u8], res: LutResolution, scales: [f32; TABLE_COUNT]) -> Nodes<'a> {
+        let mut tables: [&'a [u8]; TABLE_COUNT] = [&[]; TABLE_COUNT];
+        let mut unbias = [0.0; TABLE_COUNT];
+        for t in Table::ALL {
+            tables[t as usize] = blob.get(res.byte_range(t)).unwrap_or(&[]);
+            unbias[t as usize] = scales[t as usize] * F16_UNBIAS;
+        }
+        Nodes {
+            tables,
+            unbias,
+            res,
+        }
+    }
+
+    /// The value of density `d` at node `j` of row `row` (0 outside the table).
+    #[inline]
+    #[must_use]
+    pub fn value(&self, d: Density, row: usize, j: usize) -> f32 {
+        let t = d.table();
+        let (w, _) = self.res.dims(t);
+        let ch = t.channels();
+        let (first, n) = d.channels();
+        let data = self.tables[t as usize];
+        let base = 2 * ((row * w + j) * ch + first);
+        let mut sum = 0.0;
+        for c in 0..n {
+            if let Some(b) = data.get(base + 2 * c..base + 2 * c + 2) {
+                sum += f16_biased(u16::from_le_bytes([b[0], b[1]]));
+            }
+        }
+        let k = if n == 3 {
+            self.unbias[t as usize] * (1.0 / 3.0)
+        } else {
+            self.unbias[t as usize]
+        };
+        sum * k
+    }
+
+    /// Computes every prefix entry in section order and hands it to `sink` with its index in
+    /// the section.
+    fn for_each_prefix(&self, mut sink: impl FnMut(usize, f32)) {
+        let mut index = 0;
+        for d in Density::ALL {
+            let (rows, nodes) = self.res.density_dims(d);
+            let step = self.res.density_step(d);
+            let block = d.block();
+            for row in 0..rows {
+                let mut acc = 0.0f32;
+                sink(index, acc);
+                index += 1;
+                let mut prev = self.value(d, row, 0);
+                for j in 1..nodes {
+                    let v = self.value(d, row, j);
+                    acc += linear_mass(prev, v, step);
+                    prev = v;
+                    if j % block == 0 || j == nodes - 1 {
+                        sink(index, acc);
+                        index += 1;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Writes the sampling section of `blob` (header and tables filled in) from its tables.
+pub(super) fn write(blob: &mut [u8], res: LutResolution, scales: [f32; TABLE_COUNT]) {
+    let start = res.sampling_start();
+    // The tables lie entirely before the section: read them while writing the section.
+    let (tables, section) = blob.split_at_mut(start.min(blob.len()));
+    let nodes = Nodes::new(tables, res, scales);
+    nodes.for_each_prefix(|i, v| {
+        if let Some(dst) = section.get_mut(4 * i..4 * i + 4) {
+            dst.copy_from_slice(&v.to_le_bytes());
+        }
+    });
+}
+
+/// Checks that the sampling section of `blob` holds exactly the prefix sums of its tables;
+/// returns the index of the first entry that differs.
+pub(super) fn check(blob: &[u8], res: LutResolution, scales: [f32; TABLE_COUNT]) -> Result<(), usize> {
+    let start = res.sampling_start();
+    let nodes = Nodes::new(blob, res, scales);
+    let mut bad = None;
+    nodes.for_each_prefix(|i, v| {
+        if bad.is_some() {
+            return;
+        }
+        let at = start + 4 * i;
+        let stored = blob
+            .get(at..at + 4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
+        if stored != Some(v.to_bits()) {
+            bad = Some(i);
+        }
+    });
+    match bad {
+        Some(i) => Err(i),
+        None => Ok(()),
+    }
+}

@@ -1,0 +1,274 @@
+//! Sampling the baked tables (docs/model.md §10, docs/lut.md "Sampling data").
+//!
+//! The baked far field is S·cos²θ_i = Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s,
+//! every factor piecewise linear along its axis. The sampler is a mixture of five separable
+//! parts, each drawing θ_i and φ from one interpolated table row, exactly as `eval`
+//! interpolates it:
+//!
+//! | part c | θ_i density | φ density | weight A_c(θ_r) |
+//! |---|---|---|---|
+//! | g = R, TT, TRT | M_g(θ_i + θ_r)/m_g, θ_i ∈ [−π/2, π/2] | n_g(\|φ\|)/(2 ν_g) | 2·m_g·ν_g |
+//! | scattered back, front | M^s_x(θ_i, θ_r)/s_x | n_s(\|φ\|)/(2 ν_s) | s_x·ν_s |
+//!
+//! with n_f the mean of family f's three N channels, ν_f = ∫₀^π n_f, m_g = ∫ M_g over the
+//! restricted range and s_x = ∫ M^s_x dθ_i (all exact integrals of the interpolants, from
+//! the LUT's prefix sums). The mixture density per unit solid angle is then
+//!
+//! p_ω = [Σ_g M_g·n_g + ½(M^s_back + M^s_front)·n_s] / (W·cos θ_i),   W = Σ_c A_c,
+//!
+//! which costs one evaluation's lookups plus six prefix reads.
+
+use super::{choose, invert_linear, linear_mass, unit};
+use crate::baked::{Axis, BakedBcsdf, Lookups};
+use crate::bcsdf::{solid_angle_pdf, Bcsdf, SampledDirection};
+use crate::frame::Angles;
+use crate::lobes::{Families, LobeFamily};
+use crate::lut::cdf::Density;
+use crate::math::{cos_within_half_pi, Math, PI};
+
+/// Two adjacent rows of one density blended with weights (1 − w, w): itself a piecewise-
+/// linear function on the rows' nodes, with prefix sums blended the same way.
+struct Rows<'b, 'a, M: Math> {
+    lut: &'b BakedBcsdf<'a, M>,
+    density: Density,
+    rows: (usize, usize),
+    w: f32,
+    /// Axis origin and node spacing.
+    origin: f32,
+    step: f32,
+    nodes: usize,
+    entries: usize,
+    block: usize,
+    /// Byte offset of the density's prefix entries in the blob.
+    prefix_at: usize,
+}
+
+impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
+    fn new(lut: &'b BakedBcsdf<'a, M>, density: Density, axis: &Axis, (row, w): (usize, f32)) -> Self {
+        let res = &lut.header.res;
+        let (n_rows, nodes) = res.density_dims(density);
+        let r1 = (row + 1).min(n_rows - 1);
+        Rows {
+            lut,
+            density,
+            rows: (row.min(n_rows - 1), r1),
+            w,
+            origin: axis.lo,
+            step: res.density_step(density),
+            nodes,
+            entries: res.prefix_entries(density),
+            block: density.block(),
+            prefix_at: res.prefix_range(density).start,
+        }
+    }
+
+    #[inline]
+    fn value(&self, j: usize) -> f32 {
+        let v0 = self.lut.nodes.value(self.density, self.rows.0, j);
+        if self.w == 0.0 {
+            return v0;
+        }
+        let v1 = self.lut.nodes.value(self.density, self.rows.1, j);
+        (1.0 - self.w) * v0 + self.w * v1
+    }
+
+    #[inline]
+    fn stored(&self, row: usize, k: usize) -> f32 {
+        let at = self.prefix_at + 4 * (row * self.entries + k);
+        match self.lut.blob.get(at..at + 4) {
+            Some(b) => f32::from_le_bytes([b[0], b[1], b[2], b[3]]),
+            None => 0.0,
+        }
+    }
+
+    /// Blended prefix entry k: ∫ from the first node to node min(k·block, nodes − 1).
+    #[inline]
+    fn prefix(&self, k: usize) -> f32 {
+        let p0 = self.stored(self.rows.0, k);
+        if self.w == 0.0 {
+            return p0;
+        }
+        (1.0 - self.w) * p0 + self.w * self.stored(self.rows.1, k)
+    }
+
+    /// ∫ over the whole axis.
+    #[inline]
+    fn total(&self) -> f32 {
+        self.prefix(self.entries - 1)
+    }
+
+    /// Node index and offset within its segment for axis position `x` (clamped).
+    #[inline]
+    fn segment_of(&self, x: f32) -> (usize, f32) {
+        let u = ((x - self.origin) / self.step).clamp(0.0, (self.nodes - 1) as f32);
+        let j = (u as usize).min(self.nodes - 2);
+        (j, (u - j as f32) * self.step)
+    }
+
+    /// ∫ from the first node to `x`.
+    fn cdf(&self, x: f32) -> f32 {
+        let (j, off) = self.segment_of(x);
+        let k = j / self.block;
+        let mut acc = self.prefix(k);
+        let mut prev = self.value(k * self.block);
+        for i in k * self.block..j {
+            let v = self.value(i + 1);
+            acc += linear_mass(prev, v, self.step);
+            prev = v;
+        }
+        let next = self.value(j + 1);
+        let at = prev + (next - prev) * (off / self.step);
+        acc + linear_mass(prev, at, off)
+    }
+
+    /// The axis position where the running integral reaches `t` (0 ≤ t ≤ total).
+    fn invert(&self, t: f32) -> f32 {
+        // Last prefix entry at or below t (binary search over the blended entries).
+        let (mut lo, mut hi) = (0usize, self.entries - 1);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if self.prefix(mid) <= t {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let first = lo * self.block;
+        let end = (first + self.block).min(self.nodes - 1);
+        let mut acc = self.prefix(lo);
+        let mut prev = self.value(first);
+        for j in first..end {
+            let v = self.value(j + 1);
+            let m = linear_mass(prev, v, self.step);
+            if t - acc < m || j + 1 == end {
+                let s = invert_linear(prev, v, self.step, t - acc);
+                return self.origin + j as f32 * self.step + s;
+            }
+            acc += m;
+            prev = v;
+        }
+        self.origin + end as f32 * self.step
+    }
+}
+
+impl<'a, M: Math> BakedBcsdf<'a, M> {
+    /// M_g restricted to θ_i ∈ [−π/2, π/2], i.e. x = θ_i + θ_r ∈ [θ_r − π/2, θ_r + π/2].
+    fn m_rows(&self, g: usize) -> Rows<'_, 'a, M> {
+        Rows::new(self, Density::M(g), &self.sum, (0, 0.0))
+    }
+
+    /// (∫ M_g over the range, CDF at the range start) for the three groups.
+    fn m_masses(&self, theta_r: f32) -> [(f32, f32); 3] {
+        core::array::from_fn(|g| {
+            let rows = self.m_rows(g);
+            let lo = rows.cdf(theta_r - PI / 2.0);
+            ((rows.cdf(theta_r + PI / 2.0) - lo).max(0.0), lo)
+        })
+    }
+
+    fn n_rows(&self, family: usize, theta_r: f32) -> Rows<'_, 'a, M> {
+        let at = self.theta_r.locate(theta_r.abs());
+        Rows::new(self, Density::N(family), &self.phi, at)
+    }
+
+    fn ms_rows(&self, half: usize, theta_r: f32) -> Rows<'_, 'a, M> {
+        let at = self.ms_r.locate(theta_r);
+        Rows::new(self, Density::MS(half), &self.ms_i, at)
+    }
+
+    /// Mixture weights A_c(θ_r) of the five parts (R, TT, TRT, scattered back, front) and
+    /// the CDF offsets of the M ranges.
+    fn parts(&self, theta_r: f32) -> ([f32; 5], [(f32, f32); 3]) {
+        let m = self.m_masses(theta_r);
+        let nu: [f32; 4] = core::array::from_fn(|f| self.n_rows(f, theta_r).total());
+        let s = [
+            self.ms_rows(0, theta_r).total(),
+            self.ms_rows(1, theta_r).total(),
+        ];
+        let a = [
+            2.0 * m[0].0 * nu[0],
+            2.0 * m[1].0 * nu[1],
+            2.0 * m[2].0 * nu[2],
+            s[0] * nu[3],
+            s[1] * nu[3],
+        ];
+        (a.map(|v| if v.is_finite() && v > 0.0 { v } else { 0.0 }), m)
+    }
+
+    /// The mixture density of the lookups per unit solid angle, given W.
+    fn density(l: &Lookups, total_weight: f32, cos_theta_i: f32) -> f32 {
+        if !(total_weight > 0.0) {
+            return 0.0;
+        }
+        let mean = |f: usize| (l.n[3 * f] + l.n[3 * f + 1] + l.n[3 * f + 2]) * (1.0 / 3.0);
+        let p = l.m[0] * mean(0)
+            + l.m[1] * mean(1)
+            + l.m[2] * mean(2)
+            + 0.5 * (l.ms[0] + l.ms[1]) * mean(3);
+        let v = solid_angle_pdf(p / total_weight, cos_theta_i);
+        if v.is_finite() && v > 0.0 {
+            v
+        } else {
+            0.0
+        }
+    }
+
+    fn weights_total(&self, theta_r: f32) -> f32 {
+        self.parts(theta_r).0.iter().sum()
+    }
+
+    /// Draws (θ_i, φ) given θ_r from three uniform numbers (docs/model.md §10).
+    fn draw(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
+        if !(theta_r.is_finite() && theta_r.abs() <= PI / 2.0) {
+            return None;
+        }
+        let (a, m) = self.parts(theta_r);
+        let (c, u0) = choose(&a, u[0])?;
+        let negative = u0 < 0.5;
+        let theta_i = if c < 3 {
+            let rows = self.m_rows(c);
+            let (mass, lo) = m[c];
+            let x = rows.invert(lo + unit(u[1]) * mass);
+            (x - theta_r).clamp(-PI / 2.0, PI / 2.0)
+        } else {
+            let rows = self.ms_rows(c - 3, theta_r);
+            rows.invert(unit(u[1]) * rows.total())
+                .clamp(-PI / 2.0, PI / 2.0)
+        };
+        let family = if c < 3 { c } else { 3 };
+        let rows = self.n_rows(family, theta_r);
+        let abs_phi = rows.invert(unit(u[2]) * rows.total()).clamp(0.0, PI);
+        let phi = if negative { -abs_phi } else { abs_phi };
+        let angles = Angles::new(theta_i, theta_r, phi).ok()?;
+        Some(SampledDirection {
+            angles,
+            family: LobeFamily::ALL[family],
+        })
+    }
+}
+
+impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
+    type Math = M;
+
+    #[inline]
+    fn eval(&self, angles: &Angles) -> Families {
+        self.eval_far(angles)
+    }
+
+    fn pdf(&self, angles: &Angles) -> f32 {
+        let l = self.lookups(angles);
+        let w = self.weights_total(angles.theta_r());
+        Self::density(&l, w, cos_within_half_pi(angles.theta_i()))
+    }
+
+    fn eval_with_pdf(&self, angles: &Angles) -> (Families, f32) {
+        let l = self.lookups(angles);
+        let w = self.weights_total(angles.theta_r());
+        let pdf = Self::density(&l, w, cos_within_half_pi(angles.theta_i()));
+        (Self::assemble(&l), pdf)
+    }
+
+    fn sample_direction(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
+        self.draw(theta_r, u)
+    }
+}

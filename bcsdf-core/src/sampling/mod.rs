@@ -1,0 +1,185 @@
+//! Importance sampling of the far field (docs/model.md §10): the shared one-dimensional
+//! building blocks, the analytic model's mixture ([`analytic`]) and the baked tables'
+//! ([`baked`]).
+//!
+//! Every sampler here is paired with the density it draws from, written next to it, so that
+//! `pdf` can return exactly the density of what `sample` does.
+
+pub mod analytic;
+pub mod baked;
+
+/// Clamps a uniform number into [0, 1) (NaN becomes 0).
+#[inline]
+#[must_use]
+pub fn unit(u: f32) -> f32 {
+    if u > 0.0 {
+        u.min(ONE_MINUS_EPSILON)
+    } else {
+        0.0
+    }
+}
+
+/// The largest f32 below 1.
+pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
+
+/// Picks index k with probability `weights[k] / Σ weights` and returns it with `u` rescaled
+/// to [0, 1) within the chosen interval, so that the same number can drive a further
+/// choice. `None` when no weight is positive. Non-positive or non-finite weights are never
+/// chosen.
+#[must_use]
+pub fn choose(weights: &[f32], u: f32) -> Option<(usize, f32)> {
+    let ok = |w: f32| w.is_finite() && w > 0.0;
+    let total: f32 = weights.iter().filter(|w| ok(**w)).sum();
+    if !(total > 0.0 && total.is_finite()) {
+        return None;
+    }
+    let target = unit(u) * total;
+    let mut acc = 0.0;
+    let mut last = None;
+    for (k, &w) in weights.iter().enumerate() {
+        if !ok(w) {
+            continue;
+        }
+        last = Some(k);
+        if target < acc + w {
+            return Some((k, unit((target - acc) / w)));
+        }
+        acc += w;
+    }
+    // Rounding put the target past the last positive weight: take that one.
+    last.map(|k| (k, ONE_MINUS_EPSILON))
+}
+
+/// Mass of a linear density going from `v0` to `v1` over a length `len`: len·(v0 + v1)/2.
+#[inline]
+#[must_use]
+pub fn linear_mass(v0: f32, v1: f32, len: f32) -> f32 {
+    0.5 * len * (v0 + v1)
+}
+
+/// Inverts the mass of a linear density over one segment: the offset s ∈ [0, len] at which
+/// ∫₀ˢ v = `t`, for v going linearly from `v0` ≥ 0 to `v1` ≥ 0 over `len`. Solves
+/// v0·s + (v1 − v0)s²/(2 len) = t in the cancellation-free form s = 2t/(v0 + √(v0² + 2(v1 −
+/// v0)t/len)).
+#[inline]
+#[must_use]
+pub fn invert_linear(v0: f32, v1: f32, len: f32, t: f32) -> f32 {
+    if !(len > 0.0) || !(t > 0.0) {
+        return 0.0;
+    }
+    let disc = (v0 * v0 + 2.0 * (v1 - v0) * t / len).max(0.0);
+    let den = v0 + libm::sqrtf(disc);
+    if den > 0.0 {
+        (2.0 * t / den).clamp(0.0, len)
+    } else {
+        len
+    }
+}
+
+/// ∫ₐᵇ of the standard Gaussian shape e^{−z²} in units of √π/2, i.e. (erf b − erf a), computed
+/// on the tail side that keeps its precision (erfc when both ends are on one side).
+fn erf_mass(a: f64, b: f64) -> f64 {
+    if a >= 0.0 {
+        libm::erfc(a) - libm::erfc(b)
+    } else if b <= 0.0 {
+        libm::erfc(-b) - libm::erfc(-a)
+    } else {
+        libm::erf(b) - libm::erf(a)
+    }
+}
+
+/// Mass of the normalised Gaussian G(x; β) (docs/model.md §5) over [lo, hi].
+#[must_use]
+pub fn gaussian_mass(beta: f32, lo: f32, hi: f32) -> f32 {
+    if !(hi > lo) || !(beta > 0.0) {
+        return 0.0;
+    }
+    let k = 1.0 / (core::f64::consts::SQRT_2 * f64::from(beta));
+    (0.5 * erf_mass(f64::from(lo) * k, f64::from(hi) * k)) as f32
+}
+
+/// Draws x from the normalised Gaussian G(x; β) restricted to [lo, hi], by inverting its
+/// CDF: Newton steps on erf inside a shrinking bracket, in f64 (f32's erf has no precision
+/// left in the tails). The density of the result is G(x; β)/[`gaussian_mass`]`(β, lo, hi)`.
+/// Returns `None` when the interval is empty.
+#[must_use]
+pub fn sample_gaussian(beta: f32, lo: f32, hi: f32, u: f32) -> Option<f32> {
+    if !(hi > lo) || !(beta > 0.0) {
+        return None;
+    }
+    let k = 1.0 / (core::f64::consts::SQRT_2 * f64::from(beta));
+    let (a, b) = (f64::from(lo) * k, f64::from(hi) * k);
+    let total = erf_mass(a, b);
+    if !(total > 0.0) {
+        return None;
+    }
+    let target = f64::from(unit(u)) * total;
+    // Solve erf_mass(a, z) = target for z ∈ [a, b]; d/dz erf_mass(a, z) = 2/√π·e^{−z²}.
+    let (mut lo_z, mut hi_z) = (a, b);
+    let mut z = a + f64::from(unit(u)) * (b - a);
+    for _ in 0..60 {
+        let f = erf_mass(a, z) - target;
+        if f > 0.0 {
+            hi_z = z;
+        } else {
+            lo_z = z;
+        }
+        let d = core::f64::consts::FRAC_2_SQRT_PI * libm::exp(-z * z);
+        let mut next = if d > 0.0 { z - f / d } else { f64::NAN };
+        if !(next > lo_z && next < hi_z) {
+            next = 0.5 * (lo_z + hi_z);
+        }
+        if (next - z).abs() <= 1e-12 * (1.0 + z.abs()) || hi_z - lo_z <= 1e-13 {
+            z = next;
+            break;
+        }
+        z = next;
+    }
+    Some(((z / k) as f32).clamp(lo, hi))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn choose_follows_the_weights_and_rescales() {
+        let w = [1.0, 0.0, 3.0];
+        assert_eq!(choose(&w, 0.0).map(|c| c.0), Some(0));
+        assert_eq!(choose(&w, 0.24).map(|c| c.0), Some(0));
+        assert_eq!(choose(&w, 0.26).map(|c| c.0), Some(2));
+        let (k, r) = choose(&w, 0.625).unwrap();
+        assert_eq!(k, 2);
+        assert!((r - 0.5).abs() < 1e-6);
+        assert_eq!(choose(&[0.0, -1.0, f32::NAN], 0.5), None);
+        assert_eq!(choose(&w, 1.0).map(|c| c.0), Some(2));
+    }
+
+    #[test]
+    fn linear_inversion_round_trips() {
+        for (v0, v1) in [(1.0, 1.0), (0.0, 2.0), (2.0, 0.0), (0.3, 5.0), (5.0, 0.3)] {
+            let len = 0.7;
+            for k in 0..=10 {
+                let s = len * k as f32 / 10.0;
+                let t = s * v0 + (v1 - v0) * s * s / (2.0 * len);
+                let back = invert_linear(v0, v1, len, t);
+                assert!((back - s).abs() < 2e-5, "{v0} {v1} {s} {back}");
+            }
+        }
+    }
+
+    #[test]
+    fn gaussian_sampling_inverts_its_cdf() {
+        for (beta, lo, hi) in [(0.1, -0.62, 0.62), (0.05, 0.1, 0.3), (0.2, -1.5, -0.2)] {
+            let mass = gaussian_mass(beta, lo, hi);
+            for k in 0..=16 {
+                let u = k as f32 / 16.0;
+                let x = sample_gaussian(beta, lo, hi, u).unwrap();
+                assert!((lo..=hi).contains(&x));
+                let cdf = gaussian_mass(beta, lo, x) / mass;
+                assert!((cdf - u.min(ONE_MINUS_EPSILON)).abs() < 1e-5, "{beta} {u} {x} {cdf}");
+            }
+        }
+        assert_eq!(sample_gaussian(0.1, 0.3, 0.3, 0.5), None);
+    }
+}

@@ -279,4 +279,3 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 }
-

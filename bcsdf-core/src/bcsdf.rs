@@ -134,9 +134,13 @@ fn finish(d: SampledDirection, value: Families, pdf: f32, wi: Vec3) -> Option<Sa
     }
     let cos_theta_i = crate::math::cos_within_half_pi(d.angles.theta_i()).max(0.0);
     let k = cos_theta_i / pdf;
-    let weight = value
-        .total()
-        .map(|c| if (c * k).is_finite() { (c * k).max(0.0) } else { 0.0 });
+    let weight = value.total().map(|c| {
+        if (c * k).is_finite() {
+            (c * k).max(0.0)
+        } else {
+            0.0
+        }
+    });
     Some(Sample {
         angles: d.angles,
         wi,

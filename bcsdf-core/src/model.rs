@@ -200,7 +200,10 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         coeffs: &([f32; UNSCATTERED_COUNT], [f32; SCATTERED_COUNT]),
     ) -> (Azimuthal, f32) {
         if !(theta_r.is_finite() && phi.is_finite()) {
-            return (([Rgb::ZERO; UNSCATTERED_COUNT], [Rgb::ZERO; SCATTERED_COUNT]), 0.0);
+            return (
+                ([Rgb::ZERO; UNSCATTERED_COUNT], [Rgb::ZERO; SCATTERED_COUNT]),
+                0.0,
+            );
         }
         let (slice, ext) = self.slice_and_extinction(theta_r);
         let query = FarFieldQuery {
@@ -212,13 +215,12 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         };
         let (n, dens) = query.azimuthal_with_density::<M>(phi, &coeffs.0);
         let (ns, dens_s) = match &self.scattering {
-            Some(s) if ext.medulla_scattering > 0.0 => query
-                .azimuthal_scattered_with_density::<M>(
-                    &s.profiles,
-                    self.sigma_n(&slice),
-                    phi,
-                    &coeffs.1,
-                ),
+            Some(s) if ext.medulla_scattering > 0.0 => query.azimuthal_scattered_with_density::<M>(
+                &s.profiles,
+                self.sigma_n(&slice),
+                phi,
+                &coeffs.1,
+            ),
             _ => ([Rgb::ZERO; SCATTERED_COUNT], 0.0),
         };
         ((n, ns), dens + dens_s)

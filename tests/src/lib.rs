@@ -1,6 +1,7 @@
 //! Shared helpers for the cross-crate tests. Everything here is written from MODEL.md
 //! directly and shares no code with the closed forms of `bcsdf-core` that it checks.
 
+pub mod chi2;
 pub mod cross_section_mc;
 pub mod furnace;
 pub mod profiles_ref;

@@ -248,7 +248,11 @@ pub(super) fn write(blob: &mut [u8], res: LutResolution, scales: [f32; TABLE_COU
 
 /// Checks that the sampling section of `blob` holds exactly the prefix sums of its tables;
 /// returns the index of the first entry that differs.
-pub(super) fn check(blob: &[u8], res: LutResolution, scales: [f32; TABLE_COUNT]) -> Result<(), usize> {
+pub(super) fn check(
+    blob: &[u8],
+    res: LutResolution,
+    scales: [f32; TABLE_COUNT],
+) -> Result<(), usize> {
     let start = res.sampling_start();
     let nodes = Nodes::new(blob, res, scales);
     let mut bad = None;

@@ -31,7 +31,9 @@ use crate::lobes::{Families, Lobe, LobeFamily, LobeGroup, UNSCATTERED_COUNT};
 use crate::math::{asin_clamped, cos_within_half_pi, wrap_angle, Math, PI};
 use crate::medulla::{Half, MedullaProfiles};
 use crate::model::{FurBcsdf, Scattering};
-use crate::scattered::{exit_transmittance, scattered_paths, ScatteredLongitudinal, SCATTERED_COUNT};
+use crate::scattered::{
+    exit_transmittance, scattered_paths, ScatteredLongitudinal, SCATTERED_COUNT,
+};
 use crate::unscattered::{attenuations, exit_azimuths, Extinction};
 
 /// Floor of a part's proxy weight, relative to the largest proxy.
@@ -111,7 +113,12 @@ fn cm_segments(n_out: usize, lo: f32, hi: f32, mut f: impl FnMut(f32, f32) -> bo
 }
 
 impl CmRow {
-    fn new<M: Math>(profiles: &MedullaProfiles<'_>, lon: &ScatteredLongitudinal, half: Half, theta_r: f32) -> CmRow {
+    fn new<M: Math>(
+        profiles: &MedullaProfiles<'_>,
+        lon: &ScatteredLongitudinal,
+        half: Half,
+        theta_r: f32,
+    ) -> CmRow {
         let mut row = CmRow {
             half,
             theta_in: lon.theta_in::<M>(theta_r),
@@ -134,7 +141,12 @@ impl CmRow {
 
     /// Draws θ_i: θ' by the mass of the interpolated C^M row over both branches, then θ_i on
     /// the branch it fell on.
-    fn sample<M: Math>(&self, profiles: &MedullaProfiles<'_>, lon: &ScatteredLongitudinal, u: f32) -> Option<f32> {
+    fn sample<M: Math>(
+        &self,
+        profiles: &MedullaProfiles<'_>,
+        lon: &ScatteredLongitudinal,
+        u: f32,
+    ) -> Option<f32> {
         if !(self.mass > 0.0) {
             return None;
         }
@@ -166,7 +178,12 @@ impl CmRow {
     }
 
     /// Density of the θ_i this row draws: C^M_x(θ'(θ_i) | θ'_in)·|dθ'/dθ_i| / Z_x.
-    fn density<M: Math>(&self, profiles: &MedullaProfiles<'_>, lon: &ScatteredLongitudinal, theta_i: f32) -> f32 {
+    fn density<M: Math>(
+        &self,
+        profiles: &MedullaProfiles<'_>,
+        lon: &ScatteredLongitudinal,
+        theta_i: f32,
+    ) -> f32 {
         if !(self.mass > 0.0) {
             return 0.0;
         }
@@ -187,7 +204,10 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
         let mut h_len = [0.0f32; UNSCATTERED_COUNT];
         let mut exists = [false; PARTS];
         let mut enter = None;
-        let scattering = model.scattering.as_ref().filter(|_| ext.medulla_scattering > 0.0);
+        let scattering = model
+            .scattering
+            .as_ref()
+            .filter(|_| ext.medulla_scattering > 0.0);
         let exit = exit_transmittance::<M>(&slice, &ext);
         for (i, seg) in segs[..n_segs].iter().enumerate() {
             if !(seg.t1 > seg.t0) {
@@ -261,7 +281,8 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
             Some(Scattering {
                 profiles,
                 longitudinal,
-            }) => [Half::Back, Half::Front].map(|h| Some(CmRow::new::<M>(profiles, longitudinal, h, theta_r))),
+            }) => [Half::Back, Half::Front]
+                .map(|h| Some(CmRow::new::<M>(profiles, longitudinal, h, theta_r))),
             None => [None, None],
         };
 
@@ -303,7 +324,11 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
 
     /// The per-path constants c_p of the φ density integral at θ_i: part probability ×
     /// θ_i density / |H_p| (/ the D_p normaliser), and the same for the scattered lobes.
-    fn coefficients(&self, theta_i: f32, theta_r: f32) -> ([f32; UNSCATTERED_COUNT], [f32; SCATTERED_COUNT]) {
+    fn coefficients(
+        &self,
+        theta_i: f32,
+        theta_r: f32,
+    ) -> ([f32; UNSCATTERED_COUNT], [f32; SCATTERED_COUNT]) {
         let mut c = [0.0f32; UNSCATTERED_COUNT];
         let mut cs = [0.0f32; SCATTERED_COUNT];
         if !(self.total > 0.0) {
@@ -349,7 +374,8 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
         let (theta_i, phi, family) = if part < UNSCATTERED_COUNT {
             let j = Lobe::unscattered_group(part) as usize;
             let lon = &self.groups[j];
-            let theta_i = lon.center + sample_gaussian(lon.beta, lon.lo - lon.center, lon.hi - lon.center, u[1])?;
+            let theta_i = lon.center
+                + sample_gaussian(lon.beta, lon.lo - lon.center, lon.hi - lon.center, u[1])?;
             // h uniform over the segments where the path exists, by their h-length.
             let mut lens = [0.0f32; 3];
             for (i, seg) in self.segs[..self.n_segs].iter().enumerate() {
@@ -412,7 +438,14 @@ impl<M: Math> FurBcsdf<'_, M> {
         let (n, p) = self.azimuthal_far_with_density(tr, angles.phi(), &coeffs);
         let value = self.assemble(angles, &n).families();
         let pdf = solid_angle_pdf(p, cos_within_half_pi(ti));
-        (value, if pdf.is_finite() && pdf > 0.0 { pdf } else { 0.0 })
+        (
+            value,
+            if pdf.is_finite() && pdf > 0.0 {
+                pdf
+            } else {
+                0.0
+            },
+        )
     }
 }
 

@@ -44,7 +44,12 @@ struct Rows<'b, 'a, M: Math> {
 }
 
 impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
-    fn new(lut: &'b BakedBcsdf<'a, M>, density: Density, axis: &Axis, (row, w): (usize, f32)) -> Self {
+    fn new(
+        lut: &'b BakedBcsdf<'a, M>,
+        density: Density,
+        axis: &Axis,
+        (row, w): (usize, f32),
+    ) -> Self {
         let res = &lut.header.res;
         let (n_rows, nodes) = res.density_dims(density);
         let r1 = (row + 1).min(n_rows - 1);

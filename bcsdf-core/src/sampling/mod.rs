@@ -177,7 +177,10 @@ mod tests {
                 let x = sample_gaussian(beta, lo, hi, u).unwrap();
                 assert!((lo..=hi).contains(&x));
                 let cdf = gaussian_mass(beta, lo, x) / mass;
-                assert!((cdf - u.min(ONE_MINUS_EPSILON)).abs() < 1e-5, "{beta} {u} {x} {cdf}");
+                assert!(
+                    (cdf - u.min(ONE_MINUS_EPSILON)).abs() < 1e-5,
+                    "{beta} {u} {x} {cdf}"
+                );
             }
         }
         assert_eq!(sample_gaussian(0.1, 0.3, 0.3, 0.5), None);

@@ -1209,7 +1209,9 @@ fn decode(bytes: &[u8]) -> Result<LutFile, Problem> {
     if let Some(t) = Table::ALL.into_iter().find(|&t| !filled[t as usize]) {
         return Err(Problem::Format(format!("no data for layer {}", t.name())));
     }
-
+    // The sampling section is derived from the tables, so the EXR does not carry it; the
+    // stored checksum covers it and still catches any change to the layers.
+    lut::write_sampling(&mut blob);
     lut::validate(&blob)?;
     if meta_checksum(&parsed.meta) != parsed.meta_checksum {
         return Err(Problem::Format(format!(

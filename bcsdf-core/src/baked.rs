@@ -9,7 +9,7 @@
 
 use crate::frame::{Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
-use crate::lut::cdf::Nodes;
+use crate::lut::cdf::{Density, DensityLayout, Nodes};
 use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
 use crate::math::{cos_within_half_pi, Libm, Math, PI};
 use crate::model::inv_cos2_theta_i;
@@ -61,6 +61,8 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) nodes: Nodes<'a>,
     /// The whole blob (the sampling section is read from it).
     pub(crate) blob: &'a [u8],
+    /// Where each sampled density lives ([`Density::index`] order).
+    pub(crate) densities: [DensityLayout; 9],
     pub(crate) sum: Axis,
     pub(crate) theta_r: Axis,
     pub(crate) phi: Axis,
@@ -176,6 +178,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             unbias,
             nodes: Nodes::new(bytes, res, header.scales),
             blob: bytes,
+            densities: Density::ALL.map(|d| res.density_layout(d)),
             sum: Axis::new(-PI, 2.0 * PI, res.n_sum),
             theta_r: Axis::new(0.0, PI / 2.0, res.n_theta_r),
             phi: Axis::new(0.0, PI, res.n_phi),

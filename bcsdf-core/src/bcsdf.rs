@@ -33,10 +33,9 @@ pub fn solid_angle_pdf(p_theta_phi: f32, cos_theta_i: f32) -> f32 {
 pub struct Sample {
     /// The sampled ω_i as angles: θ_i, the given θ_r, and φ = φ_r − φ_i.
     pub angles: Angles,
-    /// ω_i as a unit vector. From [`Bcsdf::sample_dirs`]: in world space. From
-    /// [`Bcsdf::sample`]: in the fiber frame (v, w, u) whose v is ω_r's projection onto the
-    /// normal plane (φ_r = 0) and u the fiber tangent, as components (v, w, u).
-    pub wi: Vec3,
+    /// ω_i as a world-space unit vector, from [`Bcsdf::sample_dirs`]; `None` from
+    /// [`Bcsdf::sample`] (angles only; [`Frame::to_world`] turns them into a vector).
+    pub wi: Option<Vec3>,
     /// Density of ω_i per unit solid angle: equals [`Bcsdf::pdf`] for the same direction.
     pub pdf: f32,
     /// S(ω_i, ω_r)·cos θ_i / pdf, RGB.
@@ -91,8 +90,7 @@ pub trait Bcsdf {
     fn sample(&self, theta_r: f32, u: [f32; 3]) -> Option<Sample> {
         let d = self.sample_direction(theta_r, u)?;
         let (value, pdf) = self.eval_with_pdf(&d.angles);
-        let frame = Frame::canonical();
-        finish(d, value, pdf, frame.to_world(&d.angles))
+        finish(d, value, pdf, None)
     }
 
     /// [`Bcsdf::eval`] from world-space directions `wi` (toward the light), `wr` (toward
@@ -122,17 +120,23 @@ pub trait Bcsdf {
         let frame = Frame::from_view::<Self::Math>(wr, tangent)?;
         let d = self.sample_direction(frame.theta_r(), u)?;
         let (value, pdf) = self.eval_with_pdf(&d.angles);
-        finish(d, value, pdf, frame.to_world(&d.angles))
+        finish(d, value, pdf, Some(frame.to_world(&d.angles)))
     }
 }
 
 /// Assembles a [`Sample`]: weight = S·cos θ_i / pdf; `None` unless the density is positive
 /// and finite.
-fn finish(d: SampledDirection, value: Families, pdf: f32, wi: Vec3) -> Option<Sample> {
+#[inline]
+pub(crate) fn finish(
+    d: SampledDirection,
+    value: Families,
+    pdf: f32,
+    wi: Option<Vec3>,
+) -> Option<Sample> {
     if !(pdf > 0.0 && pdf.is_finite()) {
         return None;
     }
-    let cos_theta_i = crate::math::cos_within_half_pi(d.angles.theta_i()).max(0.0);
+    let cos_theta_i = libm::cosf(d.angles.theta_i()).max(0.0);
     let k = cos_theta_i / pdf;
     let weight = value.total().map(|c| {
         if (c * k).is_finite() {

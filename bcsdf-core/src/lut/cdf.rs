@@ -79,7 +79,8 @@ impl Density {
     }
 
     /// Index of the density in section order (`M` 0..3, `N` 3..7, `M_s` 7..9).
-    const fn index(self) -> usize {
+    #[must_use]
+    pub const fn index(self) -> usize {
         match self {
             Density::M(g) => g,
             Density::N(f) => 3 + f,
@@ -155,12 +156,47 @@ impl LutResolution {
     }
 }
 
+/// Where one density's rows and prefix entries are, precomputed once per LUT.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DensityLayout {
+    /// Byte offset of the first prefix entry in the blob.
+    pub prefix_at: usize,
+    /// Prefix entries per row.
+    pub entries: usize,
+    /// Nodes per row.
+    pub nodes: usize,
+    /// Rows.
+    pub rows: usize,
+    /// Node spacing (radians).
+    pub step: f32,
+    /// Nodes per prefix entry.
+    pub block: usize,
+}
+
+impl LutResolution {
+    /// The layout of one density.
+    #[must_use]
+    pub fn density_layout(&self, d: Density) -> DensityLayout {
+        let (rows, nodes) = self.density_dims(d);
+        DensityLayout {
+            prefix_at: self.prefix_range(d).start,
+            entries: self.prefix_entries(d),
+            nodes,
+            rows,
+            step: self.density_step(d),
+            block: d.block(),
+        }
+    }
+}
+
 /// Read access to the node values of the tables, as the evaluator decodes them.
 #[derive(Clone, Copy, Debug)]
 pub struct Nodes<'a> {
     tables: [&'a [u8]; TABLE_COUNT],
     /// Table scale × 2^112 (see [`f16_biased`]).
     unbias: [f32; TABLE_COUNT],
+    /// Texels per row of each table.
+    width: [usize; TABLE_COUNT],
     res: LutResolution,
 }
 
@@ -178,6 +214,7 @@ impl<'a> Nodes<'a> {
         Nodes {
             tables,
             unbias,
+            width: Table::ALL.map(|t| res.dims(t).0),
             res,
         }
     }
@@ -186,24 +223,38 @@ impl<'a> Nodes<'a> {
     #[inline]
     #[must_use]
     pub fn value(&self, d: Density, row: usize, j: usize) -> f32 {
-        let t = d.table();
-        let (w, _) = self.res.dims(t);
-        let ch = t.channels();
+        let t = d.table() as usize;
         let (first, n) = d.channels();
-        let data = self.tables[t as usize];
-        let base = 2 * ((row * w + j) * ch + first);
-        let mut sum = 0.0;
-        for c in 0..n {
-            if let Some(b) = data.get(base + 2 * c..base + 2 * c + 2) {
-                sum += f16_biased(u16::from_le_bytes([b[0], b[1]]));
+        let data = self.tables[t];
+        let base = 2 * ((row * self.width[t] + j) * Table::ALL[t].channels() + first);
+        if n == 3 {
+            match data.get(base..base + 6) {
+                Some(b) => {
+                    let h = |i: usize| f16_biased(u16::from_le_bytes([b[i], b[i + 1]]));
+                    (h(0) + h(2) + h(4)) * (self.unbias[t] * (1.0 / 3.0))
+                }
+                None => 0.0,
+            }
+        } else {
+            match data.get(base..base + 2) {
+                Some(b) => f16_biased(u16::from_le_bytes([b[0], b[1]])) * self.unbias[t],
+                None => 0.0,
             }
         }
-        let k = if n == 3 {
-            self.unbias[t as usize] * (1.0 / 3.0)
-        } else {
-            self.unbias[t as usize]
-        };
-        sum * k
+    }
+
+    /// The three `M` channels at nodes j and j + 1 (R, TT, TRT, then the same at j + 1), as
+    /// [`Nodes::value`] gives them; zeros past the table.
+    #[inline]
+    #[must_use]
+    pub fn m_pair(&self, j: usize) -> [f32; 6] {
+        let k = self.unbias[Table::M as usize];
+        match self.tables[Table::M as usize].get(6 * j..6 * j + 12) {
+            Some(b) => core::array::from_fn(|i| {
+                f16_biased(u16::from_le_bytes([b[2 * i], b[2 * i + 1]])) * k
+            }),
+            None => [0.0; 6],
+        }
     }
 
     /// Computes every prefix entry in section order and hands it to `sink` with its index in

@@ -655,14 +655,21 @@ pub fn checksum(blob: &[u8]) -> u64 {
     fnv1a64_continue(fnv1a64(head), tail)
 }
 
+/// Writes the sampling section of a blob whose header and tables are filled in, derived
+/// from the tables ([`cdf`]); the checksum is left as it is. A blob whose header does not
+/// decode is left alone.
+pub fn write_sampling(blob: &mut [u8]) {
+    if let Ok(header) = LutHeader::decode(blob) {
+        cdf::write(blob, header.res, header.scales);
+    }
+}
+
 /// Completes a blob whose header and tables are filled in: writes the sampling section
-/// derived from the tables ([`cdf`]), then the checksum. Blobs shorter than the header are
-/// left alone; a blob whose header does not decode gets only its checksum.
+/// ([`write_sampling`]), then the checksum. Blobs shorter than the header are left alone; a
+/// blob whose header does not decode gets only its checksum.
 pub fn seal(blob: &mut [u8]) {
     if blob.len() >= HEADER_LEN {
-        if let Ok(header) = LutHeader::decode(blob) {
-            cdf::write(blob, header.res, header.scales);
-        }
+        write_sampling(blob);
         let sum = checksum(blob);
         blob[CHECKSUM].copy_from_slice(&sum.to_le_bytes());
     }

@@ -20,7 +20,7 @@
 
 use super::{choose, invert_linear, linear_mass, unit};
 use crate::baked::{Axis, BakedBcsdf, Lookups};
-use crate::bcsdf::{solid_angle_pdf, Bcsdf, SampledDirection};
+use crate::bcsdf::{finish, solid_angle_pdf, Bcsdf, Sample, SampledDirection};
 use crate::frame::Angles;
 use crate::lobes::{Families, LobeFamily};
 use crate::lut::cdf::Density;
@@ -44,30 +44,29 @@ struct Rows<'b, 'a, M: Math> {
 }
 
 impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
+    #[inline]
     fn new(
         lut: &'b BakedBcsdf<'a, M>,
         density: Density,
         axis: &Axis,
         (row, w): (usize, f32),
     ) -> Self {
-        let res = &lut.header.res;
-        let (n_rows, nodes) = res.density_dims(density);
-        let r1 = (row + 1).min(n_rows - 1);
+        let l = &lut.densities[density.index()];
         Rows {
             lut,
             density,
-            rows: (row.min(n_rows - 1), r1),
+            rows: (row.min(l.rows - 1), (row + 1).min(l.rows - 1)),
             w,
             origin: axis.lo,
-            step: res.density_step(density),
-            nodes,
-            entries: res.prefix_entries(density),
-            block: density.block(),
-            prefix_at: res.prefix_range(density).start,
+            step: l.step,
+            nodes: l.nodes,
+            entries: l.entries,
+            block: l.block,
+            prefix_at: l.prefix_at,
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn value(&self, j: usize) -> f32 {
         let v0 = self.lut.nodes.value(self.density, self.rows.0, j);
         if self.w == 0.0 {
@@ -77,7 +76,7 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
         (1.0 - self.w) * v0 + self.w * v1
     }
 
-    #[inline]
+    #[inline(always)]
     fn stored(&self, row: usize, k: usize) -> f32 {
         let at = self.prefix_at + 4 * (row * self.entries + k);
         match self.lut.blob.get(at..at + 4) {
@@ -87,7 +86,7 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
     }
 
     /// Blended prefix entry k: ∫ from the first node to node min(k·block, nodes − 1).
-    #[inline]
+    #[inline(always)]
     fn prefix(&self, k: usize) -> f32 {
         let p0 = self.stored(self.rows.0, k);
         if self.w == 0.0 {
@@ -97,13 +96,13 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
     }
 
     /// ∫ over the whole axis.
-    #[inline]
+    #[inline(always)]
     fn total(&self) -> f32 {
         self.prefix(self.entries - 1)
     }
 
     /// Node index and offset within its segment for axis position `x` (clamped).
-    #[inline]
+    #[inline(always)]
     fn segment_of(&self, x: f32) -> (usize, f32) {
         let u = ((x - self.origin) / self.step).clamp(0.0, (self.nodes - 1) as f32);
         let j = (u as usize).min(self.nodes - 2);
@@ -111,6 +110,7 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
     }
 
     /// ∫ from the first node to `x`.
+    #[inline(always)]
     fn cdf(&self, x: f32) -> f32 {
         let (j, off) = self.segment_of(x);
         let k = j / self.block;
@@ -128,15 +128,14 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
 
     /// The axis position where the running integral reaches `t` (0 ≤ t ≤ total).
     fn invert(&self, t: f32) -> f32 {
-        // Last prefix entry at or below t (binary search over the blended entries).
-        let (mut lo, mut hi) = (0usize, self.entries - 1);
-        while hi - lo > 1 {
-            let mid = (lo + hi) / 2;
-            if self.prefix(mid) <= t {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
+        // Last prefix entry at or below t among entries 0 ..= entries − 2: a branch-free
+        // binary search (the comparison selects, it does not branch).
+        let mut lo = 0usize;
+        let mut len = self.entries - 1;
+        while len > 1 {
+            let half = len / 2;
+            lo = if self.prefix(lo + half) <= t { lo + half } else { lo };
+            len -= half;
         }
         let first = lo * self.block;
         let end = (first + self.block).min(self.nodes - 1);
@@ -162,13 +161,49 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         Rows::new(self, Density::M(g), &self.sum, (0, 0.0))
     }
 
-    /// (∫ M_g over the range, CDF at the range start) for the three groups.
+    /// f32 at byte offset `at` of the blob (0 past its end).
+    #[inline(always)]
+    fn f32_at(&self, at: usize) -> f32 {
+        match self.blob.get(at..at + 4) {
+            Some(b) => f32::from_le_bytes([b[0], b[1], b[2], b[3]]),
+            None => 0.0,
+        }
+    }
+
+    /// ∫ M_g from the first node to x, for the three groups at once (one texel pair).
+    #[inline(always)]
+    fn m_cdf(&self, x: f32) -> [f32; 3] {
+        let (j, w) = self.sum.locate(x);
+        let off = w * self.densities[0].step;
+        let v = self.nodes.m_pair(j);
+        let mut out = [0.0; 3];
+        for (g, o) in out.iter_mut().enumerate() {
+            let (v0, v1) = (v[g], v[3 + g]);
+            let at = v0 + (v1 - v0) * w;
+            *o = self.f32_at(self.densities[g].prefix_at + 4 * j) + linear_mass(v0, at, off);
+        }
+        out
+    }
+
+    /// (∫ M_g over θ_i ∈ [−π/2, π/2], CDF at the range start) for the three groups.
+    #[inline(always)]
     fn m_masses(&self, theta_r: f32) -> [(f32, f32); 3] {
-        core::array::from_fn(|g| {
-            let rows = self.m_rows(g);
-            let lo = rows.cdf(theta_r - PI / 2.0);
-            ((rows.cdf(theta_r + PI / 2.0) - lo).max(0.0), lo)
-        })
+        let lo = self.m_cdf(theta_r - PI / 2.0);
+        let hi = self.m_cdf(theta_r + PI / 2.0);
+        [
+            ((hi[0] - lo[0]).max(0.0), lo[0]),
+            ((hi[1] - lo[1]).max(0.0), lo[1]),
+            ((hi[2] - lo[2]).max(0.0), lo[2]),
+        ]
+    }
+
+    /// Total of density `d` (the last prefix entry) blended between rows `row` and `row + 1`.
+    #[inline(always)]
+    fn row_total(&self, d: Density, (row, w): (usize, f32)) -> f32 {
+        let l = &self.densities[d.index()];
+        let at = |r: usize| l.prefix_at + 4 * (r.min(l.rows - 1) * l.entries + l.entries - 1);
+        let t0 = self.f32_at(at(row));
+        t0 + (self.f32_at(at(row + 1)) - t0) * w
     }
 
     fn n_rows(&self, family: usize, theta_r: f32) -> Rows<'_, 'a, M> {
@@ -183,19 +218,18 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
 
     /// Mixture weights A_c(θ_r) of the five parts (R, TT, TRT, scattered back, front) and
     /// the CDF offsets of the M ranges.
+    #[inline(always)]
     fn parts(&self, theta_r: f32) -> ([f32; 5], [(f32, f32); 3]) {
         let m = self.m_masses(theta_r);
-        let nu: [f32; 4] = core::array::from_fn(|f| self.n_rows(f, theta_r).total());
-        let s = [
-            self.ms_rows(0, theta_r).total(),
-            self.ms_rows(1, theta_r).total(),
-        ];
+        let nr = self.theta_r.locate(theta_r.abs());
+        let sr = self.ms_r.locate(theta_r);
+        let nu_s = self.row_total(Density::N(3), nr);
         let a = [
-            2.0 * m[0].0 * nu[0],
-            2.0 * m[1].0 * nu[1],
-            2.0 * m[2].0 * nu[2],
-            s[0] * nu[3],
-            s[1] * nu[3],
+            2.0 * m[0].0 * self.row_total(Density::N(0), nr),
+            2.0 * m[1].0 * self.row_total(Density::N(1), nr),
+            2.0 * m[2].0 * self.row_total(Density::N(2), nr),
+            self.row_total(Density::MS(0), sr) * nu_s,
+            self.row_total(Density::MS(1), sr) * nu_s,
         ];
         (a.map(|v| if v.is_finite() && v > 0.0 { v } else { 0.0 }), m)
     }
@@ -218,17 +252,21 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
+    #[inline(always)]
     fn weights_total(&self, theta_r: f32) -> f32 {
-        self.parts(theta_r).0.iter().sum()
+        let a = self.parts(theta_r).0;
+        a[0] + a[1] + a[2] + a[3] + a[4]
     }
 
-    /// Draws (θ_i, φ) given θ_r from three uniform numbers (docs/model.md §10).
-    fn draw(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
+    /// Draws (θ_i, φ) given θ_r from three uniform numbers (docs/model.md §10); also returns
+    /// the mixture's total weight W.
+    fn draw(&self, theta_r: f32, u: [f32; 3]) -> Option<(SampledDirection, f32)> {
         if !(theta_r.is_finite() && theta_r.abs() <= PI / 2.0) {
             return None;
         }
         let (a, m) = self.parts(theta_r);
         let (c, u0) = choose(&a, u[0])?;
+        let total_weight = a[0] + a[1] + a[2] + a[3] + a[4];
         let negative = u0 < 0.5;
         let theta_i = if c < 3 {
             let rows = self.m_rows(c);
@@ -245,10 +283,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let abs_phi = rows.invert(unit(u[2]) * rows.total()).clamp(0.0, PI);
         let phi = if negative { -abs_phi } else { abs_phi };
         let angles = Angles::new(theta_i, theta_r, phi).ok()?;
-        Some(SampledDirection {
+        let d = SampledDirection {
             angles,
             family: LobeFamily::ALL[family],
-        })
+        };
+        Some((d, total_weight))
     }
 }
 
@@ -274,6 +313,14 @@ impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
     }
 
     fn sample_direction(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
-        self.draw(theta_r, u)
+        self.draw(theta_r, u).map(|(d, _)| d)
+    }
+
+    fn sample(&self, theta_r: f32, u: [f32; 3]) -> Option<Sample> {
+        // The mixture weights of the draw serve the density too.
+        let (d, total_weight) = self.draw(theta_r, u)?;
+        let l = self.lookups(&d.angles);
+        let pdf = Self::density(&l, total_weight, cos_within_half_pi(d.angles.theta_i()));
+        finish(d, Self::assemble(&l), pdf, None)
     }
 }

@@ -1,0 +1,107 @@
+//! Importance sampling cost (docs/model.md §10), one call per iteration over fixed lists of
+//! 256 pre-generated inputs (θ_r ∈ ±80°, u uniform; directions for `pdf` from the sampler
+//! itself, so they lie where the density lives):
+//!
+//! - `sample_baked/<preset>`: `BakedBcsdf::sample` (direction, pdf, weight: includes one
+//!   evaluation and one pdf);
+//! - `sample_pdf_baked/<preset>`: `sample` followed by `pdf` of the sampled direction (what a
+//!   path tracer with MIS calls, pbrt's Sample_f + Pdf);
+//! - `pdf_baked/<preset>`: `BakedBcsdf::pdf` alone;
+//! - `sample_analytic/<preset>`: `FurBcsdf::sample` (the h integrals of eval and pdf in one
+//!   pass); `sample_direction_analytic/<preset>`: the direction alone, without eval or pdf.
+//!
+//! `cargo bench -p bake --bench sampling`.
+
+use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bake::tables;
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::{presets, Angles, Bcsdf, FurParams};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use std::time::Duration;
+
+fn inputs() -> Vec<(f32, [f32; 3])> {
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((state >> 40) as f32) / (1u64 << 24) as f32
+    };
+    (0..256)
+        .map(|_| {
+            let tr = (-80.0 + 160.0 * next()).to_radians();
+            (tr, [next(), next(), next()])
+        })
+        .collect()
+}
+
+fn bench(c: &mut Criterion) {
+    let xs = inputs();
+    let opts = ProfileOptions {
+        budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
+        ..ProfileOptions::default()
+    };
+    for preset in presets::PRESETS.iter() {
+        let name = preset.name;
+        let params = FurParams::new(&preset.input).unwrap();
+        let (model, _) = build_model(params, &opts).unwrap();
+        let blob = tables::bake(&model, &preset.input, LutResolution::DEFAULT);
+        let baked = BakedBcsdf::from_bytes(&blob).unwrap();
+        let analytic = model.model();
+        let dirs: Vec<Angles> = xs
+            .iter()
+            .filter_map(|&(tr, u)| baked.sample_direction(tr, u).map(|d| d.angles))
+            .collect();
+        let n = dirs.len();
+
+        let mut i = 0usize;
+        c.bench_function(&format!("sample_baked/{name}"), |b| {
+            b.iter(|| {
+                let (tr, u) = xs[i & 255];
+                i += 1;
+                black_box(baked.sample(black_box(tr), black_box(u)))
+            })
+        });
+        let mut i = 0usize;
+        c.bench_function(&format!("sample_pdf_baked/{name}"), |b| {
+            b.iter(|| {
+                let (tr, u) = xs[i & 255];
+                i += 1;
+                let s = baked.sample(black_box(tr), black_box(u));
+                black_box(s.map(|s| baked.pdf(&s.angles)))
+            })
+        });
+        let mut i = 0usize;
+        c.bench_function(&format!("pdf_baked/{name}"), |b| {
+            b.iter(|| {
+                let a = &dirs[i % n];
+                i += 1;
+                black_box(baked.pdf(black_box(a)))
+            })
+        });
+        let mut g = c.benchmark_group(format!("analytic/{name}"));
+        g.sample_size(20).measurement_time(Duration::from_secs(3));
+        let mut i = 0usize;
+        g.bench_function("sample_analytic", |b| {
+            b.iter(|| {
+                let (tr, u) = xs[i & 255];
+                i += 1;
+                black_box(analytic.sample(black_box(tr), black_box(u)))
+            })
+        });
+        let mut i = 0usize;
+        g.bench_function("sample_direction_analytic", |b| {
+            b.iter(|| {
+                let (tr, u) = xs[i & 255];
+                i += 1;
+                black_box(analytic.sample_direction(black_box(tr), black_box(u)))
+            })
+        });
+        g.finish();
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,69 @@
+//! Tight loop over the baked sampler and pdf (for profiling: `perf stat`, callgrind).
+use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::{presets, Bcsdf, FurParams};
+use std::hint::black_box;
+use std::time::Instant;
+
+fn main() {
+    let preset = presets::find("yan-row-a").unwrap();
+    let opts = ProfileOptions {
+        budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
+        ..ProfileOptions::default()
+    };
+    let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
+    let blob = bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT);
+    let lut = BakedBcsdf::from_bytes(&blob).unwrap();
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((state >> 40) as f32) / (1u64 << 24) as f32
+    };
+    let xs: Vec<(f32, [f32; 3])> = (0..256)
+        .map(|_| ((-80.0 + 160.0 * next()).to_radians(), [next(), next(), next()]))
+        .collect();
+    let n: usize = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2_000_000);
+    let start = Instant::now();
+    let mut acc = 0.0f32;
+    for i in 0..n {
+        let (tr, u) = xs[i & 255];
+        if let Some(s) = black_box(&lut).sample(black_box(tr), black_box(u)) {
+            acc += s.pdf;
+        }
+    }
+    let t = start.elapsed().as_secs_f64() / n as f64;
+    println!("sample: {:.1} ns per call (checksum {acc})", t * 1e9);
+    let dirs: Vec<_> = xs
+        .iter()
+        .filter_map(|&(tr, u)| lut.sample_direction(tr, u).map(|d| d.angles))
+        .collect();
+    let m = dirs.len();
+    let time = |label: &str, f: &dyn Fn(&bcsdf_core::Angles) -> f32| {
+        let start = Instant::now();
+        let mut acc = 0.0f32;
+        for i in 0..n {
+            acc += f(black_box(&dirs[i % m]));
+        }
+        let t = start.elapsed().as_secs_f64() / n as f64;
+        println!("{label}: {:.1} ns per call (checksum {acc})", t * 1e9);
+    };
+    time("eval", &|a| lut.eval(a).total().0[0]);
+    time("pdf", &|a| lut.pdf(a));
+    let start = Instant::now();
+    let mut acc = 0.0f32;
+    for i in 0..n {
+        let (tr, u) = xs[i & 255];
+        if let Some(d) = black_box(&lut).sample_direction(black_box(tr), black_box(u)) {
+            acc += d.angles.phi();
+        }
+    }
+    let t = start.elapsed().as_secs_f64() / n as f64;
+    println!("sample_direction: {:.1} ns per call (checksum {acc})", t * 1e9);
+}

@@ -13,17 +13,25 @@ Examples:
   printf '30 -20 45\\n30 -20 45 0.3\\n' | viewer probe --preset yan-row-a --stdin
   viewer probe --presets my-presets.toml --preset my-fur --theta-i 0 --theta-r 0 --phi 0
   viewer probe --preset yan-row-b --no-cache --photons-scale 0.1 --theta-i 30 --theta-r -20 --phi 45
+  viewer probe --preset yan-row-a --theta-i 30 --theta-r -20 --phi 45 --pdf
+  viewer probe --lut luts/yan-row-a.exr --theta-i 30 --theta-r -20 --phi 45 --pdf
+  viewer sample --preset yan-row-a --theta-r -20 -n 1000 --seed 7
+  viewer sample --lut luts/yan-row-a.furlut --theta-r -20 -n 1000
   viewer compare luts/yan-row-a.exr
   viewer compare --all luts --budget 1%,0.5%,2%
 
-Bad input (unknown preset or key, out-of-range value, malformed angle or stdin line) prints
-one line starting with `error:` on stderr and exits with code 2.";
+Bad input (unknown preset or key, out-of-range value, malformed angle or stdin line, missing
+or corrupt LUT) prints one line starting with `error:` on stderr and exits with code 2.";
 
 const PROBE_EXAMPLES: &str = "\
 Output: one JSON line per query,
   {\"total\":[r,g,b],\"lobes\":{\"R\":[r,g,b],\"TT\":[r,g,b],...}}
 with the lobes in the model's order (the eight unscattered paths, then the medulla-scattered
-TttT_s, TtrtT_s, TttRttT_s); numbers print with enough digits to round-trip f32.
+TttT_s, TtrtT_s, TttRttT_s). With --lut, the LUT's far field per lobe family instead:
+  {\"total\":[r,g,b],\"families\":{\"R\":[r,g,b],\"TT\":[r,g,b],\"TRT\":[r,g,b],\"scattered\":[r,g,b]}}
+With --pdf every line ends with ,\"pdf\":p before the closing brace: the density per unit
+solid angle with which importance sampling (`viewer sample`) draws this omega_i given
+omega_r. Numbers print with enough digits to round-trip f32.
 
 The scattered lobes need medulla profiles, generated once per parameter set (7-13 s on two
 cores) and cached (see --cache-dir); presets with sigma_ms = 0 or kappa = 0 need none.
@@ -37,6 +45,12 @@ Examples:
       | viewer probe --preset yan-row-a --stdin
   viewer probe --preset yan-row-a --cache-dir /tmp/fur-cache --seed 2 \\
       --theta-i 30 --theta-r -20 --phi 45
+  viewer probe --preset human-hair --theta-i 30 --theta-r -20 --phi 45 --pdf
+  viewer probe --lut luts/yan-row-a.exr --theta-i 30 --theta-r -20 --phi 45
+  printf '30 -20 45\\n0 0 180\\n' | viewer probe --lut luts/yan-row-a.furlut --pdf --stdin
+
+A LUT (.exr or .furlut, told apart by content) holds the far field only, and --pdf is a
+far-field density: with --lut or --pdf, --h and stdin lines with h are errors.
 
 Bad input prints one line starting with `error:` on stderr and exits with code 2; with
 --stdin the message starts `error: line N:` and the lines before it have been printed.";
@@ -58,9 +72,18 @@ pub enum Command {
         after_help = "Examples:\n  viewer presets\n  viewer presets --presets my-presets.toml"
     )]
     Presets(PresetsArgs),
-    /// Evaluate the BCSDF of a preset: far field, or near field at offset h with --h.
+    /// Evaluate the BCSDF of a preset (far field, or near field at offset h with --h) or of a
+    /// baked LUT (far field).
     #[command(after_help = PROBE_EXAMPLES)]
     Probe(ProbeArgs),
+    /// Importance-sample incident directions for one view angle, from the analytic model of a
+    /// preset or a baked LUT: direction, pdf, weight and lobe family of each draw.
+    // `--seed` seeds the draws here, so the profile generator's seed is `--profile-seed`.
+    #[command(
+        after_help = SAMPLE_EXAMPLES,
+        mut_arg("seed", |a| a.long("profile-seed"))
+    )]
+    Sample(SampleArgs),
     /// Check a baked LUT against the analytic model it was baked from: error metrics per RGB
     /// channel against a budget, heat maps, polar lobe plots, fur renders, a summary page.
     #[command(after_help = COMPARE_EXAMPLES)]
@@ -160,18 +183,8 @@ pub struct PresetsArgs {
 /// `viewer probe` arguments.
 #[derive(Debug, Args)]
 pub struct ProbeArgs {
-    /// The preset to evaluate (`viewer presets` lists them).
-    #[arg(long, value_name = "NAME")]
-    pub preset: String,
-
     #[command(flatten)]
-    pub presets: PresetsArgs,
-
-    /// Override one parameter of the preset; repeatable, applied left to right. KEY is one
-    /// of eta_c, sigma_ca, eumelanin, pheomelanin, alpha_deg, beta_m_deg, beta_n_deg, l,
-    /// kappa, eta_m, sigma_ms, sigma_ma, g; sigma_ca also takes r,g,b.
-    #[arg(long = "set", value_name = "KEY=VALUE")]
-    pub set: Vec<String>,
+    pub model: ModelArgs,
 
     /// Longitudinal angle of the light direction, degrees in [-90, 90].
     #[arg(
@@ -204,12 +217,12 @@ pub struct ProbeArgs {
     pub phi: Option<f32>,
 
     /// Near field at this offset of the view ray, in [-1, 1] fiber radii (default: far field,
-    /// h integrated).
+    /// h integrated). Not with --lut or --pdf (far field only).
     #[arg(
         long = "h",
         value_name = "H",
         allow_negative_numbers = true,
-        conflicts_with = "stdin"
+        conflicts_with_all = ["stdin", "lut", "pdf"]
     )]
     pub h: Option<f32>,
 
@@ -219,6 +232,87 @@ pub struct ProbeArgs {
     #[arg(long)]
     pub stdin: bool,
 
+    /// Also print the sampling density of each far-field query: `"pdf":p`, per unit solid
+    /// angle, of omega_i given omega_r (what `viewer sample` draws from), as the last key.
+    #[arg(long)]
+    pub pdf: bool,
+
+    #[command(flatten)]
+    pub profiles: ProfileArgs,
+}
+
+/// Which BCSDF a command works on: the analytic model of a preset (with `--set` overrides;
+/// its medulla profiles come from [`ProfileArgs`]), or a baked LUT with `--lut`.
+#[derive(Debug, Args)]
+pub struct ModelArgs {
+    /// The preset to use (`viewer presets` lists them): its analytic model.
+    #[arg(long, value_name = "NAME", required_unless_present = "lut")]
+    pub preset: Option<String>,
+
+    #[command(flatten)]
+    pub presets: PresetsArgs,
+
+    /// Override one parameter of the preset; repeatable, applied left to right. KEY is one
+    /// of eta_c, sigma_ca, eumelanin, pheomelanin, alpha_deg, beta_m_deg, beta_n_deg, l,
+    /// kappa, eta_m, sigma_ms, sigma_ma, g; sigma_ca also takes r,g,b.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+
+    /// Use this baked LUT (written by `bake`: OpenEXR or raw .furlut, told apart by content)
+    /// instead of a preset: its far field, per lobe family.
+    #[arg(
+        long,
+        value_name = "FILE",
+        conflicts_with_all = [
+            "preset", "presets", "set",
+            "cache_dir", "no_cache", "seed", "photons_scale", "threads",
+        ]
+    )]
+    pub lut: Option<PathBuf>,
+}
+
+const SAMPLE_EXAMPLES: &str = "\
+Output: one line per draw, space-separated,
+  theta_i phi pdf weight_r weight_g weight_b family
+  theta_i, phi  the sampled omega_i in degrees (phi = phi_r - phi_i, in (-180, 180])
+  pdf           its density per unit solid angle (what `viewer probe --pdf` prints for it)
+  weight_*      S cos(theta_i) / pdf, per RGB channel
+  family        the lobe family it was drawn from: R, TT, TRT or scattered
+Numbers print with enough digits to round-trip f32.
+
+Draw k (from 0) takes the uniform numbers 3k, 3k+1 and 3k+2 of
+bcsdf_core::rng::Pcg32::new(SEED, 0).uniform(): the same seed gives the same output. A draw
+that finds nothing to sample (zero albedo) prints no line; if any did, a note on stderr at
+the end says how many.
+
+Examples:
+  viewer sample --preset human-hair --theta-r -20 -n 1000
+  viewer sample --preset yan-row-a --theta-r 30 -n 100000 --seed 7 > row-a-samples.txt
+  viewer sample --preset yan-row-b --set kappa=0.4 --profile-seed 2 --theta-r 0 -n 10
+  viewer sample --lut luts/yan-row-a.exr --theta-r 30 -n 100000
+
+Bad input (N = 0, theta_r not finite or not inside (-90, 90), unknown preset or key, missing
+or corrupt LUT) prints one line starting with `error:` on stderr and exits with code 2.";
+
+/// `viewer sample` arguments.
+#[derive(Debug, Args)]
+pub struct SampleArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+
+    /// Longitudinal angle of the view direction, degrees inside (-90, 90).
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
+    pub theta_r: f32,
+
+    /// Number of draws (at least 1).
+    #[arg(short = 'n', value_name = "N")]
+    pub count: u64,
+
+    /// Seed of the uniform numbers the draws use (the same seed gives the same output).
+    #[arg(long = "seed", value_name = "S", default_value_t = 1)]
+    pub sampling_seed: u64,
+
+    /// The profiles' options (`--seed` renamed `--profile-seed`, see [`Command::Sample`]).
     #[command(flatten)]
     pub profiles: ProfileArgs,
 }

@@ -9,6 +9,8 @@ mod json;
 mod plot;
 mod probe;
 mod render;
+mod sample;
+mod source;
 mod summary;
 
 use clap::Parser;
@@ -18,6 +20,7 @@ fn main() -> ExitCode {
     let result = match cli::Cli::parse().command {
         cli::Command::Presets(args) => catalog::list(&args),
         cli::Command::Probe(args) => probe::run(&args),
+        cli::Command::Sample(args) => sample::run(&args),
         cli::Command::Compare(args) => compare::run(&args),
     };
     match result {

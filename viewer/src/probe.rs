@@ -1,12 +1,12 @@
-//! `viewer probe`: one query from the flags, or many from stdin.
+//! `viewer probe`: one query from the flags, or many from stdin, answered by the analytic
+//! model of a preset or by a baked LUT (`--lut`), optionally with the sampling pdf.
 
-use crate::catalog;
-use crate::cli::{ProbeArgs, ProfileArgs};
+use crate::cli::ProbeArgs;
 use crate::error::Error;
-use crate::json::write_lobes;
-use bake::profiles::{self, CacheOutcome, OwnedModel, ProfileKey, ProfileOptions};
-use bcsdf_core::{Angles, FurBcsdf, FurParams, Lobes, PhotonBudget, ProfileLayout, Resolution};
-use std::io::{self, BufRead, BufWriter, IsTerminal, Write};
+use crate::json::{write_families, write_lobes};
+use crate::source::{Source, Target};
+use bcsdf_core::{Angles, Bcsdf};
+use std::io::{self, BufRead, BufWriter, Write};
 
 /// One validated query: the angles and, for the near field, the offset h.
 #[derive(Clone, Copy, Debug)]
@@ -39,11 +39,42 @@ impl Query {
         Ok(Query { angles, h })
     }
 
-    /// Evaluates the model: near field at h if given, else far field.
-    pub fn eval(&self, model: &FurBcsdf) -> Lobes {
-        match self.h {
-            Some(h) => model.eval_near(&self.angles, h),
-            None => model.eval_far_lobes(&self.angles),
+    /// Why `target` cannot answer this query, if it cannot: the near field (h) needs the
+    /// analytic model and has no pdf.
+    pub fn unsupported(&self, target: &Target<'_>, pdf: bool) -> Option<String> {
+        let h = self.h?;
+        match target {
+            Target::Baked(_) => Some(format!(
+                "h = {h} asks for the near field, but a LUT holds the far field only \
+                 (expected `theta_i theta_r phi`)"
+            )),
+            Target::Analytic(_) if pdf => Some(format!(
+                "h = {h} asks for the near field, but --pdf is a far-field density \
+                 (expected `theta_i theta_r phi`)"
+            )),
+            Target::Analytic(_) => None,
+        }
+    }
+
+    /// Writes the JSON line answering the query, with the pdf if `pdf`: the analytic model
+    /// per lobe (near field at h if given, else far field), a LUT per lobe family. The
+    /// caller has checked [`Query::unsupported`].
+    pub fn answer<W: Write>(&self, target: &Target<'_>, pdf: bool, out: &mut W) -> io::Result<()> {
+        let a = &self.angles;
+        match (target, self.h) {
+            (Target::Analytic(model), Some(h)) => write_lobes(out, &model.eval_near(a, h), None),
+            (Target::Analytic(model), None) => {
+                let density = pdf.then(|| Bcsdf::pdf(model, a));
+                write_lobes(out, &model.eval_far_lobes(a), density)
+            }
+            (Target::Baked(baked), _) => {
+                if pdf {
+                    let (families, density) = baked.eval_with_pdf(a);
+                    write_families(out, &families, Some(density))
+                } else {
+                    write_families(out, &Bcsdf::eval(baked, a), None)
+                }
+            }
         }
     }
 }
@@ -76,103 +107,34 @@ pub fn parse_line(line: &str) -> Result<Option<Query>, String> {
     Query::new(values[0], values[1], values[2], h).map(Some)
 }
 
-/// The profile options `args` select: the cache directory (`--cache-dir`, else the default
-/// one, none with `--no-cache`), the seed, the scaled photon budget and the thread count.
-pub fn profile_options(args: &ProfileArgs) -> Result<ProfileOptions, Error> {
-    let budget =
-        profiles::scale_budget(PhotonBudget::DEFAULT, args.photons_scale).ok_or_else(|| {
-            Error::input(format!(
-                "--photons-scale {} must be a positive finite number",
-                args.photons_scale
-            ))
-        })?;
-    let cache_dir = if args.no_cache {
-        None
-    } else {
-        args.cache_dir.clone().or_else(profiles::default_cache_dir)
-    };
-    Ok(ProfileOptions {
-        res: Resolution::DEFAULT,
-        budget,
-        seed: args.seed,
-        cache_dir,
-        threads: args.threads,
-    })
-}
-
-/// The model for the chosen preset with the `--set` overrides applied: the full model, its
-/// medulla profiles from the cache or generated. A rejected (stale or corrupt) cache file is
-/// reported as one `note:` line on stderr.
-fn model(args: &ProbeArgs) -> Result<OwnedModel, Error> {
-    let list = catalog::load(&args.presets)?;
-    let preset = catalog::find(&list, &args.preset)?;
-    let mut input = preset.input;
-    bake::apply_overrides(&mut input, &args.set).map_err(|e| Error::input(format!("--set {e}")))?;
-    let params = FurParams::new(&input)
-        .map_err(|e| Error::input(format!("preset `{}` with the overrides: {e}", preset.name)))?;
-    let mut opts = profile_options(&args.profiles)?;
-    announce_generation(&params, &opts);
-    let (model, outcome) = match profiles::build_model(params, &opts) {
-        // The default cache directory is a convenience: when it cannot be used, say so and
-        // go on without a cache. A directory the user named is an error.
-        Err(e @ profiles::Error::CacheDir { .. }) if args.profiles.cache_dir.is_none() => {
-            let _ = writeln!(io::stderr().lock(), "note: {e}; continuing without a cache");
-            opts.cache_dir = None;
-            profiles::build_model(params, &opts).map_err(|e| Error::Failure(e.to_string()))?
-        }
-        result => result.map_err(|e| Error::Failure(e.to_string()))?,
-    };
-    if let Some(note) = outcome.as_ref().and_then(CacheOutcome::note) {
-        let _ = writeln!(io::stderr().lock(), "note: {note}");
-    }
-    Ok(model)
-}
-
-/// On a terminal, says that the profiles are about to be generated (it takes seconds) when
-/// the parameters need them and the cache holds no file for them. Pipes and scripts get
-/// nothing: stderr stays quiet unless a cache file is rejected.
-fn announce_generation(params: &FurParams, opts: &ProfileOptions) {
-    if !profiles::needs_profiles(params) || !io::stderr().is_terminal() {
-        return;
-    }
-    let key = ProfileKey {
-        layout: ProfileLayout::for_params(params, opts.res),
-        budget: opts.budget,
-        seed: opts.seed,
-    };
-    let where_to = match &opts.cache_dir {
-        Some(dir) if dir.join(key.file_name()).is_file() => return,
-        Some(dir) => format!("cached in {}", dir.display()),
-        None => "not cached".to_string(),
-    };
-    let _ = writeln!(
-        io::stderr().lock(),
-        "note: generating the medulla profiles for these parameters ({where_to})"
-    );
-}
-
 /// `viewer probe`.
 pub fn run(args: &ProbeArgs) -> Result<(), Error> {
-    let owned = model(args)?;
-    let model = owned.model();
+    let source = Source::load(&args.model, &args.profiles)?;
+    let target = source.target()?;
     let mut out = BufWriter::new(io::stdout().lock());
     if args.stdin {
-        return run_stdin(&model, &mut io::stdin().lock(), &mut out);
+        return run_stdin(&target, args.pdf, &mut io::stdin().lock(), &mut out);
     }
     // clap guarantees all three angles without --stdin.
     let (Some(ti), Some(tr), Some(phi)) = (args.theta_i, args.theta_r, args.phi) else {
         return Err(Error::input("--theta-i, --theta-r and --phi are required"));
     };
     let query = Query::new(ti, tr, phi, args.h).map_err(Error::input)?;
-    write_lobes(&mut out, &query.eval(&model))?;
+    // clap rejects --h with --lut or --pdf; this is the same rule.
+    if let Some(message) = query.unsupported(&target, args.pdf) {
+        return Err(Error::input(message));
+    }
+    query.answer(&target, args.pdf, &mut out)?;
     out.flush()?;
     Ok(())
 }
 
-/// Answers every query line of `input` in order; stops at the first malformed line with
-/// `line N: …` after flushing the answers so far.
+/// Answers every query line of `input` in order (with the pdf if `pdf`); stops at the first
+/// malformed line, or one `target` cannot answer, with `line N: …` after flushing the
+/// answers so far.
 pub fn run_stdin<R: BufRead, W: Write>(
-    model: &FurBcsdf,
+    target: &Target<'_>,
+    pdf: bool,
     input: &mut R,
     out: &mut W,
 ) -> Result<(), Error> {
@@ -186,9 +148,13 @@ pub fn run_stdin<R: BufRead, W: Write>(
         line_no += 1;
         let parsed = std::str::from_utf8(&buf)
             .map_err(|_| "not valid UTF-8".to_string())
-            .and_then(parse_line);
+            .and_then(parse_line)
+            .and_then(|query| match query {
+                Some(q) => q.unsupported(target, pdf).map_or(Ok(Some(q)), Err),
+                None => Ok(None),
+            });
         match parsed {
-            Ok(Some(query)) => write_lobes(out, &query.eval(model))?,
+            Ok(Some(query)) => query.answer(target, pdf, out)?,
             Ok(None) => {}
             Err(message) => {
                 out.flush()?;

@@ -24,7 +24,12 @@ fn main() {
         ((state >> 40) as f32) / (1u64 << 24) as f32
     };
     let xs: Vec<(f32, [f32; 3])> = (0..256)
-        .map(|_| ((-80.0 + 160.0 * next()).to_radians(), [next(), next(), next()]))
+        .map(|_| {
+            (
+                (-80.0 + 160.0 * next()).to_radians(),
+                [next(), next(), next()],
+            )
+        })
         .collect();
     let n: usize = std::env::args()
         .nth(1)
@@ -65,5 +70,8 @@ fn main() {
         }
     }
     let t = start.elapsed().as_secs_f64() / n as f64;
-    println!("sample_direction: {:.1} ns per call (checksum {acc})", t * 1e9);
+    println!(
+        "sample_direction: {:.1} ns per call (checksum {acc})",
+        t * 1e9
+    );
 }

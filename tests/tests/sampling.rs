@@ -17,14 +17,20 @@ use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::rng::{cell_stream, Pcg32};
-use bcsdf_core::{presets, Angles, Bcsdf, FurParams, FurParamsInput, Pigment, Rgb};
+use bcsdf_core::{presets, Angles, Bcsdf, Frame, FurParams, FurParamsInput, Pigment, Rgb};
 use fur_tests::furnace::furnace;
 use proptest::prelude::*;
 use std::f32::consts::{FRAC_PI_2, PI};
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
-const PRESETS: [&str; 5] = ["yan-row-a", "yan-row-b", "yan-row-c", "human-hair", "air-medulla"];
+const PRESETS: [&str; 5] = [
+    "yan-row-a",
+    "yan-row-b",
+    "yan-row-c",
+    "human-hair",
+    "air-medulla",
+];
 
 fn model_for(input: &FurParamsInput) -> OwnedModel {
     let params = FurParams::new(input).unwrap();
@@ -72,7 +78,10 @@ fn rel(a: f32, b: f32) -> f32 {
 /// Sample.pdf = pdf(), weight = eval·cos θ_i/pdf, and the vector form agrees.
 fn check_consistency<B: Bcsdf>(name: &str, m: &B, draws: u64) {
     let mut n = 0;
-    for (k, tr_deg) in [-80.0f32, -45.0, -10.0, 0.0, 25.0, 60.0, 89.0].iter().enumerate() {
+    for (k, tr_deg) in [-80.0f32, -45.0, -10.0, 0.0, 25.0, 60.0, 89.0]
+        .iter()
+        .enumerate()
+    {
         let tr = tr_deg.to_radians();
         for i in 0..draws {
             let u = uniforms(k as u64, i);
@@ -81,7 +90,11 @@ fn check_consistency<B: Bcsdf>(name: &str, m: &B, draws: u64) {
             };
             n += 1;
             let pdf = m.pdf(&s.angles);
-            assert!(rel(s.pdf, pdf) <= 1e-5, "{name}: pdf {} vs pdf() {pdf}", s.pdf);
+            assert!(
+                rel(s.pdf, pdf) <= 1e-5,
+                "{name}: pdf {} vs pdf() {pdf}",
+                s.pdf
+            );
             let f = m.eval(&s.angles).total();
             let cos = s.angles.theta_i().cos();
             for c in 0..3 {
@@ -93,18 +106,25 @@ fn check_consistency<B: Bcsdf>(name: &str, m: &B, draws: u64) {
                     s.angles
                 );
             }
-            // The direction in the fiber frame is unit length and has the sampled angles.
-            let len = s.wi.iter().map(|c| c * c).sum::<f32>().sqrt();
+            // The angle form has no vector; the fiber frame turns the angles into a unit vector
+            // with the same angles.
+            assert!(s.wi.is_none());
+            let wi = Frame::canonical().to_world(&s.angles);
+            let len = wi.iter().map(|c| c * c).sum::<f32>().sqrt();
             assert!((len - 1.0).abs() < 1e-5, "{name}: |wi| = {len}");
             let back = Angles::from_directions::<bcsdf_core::Libm>(
-                s.wi,
+                wi,
                 [tr.cos(), 0.0, tr.sin()],
                 [0.0, 0.0, 1.0],
             )
             .unwrap();
             // asin loses precision toward the poles: about one ulp of sin θ_i over cos θ_i.
             let tol = 1e-5 + 2e-7 / cos.max(1e-6);
-            assert!((back.theta_i() - s.angles.theta_i()).abs() < tol, "{name}: {back:?} {:?}", s.angles);
+            assert!(
+                (back.theta_i() - s.angles.theta_i()).abs() < tol,
+                "{name}: {back:?} {:?}",
+                s.angles
+            );
             if s.angles.theta_i().abs() < 1.5 {
                 let dphi = (back.phi() - s.angles.phi() + PI).rem_euclid(2.0 * PI) - PI;
                 assert!(dphi.abs() < 1e-4, "{name}: {back:?} {:?}", s.angles);
@@ -123,22 +143,33 @@ fn check_vectors<B: Bcsdf>(name: &str, m: &B) {
         let Some(s) = m.sample_dirs(wr, tangent, uniforms(7, i)) else {
             continue;
         };
-        let len = s.wi.iter().map(|c| c * c).sum::<f32>().sqrt();
+        let wi = s.wi.expect("the vector form returns a vector");
+        let len = wi.iter().map(|c| c * c).sum::<f32>().sqrt();
         assert!((len - 1.0).abs() < 1e-5, "{name}: |wi| = {len}");
-        let a = Angles::from_directions::<bcsdf_core::Libm>(s.wi, wr, tangent).unwrap();
-        assert!((a.theta_i() - s.angles.theta_i()).abs() < 1e-4, "{name}: {a:?} {:?}", s.angles);
-        assert!((a.theta_r() - s.angles.theta_r()).abs() < 1e-4, "{name}: {a:?} {:?}", s.angles);
+        let a = Angles::from_directions::<bcsdf_core::Libm>(wi, wr, tangent).unwrap();
+        assert!(
+            (a.theta_i() - s.angles.theta_i()).abs() < 1e-4,
+            "{name}: {a:?} {:?}",
+            s.angles
+        );
+        assert!(
+            (a.theta_r() - s.angles.theta_r()).abs() < 1e-4,
+            "{name}: {a:?} {:?}",
+            s.angles
+        );
         if s.angles.theta_i().abs() < 1.5 && s.angles.theta_r().abs() < 1.5 {
             let dphi = (a.phi() - s.angles.phi() + PI).rem_euclid(2.0 * PI) - PI;
             assert!(dphi.abs() < 1e-3, "{name}: {a:?} {:?}", s.angles);
         }
-        let p = m.pdf_dirs(s.wi, wr, tangent);
+        let p = m.pdf_dirs(wi, wr, tangent);
         assert!(rel(p, s.pdf) < 2e-2, "{name}: pdf_dirs {p} vs {}", s.pdf);
     }
     // Degenerate input gives None or zero, never a panic or NaN.
     assert!(m.sample_dirs([0.0; 3], tangent, [0.5; 3]).is_none());
     assert!(m.sample_dirs([1.0, 0.0, 0.0], [0.0; 3], [0.5; 3]).is_none());
-    assert!(m.sample_dirs([f32::NAN, 0.0, 1.0], tangent, [0.5; 3]).is_none());
+    assert!(m
+        .sample_dirs([f32::NAN, 0.0, 1.0], tangent, [0.5; 3])
+        .is_none());
     assert_eq!(m.pdf_dirs([0.0; 3], [1.0, 0.0, 0.0], tangent), 0.0);
     // ω_r along the fiber still samples.
     if let Some(s) = m.sample_dirs(tangent, tangent, [0.3, 0.6, 0.2]) {
@@ -159,7 +190,11 @@ fn check_support<B: Bcsdf>(name: &str, m: &B, steps: usize) {
                 assert!(p >= 0.0 && p.is_finite());
                 assert_eq!(p, m.pdf(&angles), "{name}: eval_with_pdf and pdf differ");
                 if f.total().max_channel() > 0.0 {
-                    assert!(p > 0.0, "{name}: eval {:?} > 0 but pdf 0 at {angles:?}", f.total());
+                    assert!(
+                        p > 0.0,
+                        "{name}: eval {:?} > 0 but pdf 0 at {angles:?}",
+                        f.total()
+                    );
                 }
             }
         }
@@ -207,7 +242,10 @@ fn estimates<B: Bcsdf>(m: &B, theta_r: f32, n: u64) -> (Vec<f64>, Vec<f64>) {
         let phi = -PI + 2.0 * PI * u[2];
         let a = Angles::new(ti, theta_r, phi).unwrap();
         let f = m.eval(&a).total();
-        let est = f64::from(f.0.iter().sum::<f32>() / 3.0) * f64::from(ti.cos()) * 4.0 * std::f64::consts::PI;
+        let est = f64::from(f.0.iter().sum::<f32>() / 3.0)
+            * f64::from(ti.cos())
+            * 4.0
+            * std::f64::consts::PI;
         uniform.push(est);
     }
     (is, uniform)
@@ -269,17 +307,36 @@ fn any_theta() -> impl Strategy<Value = f32> {
     ]
 }
 
-fn check_robust<B: Bcsdf>(m: &B, tr: f32, u: [f32; 3], wr: [f32; 3], t: [f32; 3]) -> Result<(), TestCaseError> {
+fn check_robust<B: Bcsdf>(
+    m: &B,
+    tr: f32,
+    u: [f32; 3],
+    wr: [f32; 3],
+    t: [f32; 3],
+) -> Result<(), TestCaseError> {
     if let Some(s) = m.sample(tr, u) {
         prop_assert!(s.pdf > 0.0 && s.pdf.is_finite(), "{s:?}");
-        prop_assert!(s.weight.0.iter().all(|c| c.is_finite() && *c >= 0.0), "{s:?}");
-        prop_assert!(s.wi.iter().all(|c| c.is_finite()));
+        prop_assert!(
+            s.weight.0.iter().all(|c| c.is_finite() && *c >= 0.0),
+            "{s:?}"
+        );
+        prop_assert!(s.wi.is_none());
     } else {
-        prop_assert!(!(tr.is_finite() && tr.abs() <= FRAC_PI_2) || m.eval(&Angles::new(0.0, tr, 0.0).unwrap()).total().max_channel() >= 0.0);
+        prop_assert!(
+            !(tr.is_finite() && tr.abs() <= FRAC_PI_2)
+                || m.eval(&Angles::new(0.0, tr, 0.0).unwrap())
+                    .total()
+                    .max_channel()
+                    >= 0.0
+        );
     }
     if let Some(s) = m.sample_dirs(wr, t, u) {
         prop_assert!(s.pdf > 0.0 && s.pdf.is_finite(), "{s:?}");
-        prop_assert!(s.weight.0.iter().all(|c| c.is_finite() && *c >= 0.0), "{s:?}");
+        prop_assert!(
+            s.weight.0.iter().all(|c| c.is_finite() && *c >= 0.0),
+            "{s:?}"
+        );
+        prop_assert!(s.wi.is_some_and(|w| w.iter().all(|c| c.is_finite())));
     }
     let p = m.pdf_dirs(wr, t, wr);
     prop_assert!(p.is_finite() && p >= 0.0);

@@ -101,31 +101,6 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
         self.prefix(self.entries - 1)
     }
 
-    /// Node index and offset within its segment for axis position `x` (clamped).
-    #[inline(always)]
-    fn segment_of(&self, x: f32) -> (usize, f32) {
-        let u = ((x - self.origin) / self.step).clamp(0.0, (self.nodes - 1) as f32);
-        let j = (u as usize).min(self.nodes - 2);
-        (j, (u - j as f32) * self.step)
-    }
-
-    /// ∫ from the first node to `x`.
-    #[inline(always)]
-    fn cdf(&self, x: f32) -> f32 {
-        let (j, off) = self.segment_of(x);
-        let k = j / self.block;
-        let mut acc = self.prefix(k);
-        let mut prev = self.value(k * self.block);
-        for i in k * self.block..j {
-            let v = self.value(i + 1);
-            acc += linear_mass(prev, v, self.step);
-            prev = v;
-        }
-        let next = self.value(j + 1);
-        let at = prev + (next - prev) * (off / self.step);
-        acc + linear_mass(prev, at, off)
-    }
-
     /// The axis position where the running integral reaches `t` (0 ≤ t ≤ total).
     fn invert(&self, t: f32) -> f32 {
         // Last prefix entry at or below t among entries 0 ..= entries − 2: a branch-free
@@ -134,7 +109,11 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
         let mut len = self.entries - 1;
         while len > 1 {
             let half = len / 2;
-            lo = if self.prefix(lo + half) <= t { lo + half } else { lo };
+            lo = if self.prefix(lo + half) <= t {
+                lo + half
+            } else {
+                lo
+            };
             len -= half;
         }
         let first = lo * self.block;

@@ -217,7 +217,7 @@ impl fmt::Display for LutFileError {
                 ..
             } => write!(
                 f,
-                "{path}: LUT was baked by model version {found}; this build is model version {expected}: rebake it"
+                "{path}: LUT was baked by model version {found}; this build is model version {expected}: re-bake it with this version's `bake`"
             ),
             LutFileError::Version {
                 what,
@@ -226,7 +226,7 @@ impl fmt::Display for LutFileError {
                 ..
             } => write!(
                 f,
-                "{path}: LUT {what} version {found} is not supported (this build reads version {expected}): rebake it"
+                "{path}: LUT {what} version {found} is not supported (this build reads version {expected}): re-bake it with this version's `bake`"
             ),
             LutFileError::Format { problem, .. } => {
                 write!(f, "{path}: not a valid LUT file: {}", one_line(problem))

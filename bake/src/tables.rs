@@ -184,7 +184,7 @@ impl std::fmt::Display for RebuildError {
         match self {
             RebuildError::GeneratorVersion { found } => write!(
                 f,
-                "the LUT's medulla profiles come from generator version {found}, this build has version {GENERATOR_VERSION}: rebake it"
+                "the LUT's medulla profiles come from generator version {found}, this build has version {GENERATOR_VERSION}: re-bake it"
             ),
             RebuildError::Profiles(e) => write!(f, "{e}"),
             RebuildError::Params(e) => write!(f, "LUT parameters: {e}"),

@@ -429,9 +429,11 @@ fn read_errors_name_the_file_and_the_problem() {
 fn another_format_or_model_version_is_rejected_naming_the_version() {
     let dir = tempfile::tempdir().unwrap();
 
+    // A LUT of the previous format (version 1, before the sampling section) is refused with a
+    // message that says to re-bake.
     let mut bytes = air_exr().to_vec();
-    patch_int(&mut bytes, "lut_format_version", 2);
-    let path = dir.path().join("v2.exr");
+    patch_int(&mut bytes, "lut_format_version", 1);
+    let path = dir.path().join("v1.exr");
     std::fs::write(&path, &bytes).unwrap();
     let err = read_exr(&path).unwrap_err();
     assert!(
@@ -439,14 +441,17 @@ fn another_format_or_model_version_is_rejected_naming_the_version() {
             err,
             LutFileError::Version {
                 what: "format",
-                found: 2,
+                found: 1,
                 ..
             }
         ),
         "{err:?}"
     );
     let msg = read_message(&err, &path);
-    assert!(msg.contains("format version 2"), "{msg}");
+    assert!(
+        msg.contains("format version 1") && msg.contains("re-bake"),
+        "{msg}"
+    );
 
     let mut bytes = air_exr().to_vec();
     patch_int(&mut bytes, "model_version", MODEL_VERSION as i32 + 1);
@@ -458,8 +463,8 @@ fn another_format_or_model_version_is_rejected_naming_the_version() {
     );
 
     let mut blob = air().to_vec();
-    blob[8..12].copy_from_slice(&2u32.to_le_bytes());
-    let path = dir.path().join("v2.lut");
+    blob[8..12].copy_from_slice(&1u32.to_le_bytes());
+    let path = dir.path().join("v1.lut");
     std::fs::write(&path, &blob).unwrap();
     let err = read_blob(&path).unwrap_err();
     assert!(
@@ -467,13 +472,17 @@ fn another_format_or_model_version_is_rejected_naming_the_version() {
             err,
             LutFileError::Version {
                 what: "format",
-                found: 2,
+                found: 1,
                 ..
             }
         ),
         "{err:?}"
     );
-    assert!(read_message(&err, &path).contains("format version 2"));
+    let msg = read_message(&err, &path);
+    assert!(
+        msg.contains("format version 1") && msg.contains("re-bake"),
+        "{msg}"
+    );
 }
 
 /// 256 cases per property, or `PROPTEST_CASES` when set (for a deeper run).

@@ -179,9 +179,22 @@ fn malformed_blobs_are_rejected_with_the_right_error() {
     b[0] = b'X';
     assert_eq!(err(&b), LutError::BadMagic);
 
+    // The previous format (1, without the sampling section) asks for a re-bake.
     let mut b = good.clone();
-    b[8..12].copy_from_slice(&2u32.to_le_bytes());
-    assert_eq!(err(&sealed(b)), LutError::FormatVersion { found: 2 });
+    b[8..12].copy_from_slice(&1u32.to_le_bytes());
+    assert_eq!(err(&sealed(b)), LutError::FormatVersion { found: 1 });
+    assert!(LutError::FormatVersion { found: 1 }
+        .to_string()
+        .contains("re-bake"));
+
+    // A sampling section that does not match the tables, checksum recomputed over it.
+    let mut b = good.clone();
+    let at = RES.sampling_start() + 4 * 5;
+    let v = f32::from_le_bytes(b[at..at + 4].try_into().unwrap());
+    b[at..at + 4].copy_from_slice(&(v * 1.5 + 1.0).to_le_bytes());
+    let sum = lut::checksum(&b);
+    b[lut::CHECKSUM].copy_from_slice(&sum.to_le_bytes());
+    assert_eq!(err(&b), LutError::Sampling { entry: 5 });
 
     let mut b = good.clone();
     b[12..16].copy_from_slice(&99u32.to_le_bytes());

@@ -273,8 +273,21 @@ fn print_summary(reports: &[BakeReport], budget: &ErrorBudget, res: &LutResoluti
         pct(budget.e_peak)
     );
     println!(
-        "{:<14} {:>9} {:>9} {:>10} {:>8} {:>8} {:>9} {:>9} {:>9}  result",
-        "preset", "f16 KB", "EXR KB", "profiles", "bake s", "check s", "E1", "E_albedo", "E_peak",
+        "sizes: f16 KB = the half-float tables; LUT KB = the whole .furlut (header, tables and \
+         the sampling data) as BakedBcsdf reads it"
+    );
+    println!(
+        "{:<14} {:>9} {:>9} {:>9} {:>10} {:>8} {:>8} {:>9} {:>9} {:>9}  result",
+        "preset",
+        "f16 KB",
+        "LUT KB",
+        "EXR KB",
+        "profiles",
+        "bake s",
+        "check s",
+        "E1",
+        "E_albedo",
+        "E_peak",
     );
     for r in reports {
         let profiles = match &r.cache {
@@ -294,9 +307,10 @@ fn print_summary(reports: &[BakeReport], budget: &ErrorBudget, res: &LutResoluti
             ),
         };
         println!(
-            "{:<14} {:>9.1} {:>9.1} {:>10} {:>8.2} {:>8.2} {:>9} {:>9} {:>9}  {}",
+            "{:<14} {:>9.1} {:>9.1} {:>9.1} {:>10} {:>8.2} {:>8.2} {:>9} {:>9} {:>9}  {}",
             r.preset,
             r.table_bytes as f64 / 1024.0,
+            r.blob_bytes as f64 / 1024.0,
             r.exr_bytes as f64 / 1024.0,
             profiles,
             r.bake_seconds(),

@@ -5,7 +5,7 @@
 use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::{self, LutHeader, LutResolution};
-use bcsdf_core::{presets, Angles, FastMath, FurBcsdf, FurParams, Libm, Math};
+use bcsdf_core::{presets, Angles, Bcsdf, FastMath, FurBcsdf, FurParams, Libm, Math};
 
 #[panic_handler]
 fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
@@ -79,7 +79,20 @@ fn eval_full<M: Math>(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 
     let Ok(angles) = Angles::new(ti, tr, phi) else {
         return -1.0;
     };
-    model.eval_far(&angles).total().0[0] + model.eval_near(&angles, h).total().0[1]
+    let sampled = sample_sum(&model, tr, [0.3, 0.6, 0.9], [0.0, 1.0, -0.1], [0.0, 0.0, 1.0]);
+    model.eval_far(&angles).total().0[0] + model.eval_near(&angles, h).total().0[1] + sampled
+}
+
+/// Exercises the `Bcsdf` trait: sample, pdf, from angles and from vectors.
+fn sample_sum<B: Bcsdf>(m: &B, tr: f32, u: [f32; 3], wr: [f32; 3], t: [f32; 3]) -> f32 {
+    let mut acc = 0.0;
+    if let Some(s) = m.sample(tr, u) {
+        acc += s.pdf + s.weight.0[0] + m.pdf(&s.angles);
+    }
+    if let Some(s) = m.sample_dirs(wr, t, u) {
+        acc += s.pdf + s.weight.0[1] + s.wi.map_or(0.0, |w| w[0]);
+    }
+    acc
 }
 
 /// C entry point: the full model (profiles generated in place) with the libm backend.
@@ -125,7 +138,8 @@ fn eval_baked(bytes: &[u8], ti: f32, tr: f32, phi: f32) -> f32 {
     let dirs = lut
         .eval_far_dirs([1.0, 0.0, 0.2], [0.0, 1.0, -0.1], [0.0, 0.0, 1.0])
         .total();
-    lut.eval_far(&angles).total().0[0] + dirs.0[1]
+    let sampled = sample_sum(&lut, tr, [0.3, 0.6, 0.9], [0.0, 1.0, -0.1], [0.0, 0.0, 1.0]);
+    lut.eval_far(&angles).total().0[0] + dirs.0[1] + sampled
 }
 
 /// The smallest LUT (two nodes per axis), written into a stack buffer with the core's own
@@ -139,7 +153,10 @@ pub extern "C" fn fur_eval_baked_small(preset: usize, ti: f32, tr: f32, phi: f32
         n_ms_i: 2,
         n_ms_r: 2,
     };
-    const LEN: usize = lut::HEADER_LEN + 2 * (2 * 3 + 4 * (2 * 2 * 3) + 2 * 2 * 2);
+    // Header, the three tables (f16), the sampling section (f32 prefix sums: M 3 × 2,
+    // N 4 families × 2 rows × 2, M_s 2 halves × 2 rows × 2).
+    const TABLES: usize = 2 * (2 * 3 + 4 * (2 * 2 * 3) + 2 * 2 * 2);
+    const LEN: usize = lut::HEADER_LEN + TABLES + 4 * (3 * 2 + 4 * 2 * 2 + 2 * 2 * 2);
     let Some(p) = presets::PRESETS.get(preset) else {
         return -1.0;
     };
@@ -154,7 +171,7 @@ pub extern "C" fn fur_eval_baked_small(preset: usize, ti: f32, tr: f32, phi: f32
     };
     let mut blob = [0u8; LEN];
     blob[..lut::HEADER_LEN].copy_from_slice(&header.encode());
-    for pair in blob[lut::HEADER_LEN..].chunks_exact_mut(2) {
+    for pair in blob[lut::HEADER_LEN..lut::HEADER_LEN + TABLES].chunks_exact_mut(2) {
         pair.copy_from_slice(&0x3c00u16.to_le_bytes()); // 1.0 as f16
     }
     lut::seal(&mut blob);

@@ -737,18 +737,23 @@ impl<'a> MedullaProfiles<'a> {
         }
         let target = crate::sampling::unit(u) * total;
         let mut acc = 0.0;
-        let mut psi = PI;
+        let mut found = None;
+        let mut last = None;
         for b in 0..n_psi {
             let (v0, v1) = (self.row_value(row, b), self.row_value(row, (b + 1) % n_psi));
             let m = crate::sampling::linear_mass(v0, v1, w);
-            if target - acc < m || b + 1 == n_psi {
-                let s = crate::sampling::invert_linear(v0, v1, w, target - acc);
-                // Bin centre b sits at −π + (b + ½)·w.
-                psi = -PI + (b as f32 + 0.5) * w + s;
-                break;
+            if m > 0.0 {
+                if target - acc <= m {
+                    found = Some((b, crate::sampling::invert_linear(v0, v1, w, target - acc)));
+                    break;
+                }
+                last = Some((b, crate::sampling::invert_linear(v0, v1, w, m)));
             }
             acc += m;
         }
+        // Bin centre b sits at −π + (b + ½)·w.
+        let (b, s) = found.or(last)?;
+        let psi = -PI + (b as f32 + 0.5) * w + s;
         let psi = wrap_angle(psi);
         Some(if row.flip { -psi } else { psi })
     }

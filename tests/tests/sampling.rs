@@ -314,21 +314,31 @@ fn check_robust<B: Bcsdf>(
     wr: [f32; 3],
     t: [f32; 3],
 ) -> Result<(), TestCaseError> {
-    if let Some(s) = m.sample(tr, u) {
-        prop_assert!(s.pdf > 0.0 && s.pdf.is_finite(), "{s:?}");
-        prop_assert!(
-            s.weight.0.iter().all(|c| c.is_finite() && *c >= 0.0),
-            "{s:?}"
-        );
-        prop_assert!(s.wi.is_none());
-    } else {
-        prop_assert!(
-            !(tr.is_finite() && tr.abs() <= FRAC_PI_2)
-                || m.eval(&Angles::new(0.0, tr, 0.0).unwrap())
-                    .total()
-                    .max_channel()
-                    >= 0.0
-        );
+    let valid = tr.is_finite() && tr.abs() <= FRAC_PI_2;
+    match m.sample(tr, u) {
+        Some(s) => {
+            prop_assert!(valid, "sampled at an invalid theta_r {tr}");
+            prop_assert!(s.pdf > 0.0 && s.pdf.is_finite(), "{s:?}");
+            prop_assert!(
+                s.weight.0.iter().all(|c| c.is_finite() && *c >= 0.0),
+                "{s:?}"
+            );
+            prop_assert!(s.wi.is_none());
+        }
+        // None means an invalid θ_r or zero albedo (S = 0 everywhere, e.g. at exactly
+        // θ_r = ±90°): wherever S > 0 somewhere, every u (u = 1 included) must sample.
+        None => {
+            let lit = valid
+                && (0..=16).any(|a| {
+                    (0..32).any(|b| {
+                        let ti = -FRAC_PI_2 + PI * a as f32 / 16.0;
+                        let phi = -PI + PI * b as f32 / 16.0;
+                        let a = Angles::new(ti, tr, phi).unwrap();
+                        m.eval(&a).total().max_channel() > 0.0
+                    })
+                });
+            prop_assert!(!lit, "no sample at theta_r {tr} with u {u:?}, yet S > 0");
+        }
     }
     if let Some(s) = m.sample_dirs(wr, t, u) {
         prop_assert!(s.pdf > 0.0 && s.pdf.is_finite(), "{s:?}");

@@ -161,10 +161,14 @@ impl CmRow {
                 let v0 = profiles.cm(self.half, x0, self.theta_in);
                 let v1 = profiles.cm(self.half, x1, self.theta_in);
                 let m = linear_mass(v0, v1, x1 - x0);
-                last = Some((branch, x1));
-                if target - acc < m {
-                    found = Some((branch, x0 + invert_linear(v0, v1, x1 - x0, target - acc)));
-                    return true;
+                if m > 0.0 {
+                    if target - acc <= m {
+                        let s = invert_linear(v0, v1, x1 - x0, target - acc);
+                        found = Some((branch, x0 + s));
+                        return true;
+                    }
+                    // Rounding past the last segment of positive mass lands at its end.
+                    last = Some((branch, x0 + invert_linear(v0, v1, x1 - x0, m)));
                 }
                 acc += m;
                 false

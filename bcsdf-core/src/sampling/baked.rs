@@ -101,15 +101,26 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
         self.prefix(self.entries - 1)
     }
 
+    /// The axis position where the running integral reaches t0 + u·(t1 − t0), with the
+    /// target kept 2⁻²⁰ of the span inside (t0, t1), so that the ends of u never fall on a
+    /// stretch of zero density before or after the mass (mass moved: below 2⁻²⁰).
+    #[inline(always)]
+    fn invert_between(&self, t0: f32, t1: f32, u: f32) -> f32 {
+        let inset = (t1 - t0) * (1.0 / 1_048_576.0);
+        let t = (t0 + unit(u) * (t1 - t0)).clamp(t0 + inset, t1 - inset);
+        self.invert(t)
+    }
+
     /// The axis position where the running integral reaches `t` (0 ≤ t ≤ total).
     fn invert(&self, t: f32) -> f32 {
-        // Last prefix entry at or below t among entries 0 ..= entries − 2: a branch-free
-        // binary search (the comparison selects, it does not branch).
+        // Last prefix entry strictly below t among entries 0 ..= entries − 2 (0 when t is 0):
+        // the block where the running integral crosses t, also when the integral is flat
+        // (zero density) before or after. A branch-free binary search.
         let mut lo = 0usize;
         let mut len = self.entries - 1;
         while len > 1 {
             let half = len / 2;
-            lo = if self.prefix(lo + half) <= t {
+            lo = if self.prefix(lo + half) < t {
                 lo + half
             } else {
                 lo
@@ -120,17 +131,28 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
         let end = (first + self.block).min(self.nodes - 1);
         let mut acc = self.prefix(lo);
         let mut prev = self.value(first);
+        // The last segment of positive mass seen, for a t that rounding put past the block.
+        let mut last = None;
         for j in first..end {
             let v = self.value(j + 1);
             let m = linear_mass(prev, v, self.step);
-            if t - acc < m || j + 1 == end {
-                let s = invert_linear(prev, v, self.step, t - acc);
-                return self.origin + j as f32 * self.step + s;
+            if m > 0.0 {
+                if t - acc <= m {
+                    let s = invert_linear(prev, v, self.step, t - acc);
+                    return self.origin + j as f32 * self.step + s;
+                }
+                last = Some((j, prev, v));
             }
             acc += m;
             prev = v;
         }
-        self.origin + end as f32 * self.step
+        match last {
+            Some((j, v0, v1)) => {
+                let s = invert_linear(v0, v1, self.step, self.step * (v0 + v1));
+                self.origin + j as f32 * self.step + s
+            }
+            None => self.origin + end as f32 * self.step,
+        }
     }
 }
 
@@ -250,16 +272,16 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let theta_i = if c < 3 {
             let rows = self.m_rows(c);
             let (mass, lo) = m[c];
-            let x = rows.invert(lo + unit(u[1]) * mass);
+            let x = rows.invert_between(lo, lo + mass, u[1]);
             (x - theta_r).clamp(-PI / 2.0, PI / 2.0)
         } else {
             let rows = self.ms_rows(c - 3, theta_r);
-            rows.invert(unit(u[1]) * rows.total())
+            rows.invert_between(0.0, rows.total(), u[1])
                 .clamp(-PI / 2.0, PI / 2.0)
         };
         let family = if c < 3 { c } else { 3 };
         let rows = self.n_rows(family, theta_r);
-        let abs_phi = rows.invert(unit(u[2]) * rows.total()).clamp(0.0, PI);
+        let abs_phi = rows.invert_between(0.0, rows.total(), u[2]).clamp(0.0, PI);
         let phi = if negative { -abs_phi } else { abs_phi };
         let angles = Angles::new(theta_i, theta_r, phi).ok()?;
         let d = SampledDirection {
@@ -301,5 +323,96 @@ impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
         let l = self.lookups(&d.angles);
         let pdf = Self::density(&l, total_weight, cos_within_half_pi(d.angles.theta_i()));
         finish(d, Self::assemble(&l), pdf, None)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::lut::{self, LutHeader, LutResolution};
+    use crate::presets;
+    use std::vec;
+
+    /// A LUT with pseudo-random positive values (some exactly zero) in every table.
+    fn blob() -> std::vec::Vec<u8> {
+        let res = LutResolution {
+            n_sum: 33,
+            n_theta_r: 5,
+            n_phi: 27,
+            n_ms_i: 19,
+            n_ms_r: 7,
+        };
+        let header = LutHeader {
+            res,
+            scales: [1.0; lut::TABLE_COUNT],
+            params: presets::PRESETS[0].input,
+            profiles: None,
+        };
+        let mut b = vec![0u8; res.blob_len()];
+        b[..lut::HEADER_LEN].copy_from_slice(&header.encode());
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let end = res.sampling_start();
+        for pair in b[lut::HEADER_LEN..end].chunks_exact_mut(2) {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1);
+            let r = (state >> 33) as u32;
+            // Halves in [0, 2) with one in eight zero: 0x0000..0x4000.
+            let bits = if r % 8 == 0 { 0 } else { (r % 0x4000) as u16 };
+            pair.copy_from_slice(&bits.to_le_bytes());
+        }
+        lut::seal(&mut b);
+        b
+    }
+
+    /// ∫ of the rows' interpolant from the first node to x, segment by segment (the exact
+    /// integral of a linear function), written independently of `Rows`.
+    fn integral<M: Math>(rows: &Rows<'_, '_, M>, x: f32) -> f64 {
+        let u = f64::from((x - rows.origin) / rows.step);
+        let mut acc = 0.0f64;
+        for j in 0..rows.nodes - 1 {
+            let (v0, v1) = (f64::from(rows.value(j)), f64::from(rows.value(j + 1)));
+            let len = (u - j as f64).clamp(0.0, 1.0);
+            if len <= 0.0 {
+                break;
+            }
+            let at = v0 + (v1 - v0) * len;
+            acc += 0.5 * len * (v0 + at) * f64::from(rows.step);
+        }
+        acc
+    }
+
+    #[test]
+    fn row_inversion_hits_the_target_mass() {
+        let b = blob();
+        let lut = BakedBcsdf::from_bytes(&b).unwrap();
+        let mut checked = 0;
+        for d in Density::ALL {
+            let (axis, rows) = match d {
+                Density::M(_) => (&lut.sum, 1),
+                Density::N(_) => (&lut.phi, lut.header.res.n_theta_r as usize),
+                Density::MS(_) => (&lut.ms_i, lut.header.res.n_ms_r as usize),
+            };
+            for row in 0..rows {
+                for w in [0.0f32, 0.3, 0.77] {
+                    let r = Rows::new(&lut, d, axis, (row, w));
+                    let total = r.total();
+                    let exact = integral(&r, axis.lo + r.step * (r.nodes - 1) as f32);
+                    assert!((f64::from(total) - exact).abs() <= 1e-5 * exact, "{d:?}");
+                    for k in 0..=40 {
+                        let t = total * k as f32 / 40.0;
+                        let x = r.invert(t);
+                        let got = integral(&r, x);
+                        assert!(
+                            (got - f64::from(t)).abs() <= 2e-5 * exact + 1e-12,
+                            "{d:?} row {row} w {w}: ∫ to {x} = {got}, wanted {t}"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 1000);
     }
 }

@@ -8,13 +8,19 @@ use std::hint::black_box;
 use std::time::Instant;
 
 fn main() {
-    let preset = presets::find("yan-row-a").unwrap();
-    let opts = ProfileOptions {
-        budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
-        ..ProfileOptions::default()
+    // A baked .furlut from the environment (FUR_LUT=path), else yan-row-a baked here.
+    let blob = match std::env::var_os("FUR_LUT") {
+        Some(path) => std::fs::read(path).expect("FUR_LUT names a readable file"),
+        None => {
+            let preset = presets::find("yan-row-a").unwrap();
+            let opts = ProfileOptions {
+                budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
+                ..ProfileOptions::default()
+            };
+            let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
+            bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT)
+        }
     };
-    let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
-    let blob = bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT);
     let lut = BakedBcsdf::from_bytes(&blob).unwrap();
     let mut state = 0x2545_f491_4f6c_dd1du64;
     let mut next = move || {
@@ -35,6 +41,19 @@ fn main() {
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(2_000_000);
+    let only = std::env::args().nth(2).unwrap_or_default();
+    if only == "pdf" {
+        let dirs: Vec<_> = xs
+            .iter()
+            .filter_map(|&(tr, u)| lut.sample_direction(tr, u).map(|d| d.angles))
+            .collect();
+        let mut acc = 0.0f32;
+        for i in 0..n {
+            acc += black_box(&lut).pdf(black_box(&dirs[i & 127]));
+        }
+        println!("pdf only: checksum {acc}");
+        return;
+    }
     let start = Instant::now();
     let mut acc = 0.0f32;
     for i in 0..n {

@@ -359,7 +359,11 @@ mod tests {
                 .wrapping_add(1);
             let r = (state >> 33) as u32;
             // Halves in [0, 2) with one in eight zero: 0x0000..0x4000.
-            let bits = if r.is_multiple_of(8) { 0 } else { (r % 0x4000) as u16 };
+            let bits = if r.is_multiple_of(8) {
+                0
+            } else {
+                (r % 0x4000) as u16
+            };
             pair.copy_from_slice(&bits.to_le_bytes());
         }
         lut::seal(&mut b);

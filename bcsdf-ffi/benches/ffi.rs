@@ -1,0 +1,69 @@
+//! The C ABI's cost over the Rust call, in the same run: `fur_eval_far` (through the
+//! `extern "C"` function, with its pointer and tag checks) against `BakedBcsdf::eval_far`,
+//! on the same LUT and the same 256 directions. `cargo bench -p bcsdf-ffi`.
+
+use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::{presets, Angles, FurParams};
+use bcsdf_ffi::{fur_eval_far, fur_lut, fur_lut_open, fur_status, FUR_LUT_WORDS};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+
+fn bench(c: &mut Criterion) {
+    let preset = presets::find("yan-row-a").unwrap();
+    let opts = ProfileOptions {
+        budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
+        ..ProfileOptions::default()
+    };
+    let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
+    let blob = bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT);
+    let rust = BakedBcsdf::from_bytes(&blob).unwrap();
+    let mut lut = fur_lut {
+        _opaque: [0; FUR_LUT_WORDS],
+    };
+    // SAFETY: blob outlives lut; lut is a valid fur_lut.
+    assert_eq!(
+        unsafe { fur_lut_open(blob.as_ptr(), blob.len(), &mut lut) },
+        fur_status::FUR_OK
+    );
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((state >> 40) as f32) / (1u64 << 24) as f32
+    };
+    let qs: Vec<[f32; 3]> = (0..256)
+        .map(|_| {
+            [
+                (-80.0 + 160.0 * next()).to_radians(),
+                (-80.0 + 160.0 * next()).to_radians(),
+                (-180.0 + 360.0 * next()).to_radians(),
+            ]
+        })
+        .collect();
+    let mut i = 0usize;
+    c.bench_function("eval_far_rust", |b| {
+        b.iter(|| {
+            let q = qs[i & 255];
+            i += 1;
+            let a = Angles::new(q[0], q[1], q[2]).unwrap();
+            black_box(rust.eval_far(black_box(&a)).total())
+        })
+    });
+    let mut i = 0usize;
+    c.bench_function("eval_far_c_abi", |b| {
+        b.iter(|| {
+            let q = qs[i & 255];
+            i += 1;
+            let mut out = [0.0f32; 3];
+            // SAFETY: lut is open on live bytes; out has 3 floats.
+            let s = unsafe { fur_eval_far(black_box(&lut), q[0], q[1], q[2], out.as_mut_ptr()) };
+            black_box((s, out))
+        })
+    });
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

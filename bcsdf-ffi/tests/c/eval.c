@@ -1,0 +1,205 @@
+/*
+ * C99 client of fur_bcsdf.h, driven by bcsdf-ffi/tests/c_programs.rs.
+ *
+ *   eval LUT_FILE SMALL_LUT_FILE
+ *
+ * Opens LUT_FILE, evaluates a fixed set of directions through every evaluation entry point
+ * and prints the float bits (hex) for the Rust test to compare with BakedBcsdf bit for bit;
+ * then checks bad input: NULL and zero-length arguments for every function, misaligned
+ * pointers, a fur_lut that was never opened, and 100 000 mutated copies of SMALL_LUT_FILE
+ * (bit flips, truncations, appends), each of which must be refused. Prints "bad-input ok" and
+ * exits 0 when every check holds.
+ */
+#include "fur_bcsdf.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static unsigned bits(float f) {
+    unsigned u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+static unsigned char *read_file(const char *path, size_t *len) {
+    FILE *f = fopen(path, "rb");
+    unsigned char *buf;
+    long n;
+    if (!f) return NULL;
+    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        return NULL;
+    }
+    buf = (unsigned char *)malloc((size_t)n + 64);
+    if (!buf || fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        fclose(f);
+        free(buf);
+        return NULL;
+    }
+    fclose(f);
+    *len = (size_t)n;
+    return buf;
+}
+
+static int failures = 0;
+#define EXPECT(cond)                                                     \
+    do {                                                                 \
+        if (!(cond)) {                                                   \
+            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
+            failures++;                                                  \
+        }                                                                \
+    } while (0)
+
+/* The directions the Rust test evaluates too (radians). */
+#define N_DIRS 6
+static const float TI[N_DIRS] = {0.5f, -0.3f, 1.2f, 0.0f, -1.5f, 0.25f};
+static const float TR[N_DIRS] = {-0.35f, 0.1f, -1.0f, 0.0f, 1.4f, 0.6f};
+static const float PH[N_DIRS] = {0.785f, 3.0f, -2.0f, 0.0f, 1.0f, -0.1f};
+
+static unsigned long long rng_state = 0x853c49e6748fea9bULL;
+static unsigned rng(void) {
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (unsigned)(rng_state >> 33);
+}
+
+int main(int argc, char **argv) {
+    size_t len = 0, small_len = 0, i;
+    unsigned char *bytes, *small, *copy;
+    fur_lut lut, never;
+    fur_sample s;
+    float rgb[3], fam[12], batch[3 * N_DIRS];
+    const float wi[3] = {0.3f, 0.8f, 0.2f}, wr[3] = {-0.6f, 0.7f, -0.1f}, t[3] = {0.0f, 0.2f, 1.0f};
+    float buf[8];
+    float *misaligned = (float *)((char *)buf + 1);
+    int k, refused = 0;
+
+    if (argc != 3) {
+        fprintf(stderr, "usage: eval LUT_FILE SMALL_LUT_FILE\n");
+        return 2;
+    }
+    bytes = read_file(argv[1], &len);
+    small = read_file(argv[2], &small_len);
+    if (!bytes || !small) {
+        fprintf(stderr, "cannot read the LUT files\n");
+        return 2;
+    }
+    printf("version %s format %u model %u\n", fur_version(), fur_lut_format_version(),
+           fur_model_version());
+    if (fur_lut_open(bytes, len, &lut) != FUR_OK) {
+        fprintf(stderr, "open failed\n");
+        return 1;
+    }
+
+    for (i = 0; i < N_DIRS; i++) {
+        EXPECT(fur_eval_far(&lut, TI[i], TR[i], PH[i], rgb) == FUR_OK);
+        printf("eval %08x %08x %08x\n", bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
+        EXPECT(fur_eval_far_families(&lut, TI[i], TR[i], PH[i], fam) == FUR_OK);
+        printf("families");
+        for (k = 0; k < 12; k++) printf(" %08x", bits(fam[k]));
+        printf("\n");
+        printf("pdf %08x\n", bits(fur_pdf_far(&lut, TI[i], TR[i], PH[i])));
+    }
+    EXPECT(fur_eval_far_batch(&lut, N_DIRS, TI, TR, PH, batch) == FUR_OK);
+    printf("batch");
+    for (k = 0; k < 3 * N_DIRS; k++) printf(" %08x", bits(batch[k]));
+    printf("\n");
+    EXPECT(fur_eval_far_dirs(&lut, wi, wr, t, rgb) == FUR_OK);
+    printf("dirs %08x %08x %08x\n", bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
+    for (i = 0; i < N_DIRS; i++) {
+        fur_status st = fur_sample_far(&lut, TR[i], 0.1f + 0.15f * (float)i, 0.9f - 0.1f * (float)i, 0.37f, &s);
+        EXPECT(st == FUR_OK);
+        printf("sample %08x %08x %08x %08x %08x %08x %d\n", bits(s.theta_i), bits(s.phi), bits(s.pdf),
+               bits(s.weight[0]), bits(s.weight[1]), bits(s.weight[2]), (int)s.family);
+    }
+
+    /* NULL and zero-length arguments for every function. */
+    EXPECT(fur_lut_open(NULL, len, &lut) == FUR_ERR_NULL);
+    EXPECT(fur_lut_open(bytes, len, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_lut_open(bytes, 0, &never) == FUR_ERR_LENGTH);
+    EXPECT(fur_lut_open(bytes, len, &lut) == FUR_OK);
+    EXPECT(fur_eval_far(NULL, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far(&lut, 0.1f, 0.2f, 0.3f, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_families(NULL, 0.1f, 0.2f, 0.3f, fam) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_families(&lut, 0.1f, 0.2f, 0.3f, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_dirs(NULL, wi, wr, t, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_dirs(&lut, NULL, wr, t, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_dirs(&lut, wi, NULL, t, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_dirs(&lut, wi, wr, NULL, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_dirs(&lut, wi, wr, t, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_batch(NULL, 1, TI, TR, PH, batch) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_batch(&lut, 0, NULL, NULL, NULL, NULL) == FUR_OK);
+    EXPECT(fur_eval_far_batch(&lut, 1, NULL, TR, PH, batch) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_batch(&lut, 1, TI, NULL, PH, batch) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_batch(&lut, 1, TI, TR, NULL, batch) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_batch(&lut, 1, TI, TR, PH, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_eval_far_batch(&lut, (size_t)-1, TI, TR, PH, batch) == FUR_ERR_LENGTH);
+    EXPECT(fur_sample_far(NULL, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NULL);
+    EXPECT(fur_sample_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_pdf_far(NULL, 0.1f, 0.2f, 0.3f) == 0.0f);
+    EXPECT(fur_lut_close(NULL) == FUR_ERR_NULL);
+
+    /* Misaligned pointers. */
+    EXPECT(fur_eval_far(&lut, 0.1f, 0.2f, 0.3f, misaligned) == FUR_ERR_ALIGNMENT);
+    EXPECT(fur_eval_far_dirs(&lut, misaligned, wr, t, rgb) == FUR_ERR_ALIGNMENT);
+    EXPECT(fur_eval_far_batch(&lut, 1, misaligned, TR, PH, batch) == FUR_ERR_ALIGNMENT);
+    EXPECT(fur_eval_far(( const fur_lut *)((const char *)&lut + 4), 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_ALIGNMENT);
+
+    /* Bad angles and directions. */
+    EXPECT(fur_eval_far(&lut, 2.0f, 0.2f, 0.3f, rgb) == FUR_ERR_ANGLE && rgb[0] == 0.0f);
+    EXPECT(fur_sample_far(&lut, 1.7f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_ANGLE);
+    EXPECT(fur_pdf_far(&lut, 0.1f, 0.2f, INFINITY) == 0.0f);
+    {
+        const float zero[3] = {0.0f, 0.0f, 0.0f};
+        EXPECT(fur_eval_far_dirs(&lut, zero, wr, t, rgb) == FUR_ERR_DIRECTION);
+    }
+
+    /* A fur_lut that was never opened: zeroed, then garbage; then a closed one. */
+    memset(&never, 0, sizeof never);
+    EXPECT(fur_eval_far(&never, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
+    memset(&never, 0xa5, sizeof never);
+    EXPECT(fur_eval_far(&never, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_sample_far(&never, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_pdf_far(&never, 0.1f, 0.2f, 0.3f) == 0.0f);
+    EXPECT(fur_lut_close(&lut) == FUR_OK);
+    EXPECT(fur_eval_far(&lut, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
+
+    /* 100 000 mutated blobs: one bit flipped, truncated, or with bytes appended. */
+    copy = (unsigned char *)malloc(small_len + 64);
+    if (!copy) return 2;
+    EXPECT(fur_lut_open(small, small_len, &lut) == FUR_OK);
+    for (k = 0; k < 100000; k++) {
+        size_t n = small_len;
+        fur_status st;
+        memcpy(copy, small, small_len);
+        switch (k % 3) {
+        case 0:
+            copy[rng() % small_len] ^= (unsigned char)(1u << (rng() % 8));
+            break;
+        case 1:
+            n = rng() % small_len;
+            break;
+        default:
+            n = small_len + 1 + rng() % 63;
+            for (i = small_len; i < n; i++) copy[i] = (unsigned char)rng();
+            break;
+        }
+        st = fur_lut_open(copy, n, &never);
+        if (st != FUR_OK && fur_eval_far(&never, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN &&
+            strlen(fur_status_str((int32_t)st)) > 0)
+            refused++;
+    }
+    EXPECT(refused == 100000);
+    printf("mutated refused %d of 100000\n", refused);
+    EXPECT(strcmp(fur_status_str(12345), "unknown status") == 0);
+    free(copy);
+    free(bytes);
+    free(small);
+    if (failures) {
+        fprintf(stderr, "%d checks failed\n", failures);
+        return 1;
+    }
+    printf("bad-input ok\n");
+    return 0;
+}

@@ -142,7 +142,7 @@ extern "C" {
 
 /**
  * Validates `len` bytes at `bytes` as a baked LUT (header, versions, lengths, checksum,
- * every value; about 0.3 ms for a 221 KB LUT) and opens `*out` on them. The bytes are
+ * every value, the sampling data: one pass over the bytes) and opens `*out` on them. The bytes are
  * borrowed: keep them alive and unchanged while `*out` is used. On failure `*out` is left
  * closed and the status names the problem.
  *

@@ -542,6 +542,13 @@ pub extern "C" fn fur_model_version() -> u32 {
     bcsdf_core::MODEL_VERSION
 }
 
+/// The unwinding personality the precompiled `core` refers to. Without std nothing unwinds
+/// (release builds abort on panic), so it is never called; it only lets a C linker resolve
+/// the reference.
+#[cfg(all(not(feature = "std"), not(test)))]
+#[no_mangle]
+pub extern "C" fn rust_eh_personality() {}
+
 #[cfg(all(not(feature = "std"), not(test)))]
 #[panic_handler]
 fn panic(_: &core::panic::PanicInfo<'_>) -> ! {

@@ -184,6 +184,21 @@ fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
     );
     assert_eq!(lines.last(), Some(&"bad-input ok"));
 
+    // The README's example compiles as C99 and refuses a non-LUT with a status message.
+    let example = dir.path().join("shade");
+    compile(
+        "cc",
+        &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"],
+        &manifest().join("examples/c/shade.c"),
+        &lib,
+        &example,
+    );
+    let run = Command::new(&example).output().unwrap();
+    assert!(run.status.success(), "{run:?}");
+    assert!(
+        String::from_utf8_lossy(&run.stderr).contains("LUT refused: the LUT bytes are truncated")
+    );
+
     let cpp_exe = dir.path().join("eval_cpp");
     compile(
         "c++",

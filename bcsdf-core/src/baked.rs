@@ -22,16 +22,26 @@ use core::marker::PhantomData;
 pub(crate) struct Axis {
     pub(crate) lo: f32,
     inv_step: f32,
+    /// Node index of x = 0: 0, or (nodes − 1)/2 for an axis centred on 0.
+    offset: f32,
     last: f32,
     pub(crate) nodes: usize,
 }
 
 impl Axis {
-    fn new(lo: f32, span: f32, nodes: u32) -> Axis {
+    /// The axis over [lo, lo + span] given 1/span, with lo = 0 or lo = −span/2. The node
+    /// position of x is u = x·inv_step + offset, inv_step = (nodes − 1)·(1/span) and offset =
+    /// 0 or (nodes − 1)/2: only correctly rounded products and sums of constants, no division
+    /// (WGSL's is not correctly rounded), so that the WGSL evaluator forms the same u. A shader
+    /// compiler that fuses x·inv_step + offset into one rounding moves u by at most one ulp
+    /// (docs/lut.md, "On the GPU").
+    fn new(lo: f32, inv_span: f32, nodes: u32) -> Axis {
+        let last = (nodes - 1) as f32;
         Axis {
             lo,
-            inv_step: (nodes - 1) as f32 / span,
-            last: (nodes - 1) as f32,
+            inv_step: last * inv_span,
+            offset: if lo == 0.0 { 0.0 } else { 0.5 * last },
+            last,
             nodes: nodes as usize,
         }
     }
@@ -40,7 +50,7 @@ impl Axis {
     #[inline(always)]
     pub(crate) fn locate(&self, x: f32) -> (usize, f32) {
         // `max` first: NaN becomes 0 (the callers pass finite angles anyway).
-        let u = ((x - self.lo) * self.inv_step).max(0.0).min(self.last);
+        let u = (x * self.inv_step + self.offset).max(0.0).min(self.last);
         // u ∈ [0, nodes − 1] here; the i32 conversions are the cheap ones on every target.
         let i = (u as i32).min(self.nodes as i32 - 2);
         (i as u32 as usize, u - i as f32)
@@ -179,11 +189,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             nodes: Nodes::new(bytes, res, header.scales),
             blob: bytes,
             densities: Density::ALL.map(|d| res.density_layout(d)),
-            sum: Axis::new(-PI, 2.0 * PI, res.n_sum),
-            theta_r: Axis::new(0.0, PI / 2.0, res.n_theta_r),
-            phi: Axis::new(0.0, PI, res.n_phi),
-            ms_i: Axis::new(-PI / 2.0, PI, res.n_ms_i),
-            ms_r: Axis::new(-PI / 2.0, PI, res.n_ms_r),
+            sum: Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
+            theta_r: Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
+            phi: Axis::new(0.0, 1.0 / PI, res.n_phi),
+            ms_i: Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_i),
+            ms_r: Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_r),
             _math: PhantomData,
         })
     }

@@ -52,6 +52,7 @@ pub mod presets;
 pub mod rng;
 pub mod sampling;
 pub mod scattered;
+pub mod shader;
 pub mod spectrum;
 pub mod unscattered;
 

@@ -131,27 +131,39 @@ pub const PI: f32 = core::f32::consts::PI;
 /// `2π` in f32.
 pub const TAU: f32 = core::f32::consts::TAU;
 
-/// Wraps an angle to `(-π, π]`. Non-finite input gives 0.
+/// cos x for |x| ≤ π/2 (larger |x| is not meaningful), without libm: for |x| ≤ π/4 the
+/// Taylor polynomial of cos (first omitted term (π/4)^12/12! ≈ 1.1e-10), beyond it sin(π/2 − |x|)
+/// by the Taylor polynomial of sin (first omitted term (π/4)^11/11! ≈ 1.8e-9), with π/2 split
+/// in two floats so that π/2 − |x| keeps its relative precision near the poles (where
+/// 1/cos²θ_i magnifies any absolute error). The baked evaluator and its WGSL twin
+/// (`shaders/fur_bcsdf.wgsl`) use this same sequence of operations.
 #[inline]
+#[must_use]
 pub fn cos_within_half_pi(x: f32) -> f32 {
-    // Taylor coefficients (−1)^k/(2k)! for k = 0..7, highest first; the first omitted term
-    // is below (π/2)^16/16! ≈ 6.6e-11.
-    const C: [f32; 8] = [
-        -1.0 / 87_178_291_200.0,
-        1.0 / 479_001_600.0,
-        -1.0 / 3_628_800.0,
-        1.0 / 40_320.0,
-        -1.0 / 720.0,
-        1.0 / 24.0,
-        -0.5,
-        1.0,
-    ];
-    let y = x * x;
-    let mut acc = C[0];
-    for c in &C[1..] {
-        acc = acc * y + c;
+    /// π/2 rounded to f32, and the remainder π/2 − PIO2_HI.
+    const PIO2_HI: f32 = 1.570_796_4;
+    const PIO2_LO: f32 = -4.371_139e-8;
+    let a = x.abs();
+    if a <= core::f32::consts::FRAC_PI_4 {
+        // (−1)^k/(2k)!, k = 5 … 0.
+        let y = a * a;
+        let mut acc = -1.0 / 3_628_800.0;
+        acc = acc * y + 1.0 / 40_320.0;
+        acc = acc * y - 1.0 / 720.0;
+        acc = acc * y + 1.0 / 24.0;
+        acc = acc * y - 0.5;
+        acc * y + 1.0
+    } else {
+        // PIO2_HI − a is exact (Sterbenz: a ∈ [π/4, π/2]); one rounding adds PIO2_LO.
+        let r = (PIO2_HI - a) + PIO2_LO;
+        let y = r * r;
+        // (−1)^k/(2k+1)!, k = 4 … 0.
+        let mut acc = 1.0 / 362_880.0;
+        acc = acc * y - 1.0 / 5_040.0;
+        acc = acc * y + 1.0 / 120.0;
+        acc = acc * y - 1.0 / 6.0;
+        (acc * y) * r + r
     }
-    acc
 }
 
 /// Wraps an angle to `(-π, π]`. Non-finite input gives 0.

@@ -1,0 +1,267 @@
+//! # bcsdf-gpu
+//!
+//! The baked fur BCSDF on the GPU (docs/lut.md, "On the GPU"):
+//! - [`translate`]: the WGSL evaluator (`bcsdf_core::shader::FUR_BCSDF_WGSL`) translated by
+//!   naga to SPIR-V, HLSL (SM 6.0), GLSL (450 core and ES 310) and MSL, one file per entry
+//!   point where the language needs it; the results are committed under
+//!   `bcsdf-core/shaders/generated/` and a test regenerates and compares them;
+//! - [`GpuLut`]: a wgpu compute runner that binds a validated `.furlut` as a storage buffer of
+//!   u32 words and evaluates batches of queries through the shader, on the first adapter
+//!   (on a machine without a GPU: Mesa's llvmpipe Vulkan driver, an adapter of type Cpu).
+
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::lut::LutError;
+use bcsdf_core::shader::{ENTRY_EVAL, ENTRY_EVAL_DIRS, FUR_BCSDF_WGSL, RESULT_FLOATS};
+use std::fmt;
+
+pub mod translate;
+
+/// Why the GPU path is unavailable or failed.
+#[derive(Debug)]
+pub enum GpuError {
+    /// No adapter: no GPU and no software Vulkan driver (Debian: `mesa-vulkan-drivers`,
+    /// `libvulkan1`).
+    NoAdapter(String),
+    /// The adapter refused a device.
+    Device(String),
+    /// The LUT bytes are not a valid LUT.
+    Lut(LutError),
+    /// Reading the results back failed.
+    Readback(String),
+}
+
+impl fmt::Display for GpuError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            GpuError::NoAdapter(e) => write!(
+                f,
+                "no GPU adapter ({e}); without a GPU, install Mesa's software Vulkan driver \
+                 (Debian: apt-get install mesa-vulkan-drivers libvulkan1)"
+            ),
+            GpuError::Device(e) => write!(f, "the GPU adapter refused a device: {e}"),
+            GpuError::Lut(e) => write!(f, "{e}"),
+            GpuError::Readback(e) => write!(f, "reading the GPU results back failed: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for GpuError {}
+
+/// Queries per dispatch: 64 per workgroup × 16 384 workgroups (within every adapter's
+/// 65 535-workgroup limit per dimension).
+pub const MAX_DISPATCH: usize = 64 * 16_384;
+
+/// One far-field result: R, TT, TRT, scattered (RGB each), then the total (RGB).
+pub type GpuFamilies = [f32; 15];
+
+/// A validated LUT on a GPU device, with the compute pipelines of the evaluator.
+pub struct GpuLut {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    lut: wgpu::Buffer,
+    eval: wgpu::ComputePipeline,
+    eval_dirs: wgpu::ComputePipeline,
+    adapter: wgpu::AdapterInfo,
+}
+
+/// The first adapter (any backend wgpu was built with: Vulkan here).
+fn adapter() -> Result<wgpu::Adapter, GpuError> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
+    pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+        power_preference: wgpu::PowerPreference::HighPerformance,
+        ..Default::default()
+    }))
+    .map_err(|e| GpuError::NoAdapter(e.to_string()))
+}
+
+impl GpuLut {
+    /// Validates `bytes` (`BakedBcsdf::from_bytes`) and uploads them to the first adapter.
+    pub fn new(bytes: &[u8]) -> Result<GpuLut, GpuError> {
+        GpuLut::with_shader(bytes, FUR_BCSDF_WGSL)
+    }
+
+    /// [`GpuLut::new`] with another WGSL source of the same interface (the tests use it to
+    /// show that the agreement test catches a wrong table index).
+    pub fn with_shader(bytes: &[u8], wgsl: &str) -> Result<GpuLut, GpuError> {
+        BakedBcsdf::from_bytes(bytes).map_err(GpuError::Lut)?;
+        let adapter = adapter()?;
+        let info = adapter.get_info();
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("fur-bcsdf"),
+            required_limits: adapter.limits(),
+            ..Default::default()
+        }))
+        .map_err(|e| GpuError::Device(e.to_string()))?;
+        // The blob as little-endian u32 words, zero-padded to a whole word.
+        let mut words = Vec::with_capacity(bytes.len().div_ceil(4));
+        for chunk in bytes.chunks(4) {
+            let mut w = [0u8; 4];
+            w[..chunk.len()].copy_from_slice(chunk);
+            words.push(u32::from_le_bytes(w));
+        }
+        let lut = buffer_init(
+            &device,
+            "fur-lut",
+            as_bytes(&words),
+            wgpu::BufferUsages::STORAGE,
+        );
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("fur_bcsdf.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(wgsl.to_owned().into()),
+        });
+        let pipeline = |entry: &str| {
+            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(entry),
+                layout: None,
+                module: &module,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                cache: None,
+            })
+        };
+        let (eval, eval_dirs) = (pipeline(ENTRY_EVAL), pipeline(ENTRY_EVAL_DIRS));
+        Ok(GpuLut {
+            device,
+            queue,
+            lut,
+            eval,
+            eval_dirs,
+            adapter: info,
+        })
+    }
+
+    /// The adapter's name and type, e.g. "llvmpipe (LLVM 15.0.6, 256 bits) (Cpu)".
+    pub fn adapter_name(&self) -> String {
+        format!("{} ({:?})", self.adapter.name, self.adapter.device_type)
+    }
+
+    /// Far field per family for `(theta_i, theta_r, phi)` queries (radians).
+    pub fn eval(&self, queries: &[[f32; 3]]) -> Result<Vec<GpuFamilies>, GpuError> {
+        let mut out = Vec::with_capacity(queries.len());
+        for chunk in queries.chunks(MAX_DISPATCH) {
+            let q: Vec<[f32; 4]> = chunk.iter().map(|a| [a[0], a[1], a[2], 0.0]).collect();
+            out.extend(self.run(&self.eval, &q, chunk.len())?);
+        }
+        Ok(out)
+    }
+
+    /// Far field per family for `(wi, wr, tangent)` world-space vector queries.
+    pub fn eval_dirs(&self, queries: &[[[f32; 3]; 3]]) -> Result<Vec<GpuFamilies>, GpuError> {
+        let mut out = Vec::with_capacity(queries.len());
+        for chunk in queries.chunks(MAX_DISPATCH) {
+            let q: Vec<[f32; 4]> = chunk
+                .iter()
+                .flat_map(|v| v.iter().map(|d| [d[0], d[1], d[2], 0.0]))
+                .collect();
+            out.extend(self.run(&self.eval_dirs, &q, chunk.len())?);
+        }
+        Ok(out)
+    }
+
+    fn run(
+        &self,
+        pipeline: &wgpu::ComputePipeline,
+        queries: &[[f32; 4]],
+        n: usize,
+    ) -> Result<Vec<GpuFamilies>, GpuError> {
+        if n == 0 {
+            return Ok(Vec::new());
+        }
+        let d = &self.device;
+        let input = buffer_init(
+            d,
+            "fur-queries",
+            as_bytes(queries),
+            wgpu::BufferUsages::STORAGE,
+        );
+        let size = (n * RESULT_FLOATS * 4) as u64;
+        let output = d.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("fur-results"),
+            size,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let staging = d.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("fur-staging"),
+            size,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind = d.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: self.lut.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: input.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: output.as_entire_binding(),
+                },
+            ],
+        });
+        let mut enc = d.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: None,
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(pipeline);
+            pass.set_bind_group(0, &bind, &[]);
+            // 64 invocations per workgroup; n ≤ MAX_DISPATCH keeps it within one dimension.
+            pass.dispatch_workgroups(n.div_ceil(64) as u32, 1, 1);
+        }
+        enc.copy_buffer_to_buffer(&output, 0, &staging, 0, size);
+        self.queue.submit([enc.finish()]);
+        let slice = staging.slice(..);
+        let (tx, rx) = std::sync::mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        d.poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        rx.recv()
+            .map_err(|e| GpuError::Readback(e.to_string()))?
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        let data = slice
+            .get_mapped_range()
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        let out = data
+            .chunks_exact(RESULT_FLOATS * 4)
+            .map(|r| {
+                let mut v = [0.0f32; 15];
+                for (o, b) in v.iter_mut().zip(r.chunks_exact(4)) {
+                    *o = f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+                }
+                v
+            })
+            .collect();
+        drop(data);
+        staging.unmap();
+        Ok(out)
+    }
+}
+
+fn buffer_init(
+    device: &wgpu::Device,
+    label: &str,
+    contents: &[u8],
+    usage: wgpu::BufferUsages,
+) -> wgpu::Buffer {
+    use wgpu::util::DeviceExt;
+    device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some(label),
+        contents,
+        usage,
+    })
+}
+
+/// The bytes of a slice of plain numbers (u32 words, f32 quadruples).
+fn as_bytes<T: bytemuck::Pod>(v: &[T]) -> &[u8] {
+    bytemuck::cast_slice(v)
+}

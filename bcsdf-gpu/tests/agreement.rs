@@ -1,0 +1,213 @@
+//! The WGSL evaluator on a real Vulkan device (a GPU, or Mesa's llvmpipe) against
+//! `BakedBcsdf::eval_far`, for every preset: 2¹⁶ random directions plus edge cases (θ at
+//! ±89.9° and ±90°, φ at 0 and ±π, NaN and out-of-range angles the CPU maps to zero, grazing
+//! and degenerate vectors). Per channel and family: |gpu − cpu| ≤ 1e-5·max(cpu, 1e-3·peak),
+//! peak the largest value of that channel and family over the queries. A shader with one
+//! table index off by one must fail the same check.
+//!
+//! Without an adapter the tests print "skipped: no GPU adapter" and pass, unless
+//! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
+
+use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::rng::{cell_stream, Pcg32};
+use bcsdf_core::shader::FUR_BCSDF_WGSL;
+use bcsdf_core::{presets, Angles, Bcsdf, FurParams};
+use bcsdf_gpu::{GpuError, GpuFamilies, GpuLut};
+use std::f32::consts::{FRAC_PI_2, PI};
+use std::path::PathBuf;
+
+const RELATIVE: f32 = 1e-5;
+
+fn lut(name: &str) -> Vec<u8> {
+    let preset = presets::find(name).unwrap();
+    let opts = ProfileOptions {
+        budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
+        cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
+        ..ProfileOptions::default()
+    };
+    let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
+    bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT)
+}
+
+/// The GPU LUT, or None (after printing why) when the machine has no adapter and the GPU is
+/// not required.
+fn gpu(bytes: &[u8], wgsl: &str) -> Option<GpuLut> {
+    match GpuLut::with_shader(bytes, wgsl) {
+        Ok(g) => Some(g),
+        Err(e @ GpuError::NoAdapter(_)) => {
+            if std::env::var("FUR_BCSDF_REQUIRE_GPU").as_deref() == Ok("1") {
+                panic!("FUR_BCSDF_REQUIRE_GPU=1 but {e}");
+            }
+            println!("skipped: no GPU adapter ({e})");
+            None
+        }
+        Err(e) => panic!("{e}"),
+    }
+}
+
+fn queries() -> Vec<[f32; 3]> {
+    let mut q = Vec::new();
+    for i in 0..(1u64 << 16) {
+        let mut r = Pcg32::new(cell_stream(7, 1, i), cell_stream(7, 2, i));
+        q.push([
+            (r.uniform() - 0.5) * PI,
+            (r.uniform() - 0.5) * PI,
+            (r.uniform() - 0.5) * 2.0 * PI,
+        ]);
+    }
+    let edge_t = [
+        89.9f32.to_radians(),
+        -89.9f32.to_radians(),
+        FRAC_PI_2,
+        -FRAC_PI_2,
+        0.0,
+    ];
+    let edge_p = [0.0f32, PI, -PI, 1e-7, PI - 1e-6, 7.0, -7.0];
+    for &a in &edge_t {
+        for &b in &edge_t {
+            for &c in &edge_p {
+                q.push([a, b, c]);
+            }
+        }
+    }
+    for bad in [
+        [f32::NAN, 0.1, 0.2],
+        [0.1, f32::NAN, 0.2],
+        [0.1, 0.2, f32::NAN],
+        [f32::INFINITY, 0.1, 0.2],
+        [0.1, 0.2, f32::NEG_INFINITY],
+        [1.6, 0.1, 0.2],
+        [0.1, -1.6, 0.2],
+    ] {
+        q.push(bad);
+    }
+    q
+}
+
+fn cpu_angles(lut: &BakedBcsdf<'_>, q: &[f32; 3]) -> GpuFamilies {
+    match Angles::new(q[0], q[1], q[2]) {
+        Ok(a) => flatten(lut.eval_far(&a)),
+        Err(_) => [0.0; 15],
+    }
+}
+
+fn flatten(f: bcsdf_core::Families) -> GpuFamilies {
+    let mut v = [0.0f32; 15];
+    for (k, c) in f.as_array().iter().chain([f.total()].iter()).enumerate() {
+        v[3 * k..3 * k + 3].copy_from_slice(&c.0);
+    }
+    v
+}
+
+/// The worst |gpu − cpu| / max(cpu, 1e-3·peak) over all queries and values.
+fn worst(cpu: &[GpuFamilies], gpu: &[GpuFamilies]) -> (f32, usize) {
+    let mut peak = [0.0f32; 15];
+    for v in cpu {
+        for (p, x) in peak.iter_mut().zip(v) {
+            *p = p.max(*x);
+        }
+    }
+    let mut w = (0.0f32, 0);
+    for (i, (c, g)) in cpu.iter().zip(gpu).enumerate() {
+        for k in 0..15 {
+            let scale = c[k].max(1e-3 * peak[k]).max(f32::MIN_POSITIVE);
+            let e = (g[k] - c[k]).abs() / scale;
+            let e = if e.is_nan() { f32::INFINITY } else { e };
+            if e > w.0 {
+                w = (e, i);
+            }
+        }
+    }
+    w
+}
+
+#[test]
+fn gpu_matches_cpu_for_every_preset() {
+    for preset in presets::PRESETS.iter() {
+        let bytes = lut(preset.name);
+        let Some(g) = gpu(&bytes, FUR_BCSDF_WGSL) else {
+            return;
+        };
+        let cpu_lut = BakedBcsdf::from_bytes(&bytes).unwrap();
+        let q = queries();
+        let cpu: Vec<GpuFamilies> = q.iter().map(|a| cpu_angles(&cpu_lut, a)).collect();
+        let got = g.eval(&q).unwrap();
+        let (e, at) = worst(&cpu, &got);
+        println!(
+            "{} on {}: {} angle queries, worst relative difference {e:.2e} at {:?}",
+            preset.name,
+            g.adapter_name(),
+            q.len(),
+            q[at]
+        );
+        assert!(
+            e <= RELATIVE,
+            "{}: {e} at {:?}: cpu {:?} gpu {:?}",
+            preset.name,
+            q[at],
+            cpu[at],
+            got[at]
+        );
+
+        // Vectors: random, grazing (along the fiber), degenerate (zero, NaN).
+        let mut vq: Vec<[[f32; 3]; 3]> = Vec::new();
+        for i in 0..4096u64 {
+            let mut r = Pcg32::new(cell_stream(9, 1, i), cell_stream(9, 2, i));
+            let mut v = || [r.uniform() - 0.5, r.uniform() - 0.5, r.uniform() - 0.5];
+            vq.push([v(), v(), v()]);
+        }
+        let t = [0.2f32, -0.4, 0.9];
+        vq.push([t, [0.3, 0.1, 0.0], t]);
+        vq.push([[0.3, 0.1, 0.0], t, t]);
+        vq.push([[0.0; 3], [0.3, 0.1, 0.0], t]);
+        vq.push([[0.3, 0.1, 0.0], [0.3, 0.1, 0.0], [0.0; 3]]);
+        vq.push([[f32::NAN, 0.1, 0.0], [0.3, 0.1, 0.0], t]);
+        let cpu: Vec<GpuFamilies> = vq
+            .iter()
+            .map(|v| flatten(Bcsdf::eval_dirs(&cpu_lut, v[0], v[1], v[2])))
+            .collect();
+        let got = g.eval_dirs(&vq).unwrap();
+        let (e, at) = worst(&cpu, &got);
+        println!(
+            "{}: {} vector queries, worst relative difference {e:.2e}",
+            preset.name,
+            vq.len()
+        );
+        // From vectors the shader's ports of libm's asinf/atan2f run in f32 where asinf uses
+        // f64 for |x| ≥ 0.5: an ulp or two of angle, magnified on a lobe's flank.
+        assert!(
+            e <= 1e-4,
+            "{}: {e} at {:?}: cpu {:?} gpu {:?}",
+            preset.name,
+            vq[at],
+            cpu[at],
+            got[at]
+        );
+    }
+}
+
+#[test]
+fn an_off_by_one_table_index_is_caught() {
+    let bytes = lut("human-hair");
+    let wrong = FUR_BCSDF_WGSL.replace(
+        "let b = fur_half(m0 + 3u * (lm.i + 1u) + ch);",
+        "let b = fur_half(m0 + 3u * (lm.i + 2u) + ch);",
+    );
+    assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation applies");
+    let Some(g) = gpu(&bytes, &wrong) else {
+        return;
+    };
+    let cpu_lut = BakedBcsdf::from_bytes(&bytes).unwrap();
+    let q = queries();
+    let cpu: Vec<GpuFamilies> = q.iter().map(|a| cpu_angles(&cpu_lut, a)).collect();
+    let got = g.eval(&q).unwrap();
+    let (e, _) = worst(&cpu, &got);
+    println!("off by one: worst relative difference {e:.2e}");
+    assert!(
+        e > RELATIVE,
+        "the agreement check missed an off-by-one index ({e})"
+    );
+}

@@ -140,13 +140,22 @@ fn fur_finite(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7f800000u) != 0x7f800000u;
 }
 
-// Far-field S per lobe family (BakedBcsdf::eval_far). theta_i, theta_r in [-pi/2, pi/2], any
-// finite phi; anything else gives 0.
-fn fur_eval_far(theta_i: f32, theta_r: f32, phi_in: f32) -> FurFamilies {
-    if (!(fur_finite(theta_i) && fur_finite(theta_r) && fur_finite(phi_in))
-        || abs(theta_i) > FUR_HALF_PI || abs(theta_r) > FUR_HALF_PI) {
-        return fur_zero();
-    }
+// The table lookups of one query (BakedBcsdf::lookups), for valid angles: M_g(theta_i +
+// theta_r), M^s back and front, the 12 N channels, |phi|/pi and 1/cos^2(theta_i).
+struct FurLookups {
+    m: array<f32, 3>,
+    ms: array<f32, 2>,
+    n: array<f32, 12>,
+    front: f32,
+    inv_cos2: f32,
+}
+
+fn fur_valid(theta_i: f32, theta_r: f32, phi: f32) -> bool {
+    return fur_finite(theta_i) && fur_finite(theta_r) && fur_finite(phi)
+        && abs(theta_i) <= FUR_HALF_PI && abs(theta_r) <= FUR_HALF_PI;
+}
+
+fn fur_lookups(theta_i: f32, theta_r: f32, phi_in: f32) -> FurLookups {
     let phi = fur_wrap_angle(phi_in);
     let n_sum = fur_word(4u);
     let n_theta_r = fur_word(5u);
@@ -195,7 +204,6 @@ fn fur_eval_far(theta_i: f32, theta_r: f32, phi_in: f32) -> FurFamilies {
         }
     }
     let front_w = min(abs_phi * (1.0 / FUR_PI), 1.0);
-    let mss = ms[0] + front_w * (ms[1] - ms[0]);
 
     // N (12 channels: family, then RGB) at (|theta_r|, |phi|): bilinear in table N.
     let lr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, n_theta_r), abs(theta_r));
@@ -217,13 +225,28 @@ fn fur_eval_far(theta_i: f32, theta_r: f32, phi_in: f32) -> FurFamilies {
         n[ch] = v0 * t0 + v1 * t1 + v2 * b0 + v3 * b1;
     }
 
-    let lon = array<f32, 4>(m[0], m[1], m[2], mss);
+    return FurLookups(m, ms, n, front_w, inv_cos2);
+}
+
+// Far-field S per family from the lookups (BakedBcsdf::assemble).
+fn fur_assemble(l: FurLookups) -> FurFamilies {
+    let mss = l.ms[0] + l.front * (l.ms[1] - l.ms[0]);
+    let lon = array<f32, 4>(l.m[0], l.m[1], l.m[2], mss);
     var f: array<vec3<f32>, 4>;
     for (var k = 0u; k < 4u; k = k + 1u) {
-        let weight = lon[k] * inv_cos2;
-        f[k] = vec3<f32>(n[3u * k], n[3u * k + 1u], n[3u * k + 2u]) * weight;
+        let weight = lon[k] * l.inv_cos2;
+        f[k] = vec3<f32>(l.n[3u * k], l.n[3u * k + 1u], l.n[3u * k + 2u]) * weight;
     }
     return FurFamilies(f[0], f[1], f[2], f[3], ((f[0] + f[1]) + f[2]) + f[3]);
+}
+
+// Far-field S per lobe family (BakedBcsdf::eval_far). theta_i, theta_r in [-pi/2, pi/2], any
+// finite phi; anything else gives 0.
+fn fur_eval_far(theta_i: f32, theta_r: f32, phi: f32) -> FurFamilies {
+    if (!fur_valid(theta_i, theta_r, phi)) {
+        return fur_zero();
+    }
+    return fur_assemble(fur_lookups(theta_i, theta_r, phi));
 }
 
 // asin and atan2 as the CPU's default math backend computes them (the libm crate's asinf and
@@ -360,6 +383,352 @@ fn fur_eval_far_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>) -> FurFamilies 
     return fur_eval_far(theta_i, theta_r, phi);
 }
 
+// ---- Sampling and pdf (sampling::baked, docs/model.md §10) ----
+//
+// The mixture of five separable parts (R, TT, TRT, scattered back, front), each row inverted
+// exactly from the LUT's sampling section (prefix sums, docs/lut.md "Sampling data"), as
+// `BakedBcsdf::sample` / `pdf` do it.
+
+// A sampled direction: theta_i, phi, pdf (per unit solid angle), weight S cos(theta_i)/pdf,
+// family (0 R, 1 TT, 2 TRT, 3 scattered); ok is false when nothing could be sampled.
+struct FurSample {
+    theta_i: f32,
+    phi: f32,
+    pdf: f32,
+    weight: vec3<f32>,
+    family: u32,
+    ok: bool,
+}
+
+// Where one density's prefix entries are (lut::cdf::DensityLayout).
+struct FurDensity {
+    prefix_at: u32,   // byte offset
+    entries: u32,
+    nodes: u32,
+    rows: u32,
+    step: f32,
+    block: u32,
+    table: u32,       // 0 M, 1 N, 2 M_s
+    first: u32,       // first channel
+    channels: u32,    // 1, or 3 (mean of RGB)
+}
+
+// f32 at an even byte offset of the blob.
+fn fur_f32_at(byte: u32) -> f32 {
+    let w = byte >> 2u;
+    if ((byte & 3u) == 0u) {
+        return bitcast<f32>(fur_lut[w]);
+    }
+    return bitcast<f32>((fur_lut[w] >> 16u) | (fur_lut[w + 1u] << 16u));
+}
+
+fn fur_entries(nodes: u32, block: u32) -> u32 {
+    return (nodes - 1u + block - 1u) / block + 1u;
+}
+
+// Density d in section order: 0..2 M_g, 3..6 N_f, 7..8 M^s_x.
+fn fur_density(d: u32) -> FurDensity {
+    let n_sum = fur_word(4u);
+    let n_theta_r = fur_word(5u);
+    let n_phi = fur_word(6u);
+    let n_ms_i = fur_word(7u);
+    let n_ms_r = fur_word(8u);
+    let values = 3u * n_sum + 12u * n_phi * n_theta_r + 2u * n_ms_i * n_ms_r;
+    var at = 160u + 2u * values;
+    let e_m = fur_entries(n_sum, 1u);
+    let e_n = fur_entries(n_phi, 8u);
+    let e_s = fur_entries(n_ms_i, 8u);
+    if (d < 3u) {
+        return FurDensity(at + 4u * d * e_m, e_m, n_sum, 1u, 2.0 * FUR_PI / f32(n_sum - 1u), 1u, 0u, d, 1u);
+    }
+    at = at + 4u * 3u * e_m;
+    if (d < 7u) {
+        let f = d - 3u;
+        return FurDensity(at + 4u * f * n_theta_r * e_n, e_n, n_phi, n_theta_r, FUR_PI / f32(n_phi - 1u), 8u, 1u, 3u * f, 3u);
+    }
+    at = at + 4u * 4u * n_theta_r * e_n;
+    let x = d - 7u;
+    return FurDensity(at + 4u * x * n_ms_r * e_s, e_s, n_ms_i, n_ms_r, FUR_PI / f32(n_ms_i - 1u), 8u, 2u, x, 1u);
+}
+
+// lut::cdf::Nodes::value: density node value at (row, j).
+fn fur_node(d: FurDensity, row: u32, j: u32) -> f32 {
+    let n_sum = fur_word(4u);
+    let n_theta_r = fur_word(5u);
+    let n_phi = fur_word(6u);
+    let m0 = FUR_HEADER_HALVES;
+    let n0 = m0 + 3u * n_sum;
+    let s0 = n0 + 12u * n_phi * n_theta_r;
+    let starts = array<u32, 3>(m0, n0, s0);
+    let chans = array<u32, 3>(3u, 12u, 2u);
+    let base = starts[d.table] + (row * d.nodes + j) * chans[d.table] + d.first;
+    if (d.channels == 3u) {
+        let sum = fur_half(base) + fur_half(base + 1u) + fur_half(base + 2u);
+        return sum * (fur_unbias(d.table) * (1.0 / 3.0));
+    }
+    return fur_half(base) * fur_unbias(d.table);
+}
+
+// Two rows of a density blended with weights (1 - w, w).
+struct FurRows {
+    d: FurDensity,
+    r0: u32,
+    r1: u32,
+    w: f32,
+    origin: f32,
+}
+
+fn fur_rows(d: FurDensity, row: u32, w: f32, origin: f32) -> FurRows {
+    return FurRows(d, min(row, d.rows - 1u), min(row + 1u, d.rows - 1u), w, origin);
+}
+
+fn fur_rows_value(r: FurRows, j: u32) -> f32 {
+    let v0 = fur_node(r.d, r.r0, j);
+    if (r.w == 0.0) {
+        return v0;
+    }
+    let v1 = fur_node(r.d, r.r1, j);
+    return (1.0 - r.w) * v0 + r.w * v1;
+}
+
+fn fur_rows_prefix(r: FurRows, k: u32) -> f32 {
+    let p0 = fur_f32_at(r.d.prefix_at + 4u * (r.r0 * r.d.entries + k));
+    if (r.w == 0.0) {
+        return p0;
+    }
+    let p1 = fur_f32_at(r.d.prefix_at + 4u * (r.r1 * r.d.entries + k));
+    return (1.0 - r.w) * p0 + r.w * p1;
+}
+
+fn fur_rows_total(r: FurRows) -> f32 {
+    return fur_rows_prefix(r, r.d.entries - 1u);
+}
+
+fn fur_linear_mass(v0: f32, v1: f32, len: f32) -> f32 {
+    return 0.5 * len * (v0 + v1);
+}
+
+// sampling::invert_linear.
+fn fur_invert_linear(v0: f32, v1: f32, len: f32, t: f32) -> f32 {
+    if (!(len > 0.0)) {
+        return 0.0;
+    }
+    var s = 0.0;
+    if (t > 0.0) {
+        let disc = max(v0 * v0 + 2.0 * (v1 - v0) * t / len, 0.0);
+        let den = v0 + sqrt(disc);
+        if (den > 0.0) {
+            s = clamp(2.0 * t / den, 0.0, len);
+        } else {
+            s = len;
+        }
+    }
+    let inset = len * (1.0 / 1048576.0);
+    if (v0 <= 0.0 && s < inset) {
+        return inset;
+    }
+    if (v1 <= 0.0 && s > len - inset) {
+        return len - inset;
+    }
+    return s;
+}
+
+fn fur_unit(u: f32) -> f32 {
+    if (u > 0.0) {
+        return min(u, 0.99999994);
+    }
+    return 0.0;
+}
+
+// Rows::invert: the axis position where the running integral reaches t.
+fn fur_rows_invert(r: FurRows, t: f32) -> f32 {
+    var lo = 0u;
+    var len = r.d.entries - 1u;
+    loop {
+        if (len <= 1u) {
+            break;
+        }
+        let half = len / 2u;
+        lo = select(lo, lo + half, fur_rows_prefix(r, lo + half) < t);
+        len = len - half;
+    }
+    let first = lo * r.d.block;
+    let end = min(first + r.d.block, r.d.nodes - 1u);
+    var acc = fur_rows_prefix(r, lo);
+    var prev = fur_rows_value(r, first);
+    var have_last = false;
+    var last_j = 0u;
+    var last_v0 = 0.0;
+    var last_v1 = 0.0;
+    for (var j = first; j < end; j = j + 1u) {
+        let v = fur_rows_value(r, j + 1u);
+        let m = fur_linear_mass(prev, v, r.d.step);
+        if (m > 0.0) {
+            if (t - acc <= m) {
+                let s = fur_invert_linear(prev, v, r.d.step, t - acc);
+                return r.origin + f32(j) * r.d.step + s;
+            }
+            have_last = true;
+            last_j = j;
+            last_v0 = prev;
+            last_v1 = v;
+        }
+        acc = acc + m;
+        prev = v;
+    }
+    if (have_last) {
+        let s = fur_invert_linear(last_v0, last_v1, r.d.step, r.d.step * (last_v0 + last_v1));
+        return r.origin + f32(last_j) * r.d.step + s;
+    }
+    return r.origin + f32(end) * r.d.step;
+}
+
+fn fur_rows_invert_between(r: FurRows, t0: f32, t1: f32, u: f32) -> f32 {
+    let inset = (t1 - t0) * (1.0 / 1048576.0);
+    let t = clamp(t0 + fur_unit(u) * (t1 - t0), t0 + inset, t1 - inset);
+    return fur_rows_invert(r, t);
+}
+
+// The three M CDFs at x, from one texel pair (BakedBcsdf::m_cdf).
+fn fur_m_cdf(x: f32) -> vec3<f32> {
+    let n_sum = fur_word(4u);
+    let l = fur_locate(fur_axis(true, 1.0 / (2.0 * FUR_PI), n_sum), x);
+    let d0 = fur_density(0u);
+    let off = l.w * d0.step;
+    var out = vec3<f32>(0.0);
+    for (var g = 0u; g < 3u; g = g + 1u) {
+        let d = fur_density(g);
+        let v0 = fur_node(d, 0u, l.i);
+        let v1 = fur_node(d, 0u, l.i + 1u);
+        let at = v0 + (v1 - v0) * l.w;
+        out[g] = fur_f32_at(d.prefix_at + 4u * l.i) + fur_linear_mass(v0, at, off);
+    }
+    return out;
+}
+
+fn fur_row_total(d: FurDensity, l: FurLoc) -> f32 {
+    let t0 = fur_f32_at(d.prefix_at + 4u * (min(l.i, d.rows - 1u) * d.entries + d.entries - 1u));
+    let t1 = fur_f32_at(d.prefix_at + 4u * (min(l.i + 1u, d.rows - 1u) * d.entries + d.entries - 1u));
+    return t0 + (t1 - t0) * l.w;
+}
+
+fn fur_positive(v: f32) -> f32 {
+    return select(0.0, v, fur_finite(v) && v > 0.0);
+}
+
+// Mixture weights A_c(theta_r) and the M masses and range starts (BakedBcsdf::parts).
+struct FurParts {
+    a: array<f32, 5>,
+    mass: vec3<f32>,
+    lo: vec3<f32>,
+}
+
+fn fur_parts(theta_r: f32) -> FurParts {
+    let lo = fur_m_cdf(theta_r - FUR_HALF_PI);
+    let hi = fur_m_cdf(theta_r + FUR_HALF_PI);
+    let mass = max(hi - lo, vec3<f32>(0.0));
+    let nr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, fur_word(5u)), abs(theta_r));
+    let sr = fur_locate(fur_axis(true, 1.0 / FUR_PI, fur_word(8u)), theta_r);
+    let nu_s = fur_row_total(fur_density(6u), nr);
+    let a = array<f32, 5>(
+        fur_positive(2.0 * mass.x * fur_row_total(fur_density(3u), nr)),
+        fur_positive(2.0 * mass.y * fur_row_total(fur_density(4u), nr)),
+        fur_positive(2.0 * mass.z * fur_row_total(fur_density(5u), nr)),
+        fur_positive(fur_row_total(fur_density(7u), sr) * nu_s),
+        fur_positive(fur_row_total(fur_density(8u), sr) * nu_s),
+    );
+    return FurParts(a, mass, lo);
+}
+
+// The mixture density per unit solid angle from the lookups and W (BakedBcsdf::density).
+fn fur_density_of(l: FurLookups, w: f32, cos_theta_i: f32) -> f32 {
+    if (!(w > 0.0)) {
+        return 0.0;
+    }
+    let mean0 = (l.n[0] + l.n[1] + l.n[2]) * (1.0 / 3.0);
+    let mean1 = (l.n[3] + l.n[4] + l.n[5]) * (1.0 / 3.0);
+    let mean2 = (l.n[6] + l.n[7] + l.n[8]) * (1.0 / 3.0);
+    let mean3 = (l.n[9] + l.n[10] + l.n[11]) * (1.0 / 3.0);
+    let p = l.m[0] * mean0 + l.m[1] * mean1 + l.m[2] * mean2 + 0.5 * (l.ms[0] + l.ms[1]) * mean3;
+    return fur_positive((p / w) / max(cos_theta_i, 1e-6));
+}
+
+// Density per unit solid angle with which fur_sample_far draws omega_i (Bcsdf::pdf); 0 for
+// invalid angles.
+fn fur_pdf_far(theta_i: f32, theta_r: f32, phi: f32) -> f32 {
+    if (!fur_valid(theta_i, theta_r, phi)) {
+        return 0.0;
+    }
+    let p = fur_parts(theta_r);
+    let w = ((p.a[0] + p.a[1]) + p.a[2] + p.a[3]) + p.a[4];
+    return fur_density_of(fur_lookups(theta_i, theta_r, phi), w, fur_cos_within_half_pi(theta_i));
+}
+
+// Importance-samples omega_i given theta_r from three uniforms in [0, 1) (Bcsdf::sample).
+fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
+    var out = FurSample(0.0, 0.0, 0.0, vec3<f32>(0.0), 0u, false);
+    if (!(fur_finite(theta_r) && abs(theta_r) <= FUR_HALF_PI)) {
+        return out;
+    }
+    let p = fur_parts(theta_r);
+    // sampling::choose over the five parts.
+    var total = 0.0;
+    for (var k = 0u; k < 5u; k = k + 1u) {
+        total = total + p.a[k];
+    }
+    if (!(total > 0.0)) {
+        return out;
+    }
+    let target_mass = fur_unit(u.x) * total;
+    var acc = 0.0;
+    var c = 5u;
+    var u0 = 0.0;
+    var last = 5u;
+    for (var k = 0u; k < 5u; k = k + 1u) {
+        let wk = p.a[k];
+        if (!(wk > 0.0)) {
+            continue;
+        }
+        last = k;
+        if (target_mass < acc + wk) {
+            c = k;
+            u0 = fur_unit((target_mass - acc) / wk);
+            break;
+        }
+        acc = acc + wk;
+    }
+    if (c == 5u) {
+        c = last;
+        u0 = 0.99999994;
+    }
+    let total_weight = ((p.a[0] + p.a[1]) + p.a[2] + p.a[3]) + p.a[4];
+    let negative = u0 < 0.5;
+    var theta_i = 0.0;
+    if (c < 3u) {
+        let rows = fur_rows(fur_density(c), 0u, 0.0, -FUR_PI);
+        let x = fur_rows_invert_between(rows, p.lo[c], p.lo[c] + p.mass[c], u.y);
+        theta_i = clamp(x - theta_r, -FUR_HALF_PI, FUR_HALF_PI);
+    } else {
+        let sr = fur_locate(fur_axis(true, 1.0 / FUR_PI, fur_word(8u)), theta_r);
+        let rows = fur_rows(fur_density(7u + c - 3u), sr.i, sr.w, -FUR_HALF_PI);
+        theta_i = clamp(fur_rows_invert_between(rows, 0.0, fur_rows_total(rows), u.y), -FUR_HALF_PI, FUR_HALF_PI);
+    }
+    let family = min(c, 3u);
+    let nr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, fur_word(5u)), abs(theta_r));
+    let nrows = fur_rows(fur_density(3u + family), nr.i, nr.w, 0.0);
+    let abs_phi = clamp(fur_rows_invert_between(nrows, 0.0, fur_rows_total(nrows), u.z), 0.0, FUR_PI);
+    let phi = fur_wrap_angle(select(abs_phi, -abs_phi, negative));
+    let l = fur_lookups(theta_i, theta_r, phi);
+    let pdf = fur_density_of(l, total_weight, fur_cos_within_half_pi(theta_i));
+    if (!(pdf > 0.0 && fur_finite(pdf))) {
+        return out;
+    }
+    let s = fur_assemble(l);
+    let k = max(cos(theta_i), 0.0) / pdf;
+    out = FurSample(theta_i, phi, pdf, max(s.total * k, vec3<f32>(0.0)), family, true);
+    return out;
+}
+
 // ---- Entry points for the tests and `viewer probe --gpu` (bindings 1 and 2) ----
 
 // Queries: (theta_i, theta_r, phi, unused) per evaluation; or, for fur_eval_dirs_main,
@@ -401,4 +770,36 @@ fn fur_eval_dirs_main(@builtin(global_invocation_id) id: vec3<u32>) {
         fur_queries[3u * q + 2u].xyz,
     );
     fur_store(q, f);
+}
+
+// Sampling queries: (theta_r, u0, u1, u2); results 8 floats: theta_i, phi, pdf, weight RGB,
+// family, ok (1 or 0).
+@compute @workgroup_size(64)
+fn fur_sample_main(@builtin(global_invocation_id) id: vec3<u32>) {
+    let q = id.x;
+    if (q >= arrayLength(&fur_queries)) {
+        return;
+    }
+    let a = fur_queries[q];
+    let s = fur_sample_far(a.x, a.yzw);
+    let base = 16u * q;
+    fur_results[base] = s.theta_i;
+    fur_results[base + 1u] = s.phi;
+    fur_results[base + 2u] = s.pdf;
+    fur_results[base + 3u] = s.weight.x;
+    fur_results[base + 4u] = s.weight.y;
+    fur_results[base + 5u] = s.weight.z;
+    fur_results[base + 6u] = f32(s.family);
+    fur_results[base + 7u] = select(0.0, 1.0, s.ok);
+}
+
+// Pdf queries: (theta_i, theta_r, phi, unused); result: the pdf in the first float.
+@compute @workgroup_size(64)
+fn fur_pdf_main(@builtin(global_invocation_id) id: vec3<u32>) {
+    let q = id.x;
+    if (q >= arrayLength(&fur_queries)) {
+        return;
+    }
+    let a = fur_queries[q];
+    fur_results[16u * q] = fur_pdf_far(a.x, a.y, a.z);
 }

@@ -11,7 +11,9 @@
 
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::LutError;
-use bcsdf_core::shader::{ENTRY_EVAL, ENTRY_EVAL_DIRS, FUR_BCSDF_WGSL, RESULT_FLOATS};
+use bcsdf_core::shader::{
+    ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_PDF, ENTRY_SAMPLE, FUR_BCSDF_WGSL, RESULT_FLOATS,
+};
 use std::fmt;
 
 pub mod translate;
@@ -61,7 +63,24 @@ pub struct GpuLut {
     lut: wgpu::Buffer,
     eval: wgpu::ComputePipeline,
     eval_dirs: wgpu::ComputePipeline,
+    sample: wgpu::ComputePipeline,
+    pdf: wgpu::ComputePipeline,
     adapter: wgpu::AdapterInfo,
+}
+
+/// A sample drawn on the GPU (`fur_sample_far`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpuSample {
+    /// θ_i (radians).
+    pub theta_i: f32,
+    /// φ (radians).
+    pub phi: f32,
+    /// Density per unit solid angle.
+    pub pdf: f32,
+    /// S·cos θ_i/pdf, RGB.
+    pub weight: [f32; 3],
+    /// Family: 0 R, 1 TT, 2 TRT, 3 scattered.
+    pub family: u32,
 }
 
 /// The first adapter (any backend wgpu was built with: Vulkan here).
@@ -120,12 +139,15 @@ impl GpuLut {
             })
         };
         let (eval, eval_dirs) = (pipeline(ENTRY_EVAL), pipeline(ENTRY_EVAL_DIRS));
+        let (sample, pdf) = (pipeline(ENTRY_SAMPLE), pipeline(ENTRY_PDF));
         Ok(GpuLut {
             device,
             queue,
             lut,
             eval,
             eval_dirs,
+            sample,
+            pdf,
             adapter: info,
         })
     }
@@ -154,6 +176,34 @@ impl GpuLut {
                 .flat_map(|v| v.iter().map(|d| [d[0], d[1], d[2], 0.0]))
                 .collect();
             out.extend(self.run(&self.eval_dirs, &q, chunk.len())?);
+        }
+        Ok(out)
+    }
+
+    /// The sampling density (per unit solid angle) of `(theta_i, theta_r, phi)` queries.
+    pub fn pdf(&self, queries: &[[f32; 3]]) -> Result<Vec<f32>, GpuError> {
+        let mut out = Vec::with_capacity(queries.len());
+        for chunk in queries.chunks(MAX_DISPATCH) {
+            let q: Vec<[f32; 4]> = chunk.iter().map(|a| [a[0], a[1], a[2], 0.0]).collect();
+            out.extend(self.run(&self.pdf, &q, chunk.len())?.iter().map(|r| r[0]));
+        }
+        Ok(out)
+    }
+
+    /// Samples for `(theta_r, [u0, u1, u2])` queries; `None` where nothing could be sampled.
+    pub fn sample(&self, queries: &[(f32, [f32; 3])]) -> Result<Vec<Option<GpuSample>>, GpuError> {
+        let mut out = Vec::with_capacity(queries.len());
+        for chunk in queries.chunks(MAX_DISPATCH) {
+            let q: Vec<[f32; 4]> = chunk.iter().map(|(t, u)| [*t, u[0], u[1], u[2]]).collect();
+            out.extend(self.run(&self.sample, &q, chunk.len())?.iter().map(|r| {
+                (r[7] == 1.0).then_some(GpuSample {
+                    theta_i: r[0],
+                    phi: r[1],
+                    pdf: r[2],
+                    weight: [r[3], r[4], r[5]],
+                    family: r[6] as u32,
+                })
+            }));
         }
         Ok(out)
     }

@@ -3,7 +3,7 @@
 //! copy under `bcsdf-core/shaders/generated/` (set `FUR_BLESS_SHADERS=1` to rewrite them), and
 //! runs `spirv-val` and `glslangValidator` on them when those are installed.
 
-use bcsdf_core::shader::{ENTRY_EVAL, ENTRY_EVAL_DIRS, FUR_BCSDF_WGSL};
+use bcsdf_core::shader::{ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_PDF, ENTRY_SAMPLE, FUR_BCSDF_WGSL};
 use naga::back::{glsl, hlsl, msl, spv};
 use naga::valid::{Capabilities, ValidationFlags, Validator};
 
@@ -24,7 +24,7 @@ pub fn translations() -> Result<Vec<Translation>, String> {
         .map_err(|e| format!("validation: {e:?}"))?;
     let mut out = Vec::new();
 
-    // SPIR-V, one module with both entry points.
+    // SPIR-V, one module with every entry point.
     let words = spv::write_vec(&module, &info, &spv::Options::default(), None)
         .map_err(|e| format!("SPIR-V: {e}"))?;
     out.push(Translation {
@@ -32,7 +32,7 @@ pub fn translations() -> Result<Vec<Translation>, String> {
         bytes: words.iter().flat_map(|w| w.to_le_bytes()).collect(),
     });
 
-    // HLSL, shader model 6.0, both entry points.
+    // HLSL, shader model 6.0, every entry point.
     let mut text = String::new();
     let options = hlsl::Options {
         shader_model: hlsl::ShaderModel::V6_0,
@@ -46,7 +46,7 @@ pub fn translations() -> Result<Vec<Translation>, String> {
         bytes: text.into_bytes(),
     });
 
-    // MSL 2.1, both entry points.
+    // MSL 2.1, every entry point.
     let mut text = String::new();
     let options = msl::Options {
         lang_version: (2, 1),
@@ -71,7 +71,7 @@ pub fn translations() -> Result<Vec<Translation>, String> {
             "es310",
         ),
     ] {
-        for entry in [ENTRY_EVAL, ENTRY_EVAL_DIRS] {
+        for entry in [ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_SAMPLE, ENTRY_PDF] {
             let mut text = String::new();
             let options = glsl::Options {
                 version,

@@ -23,6 +23,58 @@ struct FurLoc {
     float w;
 };
 
+struct FurLookups {
+    float m[3];
+    float ms[2];
+    float n[12];
+    float front;
+    float inv_cos2_;
+};
+
+struct FurSample {
+    float theta_i;
+    float phi;
+    float pdf;
+    int _pad3_0;
+    float3 weight;
+    uint family;
+    bool ok;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+struct FurDensity {
+    uint prefix_at;
+    uint entries;
+    uint nodes;
+    uint rows;
+    float step_;
+    uint block;
+    uint table;
+    uint first;
+    uint channels;
+};
+
+struct FurRows {
+    FurDensity d;
+    uint r0_;
+    uint r1_;
+    float w;
+    float origin;
+};
+
+struct FurParts {
+    float a[5];
+    int _pad1_0;
+    int _pad1_1;
+    int _pad1_2;
+    float3 mass;
+    int _pad2_0;
+    float3 lo;
+    int _end_pad_0;
+};
+
 static const float FUR_PI = 3.1415927;
 static const float FUR_HALF_PI = 1.5707964;
 static const float FUR_TAU = 6.2831855;
@@ -44,8 +96,8 @@ FurAxis ConstructFurAxis(float arg0, float arg1, float arg2, uint arg3) {
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes)
 {
-    float last = float((nodes - 1u));
-    const FurAxis furaxis = ConstructFurAxis((last * inv_span), (centred ? (0.5 * last) : 0.0), last, nodes);
+    float last_1 = float((nodes - 1u));
+    const FurAxis furaxis = ConstructFurAxis((last_1 * inv_span), (centred ? (0.5 * last_1) : 0.0), last_1, nodes);
     return furaxis;
 }
 
@@ -62,9 +114,9 @@ int naga_f2i32(float value) {
 
 FurLoc fur_locate(FurAxis a, float x)
 {
-    float u_1 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
-    int i = min(naga_f2i32(u_1), asint(asuint(int(a.nodes)) - asuint(int(2))));
-    const FurLoc furloc = ConstructFurLoc(uint(i), (u_1 - float(i)));
+    float u_4 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
+    int i = min(naga_f2i32(u_4), asint(asuint(int(a.nodes)) - asuint(int(2))));
+    const FurLoc furloc = ConstructFurLoc(uint(i), (u_4 - float(i)));
     return furloc;
 }
 
@@ -106,8 +158,8 @@ float fur_cos_within_half_pi(float x_1)
         float _e23 = acc;
         return ((_e23 * y_2) + 1.0);
     }
-    float r = ((1.5707964 - a_1) + -4.371139e-8);
-    float y_3 = (r * r);
+    float r_5 = ((1.5707964 - a_1) + -4.371139e-8);
+    float y_3 = (r_5 * r_5);
     float _e34 = acc_1;
     acc_1 = ((_e34 * y_3) - 0.0001984127);
     float _e38 = acc_1;
@@ -115,7 +167,7 @@ float fur_cos_within_half_pi(float x_1)
     float _e42 = acc_1;
     acc_1 = ((_e42 * y_3) - 0.16666667);
     float _e46 = acc_1;
-    return (((_e46 * y_3) * r) + r);
+    return (((_e46 * y_3) * r_5) + r_5);
 }
 
 float fur_wrap_angle(float x_2)
@@ -189,26 +241,12 @@ bool fur_finite(float x_3)
     return ((asuint(x_3) & 2139095040u) != 2139095040u);
 }
 
-typedef float ret_Constructarray4_float_[4];
-ret_Constructarray4_float_ Constructarray4_float_(float arg0, float arg1, float arg2, float arg3) {
-    float ret[4] = { arg0, arg1, arg2, arg3 };
-    return ret;
-}
-
-FurFamilies fur_eval_far(float theta_i, float theta_r, float phi_in)
+bool fur_valid(float theta_i, float theta_r, float phi)
 {
     bool local_3 = (bool)0;
     bool local_4 = (bool)0;
     bool local_5 = (bool)0;
     bool local_6 = (bool)0;
-    float m[3] = (float[3])0;
-    uint ch = 0u;
-    float ms[2] = (float[2])0;
-    uint ch_1 = 0u;
-    float n[12] = (float[12])0;
-    uint ch_2 = 0u;
-    float3 f[4] = (float3[4])0;
-    uint k_1 = 0u;
 
     const bool _e3 = fur_finite(theta_i);
     if (_e3) {
@@ -219,198 +257,238 @@ FurFamilies fur_eval_far(float theta_i, float theta_r, float phi_in)
     }
     bool _e8 = local_3;
     if (_e8) {
-        const bool _e11 = fur_finite(phi_in);
+        const bool _e11 = fur_finite(phi);
         local_4 = _e11;
     } else {
         local_4 = false;
     }
     bool _e13 = local_4;
-    if (!(!(_e13))) {
-        local_5 = (abs(theta_i) > FUR_HALF_PI);
+    if (_e13) {
+        local_5 = (abs(theta_i) <= FUR_HALF_PI);
     } else {
-        local_5 = true;
+        local_5 = false;
     }
-    bool _e22 = local_5;
-    if (!(_e22)) {
-        local_6 = (abs(theta_r) > FUR_HALF_PI);
+    bool _e20 = local_5;
+    if (_e20) {
+        local_6 = (abs(theta_r) <= FUR_HALF_PI);
     } else {
-        local_6 = true;
+        local_6 = false;
     }
-    bool _e30 = local_6;
-    if (_e30) {
-        const FurFamilies _e31 = fur_zero();
-        const FurFamilies furfamilies_1 = _e31;
-        return furfamilies_1;
-    }
-    const float _e32 = fur_wrap_angle(phi_in);
-    const uint _e34 = fur_word(4u);
-    const uint _e36 = fur_word(5u);
-    const uint _e38 = fur_word(6u);
-    const uint _e40 = fur_word(7u);
-    const uint _e42 = fur_word(8u);
-    uint n0_ = (FUR_HEADER_HALVES + (3u * _e34));
-    uint s0_ = (n0_ + ((12u * _e38) * _e36));
-    float abs_phi = abs(_e32);
-    const float _e52 = fur_cos_within_half_pi(theta_i);
-    float inv_cos2_ = (1.0 / max((_e52 * _e52), FUR_MIN_COS2_));
-    const FurAxis _e60 = fur_axis(true, 0.15915494, _e34);
-    const FurLoc _e62 = fur_locate(_e60, (theta_i + theta_r));
-    const float _e64 = fur_unbias(0u);
-    float wm0_ = ((1.0 - _e62.w) * _e64);
-    float wm1_ = (_e62.w * _e64);
+    bool _e27 = local_6;
+    return _e27;
+}
+
+FurLookups ConstructFurLookups(float arg0[3], float arg1[2], float arg2[12], float arg3, float arg4) {
+    FurLookups ret = (FurLookups)0;
+    ret.m = arg0;
+    ret.ms = arg1;
+    ret.n = arg2;
+    ret.front = arg3;
+    ret.inv_cos2_ = arg4;
+    return ret;
+}
+
+FurLookups fur_lookups(float theta_i_1, float theta_r_1, float phi_in)
+{
+    float m[3] = (float[3])0;
+    uint ch = 0u;
+    float ms[2] = (float[2])0;
+    uint ch_1 = 0u;
+    float n[12] = (float[12])0;
+    uint ch_2 = 0u;
+
+    const float _e3 = fur_wrap_angle(phi_in);
+    const uint _e5 = fur_word(4u);
+    const uint _e7 = fur_word(5u);
+    const uint _e9 = fur_word(6u);
+    const uint _e11 = fur_word(7u);
+    const uint _e13 = fur_word(8u);
+    uint n0_ = (FUR_HEADER_HALVES + (3u * _e5));
+    uint s0_ = (n0_ + ((12u * _e9) * _e7));
+    float abs_phi = abs(_e3);
+    const float _e23 = fur_cos_within_half_pi(theta_i_1);
+    float inv_cos2_ = (1.0 / max((_e23 * _e23), FUR_MIN_COS2_));
+    const FurAxis _e31 = fur_axis(true, 0.15915494, _e5);
+    const FurLoc _e33 = fur_locate(_e31, (theta_i_1 + theta_r_1));
+    const float _e35 = fur_unbias(0u);
+    float wm0_ = ((1.0 - _e33.w) * _e35);
+    float wm1_ = (_e33.w * _e35);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e98 = ch;
-            ch = (_e98 + 1u);
+            uint _e69 = ch;
+            ch = (_e69 + 1u);
         }
         loop_init = false;
-        uint _e74 = ch;
-        if ((_e74 < 3u)) {
+        uint _e45 = ch;
+        if ((_e45 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e81 = ch;
-            const float _e83 = fur_half(((FUR_HEADER_HALVES + (3u * _e62.i)) + _e81));
-            uint _e90 = ch;
-            const float _e92 = fur_half(((FUR_HEADER_HALVES + (3u * (_e62.i + 1u))) + _e90));
-            uint _e93 = ch;
-            m[min(uint(_e93), 2u)] = ((wm0_ * _e83) + (wm1_ * _e92));
+            uint _e52 = ch;
+            const float _e54 = fur_half(((FUR_HEADER_HALVES + (3u * _e33.i)) + _e52));
+            uint _e61 = ch;
+            const float _e63 = fur_half(((FUR_HEADER_HALVES + (3u * (_e33.i + 1u))) + _e61));
+            uint _e64 = ch;
+            m[min(uint(_e64), 2u)] = ((wm0_ * _e54) + (wm1_ * _e63));
         }
     }
-    const FurAxis _e103 = fur_axis(true, 0.31830987, _e42);
-    const FurLoc _e104 = fur_locate(_e103, theta_r);
-    const FurAxis _e107 = fur_axis(true, 0.31830987, _e40);
-    const FurLoc _e108 = fur_locate(_e107, theta_i);
-    const float _e110 = fur_unbias(2u);
+    const FurAxis _e74 = fur_axis(true, 0.31830987, _e13);
+    const FurLoc _e75 = fur_locate(_e74, theta_r_1);
+    const FurAxis _e78 = fur_axis(true, 0.31830987, _e11);
+    const FurLoc _e79 = fur_locate(_e78, theta_i_1);
+    const float _e81 = fur_unbias(2u);
     {
-        float ky0_ = ((1.0 - _e104.w) * _e110);
-        float ky1_ = (_e104.w * _e110);
-        float w0_ = (ky0_ * (1.0 - _e108.w));
-        float w1_ = (ky0_ * _e108.w);
-        float w2_ = (ky1_ * (1.0 - _e108.w));
-        float w3_ = (ky1_ * _e108.w);
-        uint i0_ = ((_e104.i * _e40) + _e108.i);
+        float ky0_ = ((1.0 - _e75.w) * _e81);
+        float ky1_ = (_e75.w * _e81);
+        float w0_ = (ky0_ * (1.0 - _e79.w));
+        float w1_ = (ky0_ * _e79.w);
+        float w2_ = (ky1_ * (1.0 - _e79.w));
+        float w3_ = (ky1_ * _e79.w);
+        uint i0_ = ((_e75.i * _e11) + _e79.i);
         uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
         bool loop_init_1 = true;
         while(true) {
             if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e178 = ch_1;
-                ch_1 = (_e178 + 1u);
+                uint _e149 = ch_1;
+                ch_1 = (_e149 + 1u);
             }
             loop_init_1 = false;
-            uint _e136 = ch_1;
-            if ((_e136 < 2u)) {
+            uint _e107 = ch_1;
+            if ((_e107 < 2u)) {
             } else {
                 break;
             }
             {
-                uint _e142 = ch_1;
-                const float _e144 = fur_half(((s0_ + (2u * i0_)) + _e142));
-                uint _e150 = ch_1;
-                const float _e152 = fur_half(((s0_ + (2u * (i0_ + 1u))) + _e150));
-                uint _e157 = ch_1;
-                const float _e159 = fur_half(((s0_ + (2u * (i0_ + _e40))) + _e157));
-                uint _e166 = ch_1;
-                const float _e168 = fur_half(((s0_ + (2u * ((i0_ + _e40) + 1u))) + _e166));
-                uint _e169 = ch_1;
-                ms[min(uint(_e169), 1u)] = ((((w0_ * _e144) + (w1_ * _e152)) + (w2_ * _e159)) + (w3_ * _e168));
+                uint _e113 = ch_1;
+                const float _e115 = fur_half(((s0_ + (2u * i0_)) + _e113));
+                uint _e121 = ch_1;
+                const float _e123 = fur_half(((s0_ + (2u * (i0_ + 1u))) + _e121));
+                uint _e128 = ch_1;
+                const float _e130 = fur_half(((s0_ + (2u * (i0_ + _e11))) + _e128));
+                uint _e137 = ch_1;
+                const float _e139 = fur_half(((s0_ + (2u * ((i0_ + _e11) + 1u))) + _e137));
+                uint _e140 = ch_1;
+                ms[min(uint(_e140), 1u)] = ((((w0_ * _e115) + (w1_ * _e123)) + (w2_ * _e130)) + (w3_ * _e139));
             }
         }
     }
     float front_w = min((abs_phi * 0.31830987), 1.0);
-    float _e186 = ms[0];
-    float _e188 = ms[1];
-    float _e190 = ms[0];
-    float mss = (_e186 + (front_w * (_e188 - _e190)));
-    const FurAxis _e196 = fur_axis(false, 0.63661975, _e36);
-    const FurLoc _e198 = fur_locate(_e196, abs(theta_r));
-    const FurAxis _e201 = fur_axis(false, 0.31830987, _e38);
-    const FurLoc _e202 = fur_locate(_e201, abs_phi);
-    const float _e204 = fur_unbias(1u);
-    float ny0_ = ((1.0 - _e198.w) * _e204);
-    float ny1_ = (_e198.w * _e204);
-    float v0_ = (ny0_ * (1.0 - _e202.w));
-    float v1_ = (ny0_ * _e202.w);
-    float v2_ = (ny1_ * (1.0 - _e202.w));
-    float v3_ = (ny1_ * _e202.w);
-    uint j0_ = ((_e198.i * _e38) + _e202.i);
+    const FurAxis _e158 = fur_axis(false, 0.63661975, _e7);
+    const FurLoc _e160 = fur_locate(_e158, abs(theta_r_1));
+    const FurAxis _e163 = fur_axis(false, 0.31830987, _e9);
+    const FurLoc _e164 = fur_locate(_e163, abs_phi);
+    const float _e166 = fur_unbias(1u);
+    float ny0_ = ((1.0 - _e160.w) * _e166);
+    float ny1_ = (_e160.w * _e166);
+    float v0_2 = (ny0_ * (1.0 - _e164.w));
+    float v1_2 = (ny0_ * _e164.w);
+    float v2_ = (ny1_ * (1.0 - _e164.w));
+    float v3_ = (ny1_ * _e164.w);
+    uint j0_ = ((_e160.i * _e9) + _e164.i);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e272 = ch_2;
-            ch_2 = (_e272 + 1u);
+            uint _e234 = ch_2;
+            ch_2 = (_e234 + 1u);
         }
         loop_init_2 = false;
-        uint _e230 = ch_2;
-        if ((_e230 < 12u)) {
+        uint _e192 = ch_2;
+        if ((_e192 < 12u)) {
         } else {
             break;
         }
         {
-            uint _e236 = ch_2;
-            const float _e238 = fur_half(((n0_ + (12u * j0_)) + _e236));
-            uint _e244 = ch_2;
-            const float _e246 = fur_half(((n0_ + (12u * (j0_ + 1u))) + _e244));
-            uint _e251 = ch_2;
-            const float _e253 = fur_half(((n0_ + (12u * (j0_ + _e38))) + _e251));
-            uint _e260 = ch_2;
-            const float _e262 = fur_half(((n0_ + (12u * ((j0_ + _e38) + 1u))) + _e260));
-            uint _e263 = ch_2;
-            n[min(uint(_e263), 11u)] = ((((v0_ * _e238) + (v1_ * _e246)) + (v2_ * _e253)) + (v3_ * _e262));
+            uint _e198 = ch_2;
+            const float _e200 = fur_half(((n0_ + (12u * j0_)) + _e198));
+            uint _e206 = ch_2;
+            const float _e208 = fur_half(((n0_ + (12u * (j0_ + 1u))) + _e206));
+            uint _e213 = ch_2;
+            const float _e215 = fur_half(((n0_ + (12u * (j0_ + _e9))) + _e213));
+            uint _e222 = ch_2;
+            const float _e224 = fur_half(((n0_ + (12u * ((j0_ + _e9) + 1u))) + _e222));
+            uint _e225 = ch_2;
+            n[min(uint(_e225), 11u)] = ((((v0_2 * _e200) + (v1_2 * _e208)) + (v2_ * _e215)) + (v3_ * _e224));
         }
     }
-    float _e276 = m[0];
-    float _e278 = m[1];
-    float _e280 = m[2];
-    float lon[4] = Constructarray4_float_(_e276, _e278, _e280, mss);
+    float _e237[3] = m;
+    float _e238[2] = ms;
+    float _e239[12] = n;
+    const FurLookups furlookups = ConstructFurLookups(_e237, _e238, _e239, front_w, inv_cos2_);
+    return furlookups;
+}
+
+typedef float ret_Constructarray4_float_[4];
+ret_Constructarray4_float_ Constructarray4_float_(float arg0, float arg1, float arg2, float arg3) {
+    float ret[4] = { arg0, arg1, arg2, arg3 };
+    return ret;
+}
+
+FurFamilies fur_assemble(FurLookups l)
+{
+    float3 f[4] = (float3[4])0;
+    uint k_1 = 0u;
+
+    float mss = (l.ms[0] + (l.front * (l.ms[1] - l.ms[0])));
+    float lon[4] = Constructarray4_float_(l.m[0], l.m[1], l.m[2], mss);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e314 = k_1;
-            k_1 = (_e314 + 1u);
+            uint _e51 = k_1;
+            k_1 = (_e51 + 1u);
         }
         loop_init_3 = false;
-        uint _e285 = k_1;
-        if ((_e285 < 4u)) {
+        uint _e21 = k_1;
+        if ((_e21 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e288 = k_1;
-            float weight = (lon[min(uint(_e288), 3u)] * inv_cos2_);
-            uint _e291 = k_1;
-            uint _e294 = k_1;
-            float _e297 = n[min(uint((3u * _e294)), 11u)];
-            uint _e299 = k_1;
-            float _e304 = n[min(uint(((3u * _e299) + 1u)), 11u)];
-            uint _e306 = k_1;
-            float _e311 = n[min(uint(((3u * _e306) + 2u)), 11u)];
-            f[min(uint(_e291), 3u)] = (float3(_e297, _e304, _e311) * weight);
+            uint _e24 = k_1;
+            float weight = (lon[min(uint(_e24), 3u)] * l.inv_cos2_);
+            uint _e28 = k_1;
+            uint _e32 = k_1;
+            uint _e37 = k_1;
+            uint _e44 = k_1;
+            f[min(uint(_e28), 3u)] = (float3(l.n[min(uint((3u * _e32)), 11u)], l.n[min(uint(((3u * _e37) + 1u)), 11u)], l.n[min(uint(((3u * _e44) + 2u)), 11u)]) * weight);
         }
     }
-    float3 _e318 = f[0];
-    float3 _e320 = f[1];
-    float3 _e322 = f[2];
-    float3 _e324 = f[3];
-    float3 _e326 = f[0];
-    float3 _e328 = f[1];
-    float3 _e331 = f[2];
-    float3 _e334 = f[3];
-    const FurFamilies furfamilies_2 = ConstructFurFamilies(_e318, _e320, _e322, _e324, (((_e326 + _e328) + _e331) + _e334));
-    return furfamilies_2;
+    float3 _e55 = f[0];
+    float3 _e57 = f[1];
+    float3 _e59 = f[2];
+    float3 _e61 = f[3];
+    float3 _e63 = f[0];
+    float3 _e65 = f[1];
+    float3 _e68 = f[2];
+    float3 _e71 = f[3];
+    const FurFamilies furfamilies_1 = ConstructFurFamilies(_e55, _e57, _e59, _e61, (((_e63 + _e65) + _e68) + _e71));
+    return furfamilies_1;
+}
+
+FurFamilies fur_eval_far(float theta_i_2, float theta_r_2, float phi_1)
+{
+    const bool _e3 = fur_valid(theta_i_2, theta_r_2, phi_1);
+    if (!(_e3)) {
+        const FurFamilies _e5 = fur_zero();
+        const FurFamilies furfamilies_2 = _e5;
+        return furfamilies_2;
+    }
+    const FurLookups _e6 = fur_lookups(theta_i_2, theta_r_2, phi_1);
+    const FurFamilies _e7 = fur_assemble(_e6);
+    const FurFamilies furfamilies_3 = _e7;
+    return furfamilies_3;
 }
 
 float fur_asin_r(float z)
@@ -434,16 +512,16 @@ float fur_asin(float x_4)
         return (x_4 + (x_4 * _e14));
     }
     float z_3 = ((1.0 - abs(x_4)) * 0.5);
-    float s = sqrt(z_3);
+    float s_1 = sqrt(z_3);
     const float _e24 = fur_asin_r(z_3);
-    float a_2 = (FUR_HALF_PI - (2.0 * (s + (s * _e24))));
+    float a_2 = (FUR_HALF_PI - (2.0 * (s_1 + (s_1 * _e24))));
     return ((x_4 < 0.0) ? -(a_2) : a_2);
 }
 
 float fur_atan(float x_in)
 {
     float x_5 = (float)0;
-    int id_2 = int(-1);
+    int id_4 = int(-1);
 
     x_5 = x_in;
     float _e2 = x_5;
@@ -466,46 +544,46 @@ float fur_atan(float x_in)
                 float _e27 = x_5;
                 float _e32 = x_5;
                 x_5 = (((2.0 * _e27) - 1.0) / (2.0 + _e32));
-                id_2 = int(0);
+                id_4 = int(0);
             } else {
                 float _e37 = x_5;
                 float _e40 = x_5;
                 x_5 = ((_e37 - 1.0) / (_e40 + 1.0));
-                id_2 = int(1);
+                id_4 = int(1);
             }
         } else {
             if ((ix_1 < 1075576832u)) {
                 float _e47 = x_5;
                 float _e50 = x_5;
                 x_5 = ((_e47 - 1.5) / (1.0 + (1.5 * _e50)));
-                id_2 = int(2);
+                id_4 = int(2);
             } else {
                 float _e57 = x_5;
                 x_5 = (-1.0 / _e57);
-                id_2 = int(3);
+                id_4 = int(3);
             }
         }
     }
     float _e61 = x_5;
     float _e62 = x_5;
     float z_4 = (_e61 * _e62);
-    float w = (z_4 * z_4);
-    float s1_ = (z_4 * (0.33333328 + (w * (0.14253636 + (w * 0.061687607)))));
-    float s2_ = (w * (-0.19999158 + (w * -0.106480174)));
-    int _e78 = id_2;
+    float w_2 = (z_4 * z_4);
+    float s1_ = (z_4 * (0.33333328 + (w_2 * (0.14253636 + (w_2 * 0.061687607)))));
+    float s2_ = (w_2 * (-0.19999158 + (w_2 * -0.106480174)));
+    int _e78 = id_4;
     if ((_e78 < int(0))) {
         float _e81 = x_5;
         float _e82 = x_5;
         return (_e81 - (_e82 * (s1_ + s2_)));
     }
     float hi[4] = Constructarray4_float_(0.4636476, 0.7853981, 0.9827937, 1.5707963);
-    float lo[4] = Constructarray4_float_(5.0121582e-9, 3.7748947e-8, 3.4473217e-8, 7.5497894e-8);
-    int _e96 = id_2;
+    float lo_1[4] = Constructarray4_float_(5.0121582e-9, 3.7748947e-8, 3.4473217e-8, 7.5497894e-8);
+    int _e96 = id_4;
     float _e98 = x_5;
-    int _e101 = id_2;
+    int _e101 = id_4;
     float _e104 = x_5;
-    float r_1 = (hi[min(uint(_e96), 3u)] - (((_e98 * (s1_ + s2_)) - lo[min(uint(_e101), 3u)]) - _e104));
-    return (negative ? -(r_1) : r_1);
+    float r_6 = (hi[min(uint(_e96), 3u)] - (((_e98 * (s1_ + s2_)) - lo_1[min(uint(_e101), 3u)]) - _e104));
+    return (negative ? -(r_6) : r_6);
 }
 
 float fur_atan2_(float y_1, float x_6)
@@ -610,8 +688,8 @@ FurFamilies fur_eval_far_dirs(float3 wi, float3 wr, float3 u)
             bool _e24 = local_9;
             if (!(_e24)) {
                 const FurFamilies _e26 = fur_zero();
-                const FurFamilies furfamilies_3 = _e26;
-                return furfamilies_3;
+                const FurFamilies furfamilies_4 = _e26;
+                return furfamilies_4;
             }
         }
     }
@@ -635,8 +713,8 @@ FurFamilies fur_eval_far_dirs(float3 wi, float3 wr, float3 u)
     bool _e46 = local_11;
     if (!(_e46)) {
         const FurFamilies _e48 = fur_zero();
-        const FurFamilies furfamilies_4 = _e48;
-        return furfamilies_4;
+        const FurFamilies furfamilies_5 = _e48;
+        return furfamilies_5;
     }
     if (!((ni < 1.1754944e-38))) {
         local_12 = (nr < 1.1754944e-38);
@@ -652,8 +730,8 @@ FurFamilies fur_eval_far_dirs(float3 wi, float3 wr, float3 u)
     bool _e62 = local_13;
     if (_e62) {
         const FurFamilies _e63 = fur_zero();
-        const FurFamilies furfamilies_5 = _e63;
-        return furfamilies_5;
+        const FurFamilies furfamilies_6 = _e63;
+        return furfamilies_6;
     }
     float3 un = (u / (nu).xxx);
     float si = (dot(wi, un) / ni);
@@ -664,8 +742,617 @@ FurFamilies fur_eval_far_dirs(float3 wi, float3 wr, float3 u)
     float3 pr = ((wr / (nr).xxx) - (sr * un));
     const float _e89 = fur_atan2_(dot(un, cross(pi, pr)), dot(pi, pr));
     const FurFamilies _e90 = fur_eval_far(_e73, _e77, _e89);
-    const FurFamilies furfamilies_6 = _e90;
-    return furfamilies_6;
+    const FurFamilies furfamilies_7 = _e90;
+    return furfamilies_7;
+}
+
+float fur_f32_at(uint byte)
+{
+    uint w_3 = (byte >> 2u);
+    if (((byte & 3u) == 0u)) {
+        uint _e9 = asuint(fur_lut.Load(w_3*4));
+        return asfloat(_e9);
+    }
+    uint _e13 = asuint(fur_lut.Load(w_3*4));
+    uint _e20 = asuint(fur_lut.Load((w_3 + 1u)*4));
+    return asfloat(((_e13 >> 16u) | (_e20 << 16u)));
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint fur_entries(uint nodes_1, uint block)
+{
+    return (naga_div((((nodes_1 - 1u) + block) - 1u), block) + 1u);
+}
+
+FurDensity ConstructFurDensity(uint arg0, uint arg1, uint arg2, uint arg3, float arg4, uint arg5, uint arg6, uint arg7, uint arg8) {
+    FurDensity ret = (FurDensity)0;
+    ret.prefix_at = arg0;
+    ret.entries = arg1;
+    ret.nodes = arg2;
+    ret.rows = arg3;
+    ret.step_ = arg4;
+    ret.block = arg5;
+    ret.table = arg6;
+    ret.first = arg7;
+    ret.channels = arg8;
+    return ret;
+}
+
+FurDensity fur_density(uint d)
+{
+    uint at = (uint)0;
+
+    const uint _e2 = fur_word(4u);
+    const uint _e4 = fur_word(5u);
+    const uint _e6 = fur_word(6u);
+    const uint _e8 = fur_word(7u);
+    const uint _e10 = fur_word(8u);
+    uint values = (((3u * _e2) + ((12u * _e6) * _e4)) + ((2u * _e8) * _e10));
+    at = (160u + (2u * values));
+    const uint _e27 = fur_entries(_e2, 1u);
+    const uint _e29 = fur_entries(_e6, 8u);
+    const uint _e31 = fur_entries(_e8, 8u);
+    if ((d < 3u)) {
+        uint _e34 = at;
+        const FurDensity furdensity = ConstructFurDensity((_e34 + ((4u * d) * _e27)), _e27, _e2, 1u, (6.2831855 / float((_e2 - 1u))), 1u, 0u, d, 1u);
+        return furdensity;
+    }
+    uint _e49 = at;
+    at = (_e49 + (12u * _e27));
+    if ((d < 7u)) {
+        uint f_2 = (d - 3u);
+        uint _e57 = at;
+        const FurDensity furdensity_1 = ConstructFurDensity((_e57 + (((4u * f_2) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_2), 3u);
+        return furdensity_1;
+    }
+    uint _e74 = at;
+    at = (_e74 + ((16u * _e4) * _e29));
+    uint x_8 = (d - 7u);
+    uint _e81 = at;
+    const FurDensity furdensity_2 = ConstructFurDensity((_e81 + (((4u * x_8) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_8, 1u);
+    return furdensity_2;
+}
+
+typedef uint ret_Constructarray3_uint_[3];
+ret_Constructarray3_uint_ Constructarray3_uint_(uint arg0, uint arg1, uint arg2) {
+    uint ret[3] = { arg0, arg1, arg2 };
+    return ret;
+}
+
+float fur_node(FurDensity d_1, uint row, uint j)
+{
+    const uint _e4 = fur_word(4u);
+    const uint _e6 = fur_word(5u);
+    const uint _e8 = fur_word(6u);
+    uint n0_1 = (FUR_HEADER_HALVES + (3u * _e4));
+    uint s0_1 = (n0_1 + ((12u * _e8) * _e6));
+    uint starts[3] = Constructarray3_uint_(FUR_HEADER_HALVES, n0_1, s0_1);
+    uint chans[3] = Constructarray3_uint_(3u, 12u, 2u);
+    uint base = ((starts[min(uint(d_1.table), 2u)] + (((row * d_1.nodes) + j) * chans[min(uint(d_1.table), 2u)])) + d_1.first);
+    if ((d_1.channels == 3u)) {
+        const float _e36 = fur_half(base);
+        const float _e39 = fur_half((base + 1u));
+        const float _e43 = fur_half((base + 2u));
+        float sum = ((_e36 + _e39) + _e43);
+        const float _e46 = fur_unbias(d_1.table);
+        return (sum * (_e46 * 0.33333334));
+    }
+    const float _e50 = fur_half(base);
+    const float _e52 = fur_unbias(d_1.table);
+    return (_e50 * _e52);
+}
+
+FurRows ConstructFurRows(FurDensity arg0, uint arg1, uint arg2, float arg3, float arg4) {
+    FurRows ret = (FurRows)0;
+    ret.d = arg0;
+    ret.r0_ = arg1;
+    ret.r1_ = arg2;
+    ret.w = arg3;
+    ret.origin = arg4;
+    return ret;
+}
+
+FurRows fur_rows(FurDensity d_2, uint row_1, float w, float origin)
+{
+    const FurRows furrows = ConstructFurRows(d_2, min(row_1, (d_2.rows - 1u)), min((row_1 + 1u), (d_2.rows - 1u)), w, origin);
+    return furrows;
+}
+
+float fur_rows_value(FurRows r, uint j_1)
+{
+    const float _e4 = fur_node(r.d, r.r0_, j_1);
+    if ((r.w == 0.0)) {
+        return _e4;
+    }
+    const float _e10 = fur_node(r.d, r.r1_, j_1);
+    return (((1.0 - r.w) * _e4) + (r.w * _e10));
+}
+
+float fur_rows_prefix(FurRows r_1, uint k_3)
+{
+    const float _e12 = fur_f32_at((r_1.d.prefix_at + (4u * ((r_1.r0_ * r_1.d.entries) + k_3))));
+    if ((r_1.w == 0.0)) {
+        return _e12;
+    }
+    const float _e26 = fur_f32_at((r_1.d.prefix_at + (4u * ((r_1.r1_ * r_1.d.entries) + k_3))));
+    return (((1.0 - r_1.w) * _e12) + (r_1.w * _e26));
+}
+
+float fur_rows_total(FurRows r_2)
+{
+    const float _e5 = fur_rows_prefix(r_2, (r_2.d.entries - 1u));
+    return _e5;
+}
+
+float fur_linear_mass(float v0_, float v1_, float len)
+{
+    return ((0.5 * len) * (v0_ + v1_));
+}
+
+float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_1)
+{
+    float s = 0.0;
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+
+    if (!((len_1 > 0.0))) {
+        return 0.0;
+    }
+    if ((t_1 > 0.0)) {
+        float disc = max(((v0_1 * v0_1) + (((2.0 * (v1_1 - v0_1)) * t_1) / len_1)), 0.0);
+        float den = (v0_1 + sqrt(disc));
+        if ((den > 0.0)) {
+            s = clamp(((2.0 * t_1) / den), 0.0, len_1);
+        } else {
+            s = len_1;
+        }
+    }
+    float inset = (len_1 * 9.536743e-7);
+    if ((v0_1 <= 0.0)) {
+        float _e36 = s;
+        local_14 = (_e36 < inset);
+    } else {
+        local_14 = false;
+    }
+    bool _e39 = local_14;
+    if (_e39) {
+        return inset;
+    }
+    if ((v1_1 <= 0.0)) {
+        float _e44 = s;
+        local_15 = (_e44 > (len_1 - inset));
+    } else {
+        local_15 = false;
+    }
+    bool _e48 = local_15;
+    if (_e48) {
+        return (len_1 - inset);
+    }
+    float _e50 = s;
+    return _e50;
+}
+
+float fur_unit(float u_1)
+{
+    if ((u_1 > 0.0)) {
+        return min(u_1, 0.99999994);
+    }
+    return 0.0;
+}
+
+float fur_rows_invert(FurRows r_3, float t_2)
+{
+    uint lo = 0u;
+    uint len_2 = (uint)0;
+    float acc_2 = (float)0;
+    float prev = (float)0;
+    bool have_last = false;
+    uint last_j = 0u;
+    float last_v0_ = 0.0;
+    float last_v1_ = 0.0;
+    uint j_2 = (uint)0;
+
+    len_2 = (r_3.d.entries - 1u);
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        uint _e9 = len_2;
+        if ((_e9 <= 1u)) {
+            break;
+        }
+        uint _e12 = len_2;
+        uint half_ = naga_div(_e12, 2u);
+        uint _e15 = lo;
+        uint _e16 = lo;
+        uint _e18 = lo;
+        const float _e20 = fur_rows_prefix(r_3, (_e18 + half_));
+        lo = ((_e20 < t_2) ? (_e16 + half_) : _e15);
+        uint _e23 = len_2;
+        len_2 = (_e23 - half_);
+    }
+    uint _e25 = lo;
+    uint first = (_e25 * r_3.d.block);
+    uint end = min((first + r_3.d.block), (r_3.d.nodes - 1u));
+    uint _e37 = lo;
+    const float _e38 = fur_rows_prefix(r_3, _e37);
+    acc_2 = _e38;
+    const float _e40 = fur_rows_value(r_3, first);
+    prev = _e40;
+    j_2 = first;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e85 = j_2;
+            j_2 = (_e85 + 1u);
+        }
+        loop_init_5 = false;
+        uint _e51 = j_2;
+        if ((_e51 < end)) {
+        } else {
+            break;
+        }
+        {
+            uint _e53 = j_2;
+            const float _e56 = fur_rows_value(r_3, (_e53 + 1u));
+            float _e57 = prev;
+            const float _e60 = fur_linear_mass(_e57, _e56, r_3.d.step_);
+            if ((_e60 > 0.0)) {
+                float _e63 = acc_2;
+                if (((t_2 - _e63) <= _e60)) {
+                    float _e66 = prev;
+                    float _e69 = acc_2;
+                    const float _e71 = fur_invert_linear(_e66, _e56, r_3.d.step_, (t_2 - _e69));
+                    uint _e73 = j_2;
+                    return ((r_3.origin + (float(_e73) * r_3.d.step_)) + _e71);
+                }
+                have_last = true;
+                uint _e81 = j_2;
+                last_j = _e81;
+                float _e82 = prev;
+                last_v0_ = _e82;
+                last_v1_ = _e56;
+            }
+            float _e83 = acc_2;
+            acc_2 = (_e83 + _e60);
+            prev = _e56;
+        }
+    }
+    bool _e88 = have_last;
+    if (_e88) {
+        float _e89 = last_v0_;
+        float _e90 = last_v1_;
+        float _e95 = last_v0_;
+        float _e96 = last_v1_;
+        const float _e99 = fur_invert_linear(_e89, _e90, r_3.d.step_, (r_3.d.step_ * (_e95 + _e96)));
+        uint _e101 = last_j;
+        return ((r_3.origin + (float(_e101) * r_3.d.step_)) + _e99);
+    }
+    return (r_3.origin + (float(end) * r_3.d.step_));
+}
+
+float fur_rows_invert_between(FurRows r_4, float t0_, float t1_, float u_2)
+{
+    float inset_1 = ((t1_ - t0_) * 9.536743e-7);
+    const float _e7 = fur_unit(u_2);
+    float t_3 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_1), (t1_ - inset_1));
+    const float _e14 = fur_rows_invert(r_4, t_3);
+    return _e14;
+}
+
+float3 fur_m_cdf(float x_7)
+{
+    float3 out_ = (0.0).xxx;
+    uint g = 0u;
+
+    const uint _e2 = fur_word(4u);
+    const FurAxis _e5 = fur_axis(true, 0.15915494, _e2);
+    const FurLoc _e6 = fur_locate(_e5, x_7);
+    const FurDensity _e8 = fur_density(0u);
+    float off = (_e6.w * _e8.step_);
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e44 = g;
+            g = (_e44 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e17 = g;
+        if ((_e17 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g;
+            const FurDensity _e21 = fur_density(_e20);
+            const float _e24 = fur_node(_e21, 0u, _e6.i);
+            const float _e29 = fur_node(_e21, 0u, (_e6.i + 1u));
+            float at_1 = (_e24 + ((_e29 - _e24) * _e6.w));
+            uint _e34 = g;
+            const float _e41 = fur_f32_at((_e21.prefix_at + (4u * _e6.i)));
+            const float _e42 = fur_linear_mass(_e24, at_1, off);
+            out_[min(uint(_e34), 2u)] = (_e41 + _e42);
+        }
+    }
+    float3 _e47 = out_;
+    return _e47;
+}
+
+float fur_row_total(FurDensity d_3, FurLoc l_1)
+{
+    const float _e17 = fur_f32_at((d_3.prefix_at + (4u * (((min(l_1.i, (d_3.rows - 1u)) * d_3.entries) + d_3.entries) - 1u))));
+    const float _e35 = fur_f32_at((d_3.prefix_at + (4u * (((min((l_1.i + 1u), (d_3.rows - 1u)) * d_3.entries) + d_3.entries) - 1u))));
+    return (_e17 + ((_e35 - _e17) * l_1.w));
+}
+
+float fur_positive(float v)
+{
+    bool local_16 = (bool)0;
+
+    const bool _e1 = fur_finite(v);
+    if (_e1) {
+        local_16 = (v > 0.0);
+    } else {
+        local_16 = false;
+    }
+    bool _e7 = local_16;
+    return (_e7 ? v : 0.0);
+}
+
+typedef float ret_Constructarray5_float_[5];
+ret_Constructarray5_float_ Constructarray5_float_(float arg0, float arg1, float arg2, float arg3, float arg4) {
+    float ret[5] = { arg0, arg1, arg2, arg3, arg4 };
+    return ret;
+}
+
+FurParts ConstructFurParts(float arg0[5], float3 arg1, float3 arg2) {
+    FurParts ret = (FurParts)0;
+    ret.a = arg0;
+    ret.mass = arg1;
+    ret.lo = arg2;
+    return ret;
+}
+
+FurParts fur_parts(float theta_r_3)
+{
+    const float3 _e3 = fur_m_cdf((theta_r_3 - FUR_HALF_PI));
+    const float3 _e6 = fur_m_cdf((theta_r_3 + FUR_HALF_PI));
+    float3 mass = max((_e6 - _e3), (0.0).xxx);
+    const uint _e14 = fur_word(5u);
+    const FurAxis _e15 = fur_axis(false, 0.63661975, _e14);
+    const FurLoc _e17 = fur_locate(_e15, abs(theta_r_3));
+    const uint _e21 = fur_word(8u);
+    const FurAxis _e22 = fur_axis(true, 0.31830987, _e21);
+    const FurLoc _e23 = fur_locate(_e22, theta_r_3);
+    const FurDensity _e25 = fur_density(6u);
+    const float _e26 = fur_row_total(_e25, _e17);
+    const FurDensity _e31 = fur_density(3u);
+    const float _e32 = fur_row_total(_e31, _e17);
+    const float _e34 = fur_positive(((2.0 * mass.x) * _e32));
+    const FurDensity _e39 = fur_density(4u);
+    const float _e40 = fur_row_total(_e39, _e17);
+    const float _e42 = fur_positive(((2.0 * mass.y) * _e40));
+    const FurDensity _e47 = fur_density(5u);
+    const float _e48 = fur_row_total(_e47, _e17);
+    const float _e50 = fur_positive(((2.0 * mass.z) * _e48));
+    const FurDensity _e52 = fur_density(7u);
+    const float _e53 = fur_row_total(_e52, _e23);
+    const float _e55 = fur_positive((_e53 * _e26));
+    const FurDensity _e57 = fur_density(8u);
+    const float _e58 = fur_row_total(_e57, _e23);
+    const float _e60 = fur_positive((_e58 * _e26));
+    float a_3[5] = Constructarray5_float_(_e34, _e42, _e50, _e55, _e60);
+    const FurParts furparts = ConstructFurParts(a_3, mass, _e3);
+    return furparts;
+}
+
+float fur_density_of(FurLookups l_2, float w_1, float cos_theta_i)
+{
+    if (!((w_1 > 0.0))) {
+        return 0.0;
+    }
+    float mean0_ = (((l_2.n[0] + l_2.n[1]) + l_2.n[2]) * 0.33333334);
+    float mean1_ = (((l_2.n[3] + l_2.n[4]) + l_2.n[5]) * 0.33333334);
+    float mean2_ = (((l_2.n[6] + l_2.n[7]) + l_2.n[8]) * 0.33333334);
+    float mean3_ = (((l_2.n[9] + l_2.n[10]) + l_2.n[11]) * 0.33333334);
+    float p_1 = ((((l_2.m[0] * mean0_) + (l_2.m[1] * mean1_)) + (l_2.m[2] * mean2_)) + ((0.5 * (l_2.ms[0] + l_2.ms[1])) * mean3_));
+    const float _e71 = fur_positive(((p_1 / w_1) / max(cos_theta_i, 1e-6)));
+    return _e71;
+}
+
+float fur_pdf_far(float theta_i_3, float theta_r_4, float phi_2)
+{
+    const bool _e3 = fur_valid(theta_i_3, theta_r_4, phi_2);
+    if (!(_e3)) {
+        return 0.0;
+    }
+    const FurParts _e6 = fur_parts(theta_r_4);
+    float w_4 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
+    const FurLookups _e21 = fur_lookups(theta_i_3, theta_r_4, phi_2);
+    const float _e22 = fur_cos_within_half_pi(theta_i_3);
+    const float _e23 = fur_density_of(_e21, w_4, _e22);
+    return _e23;
+}
+
+FurSample ConstructFurSample(float arg0, float arg1, float arg2, float3 arg3, uint arg4, bool arg5) {
+    FurSample ret = (FurSample)0;
+    ret.theta_i = arg0;
+    ret.phi = arg1;
+    ret.pdf = arg2;
+    ret.weight = arg3;
+    ret.family = arg4;
+    ret.ok = arg5;
+    return ret;
+}
+
+FurSample fur_sample_far(float theta_r_5, float3 u_3)
+{
+    FurSample out_1 = ConstructFurSample(0.0, 0.0, 0.0, (0.0).xxx, 0u, false);
+    bool local_17 = (bool)0;
+    float total = 0.0;
+    uint k_4 = 0u;
+    float acc_3 = 0.0;
+    uint c = 5u;
+    float u0_ = 0.0;
+    uint last = 5u;
+    uint k_5 = 0u;
+    float theta_i_4 = 0.0;
+    bool local_18 = (bool)0;
+
+    const bool _e11 = fur_finite(theta_r_5);
+    if (_e11) {
+        local_17 = (abs(theta_r_5) <= FUR_HALF_PI);
+    } else {
+        local_17 = false;
+    }
+    bool _e18 = local_17;
+    if (!(_e18)) {
+        FurSample _e20 = out_1;
+        const FurSample fursample = _e20;
+        return fursample;
+    }
+    const FurParts _e21 = fur_parts(theta_r_5);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e34 = k_4;
+            k_4 = (_e34 + 1u);
+        }
+        loop_init_7 = false;
+        uint _e26 = k_4;
+        if ((_e26 < 5u)) {
+        } else {
+            break;
+        }
+        {
+            float _e29 = total;
+            uint _e31 = k_4;
+            total = (_e29 + _e21.a[min(uint(_e31), 4u)]);
+        }
+    }
+    float _e37 = total;
+    if (!((_e37 > 0.0))) {
+        FurSample _e41 = out_1;
+        const FurSample fursample_1 = _e41;
+        return fursample_1;
+    }
+    const float _e43 = fur_unit(u_3.x);
+    float _e44 = total;
+    float target_mass = (_e43 * _e44);
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
+    while(true) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e76 = k_5;
+            k_5 = (_e76 + 1u);
+        }
+        loop_init_8 = false;
+        uint _e56 = k_5;
+        if ((_e56 < 5u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e60 = k_5;
+            float wk = _e21.a[min(uint(_e60), 4u)];
+            if (!((wk > 0.0))) {
+                continue;
+            }
+            uint _e65 = k_5;
+            last = _e65;
+            float _e66 = acc_3;
+            if ((target_mass < (_e66 + wk))) {
+                uint _e69 = k_5;
+                c = _e69;
+                float _e70 = acc_3;
+                const float _e73 = fur_unit(((target_mass - _e70) / wk));
+                u0_ = _e73;
+                break;
+            }
+            float _e74 = acc_3;
+            acc_3 = (_e74 + wk);
+        }
+    }
+    uint _e79 = c;
+    if ((_e79 == 5u)) {
+        uint _e82 = last;
+        c = _e82;
+        u0_ = 0.99999994;
+    }
+    float total_weight = ((((_e21.a[0] + _e21.a[1]) + _e21.a[2]) + _e21.a[3]) + _e21.a[4]);
+    float _e98 = u0_;
+    bool negative_1 = (_e98 < 0.5);
+    uint _e103 = c;
+    if ((_e103 < 3u)) {
+        uint _e106 = c;
+        const FurDensity _e107 = fur_density(_e106);
+        const FurRows _e111 = fur_rows(_e107, 0u, 0.0, -3.1415927);
+        uint _e113 = c;
+        uint _e116 = c;
+        uint _e119 = c;
+        const float _e123 = fur_rows_invert_between(_e111, _e21.lo[min(uint(_e113), 2u)], (_e21.lo[min(uint(_e116), 2u)] + _e21.mass[min(uint(_e119), 2u)]), u_3.y);
+        theta_i_4 = clamp((_e123 - theta_r_5), -1.5707964, FUR_HALF_PI);
+    } else {
+        const uint _e131 = fur_word(8u);
+        const FurAxis _e132 = fur_axis(true, 0.31830987, _e131);
+        const FurLoc _e133 = fur_locate(_e132, theta_r_5);
+        uint _e135 = c;
+        const FurDensity _e139 = fur_density(((7u + _e135) - 3u));
+        const FurRows _e143 = fur_rows(_e139, _e133.i, _e133.w, -1.5707964);
+        const float _e145 = fur_rows_total(_e143);
+        const float _e147 = fur_rows_invert_between(_e143, 0.0, _e145, u_3.y);
+        theta_i_4 = clamp(_e147, -1.5707964, FUR_HALF_PI);
+    }
+    uint _e151 = c;
+    uint family = min(_e151, 3u);
+    const uint _e157 = fur_word(5u);
+    const FurAxis _e158 = fur_axis(false, 0.63661975, _e157);
+    const FurLoc _e160 = fur_locate(_e158, abs(theta_r_5));
+    const FurDensity _e163 = fur_density((3u + family));
+    const FurRows _e167 = fur_rows(_e163, _e160.i, _e160.w, 0.0);
+    const float _e169 = fur_rows_total(_e167);
+    const float _e171 = fur_rows_invert_between(_e167, 0.0, _e169, u_3.z);
+    float abs_phi_1 = clamp(_e171, 0.0, FUR_PI);
+    const float _e177 = fur_wrap_angle((negative_1 ? -(abs_phi_1) : abs_phi_1));
+    float _e178 = theta_i_4;
+    const FurLookups _e179 = fur_lookups(_e178, theta_r_5, _e177);
+    float _e180 = theta_i_4;
+    const float _e181 = fur_cos_within_half_pi(_e180);
+    const float _e182 = fur_density_of(_e179, total_weight, _e181);
+    if ((_e182 > 0.0)) {
+        const bool _e187 = fur_finite(_e182);
+        local_18 = _e187;
+    } else {
+        local_18 = false;
+    }
+    bool _e189 = local_18;
+    if (!(_e189)) {
+        FurSample _e191 = out_1;
+        const FurSample fursample_2 = _e191;
+        return fursample_2;
+    }
+    const FurFamilies _e192 = fur_assemble(_e179);
+    float _e193 = theta_i_4;
+    float k_7 = (max(cos(_e193), 0.0) / _e182);
+    float _e198 = theta_i_4;
+    out_1 = ConstructFurSample(_e198, _e177, _e182, max((_e192.total * k_7), (0.0).xxx), family, true);
+    FurSample _e206 = out_1;
+    const FurSample fursample_3 = _e206;
+    return fursample_3;
 }
 
 typedef float3 ret_Constructarray5_float3_[5];
@@ -676,38 +1363,38 @@ ret_Constructarray5_float3_ Constructarray5_float3_(float3 arg0, float3 arg1, fl
 
 void fur_store(uint q, FurFamilies f_1)
 {
-    uint k_3 = 0u;
+    uint k_6 = 0u;
 
-    uint base = (16u * q);
+    uint base_1 = (16u * q);
     float3 parts[5] = Constructarray5_float3_(f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total);
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e46 = k_3;
-            k_3 = (_e46 + 1u);
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e46 = k_6;
+            k_6 = (_e46 + 1u);
         }
-        loop_init_5 = false;
-        uint _e12 = k_3;
+        loop_init_9 = false;
+        uint _e12 = k_6;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_3;
-            uint _e21 = k_3;
-            fur_results.Store((base + (3u * _e17))*4, asuint(parts[min(uint(_e21), 4u)].x));
-            uint _e26 = k_3;
-            uint _e32 = k_3;
-            fur_results.Store(((base + (3u * _e26)) + 1u)*4, asuint(parts[min(uint(_e32), 4u)].y));
-            uint _e37 = k_3;
-            uint _e43 = k_3;
-            fur_results.Store(((base + (3u * _e37)) + 2u)*4, asuint(parts[min(uint(_e43), 4u)].z));
+            uint _e17 = k_6;
+            uint _e21 = k_6;
+            fur_results.Store((base_1 + (3u * _e17))*4, asuint(parts[min(uint(_e21), 4u)].x));
+            uint _e26 = k_6;
+            uint _e32 = k_6;
+            fur_results.Store(((base_1 + (3u * _e26)) + 1u)*4, asuint(parts[min(uint(_e32), 4u)].y));
+            uint _e37 = k_6;
+            uint _e43 = k_6;
+            fur_results.Store(((base_1 + (3u * _e37)) + 2u)*4, asuint(parts[min(uint(_e43), 4u)].z));
         }
     }
-    fur_results.Store((base + 15u)*4, asuint(0.0));
+    fur_results.Store((base_1 + 15u)*4, asuint(0.0));
     return;
 }
 
@@ -725,8 +1412,8 @@ void fur_eval_main(uint3 id : SV_DispatchThreadID)
     if ((q_2 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_3 = asfloat(fur_queries.Load4(q_2*16));
-    const FurFamilies _e11 = fur_eval_far(a_3.x, a_3.y, a_3.z);
+    float4 a_4 = asfloat(fur_queries.Load4(q_2*16));
+    const FurFamilies _e11 = fur_eval_far(a_4.x, a_4.y, a_4.z);
     fur_store(q_2, _e11);
     return;
 }
@@ -743,5 +1430,39 @@ void fur_eval_dirs_main(uint3 id_1 : SV_DispatchThreadID)
     float4 _e29 = asfloat(fur_queries.Load4(((3u * q_3) + 2u)*16));
     const FurFamilies _e31 = fur_eval_far_dirs(_e13.xyz, _e21.xyz, _e29.xyz);
     fur_store(q_3, _e31);
+    return;
+}
+
+[numthreads(64, 1, 1)]
+void fur_sample_main(uint3 id_2 : SV_DispatchThreadID)
+{
+    uint q_4 = id_2.x;
+    if ((q_4 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+        return;
+    }
+    float4 a_5 = asfloat(fur_queries.Load4(q_4*16));
+    const FurSample _e10 = fur_sample_far(a_5.x, a_5.yzw);
+    uint base_2 = (16u * q_4);
+    fur_results.Store(base_2*4, asuint(_e10.theta_i));
+    fur_results.Store((base_2 + 1u)*4, asuint(_e10.phi));
+    fur_results.Store((base_2 + 2u)*4, asuint(_e10.pdf));
+    fur_results.Store((base_2 + 3u)*4, asuint(_e10.weight.x));
+    fur_results.Store((base_2 + 4u)*4, asuint(_e10.weight.y));
+    fur_results.Store((base_2 + 5u)*4, asuint(_e10.weight.z));
+    fur_results.Store((base_2 + 6u)*4, asuint(float(_e10.family)));
+    fur_results.Store((base_2 + 7u)*4, asuint((_e10.ok ? 1.0 : 0.0)));
+    return;
+}
+
+[numthreads(64, 1, 1)]
+void fur_pdf_main(uint3 id_3 : SV_DispatchThreadID)
+{
+    uint q_5 = id_3.x;
+    if ((q_5 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+        return;
+    }
+    float4 a_6 = asfloat(fur_queries.Load4(q_5*16));
+    const float _e15 = fur_pdf_far(a_6.x, a_6.y, a_6.z);
+    fur_results.Store((16u * q_5)*4, asuint(_e15));
     return;
 }

@@ -48,6 +48,7 @@ Examples:
   viewer probe --preset human-hair --theta-i 30 --theta-r -20 --phi 45 --pdf
   viewer probe --lut luts/yan-row-a.exr --theta-i 30 --theta-r -20 --phi 45
   printf '30 -20 45\\n0 0 180\\n' | viewer probe --lut luts/yan-row-a.furlut --pdf --stdin
+  viewer probe --lut luts/yan-row-a.furlut --gpu --theta-i 30 --theta-r -20 --phi 45 --pdf
 
 A LUT (.exr or .furlut, told apart by content) holds the far field only, and --pdf is a
 far-field density: with --lut or --pdf, --h and stdin lines with h are errors.
@@ -155,6 +156,11 @@ pub struct CompareArgs {
     #[arg(long)]
     pub no_images: bool,
 
+    /// Also render the fur patch through the WGSL shader on the first GPU adapter and print
+    /// its mean relative difference to the CPU's baked render (no adapter: exit 2).
+    #[arg(long)]
+    pub gpu: bool,
+
     /// Cache of the medulla profiles (default: $FUR_BCSDF_CACHE, else
     /// ${XDG_CACHE_HOME:-$HOME/.cache}/fur-bcsdf). A DIR given here that cannot be written
     /// is an error (exit code 1); an unusable default directory is skipped with a note.
@@ -236,6 +242,12 @@ pub struct ProbeArgs {
     /// angle, of omega_i given omega_r (what `viewer sample` draws from), as the last key.
     #[arg(long)]
     pub pdf: bool,
+
+    /// With --lut: evaluate through the WGSL shader (bcsdf-core/shaders/fur_bcsdf.wgsl) on
+    /// the first GPU adapter (Vulkan; without a GPU, Mesa's software driver: Debian packages
+    /// mesa-vulkan-drivers and libvulkan1). Same output as without it. No adapter: exit 2.
+    #[arg(long, requires = "lut", conflicts_with = "h")]
+    pub gpu: bool,
 
     #[command(flatten)]
     pub profiles: ProfileArgs,

@@ -329,6 +329,19 @@ fn compare_file(
     let owned = analytic_model(&header, lut, args)?;
     let analytic = owned.model();
 
+    if args.gpu {
+        let (adapter, diff) = crate::gpu::render_difference(&file.blob, &baked)
+            .map_err(|e| Failure::Input(format!("--gpu: {e}")))?;
+        print(&format!(
+            "{}: fur render through the GPU shader on {adapter}: mean relative difference to the CPU's baked render R {:.2e} G {:.2e} B {:.2e}\n",
+            lut.display(),
+            diff[0],
+            diff[1],
+            diff[2]
+        ))
+        .map_err(|e| Failure::Fatal(e.into()))?;
+    }
+
     let t = Instant::now();
     let errors = metrics::compare(&analytic, &baked, &MetricSet::DEFAULT);
     let metric_seconds = t.elapsed().as_secs_f64();

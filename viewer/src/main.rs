@@ -5,6 +5,7 @@ mod cli;
 mod compare;
 mod error;
 mod figures;
+mod gpu;
 mod json;
 mod plot;
 mod probe;
@@ -17,6 +18,11 @@ use clap::Parser;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
+    // Mesa's Vulkan driver complains on stderr when XDG_RUNTIME_DIR is unset; for --gpu, give
+    // it the temporary directory, here, before any thread exists.
+    if std::env::args_os().any(|a| a == "--gpu") && std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+    }
     let result = match cli::Cli::parse().command {
         cli::Command::Presets(args) => catalog::list(&args),
         cli::Command::Probe(args) => probe::run(&args),

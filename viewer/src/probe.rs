@@ -110,6 +110,9 @@ pub fn parse_line(line: &str) -> Result<Option<Query>, String> {
 /// `viewer probe`.
 pub fn run(args: &ProbeArgs) -> Result<(), Error> {
     let source = Source::load(&args.model, &args.profiles)?;
+    if args.gpu {
+        return run_gpu(args, &source);
+    }
     let target = source.target()?;
     let mut out = BufWriter::new(io::stdout().lock());
     if args.stdin {
@@ -164,6 +167,69 @@ pub fn run_stdin<R: BufRead, W: Write>(
     }
     out.flush()?;
     Ok(())
+}
+
+/// `viewer probe --lut FILE --gpu`: the same queries and output, evaluated by the WGSL shader
+/// on the first adapter, in one dispatch per run (per malformed-line stop with --stdin).
+fn run_gpu(args: &ProbeArgs, source: &Source) -> Result<(), Error> {
+    let Source::Baked { blob, .. } = source else {
+        return Err(Error::input("--gpu needs --lut FILE"));
+    };
+    let gpu = bcsdf_gpu::GpuLut::new(blob).map_err(|e| Error::input(format!("--gpu: {e}")))?;
+    let mut out = BufWriter::new(io::stdout().lock());
+    let mut queries = Vec::new();
+    let mut failure = None;
+    if args.stdin {
+        let mut line_no = 0usize;
+        for line in io::stdin().lock().split(b'\n') {
+            line_no += 1;
+            let parsed = std::str::from_utf8(&line?)
+                .map_err(|_| "not valid UTF-8".to_string())
+                .and_then(parse_line);
+            match parsed {
+                Ok(Some(q)) if q.h.is_some() => {
+                    failure = Some(format!(
+                        "line {line_no}: h = {} asks for the near field, but a LUT holds the far field only (expected `theta_i theta_r phi`)",
+                        q.h.unwrap_or(0.0)
+                    ));
+                    break;
+                }
+                Ok(Some(q)) => queries.push(q),
+                Ok(None) => {}
+                Err(message) => {
+                    failure = Some(format!("line {line_no}: {message}"));
+                    break;
+                }
+            }
+        }
+    } else {
+        let (Some(ti), Some(tr), Some(phi)) = (args.theta_i, args.theta_r, args.phi) else {
+            return Err(Error::input("--theta-i, --theta-r and --phi are required"));
+        };
+        queries.push(Query::new(ti, tr, phi, None).map_err(Error::input)?);
+    }
+    let angles: Vec<[f32; 3]> = queries
+        .iter()
+        .map(|q| [q.angles.theta_i(), q.angles.theta_r(), q.angles.phi()])
+        .collect();
+    let gpu_error = |e: bcsdf_gpu::GpuError| Error::Failure(format!("--gpu: {e}"));
+    let values = gpu.eval(&angles).map_err(gpu_error)?;
+    let pdfs = if args.pdf {
+        Some(gpu.pdf(&angles).map_err(gpu_error)?)
+    } else {
+        None
+    };
+    for (k, v) in values.iter().enumerate() {
+        let families = bcsdf_core::Families::from_array(core::array::from_fn(|f| {
+            bcsdf_core::Rgb([v[3 * f], v[3 * f + 1], v[3 * f + 2]])
+        }));
+        write_families(&mut out, &families, pdfs.as_ref().map(|p| p[k]))?;
+    }
+    out.flush()?;
+    match failure {
+        Some(message) => Err(Error::input(message)),
+        None => Ok(()),
+    }
 }
 
 #[cfg(test)]

@@ -126,6 +126,24 @@ fn scale(f: &[Rgb; FAMILY_COUNT], k: f32) -> [Rgb; FAMILY_COUNT] {
     f.map(|v| v * k)
 }
 
+/// The far-field queries the render makes: one per fiber segment with a valid direction
+/// (the GPU check evaluates exactly these in one batch).
+pub fn segment_angles() -> Vec<Angles> {
+    scene()
+        .iter()
+        .flat_map(|fiber| {
+            fiber
+                .points
+                .windows(2)
+                .filter_map(|w| {
+                    let t = [w[1][0] - w[0][0], w[1][1] - w[0][1], w[1][2] - w[0][2]];
+                    Angles::from_directions::<Libm>(LIGHT, VIEW, t).ok()
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
 /// Renders the patch with both evaluators (segments evaluated in parallel, compositing in a
 /// fixed order: the same bits for any thread count).
 pub fn render<A, B>(analytic: &A, baked: &B) -> Renders

@@ -865,3 +865,160 @@ fn help_documents_sample_lut_and_pdf() {
         assert!(probe.contains(needle), "probe --help lacks {needle}");
     }
 }
+
+/// `viewer probe --lut FILE --gpu`: the shader's answers agree with the CPU's line for line
+/// (1e-5 relative to max(value, 1e-3·the line's largest)) for single queries and --stdin,
+/// with and without --pdf. Skipped without an adapter unless FUR_BCSDF_REQUIRE_GPU=1.
+#[test]
+fn probe_gpu_agrees_with_the_cpu() {
+    let lut = path_str(&baked_lut().furlut).to_string();
+    let input: String = ANGLES
+        .iter()
+        .map(|a| format!("{} {} {}\n", a[0], a[1], a[2]))
+        .collect();
+    let o = viewer(
+        &["probe", "--lut", &lut, "--gpu", "--pdf", "--stdin"],
+        Some(&input),
+    );
+    if o.status.code() == Some(2) && text(&o.stderr).contains("no GPU adapter") {
+        assert_ne!(
+            std::env::var("FUR_BCSDF_REQUIRE_GPU").as_deref(),
+            Ok("1"),
+            "FUR_BCSDF_REQUIRE_GPU=1 but {}",
+            text(&o.stderr)
+        );
+        println!("skipped: no GPU adapter");
+        return;
+    }
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let gpu = text(&o.stdout);
+    let cpu = ok(&["probe", "--lut", &lut, "--pdf", "--stdin"], Some(&input));
+    assert_eq!(gpu.lines().count(), ANGLES.len());
+    for (g, c) in gpu.lines().zip(cpu.lines()) {
+        let (g, c) = (tokens(g), tokens(c));
+        assert_eq!(g.len(), c.len());
+        let peak = c
+            .iter()
+            .flat_map(|(_, v)| v.iter().copied())
+            .fold(0.0f32, f32::max);
+        for ((gk, gv), (ck, cv)) in g.iter().zip(&c) {
+            assert_eq!(gk, ck);
+            for (x, y) in gv.iter().zip(cv) {
+                let scale = y.abs().max(1e-3 * peak).max(f32::MIN_POSITIVE);
+                assert!((x - y).abs() <= 1e-5 * scale, "{gk}: gpu {x} cpu {y}");
+            }
+        }
+    }
+    // A single query gives the same line as the first stdin line.
+    let a = angle_strings(&ANGLES[0]);
+    let single = ok(
+        &[
+            "probe",
+            "--lut",
+            &lut,
+            "--gpu",
+            "--pdf",
+            "--theta-i",
+            &a[0],
+            "--theta-r",
+            &a[1],
+            "--phi",
+            &a[2],
+        ],
+        None,
+    );
+    assert_eq!(one_line(&single), gpu.lines().next().unwrap());
+    // A bad stdin line stops after the answers before it, naming the line.
+    let o = bad_input(
+        &["probe", "--lut", &lut, "--gpu", "--stdin"],
+        Some("10 20 30\n1 2\n"),
+        &["line 2:"],
+    );
+    assert_eq!(text(&o.stdout).lines().count(), 1);
+}
+
+/// --gpu without an adapter (the Vulkan loader pointed at no driver) exits 2 with one
+/// `error:` line naming the missing driver; --gpu without --lut is a usage error.
+#[test]
+fn probe_gpu_without_adapter_or_lut_is_bad_input() {
+    let lut = path_str(&baked_lut().furlut).to_string();
+    let o = Command::new(env!("CARGO_BIN_EXE_viewer"))
+        .args([
+            "probe",
+            "--lut",
+            &lut,
+            "--gpu",
+            "--theta-i",
+            "1",
+            "--theta-r",
+            "2",
+            "--phi",
+            "3",
+        ])
+        .env("VK_ICD_FILENAMES", "/nonexistent.json")
+        .env("VK_DRIVER_FILES", "/nonexistent.json")
+        .output()
+        .unwrap();
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err:?}");
+    assert!(
+        err.starts_with("error: --gpu: no GPU adapter") && err.contains("mesa-vulkan-drivers"),
+        "{err}"
+    );
+    let o = viewer(
+        &[
+            "probe",
+            "--preset",
+            PRESET,
+            "--gpu",
+            "--theta-i",
+            "1",
+            "--theta-r",
+            "2",
+            "--phi",
+            "3",
+        ],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("--lut"), "{}", text(&o.stderr));
+}
+
+/// `viewer compare LUT.exr --gpu`: the fur render through the shader differs from the CPU's
+/// baked render by at most 1e-5 (mean relative, per channel). Skipped without an adapter
+/// unless FUR_BCSDF_REQUIRE_GPU=1.
+#[test]
+fn compare_gpu_reports_the_render_difference() {
+    let exr = path_str(exr_file()).to_string();
+    let o = viewer(&["compare", &exr, "--gpu", "--no-images"], None);
+    let err = text(&o.stderr);
+    if o.status.code() == Some(2) && err.contains("no GPU adapter") {
+        assert_ne!(
+            std::env::var("FUR_BCSDF_REQUIRE_GPU").as_deref(),
+            Ok("1"),
+            "FUR_BCSDF_REQUIRE_GPU=1 but {err}"
+        );
+        println!("skipped: no GPU adapter");
+        return;
+    }
+    assert!(o.status.success(), "{err}");
+    let out = text(&o.stdout);
+    let line = out
+        .lines()
+        .find(|l| l.contains("fur render through the GPU shader"))
+        .unwrap_or_else(|| panic!("no GPU line in {out}"));
+    let values: Vec<f64> = ["R ", "G ", "B "]
+        .iter()
+        .map(|c| {
+            let at = line.rfind(c).unwrap() + 2;
+            line[at..]
+                .split_whitespace()
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap()
+        })
+        .collect();
+    assert!(values.iter().all(|v| *v <= 1e-5), "{line}");
+}

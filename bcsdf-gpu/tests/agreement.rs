@@ -170,6 +170,18 @@ fn gpu_matches_cpu_for_every_preset() {
             .map(|v| flatten(Bcsdf::eval_dirs(&cpu_lut, v[0], v[1], v[2])))
             .collect();
         let got = g.eval_dirs(&vq).unwrap();
+        // The edge cases (the last five: grazing, zero, NaN) meet the angle budget.
+        let edges = vq.len() - 5;
+        let (e_edge, _) = worst(&cpu[edges..], &got[edges..]);
+        println!(
+            "{}: vector edge cases, worst relative difference {e_edge:.2e}",
+            preset.name
+        );
+        assert!(
+            e_edge <= RELATIVE,
+            "{}: vector edge cases {e_edge}",
+            preset.name
+        );
         let (e, at) = worst(&cpu, &got);
         println!(
             "{}: {} vector queries, worst relative difference {e:.2e}",

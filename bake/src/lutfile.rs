@@ -48,6 +48,9 @@
 //! detected by the blob checksum, and any change to the preset name or error summary by
 //! `meta_checksum`. The attributes of each part are written sorted by name, so the same LUT
 //! always gives the same file bytes.
+//!
+//! Over 600 lines: it mixes error plumbing, EXR attributes and blob I/O; the split into
+//! `lutfile/{exr, blob, error}` is issue 13 (maintainability), not done yet.
 
 use std::collections::HashMap;
 use std::fmt;

@@ -64,6 +64,9 @@
 //! reported before any generation work: pass no cache directory to work without a cache.
 //! A read-only directory that already holds a valid file for the key is fine (a hit only
 //! reads).
+//!
+//! Over 600 lines: generation, the cache format and model building; the split into
+//! `profiles/{generate, cache, model}` is issue 13 (maintainability), not done yet.
 
 use bcsdf_core::medulla::{
     generate_cm_row, generate_cn_cell, MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout,

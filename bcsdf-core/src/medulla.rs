@@ -15,6 +15,9 @@
 //! - C^M: `[half][θ'_in][θ'_out]`, half 0 = back, 1 = front; θ'_in on `n_in` nodes spanning
 //!   `[0, theta_in_max]` (negative by C(out | in) = C(−out | −in)); θ'_out in `n_out` bins of
 //!   [−π/2, π/2]. Angles are of the **travel** direction inside the medulla.
+//!
+//! Over 600 lines: layout, the two photon walks and the table lookups (with their sampling)
+//! in one file; splitting generation from lookup is left to issue 13.
 
 use crate::math::{wrap_angle, PI, TAU};
 use crate::params::FurParams;

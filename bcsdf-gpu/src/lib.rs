@@ -56,6 +56,13 @@ pub const MAX_DISPATCH: usize = 64 * 16_384;
 /// One far-field result: R, TT, TRT, scattered (RGB each), then the total (RGB).
 pub type GpuFamilies = [f32; 15];
 
+/// A GPU result as the CPU's per-family type (the total is recomputed by `Families::total`).
+pub fn families(v: &GpuFamilies) -> bcsdf_core::Families {
+    bcsdf_core::Families::from_array(core::array::from_fn(|f| {
+        bcsdf_core::Rgb([v[3 * f], v[3 * f + 1], v[3 * f + 2]])
+    }))
+}
+
 /// A validated LUT on a GPU device, with the compute pipelines of the evaluator.
 pub struct GpuLut {
     device: wgpu::Device,

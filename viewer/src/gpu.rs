@@ -3,7 +3,7 @@
 
 use crate::render;
 use bcsdf_core::baked::BakedBcsdf;
-use bcsdf_core::{Angles, Bcsdf, Families, Libm, Rgb, SampledDirection};
+use bcsdf_core::{Angles, Bcsdf, Families, Libm, SampledDirection};
 use std::collections::HashMap;
 
 /// Far-field values computed elsewhere (on the GPU) for a known set of angles, served as a
@@ -45,12 +45,7 @@ pub fn render_difference(blob: &[u8], cpu: &BakedBcsdf<'_>) -> Result<(String, [
     let map = angles
         .iter()
         .zip(&values)
-        .map(|(a, v)| {
-            let f = Families::from_array(core::array::from_fn(|k| {
-                Rgb([v[3 * k], v[3 * k + 1], v[3 * k + 2]])
-            }));
-            (key(a), f)
-        })
+        .map(|(a, v)| (key(a), bcsdf_gpu::families(v)))
         .collect();
     let renders = render::render(cpu, &Precomputed(map));
     Ok((gpu.adapter_name(), renders.mean_relative_difference()))

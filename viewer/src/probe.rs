@@ -220,9 +220,7 @@ fn run_gpu(args: &ProbeArgs, source: &Source) -> Result<(), Error> {
         None
     };
     for (k, v) in values.iter().enumerate() {
-        let families = bcsdf_core::Families::from_array(core::array::from_fn(|f| {
-            bcsdf_core::Rgb([v[3 * f], v[3 * f + 1], v[3 * f + 2]])
-        }));
+        let families = bcsdf_gpu::families(v);
         write_families(&mut out, &families, pdfs.as_ref().map(|p| p[k]))?;
     }
     out.flush()?;

@@ -4,7 +4,8 @@
 //! analytic far field into half-float tables ([`tables`]), writing and reading them as
 //! OpenEXR and raw blobs ([`lutfile`]), the shared baked-vs-analytic error metrics
 //! ([`metrics`]), one preset end to end ([`pipeline`], used by the `bake` binary) — plus
-//! preset files, `key=value` parameter overrides, and generating (in parallel) and caching
+//! preset files, `key=value` parameter overrides, splitting a preset list over N jobs
+//! ([`shard`], `bake --shard K/N`), and generating (in parallel) and caching
 //! the medulla profiles the full model needs ([`profiles`]).
 //!
 //! ```
@@ -22,6 +23,7 @@ pub mod overrides;
 pub mod pipeline;
 pub mod presets;
 pub mod profiles;
+pub mod shard;
 pub mod tables;
 
 pub use overrides::{apply_overrides, Override, OverrideError, OverrideErrorKind, OverrideValue};

@@ -5,6 +5,7 @@ use bake::metrics::{ErrorBudget, MetricSet};
 use bake::pipeline::{self, BakeOptions, BakeReport, Step};
 use bake::presets::{self, NamedPreset};
 use bake::profiles::{self, ProfileOptions};
+use bake::shard::Shard;
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::{PhotonBudget, Resolution};
 use clap::Parser;
@@ -21,6 +22,7 @@ Examples:
   bake --presets my-presets.toml --preset my-fur --out luts
   bake --all --out luts --res-phi 181 --res-theta-r 64 --threads 2
   bake --all --out luts --no-cache          (regenerate the medulla profiles)
+  bake --presets variants.toml --shard 0/8 --out luts   (the first of 8 jobs; K = 0..7)
 
 Writes <OUT>/<preset>.exr (one f16 layer per table, metadata attributes: versions, parameters,
 axes, scales, profile provenance, measured error) and <OUT>/<preset>.furlut (the raw
@@ -30,7 +32,18 @@ never leaves a partial LUT under the final name. The table layout is in docs/lut
 
 Exit codes: 0 all presets baked within the error budget; 1 I/O failure (e.g. unwritable
 output directory, disk full); 2 bad input (unknown preset, invalid preset file or value);
-3 a preset exceeds the error budget (its files are still written, for inspection).";
+3 a preset exceeds the error budget (its files are still written, for inspection).
+
+Sharding (--shard K/N), for job schedulers: K counts from 0 (0 to N-1), like Slurm's
+SLURM_ARRAY_TASK_ID with --array=0-(N-1), Kubernetes' JOB_COMPLETION_INDEX, and GNU parallel
+fed with `seq 0 N-1` (not {#} or {%}, which count from 1). Preset i of the list (from 0,
+in file order) belongs to shard i mod N: the N shards are disjoint, together bake every preset
+once, and shard K always bakes the same presets for the same file (appending presets moves
+none of the existing ones). A shard with no presets (N above the preset count) succeeds and
+writes nothing. Shards may share --out and the profile cache: bake writes only
+<OUT>/<preset>.exr and <OUT>/<preset>.furlut (each via a uniquely named temporary file), and
+the summary goes to standard output, so concurrent shards never write the same file (cache
+files are written the same way; two shards making the same one write identical bytes).";
 
 /// Bake fur presets into half-float lookup tables of the full far-field BCSDF (unscattered
 /// and medulla-scattered lobes), and measure them against the analytic model.
@@ -38,12 +51,18 @@ output directory, disk full); 2 bad input (unknown preset, invalid preset file o
 #[command(name = "bake", version, after_help = EXAMPLES)]
 struct Cli {
     /// Bake this preset (repeatable).
-    #[arg(long, value_name = "NAME", required_unless_present = "all")]
+    #[arg(long, value_name = "NAME", required_unless_present_any = ["all", "shard"])]
     preset: Vec<String>,
 
     /// Bake every preset (of --presets FILE, or the built-in ones).
     #[arg(long, conflicts_with = "preset")]
     all: bool,
+
+    /// Bake only shard K of N of all the presets (of --presets FILE, or the built-in ones):
+    /// those at positions i with i mod N = K, counting from 0 in file order; K is 0 to N-1.
+    /// Implies --all; not with --preset. See "Sharding" below.
+    #[arg(long, value_name = "K/N", conflicts_with = "preset")]
+    shard: Option<String>,
 
     /// Read presets from FILE (same format as bcsdf-core/presets.toml) instead of the
     /// built-in ones.
@@ -123,11 +142,29 @@ fn main() -> ExitCode {
     }
 }
 
-fn select(cli: &Cli) -> Result<Vec<NamedPreset>, Failure> {
+fn select(cli: &Cli, shard: Option<Shard>) -> Result<Vec<NamedPreset>, Failure> {
     let all = match &cli.presets {
         Some(path) => presets::load_file(path).map_err(input)?,
         None => presets::builtin().map_err(input)?,
     };
+    if let Some(shard) = shard {
+        let selected = shard.select(&all);
+        let names: Vec<&str> = selected.iter().map(|p| p.name.as_str()).collect();
+        if selected.is_empty() {
+            eprintln!(
+                "shard {shard}: no presets (the list has {}), nothing to bake",
+                all.len()
+            );
+        } else {
+            eprintln!(
+                "shard {shard}: {} of {} presets ({})",
+                selected.len(),
+                all.len(),
+                names.join(", ")
+            );
+        }
+        return Ok(selected);
+    }
     if cli.all {
         return Ok(all);
     }
@@ -193,7 +230,13 @@ fn spinner(name: &str) -> ProgressBar {
 
 fn run(cli: Cli) -> Result<u8, Failure> {
     let budget = ErrorBudget::parse(&cli.budget).map_err(input)?;
-    let selected = select(&cli)?;
+    let shard = cli
+        .shard
+        .as_deref()
+        .map(str::parse::<Shard>)
+        .transpose()
+        .map_err(input)?;
+    let selected = select(&cli, shard)?;
     let mut opts = options(&cli)?;
     if let Some(n) = cli.threads {
         rayon::ThreadPoolBuilder::new()
@@ -234,7 +277,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
         }
         reports.push(report);
     }
-    print_summary(&reports, &budget, &opts.res);
+    print_summary(&reports, &budget, &opts.res, &opts.out_dir);
     let failed = reports
         .iter()
         .filter_map(|r| r.errors.as_ref().map(|e| (r, budget.check(e))))
@@ -259,7 +302,12 @@ fn bake_failure(e: pipeline::BakeError) -> Failure {
     }
 }
 
-fn print_summary(reports: &[BakeReport], budget: &ErrorBudget, res: &LutResolution) {
+fn print_summary(
+    reports: &[BakeReport],
+    budget: &ErrorBudget,
+    res: &LutResolution,
+    out_dir: &std::path::Path,
+) {
     let pct = |v: f64| format!("{:.3}%", 100.0 * v);
     println!(
         "LUT resolution: n_sum {} | n_theta_r {} x n_phi {} | n_ms {} x {}   budget: E1 {} E_albedo {} E_peak {}",
@@ -321,11 +369,9 @@ fn print_summary(reports: &[BakeReport], budget: &ErrorBudget, res: &LutResoluti
             verdict
         );
     }
-    if let Some(dir) = reports.first().and_then(|r| r.exr.parent()) {
-        println!(
-            "wrote {} LUTs (.exr and .furlut) to {}",
-            reports.len(),
-            dir.display()
-        );
-    }
+    println!(
+        "wrote {} LUTs (.exr and .furlut) to {}",
+        reports.len(),
+        out_dir.display()
+    );
 }

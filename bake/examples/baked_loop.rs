@@ -33,17 +33,58 @@ fn main() {
             .unwrap()
         })
         .collect();
-    // Arguments: evaluations (default 20M), index mask into the 256 queries (default 255).
-    let mask: usize = std::env::args()
-        .nth(2)
-        .map_or(255, |s| s.parse::<usize>().unwrap() & 255);
-    let n: usize = std::env::args()
-        .nth(1)
-        .map_or(20_000_000, |s| s.parse().unwrap());
+    // Arguments: evaluations (default 20M), index mask into the 256 queries (default 255),
+    // batch size (default 0: the scalar `eval_far`; `dirs`: the scalar `eval_far_dirs` on the
+    // same queries as vectors; otherwise `eval_far_batch` over consecutive batches of that
+    // size cycling through the 256 queries; the mask is ignored).
+    let arg = |k: usize| std::env::args().nth(k);
+    let n: usize = arg(1).map_or(20_000_000, |s| s.parse().unwrap());
+    let mask: usize = arg(2).map_or(255, |s| s.parse::<usize>().unwrap() & 255);
+    let mode = arg(3).unwrap_or_default();
+    let batch: usize = if mode == "dirs" {
+        0
+    } else {
+        mode.parse().unwrap_or(0)
+    };
     let t = Instant::now();
     let mut acc = 0.0f32;
-    for i in 0..n {
-        acc += black_box(&lut).eval_far(black_box(&qs[i & mask])).total().0[0];
+    if mode == "dirs" {
+        // Tangent along z, ω_r in the x-z plane; φ = φ_r − φ_i, so ω_i's azimuth is −φ.
+        let dirs: Vec<[[f32; 3]; 3]> = qs
+            .iter()
+            .map(|a| {
+                let (ti, tr, phi) = (a.theta_i(), a.theta_r(), a.phi());
+                [
+                    [ti.cos() * (-phi).cos(), ti.cos() * (-phi).sin(), ti.sin()],
+                    [tr.cos(), 0.0, tr.sin()],
+                    [0.0, 0.0, 1.0],
+                ]
+            })
+            .collect();
+        for i in 0..n {
+            let [wi, wr, u] = *black_box(&dirs[i & mask]);
+            acc += black_box(black_box(&lut).eval_far_dirs(wi, wr, u).total()).0[0];
+        }
+    } else if batch == 0 {
+        for i in 0..n {
+            // black_box on the whole RGB result: all three channels are computed.
+            acc += black_box(black_box(&lut).eval_far(black_box(&qs[i & mask])).total()).0[0];
+        }
+    } else {
+        // The 256 queries as structure-of-arrays, twice over so a batch can start anywhere.
+        let soa = |f: fn(&Angles) -> f32| -> Vec<f32> { qs.iter().chain(&qs).map(f).collect() };
+        let (ti, tr, phi) = (soa(Angles::theta_i), soa(Angles::theta_r), soa(Angles::phi));
+        let batch = batch.min(256);
+        let mut out = vec![bcsdf_core::Rgb::ZERO; batch];
+        let mut start = 0;
+        for _ in 0..n / batch {
+            let r = start..start + batch;
+            black_box(&lut)
+                .eval_far_batch(&ti[r.clone()], &tr[r.clone()], &phi[r], black_box(&mut out))
+                .unwrap();
+            acc += black_box(&out)[0].0[0];
+            start = (start + batch) & 255;
+        }
     }
     let dt = t.elapsed().as_secs_f64();
     println!("{:.2} ns/eval (acc {acc})", dt / n as f64 * 1e9);

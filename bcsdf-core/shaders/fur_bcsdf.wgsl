@@ -249,138 +249,75 @@ fn fur_eval_far(theta_i: f32, theta_r: f32, phi: f32) -> FurFamilies {
     return fur_assemble(fur_lookups(theta_i, theta_r, phi));
 }
 
-// asin and atan2 as the CPU's default math backend computes them (the libm crate's asinf and
-// atan2f, i.e. musl's algorithms: argument reduction and the same minimax polynomials), so
-// that angles from vectors agree to an ulp or two; the GPU built-ins are far less precise
-// (llvmpipe's moved results by 1e-2 on a lobe's flank). asinf's last branch runs in f64 on
-// the CPU and in f32 here.
-fn fur_asin_r(z: f32) -> f32 {
-    let p = z * (1.6666586697e-01 + z * (-4.2743422091e-02 + z * -8.6563630030e-03));
-    let q = 1.0 + z * -7.0662963390e-01;
-    return p / q;
-}
-
+// asin and atan2 as the baked evaluator's direction conversion computes them on the CPU
+// (math::asin_polynomial, math::atan2_polynomial, frame::polynomial_angles): branch-free
+// polynomials with the same operations in the same order, so that angles from vectors agree
+// to an ulp or two; the GPU built-ins are far less precise (llvmpipe's moved results by 1e-2
+// on a lobe's flank).
 fn fur_asin(x: f32) -> f32 {
-    let ix = bitcast<u32>(x) & 0x7fffffffu;
-    if (ix >= 0x3f800000u) {
-        return sign(x) * FUR_HALF_PI;
-    }
-    if (ix < 0x3f000000u) {
-        if (ix < 0x39800000u) {
-            return x;
-        }
-        return x + x * fur_asin_r(x * x);
-    }
-    let z = (1.0 - abs(x)) * 0.5;
-    let s = sqrt(z);
-    let a = FUR_HALF_PI - 2.0 * (s + s * fur_asin_r(z));
-    return select(a, -a, x < 0.0);
+    // Abramowitz & Stegun 4.4.46, Horner from the highest coefficient.
+    let ax = min(abs(x), 1.0);
+    var poly = -0.001262491;
+    poly = poly * ax + 0.00667009;
+    poly = poly * ax + -0.017088126;
+    poly = poly * ax + 0.03089188;
+    poly = poly * ax + -0.050174303;
+    poly = poly * ax + 0.08897899;
+    poly = poly * ax + -0.2145988;
+    poly = poly * ax + FUR_HALF_PI;
+    let r = FUR_HALF_PI - sqrt(1.0 - ax) * poly;
+    // copysign(r, x), as on the CPU.
+    return select(abs(r), -abs(r), (bitcast<u32>(x) & 0x80000000u) != 0u);
 }
 
-fn fur_atan(x_in: f32) -> f32 {
-    var x = x_in;
-    let ix = bitcast<u32>(x) & 0x7fffffffu;
-    let negative = x < 0.0;
-    if (ix >= 0x4c800000u) {
-        return select(1.5707962513, -1.5707962513, negative);
-    }
-    var id = -1;
-    if (ix < 0x3ee00000u) {
-        if (ix < 0x39800000u) {
-            return x;
-        }
-    } else {
-        x = abs(x);
-        if (ix < 0x3f980000u) {
-            if (ix < 0x3f300000u) {
-                x = (2.0 * x - 1.0) / (2.0 + x);
-                id = 0;
-            } else {
-                x = (x - 1.0) / (x + 1.0);
-                id = 1;
-            }
-        } else if (ix < 0x401c0000u) {
-            x = (x - 1.5) / (1.0 + 1.5 * x);
-            id = 2;
-        } else {
-            x = -1.0 / x;
-            id = 3;
-        }
-    }
-    let z = x * x;
-    let w = z * z;
-    let s1 = z * (3.3333328366e-01 + w * (1.4253635705e-01 + w * 6.1687607318e-02));
-    let s2 = w * (-1.9999158382e-01 + w * -1.0648017377e-01);
-    if (id < 0) {
-        return x - x * (s1 + s2);
-    }
-    let hi = array<f32, 4>(4.6364760399e-01, 7.8539812565e-01, 9.8279368877e-01, 1.5707962513e+00);
-    let lo = array<f32, 4>(5.0121582440e-09, 3.7748947079e-08, 3.4473217170e-08, 7.5497894159e-08);
-    let r = hi[id] - ((x * (s1 + s2) - lo[id]) - x);
-    return select(r, -r, negative);
+// The degree-7 polynomial c0 x^7 + ... + c7 by Estrin's scheme (math::estrin8).
+fn fur_atan_poly(t: f32) -> f32 {
+    let t2 = t * t;
+    let t4 = t2 * t2;
+    let p01 = 0.0029202348 * t + -0.016366188;
+    let p23 = 0.043209206 * t + -0.07552008;
+    let p45 = 0.10665919 * t + -0.14211038;
+    let p67 = 0.19993772 * t + -0.33333153;
+    return (p01 * t2 + p23) * t4 + (p45 * t2 + p67);
 }
 
 fn fur_atan2(y: f32, x: f32) -> f32 {
-    let bx = bitcast<u32>(x);
-    let by = bitcast<u32>(y);
-    if (bx == 0x3f800000u) {
-        return fur_atan(y);
-    }
-    let m = ((by >> 31u) & 1u) | ((bx >> 30u) & 2u);
-    let ix = bx & 0x7fffffffu;
-    let iy = by & 0x7fffffffu;
-    if (iy == 0u) {
-        if (m < 2u) {
-            return y;
-        }
-        return select(FUR_PI, -FUR_PI, m == 3u);
-    }
-    if (ix == 0u) {
-        return select(FUR_HALF_PI, -FUR_HALF_PI, (m & 1u) != 0u);
-    }
-    if (ix + (26u << 23u) < iy) {
-        return select(FUR_HALF_PI, -FUR_HALF_PI, (m & 1u) != 0u);
-    }
-    var z = 0.0;
-    if (!((m & 2u) != 0u && iy + (26u << 23u) < ix)) {
-        z = fur_atan(abs(y / x));
-    }
-    let pi_lo = -8.7422776573e-08;
-    switch m {
-        case 0u: { return z; }
-        case 1u: { return -z; }
-        case 2u: { return FUR_PI - (z - pi_lo); }
-        default: { return (z - pi_lo) - FUR_PI; }
-    }
+    let ax = abs(x);
+    let ay = abs(y);
+    let a = min(ax, ay) / max(max(ax, ay), 1.17549435e-38);
+    let t = a * a;
+    var r = a + a * (t * fur_atan_poly(t));
+    r = select(r, FUR_HALF_PI - r, ay > ax);
+    r = select(r, FUR_PI - r, x < 0.0);
+    // copysign(r, y) (r >= 0 here).
+    return select(r, -r, (bitcast<u32>(y) & 0x80000000u) != 0u);
 }
 
-// Far-field S from world-space vectors (BakedBcsdf::eval_far_dirs, Angles::from_directions):
+// Far-field S from world-space vectors (BakedBcsdf::eval_far_dirs, frame::polynomial_angles):
 // wi toward the light, wr toward the viewer, u the fiber tangent; none needs unit length.
+// phi from unnormalised vectors: y = u.(wi x wr)/|u|, x = wi.wr - (wi.u)(wr.u)/|u|^2.
 fn fur_eval_far_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>) -> FurFamilies {
-    for (var k = 0u; k < 3u; k = k + 1u) {
-        if (!(fur_finite(wi[k]) && fur_finite(wr[k]) && fur_finite(u[k]))) {
-            return fur_zero();
-        }
-    }
-    let ni = sqrt(dot(wi, wi));
-    let nr = sqrt(dot(wr, wr));
-    let nu = sqrt(dot(u, u));
-    if (!(fur_finite(ni) && fur_finite(nr) && fur_finite(nu))) {
+    let ii = dot(wi, wi);
+    let rr = dot(wr, wr);
+    let uu = dot(u, u);
+    if (!(fur_finite(ii) && fur_finite(rr) && fur_finite(uu))) {
         return fur_zero();
     }
+    let ni = sqrt(ii);
+    let nr = sqrt(rr);
+    let nu = sqrt(uu);
     let min_positive = 1.17549435e-38;
     if (ni < min_positive || nr < min_positive || nu < min_positive) {
         return fur_zero();
     }
-    let un = u / nu;
-    let si = dot(wi, un) / ni;
-    let sr = dot(wr, un) / nr;
-    let theta_i = fur_asin(clamp(si, -1.0, 1.0));
-    let theta_r = fur_asin(clamp(sr, -1.0, 1.0));
-    let pi = wi / ni - si * un;
-    let pr = wr / nr - sr * un;
-    let phi = fur_atan2(dot(un, cross(pi, pr)), dot(pi, pr));
-    return fur_eval_far(theta_i, theta_r, phi);
+    let un = u * (1.0 / nu);
+    let a = dot(wi, un);
+    let b = dot(wr, un);
+    let theta_i = fur_asin(clamp(a * (1.0 / ni), -1.0, 1.0));
+    let theta_r = fur_asin(clamp(b * (1.0 / nr), -1.0, 1.0));
+    let y = dot(un, cross(wi, wr));
+    let x = dot(wi, wr) - a * b;
+    return fur_eval_far(theta_i, theta_r, abs(fur_atan2(y, x)));
 }
 
 // ---- Sampling and pdf (sampling::baked, docs/model.md §10) ----

@@ -4,7 +4,7 @@
 //! θ = asin(ω·u) is measured from the normal plane, and φ = φ_r − φ_i is the azimuth
 //! from ω_i to ω_r around u, for the right-handed frame (v, w, u), i.e. u = v × w.
 
-use crate::math::{asin_clamped, wrap_angle, Math, PI};
+use crate::math::{asin_clamped, asin_polynomial, atan2_polynomial, wrap_angle, Math, PI};
 use core::fmt;
 
 /// A 3-vector (not necessarily unit length).
@@ -55,6 +55,7 @@ pub struct Angles {
 
 impl Angles {
     /// From radians; φ is wrapped to (−π, π].
+    #[inline]
     pub fn new(theta_i: f32, theta_r: f32, phi: f32) -> Result<Angles, AngleError> {
         if !(theta_i.is_finite() && theta_r.is_finite() && phi.is_finite()) {
             return Err(AngleError::NonFinite);
@@ -137,6 +138,45 @@ impl Angles {
             ..*self
         }
     }
+}
+
+/// θ_i, θ_r and |φ| of world-space directions, as [`Angles::from_directions`] defines them
+/// (same validation and errors), computed for speed: with
+/// reciprocals of the three lengths, the branch-free polynomials [`asin_polynomial`] and
+/// [`atan2_polynomial`] instead of libm's asin and atan2, and φ from unnormalised vectors
+/// (atan2 is scale-invariant):
+///
+/// - sin θ = (ω·û)/|ω| with û = u/|u|;
+/// - tan φ = y/x with y = û·(ω_i × ω_r) and x = ω_i·ω_r − (ω_i·û)(ω_r·û), |ω_i||ω_r| times
+///   the sine and cosine of φ (the components along û drop out of the triple product).
+///
+/// Every intermediate is bounded by a product of at most two of the lengths, so nothing
+/// overflows where the lengths are finite. The angles are within about 3e-7 rad of the libm
+/// ones away from the poles (docs/lut.md). The baked evaluator's `eval_far_dirs` uses this;
+/// its WGSL twin (`shaders/fur_bcsdf.wgsl`, `fur_eval_far_dirs`) does the same operations.
+#[inline]
+pub(crate) fn polynomial_angles<M: Math>(
+    wi: Vec3,
+    wr: Vec3,
+    u: Vec3,
+) -> Result<[f32; 3], AngleError> {
+    // A NaN or infinite component, or an overflowing square, makes its dot non-finite.
+    let (ii, rr, uu) = (dot(wi, wi), dot(wr, wr), dot(u, u));
+    if !(ii.is_finite() && rr.is_finite() && uu.is_finite()) {
+        return Err(AngleError::NonFinite);
+    }
+    let (ni, nr, nu) = (M::sqrt(ii), M::sqrt(rr), M::sqrt(uu));
+    if ni < f32::MIN_POSITIVE || nr < f32::MIN_POSITIVE || nu < f32::MIN_POSITIVE {
+        return Err(AngleError::Degenerate);
+    }
+    let k = 1.0 / nu;
+    let un = [u[0] * k, u[1] * k, u[2] * k];
+    let (a, b) = (dot(wi, un), dot(wr, un));
+    let theta_i = asin_polynomial((a * (1.0 / ni)).clamp(-1.0, 1.0));
+    let theta_r = asin_polynomial((b * (1.0 / nr)).clamp(-1.0, 1.0));
+    let y = dot(un, cross(wi, wr));
+    let x = dot(wi, wr) - a * b;
+    Ok([theta_i, theta_r, atan2_polynomial(y, x).abs()])
 }
 
 /// The fiber frame (v, w, u) of one view direction (docs/model.md §1): u the unit tangent,

@@ -99,8 +99,9 @@ impl Math for FastMath {
 }
 
 /// Arc sine by Abramowitz & Stegun 4.4.46: asin x = π/2 − √(1 − x)·Σ a_k x^k on [0, 1]
-/// (|error| ≤ 2e-8 in exact arithmetic, a few f32 ulps here), odd-extended. Used by
-/// `FastMath`.
+/// (|error| ≤ 2e-8 in exact arithmetic; ≤ 2.5e-7 rad in f32, measured by
+/// `tests::asin_polynomial_accuracy`), odd-extended, branch-free. Used by `FastMath` and by
+/// the baked evaluator's direction conversion ([`crate::frame`]).
 #[inline]
 pub fn asin_polynomial(x: f32) -> f32 {
     const A: [f32; 8] = [
@@ -119,11 +120,59 @@ pub fn asin_polynomial(x: f32) -> f32 {
         poly = poly * ax + a;
     }
     let r = PI / 2.0 - libm::sqrtf(1.0 - ax) * poly;
-    if x < 0.0 {
-        -r
-    } else {
-        r
-    }
+    // copysign rather than `if`: branch-free (−0 gives −0).
+    r.copysign(x)
+}
+
+/// atan2(y, x) without libm and without branches, for the baked evaluator's directions
+/// (docs/model.md §1): a = min(|x|, |y|)/max(|x|, |y|) ∈ [0, 1], atan a = a + a·t·P(t) with
+/// t = a² and P a degree-7 polynomial (Estrin's scheme) fitted for this crate (minimax in
+/// relative error on [0, 1];
+/// |error| ≤ 7e-8 rad in f32, measured by `tests::atan2_polynomial_accuracy`), then the
+/// octant: π/2 − · where |y| > |x|, π − · where x < 0, and the sign of y. atan2(±0, ±0) = ±0
+/// (libm gives ±π for x = −0, which the callers never need).
+#[inline]
+#[must_use]
+pub fn atan2_polynomial(y: f32, x: f32) -> f32 {
+    const P: [f32; 8] = [
+        0.002_920_234_8,
+        -0.016_366_188,
+        0.043_209_206,
+        -0.075_520_08,
+        0.106_659_19,
+        -0.142_110_38,
+        0.199_937_72,
+        -0.333_331_53,
+    ];
+    let (ax, ay) = (x.abs(), y.abs());
+    let (lo, hi) = (ax.min(ay), ax.max(ay));
+    // 0/0 becomes 0/MIN_POSITIVE = 0.
+    let a = lo / hi.max(f32::MIN_POSITIVE);
+    let t = a * a;
+    let r = a + a * (t * estrin8(&P, t));
+    // Bit-mask selects (an `if` becomes a branch that random directions mispredict).
+    let select = |cond: bool, then: f32, otherwise: f32| {
+        let mask = 0u32.wrapping_sub(u32::from(cond));
+        f32::from_bits((then.to_bits() & mask) | (otherwise.to_bits() & !mask))
+    };
+    let r = select(ay > ax, PI / 2.0 - r, r);
+    let r = select(x < 0.0, PI - r, r);
+    r.copysign(y)
+}
+
+/// The degree-7 polynomial c₀x⁷ + c₁x⁶ + … + c₇ by Estrin's scheme: pairs, then pairs of
+/// pairs (x², x⁴), three multiply-add levels deep instead of Horner's seven, so that the
+/// polynomial of [`atan2_polynomial`] does not lengthen the dependency chain of an
+/// evaluation.
+#[inline(always)]
+fn estrin8(c: &[f32; 8], x: f32) -> f32 {
+    let x2 = x * x;
+    let x4 = x2 * x2;
+    let p01 = c[0] * x + c[1];
+    let p23 = c[2] * x + c[3];
+    let p45 = c[4] * x + c[5];
+    let p67 = c[6] * x + c[7];
+    (p01 * x2 + p23) * x4 + (p45 * x2 + p67)
 }
 
 /// `π` in f32.
@@ -143,35 +192,59 @@ pub fn cos_within_half_pi(x: f32) -> f32 {
     /// π/2 rounded to f32, and the remainder π/2 − PIO2_HI.
     const PIO2_HI: f32 = 1.570_796_4;
     const PIO2_LO: f32 = -4.371_139e-8;
+    /// Horner coefficients per branch: cos up to π/4 ((−1)^k/(2k)!, k = 5 … 1), then
+    /// sin(π/2 − |x|) ((−1)^k/(2k+1)!, k = 4 … 1, after a leading 0, which the first
+    /// Horner step turns back into the k = 4 coefficient exactly).
+    const NEAR: [f32; 5] = [
+        -1.0 / 3_628_800.0,
+        1.0 / 40_320.0,
+        -1.0 / 720.0,
+        1.0 / 24.0,
+        -0.5,
+    ];
+    const FAR: [f32; 5] = [
+        0.0,
+        1.0 / 362_880.0,
+        -1.0 / 5_040.0,
+        1.0 / 120.0,
+        -1.0 / 6.0,
+    ];
     let a = x.abs();
-    if a <= core::f32::consts::FRAC_PI_4 {
-        // (−1)^k/(2k)!, k = 5 … 0.
-        let y = a * a;
-        let mut acc = -1.0 / 3_628_800.0;
-        acc = acc * y + 1.0 / 40_320.0;
-        acc = acc * y - 1.0 / 720.0;
-        acc = acc * y + 1.0 / 24.0;
-        acc = acc * y - 0.5;
-        acc * y + 1.0
-    } else {
-        // PIO2_HI − a is exact (Sterbenz: a ∈ [π/4, π/2]); one rounding adds PIO2_LO.
-        let r = (PIO2_HI - a) + PIO2_LO;
-        let y = r * r;
-        // (−1)^k/(2k+1)!, k = 4 … 0.
-        let mut acc = 1.0 / 362_880.0;
-        acc = acc * y - 1.0 / 5_040.0;
-        acc = acc * y + 1.0 / 120.0;
-        acc = acc * y - 1.0 / 6.0;
-        (acc * y) * r + r
+    // One polynomial on selected inputs instead of a branch, which random angles would
+    // mispredict half the time: the near branch is 1 + y·C(y) with y = a², the far one
+    // r + (y·S(y))·r with r = π/2 − a (PIO2_HI − a is exact by Sterbenz for a ∈ [π/4, π/2];
+    // one rounding adds PIO2_LO) and y = r². For the near branch the multiplier m = 1 and
+    // (y·C(y))·1 is exact, so each branch is computed exactly as its own formula. The selects
+    // are bit masks (compilers turn `if` into a branch), which also lets a loop over many
+    // angles vectorise.
+    let r = (PIO2_HI - a) + PIO2_LO;
+    let mask = 0u32.wrapping_sub(u32::from(a > core::f32::consts::FRAC_PI_4));
+    let pick =
+        |near: f32, far: f32| f32::from_bits((near.to_bits() & !mask) | (far.to_bits() & mask));
+    let t = pick(a, r);
+    let m = pick(1.0, r);
+    let y = t * t;
+    let mut acc = pick(NEAR[0], FAR[0]);
+    for k in 1..5 {
+        acc = acc * y + pick(NEAR[k], FAR[k]);
     }
+    (acc * y) * m + m
 }
 
 /// Wraps an angle to `(-π, π]`. Non-finite input gives 0.
+#[inline]
+#[must_use]
 pub fn wrap_angle(x: f32) -> f32 {
-    // Fast path: one period away at most (the common case for sums of a few angles).
+    // Fast path, inlined: already in range (the common case for sums of a few angles).
     if x > -PI && x <= PI {
         return x;
     }
+    wrap_angle_outside(x)
+}
+
+/// [`wrap_angle`] for x outside (−π, π].
+#[inline(never)]
+fn wrap_angle_outside(x: f32) -> f32 {
     if x > PI && x <= PI + TAU {
         return x - TAU;
     }
@@ -202,4 +275,96 @@ pub fn asin_clamped<M: Math>(x: f32) -> f32 {
 #[inline]
 pub fn sqrt_pos<M: Math>(x: f32) -> f32 {
     M::sqrt(x.max(0.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every `n`-th f32 in [lo, hi].
+    fn grid(lo: f32, hi: f32, n: usize) -> impl Iterator<Item = f32> {
+        (0..=n).map(move |k| lo + (hi - lo) * (k as f32 / n as f32))
+    }
+
+    #[test]
+    fn cos_within_half_pi_is_the_two_taylor_branches_bit_for_bit() {
+        // The formulas the branch-free form selects between, written with a branch.
+        fn branches(x: f32) -> f32 {
+            let a = x.abs();
+            if a <= core::f32::consts::FRAC_PI_4 {
+                let y = a * a;
+                let mut acc = -1.0 / 3_628_800.0;
+                for c in [1.0 / 40_320.0, -1.0 / 720.0, 1.0 / 24.0, -0.5] {
+                    acc = acc * y + c;
+                }
+                acc * y + 1.0
+            } else {
+                let r = (1.570_796_4 - a) + -4.371_139e-8;
+                let y = r * r;
+                let mut acc = 1.0 / 362_880.0;
+                for c in [-1.0 / 5_040.0, 1.0 / 120.0, -1.0 / 6.0] {
+                    acc = acc * y + c;
+                }
+                (acc * y) * r + r
+            }
+        }
+        for x in grid(-PI / 2.0, PI / 2.0, 200_000) {
+            assert_eq!(
+                cos_within_half_pi(x).to_bits(),
+                branches(x).to_bits(),
+                "{x}"
+            );
+            let exact = libm::cos(f64::from(x));
+            let err = (f64::from(cos_within_half_pi(x)) - exact).abs();
+            assert!(
+                err <= 1.2e-7 * exact.max(1e-7) + 1e-14,
+                "cos {x}: error {err}"
+            );
+        }
+    }
+
+    #[test]
+    fn asin_polynomial_accuracy() {
+        let mut worst = 0.0f64;
+        for x in grid(-1.0, 1.0, 400_000) {
+            let err = (f64::from(asin_polynomial(x)) - libm::asin(f64::from(x))).abs();
+            worst = worst.max(err);
+        }
+        assert!(worst < 2.5e-7, "asin: worst absolute error {worst}");
+    }
+
+    #[test]
+    fn atan2_polynomial_accuracy() {
+        let mut worst = 0.0f64;
+        for y in grid(-2.0, 2.0, 400) {
+            for x in grid(-2.0, 2.0, 400) {
+                let exact = libm::atan2(f64::from(y), f64::from(x));
+                // The cut along the negative x axis: ±π are the same direction.
+                let mut err = (f64::from(atan2_polynomial(y, x)) - exact).abs();
+                if err > 6.0 {
+                    err = (err - 2.0 * core::f64::consts::PI).abs();
+                }
+                worst = worst.max(err);
+            }
+        }
+        assert!(worst < 3e-7, "atan2: worst absolute error {worst}");
+        assert_eq!(atan2_polynomial(0.0, 0.0), 0.0);
+        assert_eq!(atan2_polynomial(0.0, -1.0), PI);
+        assert_eq!(atan2_polynomial(1.0, 0.0), PI / 2.0);
+        assert_eq!(atan2_polynomial(-1.0, 0.0), -PI / 2.0);
+    }
+
+    #[test]
+    fn wrap_angle_lands_in_the_half_open_interval() {
+        for x in grid(-50.0, 50.0, 100_000).chain([PI, -PI, TAU, -TAU, 3.0 * PI]) {
+            let y = wrap_angle(x);
+            assert!(y > -PI && y <= PI, "{x} → {y}");
+            // The same direction: x − y is a whole number of turns (to f32 rounding).
+            let turns = (f64::from(x) - f64::from(y)) / core::f64::consts::TAU;
+            assert!((turns - libm::round(turns)).abs() < 1e-5, "{x} → {y}");
+        }
+        assert_eq!(wrap_angle(-PI), PI);
+        assert_eq!(wrap_angle(f32::NAN), 0.0);
+        assert_eq!(wrap_angle(f32::INFINITY), 0.0);
+    }
 }

@@ -2,8 +2,10 @@
 
 use core::ops::{Add, AddAssign, Mul};
 
-/// Three f32 channels (linear RGB).
+/// Three f32 channels (linear RGB). `repr(transparent)`: a slice of `Rgb` is a slice of
+/// interleaved f32 triples (the C ABI's `out_rgb` arrays).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(transparent)]
 pub struct Rgb(pub [f32; 3]);
 
 impl Rgb {

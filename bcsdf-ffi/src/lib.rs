@@ -25,7 +25,7 @@
 
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::{self, LutError};
-use bcsdf_core::{Angles, Bcsdf, Families, LobeFamily, Vec3};
+use bcsdf_core::{Angles, Bcsdf, Families, LobeFamily, Rgb, Vec3};
 use core::ffi::c_char;
 use core::mem::{align_of, size_of, MaybeUninit};
 
@@ -366,8 +366,8 @@ pub unsafe extern "C" fn fur_eval_far_dirs(
     let wi = tri!(unsafe { read3(wi) });
     let wr = tri!(unsafe { read3(wr) });
     let t = tri!(unsafe { read3(tangent) });
-    let (v, status) = match Angles::from_directions::<bcsdf_core::Libm>(wi, wr, t) {
-        Ok(a) => (l.eval_far(&a).total().0, fur_status::FUR_OK),
+    let (v, status) = match l.try_eval_far_dirs(wi, wr, t) {
+        Ok(f) => (f.total().0, fur_status::FUR_OK),
         Err(_) => ([0.0; 3], fur_status::FUR_ERR_DIRECTION),
     };
     // SAFETY: checked non-NULL and aligned.
@@ -417,20 +417,16 @@ pub unsafe extern "C" fn fur_eval_far_batch(
             core::slice::from_raw_parts(phi, n),
         )
     };
-    // SAFETY: as above.
-    let out = unsafe { core::slice::from_raw_parts_mut(out_rgb, 3 * n) };
-    let mut status = fur_status::FUR_OK;
-    for (((a, b), c), o) in ti.iter().zip(tr).zip(ph).zip(out.chunks_exact_mut(3)) {
-        let v = match angles(*a, *b, *c) {
-            Ok(x) => l.eval_far(&x).total().0,
-            Err(s) => {
-                status = s;
-                [0.0; 3]
-            }
-        };
-        o.copy_from_slice(&v);
+    // SAFETY: as above; `Rgb` is `repr(transparent)` over `[f32; 3]`, so 3n floats are n
+    // `Rgb`s (alignment 4, checked).
+    let out = unsafe { core::slice::from_raw_parts_mut(out_rgb.cast::<Rgb>(), n) };
+    // The batch path (SIMD over the queries, bit-identical to fur_eval_far per entry).
+    match l.eval_far_batch(ti, tr, ph, out) {
+        Ok(0) => fur_status::FUR_OK,
+        Ok(_) => fur_status::FUR_ERR_ANGLE,
+        // Unreachable: all four slices have length n.
+        Err(_) => fur_status::FUR_ERR_LENGTH,
     }
-    status
 }
 
 /// Importance-samples omega_i given theta_r from three uniform numbers in [0, 1) (values

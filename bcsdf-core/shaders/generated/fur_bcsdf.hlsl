@@ -158,8 +158,8 @@ float fur_cos_within_half_pi(float x_1)
         float _e23 = acc;
         return ((_e23 * y_2) + 1.0);
     }
-    float r_5 = ((1.5707964 - a_1) + -4.371139e-8);
-    float y_3 = (r_5 * r_5);
+    float r_6 = ((1.5707964 - a_1) + -4.371139e-8);
+    float y_3 = (r_6 * r_6);
     float _e34 = acc_1;
     acc_1 = ((_e34 * y_3) - 0.0001984127);
     float _e38 = acc_1;
@@ -167,7 +167,7 @@ float fur_cos_within_half_pi(float x_1)
     float _e42 = acc_1;
     acc_1 = ((_e42 * y_3) - 0.16666667);
     float _e46 = acc_1;
-    return (((_e46 * y_3) * r_5) + r_5);
+    return (((_e46 * y_3) * r_6) + r_6);
 }
 
 float fur_wrap_angle(float x_2)
@@ -231,8 +231,8 @@ FurFamilies ConstructFurFamilies(float3 arg0, float3 arg1, float3 arg2, float3 a
 
 FurFamilies fur_zero()
 {
-    float3 z_2 = (0.0).xxx;
-    const FurFamilies furfamilies = ConstructFurFamilies(z_2, z_2, z_2, z_2, z_2);
+    float3 z = (0.0).xxx;
+    const FurFamilies furfamilies = ConstructFurFamilies(z, z, z, z, z);
     return furfamilies;
 }
 
@@ -491,270 +491,134 @@ FurFamilies fur_eval_far(float theta_i_2, float theta_r_2, float phi_1)
     return furfamilies_3;
 }
 
-float fur_asin_r(float z)
-{
-    float p = (z * (0.16666587 + (z * (-0.042743422 + (z * -0.008656363)))));
-    float q_1 = (1.0 + (z * -0.70662963));
-    return (p / q_1);
-}
-
 float fur_asin(float x_4)
 {
-    uint ix = (asuint(x_4) & 2147483647u);
-    if ((ix >= 1065353216u)) {
-        return (sign(x_4) * FUR_HALF_PI);
-    }
-    if ((ix < 1056964608u)) {
-        if ((ix < 964689920u)) {
-            return x_4;
-        }
-        const float _e14 = fur_asin_r((x_4 * x_4));
-        return (x_4 + (x_4 * _e14));
-    }
-    float z_3 = ((1.0 - abs(x_4)) * 0.5);
-    float s_1 = sqrt(z_3);
-    const float _e24 = fur_asin_r(z_3);
-    float a_2 = (FUR_HALF_PI - (2.0 * (s_1 + (s_1 * _e24))));
-    return ((x_4 < 0.0) ? -(a_2) : a_2);
+    float poly = -0.001262491;
+
+    float ax = min(abs(x_4), 1.0);
+    float _e6 = poly;
+    poly = ((_e6 * ax) + 0.00667009);
+    float _e10 = poly;
+    poly = ((_e10 * ax) + -0.017088126);
+    float _e14 = poly;
+    poly = ((_e14 * ax) + 0.03089188);
+    float _e18 = poly;
+    poly = ((_e18 * ax) + -0.050174303);
+    float _e22 = poly;
+    poly = ((_e22 * ax) + 0.08897899);
+    float _e26 = poly;
+    poly = ((_e26 * ax) + -0.2145988);
+    float _e30 = poly;
+    poly = ((_e30 * ax) + FUR_HALF_PI);
+    float _e38 = poly;
+    float r_7 = (FUR_HALF_PI - (sqrt((1.0 - ax)) * _e38));
+    return (((asuint(x_4) & 2147483648u) != 0u) ? -(abs(r_7)) : abs(r_7));
 }
 
-float fur_atan(float x_in)
+float fur_atan_poly(float t_1)
 {
-    float x_5 = (float)0;
-    int id_4 = int(-1);
-
-    x_5 = x_in;
-    float _e2 = x_5;
-    uint ix_1 = (asuint(_e2) & 2147483647u);
-    float _e6 = x_5;
-    bool negative = (_e6 < 0.0);
-    if ((ix_1 >= 1283457024u)) {
-        return (negative ? -1.5707963 : 1.5707963);
-    }
-    if ((ix_1 < 1054867456u)) {
-        if ((ix_1 < 964689920u)) {
-            float _e20 = x_5;
-            return _e20;
-        }
-    } else {
-        float _e21 = x_5;
-        x_5 = abs(_e21);
-        if ((ix_1 < 1066926080u)) {
-            if ((ix_1 < 1060110336u)) {
-                float _e27 = x_5;
-                float _e32 = x_5;
-                x_5 = (((2.0 * _e27) - 1.0) / (2.0 + _e32));
-                id_4 = int(0);
-            } else {
-                float _e37 = x_5;
-                float _e40 = x_5;
-                x_5 = ((_e37 - 1.0) / (_e40 + 1.0));
-                id_4 = int(1);
-            }
-        } else {
-            if ((ix_1 < 1075576832u)) {
-                float _e47 = x_5;
-                float _e50 = x_5;
-                x_5 = ((_e47 - 1.5) / (1.0 + (1.5 * _e50)));
-                id_4 = int(2);
-            } else {
-                float _e57 = x_5;
-                x_5 = (-1.0 / _e57);
-                id_4 = int(3);
-            }
-        }
-    }
-    float _e61 = x_5;
-    float _e62 = x_5;
-    float z_4 = (_e61 * _e62);
-    float w_2 = (z_4 * z_4);
-    float s1_ = (z_4 * (0.33333328 + (w_2 * (0.14253636 + (w_2 * 0.061687607)))));
-    float s2_ = (w_2 * (-0.19999158 + (w_2 * -0.106480174)));
-    int _e78 = id_4;
-    if ((_e78 < int(0))) {
-        float _e81 = x_5;
-        float _e82 = x_5;
-        return (_e81 - (_e82 * (s1_ + s2_)));
-    }
-    float hi[4] = Constructarray4_float_(0.4636476, 0.7853981, 0.9827937, 1.5707963);
-    float lo_1[4] = Constructarray4_float_(5.0121582e-9, 3.7748947e-8, 3.4473217e-8, 7.5497894e-8);
-    int _e96 = id_4;
-    float _e98 = x_5;
-    int _e101 = id_4;
-    float _e104 = x_5;
-    float r_6 = (hi[min(uint(_e96), 3u)] - (((_e98 * (s1_ + s2_)) - lo_1[min(uint(_e101), 3u)]) - _e104));
-    return (negative ? -(r_6) : r_6);
+    float t2_ = (t_1 * t_1);
+    float t4_ = (t2_ * t2_);
+    float p01_ = ((0.0029202348 * t_1) + -0.016366187);
+    float p23_ = ((0.043209206 * t_1) + -0.07552008);
+    float p45_ = ((0.10665919 * t_1) + -0.14211038);
+    float p67_ = ((0.19993772 * t_1) + -0.33333153);
+    return ((((p01_ * t2_) + p23_) * t4_) + ((p45_ * t2_) + p67_));
 }
 
-float fur_atan2_(float y_1, float x_6)
+float fur_atan2_(float y_1, float x_5)
 {
-    float z_1 = 0.0;
-    bool local_7 = (bool)0;
+    float r = (float)0;
 
-    uint bx = asuint(x_6);
-    uint by = asuint(y_1);
-    if ((bx == 1065353216u)) {
-        const float _e6 = fur_atan(y_1);
-        return _e6;
-    }
-    uint m_1 = (((by >> 31u) & 1u) | ((bx >> 30u) & 2u));
-    uint ix_2 = (bx & 2147483647u);
-    uint iy = (by & 2147483647u);
-    if ((iy == 0u)) {
-        if ((m_1 < 2u)) {
-            return y_1;
-        }
-        return ((m_1 == 3u) ? -3.1415927 : FUR_PI);
-    }
-    if ((ix_2 == 0u)) {
-        return (((m_1 & 1u) != 0u) ? -1.5707964 : FUR_HALF_PI);
-    }
-    if (((ix_2 + 218103808u) < iy)) {
-        return (((m_1 & 1u) != 0u) ? -1.5707964 : FUR_HALF_PI);
-    }
-    if (((m_1 & 2u) != 0u)) {
-        local_7 = ((iy + 218103808u) < ix_2);
-    } else {
-        local_7 = false;
-    }
-    bool _e60 = local_7;
-    if (!(_e60)) {
-        const float _e64 = fur_atan(abs((y_1 / x_6)));
-        z_1 = _e64;
-    }
-    switch(m_1) {
-        case 0u: {
-            float _e66 = z_1;
-            return _e66;
-        }
-        case 1u: {
-            float _e67 = z_1;
-            return -(_e67);
-        }
-        case 2u: {
-            float _e70 = z_1;
-            return (FUR_PI - (_e70 - -8.742278e-8));
-        }
-        default: {
-            float _e73 = z_1;
-            return ((_e73 - -8.742278e-8) - FUR_PI);
-        }
-    }
+    float ax_1 = abs(x_5);
+    float ay = abs(y_1);
+    float a_2 = (min(ax_1, ay) / max(max(ax_1, ay), 1.1754944e-38));
+    float t_4 = (a_2 * a_2);
+    const float _e10 = fur_atan_poly(t_4);
+    r = (a_2 + (a_2 * (t_4 * _e10)));
+    float _e15 = r;
+    float _e17 = r;
+    r = ((ay > ax_1) ? (FUR_HALF_PI - _e17) : _e15);
+    float _e21 = r;
+    float _e23 = r;
+    r = ((x_5 < 0.0) ? (FUR_PI - _e23) : _e21);
+    float _e28 = r;
+    float _e29 = r;
+    return (((asuint(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28);
 }
 
 FurFamilies fur_eval_far_dirs(float3 wi, float3 wr, float3 u)
 {
-    uint k_2 = 0u;
+    bool local_7 = (bool)0;
     bool local_8 = (bool)0;
     bool local_9 = (bool)0;
     bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
 
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    bool loop_init_4 = true;
-    while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_4) {
-            uint _e27 = k_2;
-            k_2 = (_e27 + 1u);
-        }
-        loop_init_4 = false;
-        uint _e5 = k_2;
-        if ((_e5 < 3u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e8 = k_2;
-            const bool _e10 = fur_finite(wi[min(uint(_e8), 2u)]);
-            if (_e10) {
-                uint _e13 = k_2;
-                const bool _e15 = fur_finite(wr[min(uint(_e13), 2u)]);
-                local_8 = _e15;
-            } else {
-                local_8 = false;
-            }
-            bool _e17 = local_8;
-            if (_e17) {
-                uint _e20 = k_2;
-                const bool _e22 = fur_finite(u[min(uint(_e20), 2u)]);
-                local_9 = _e22;
-            } else {
-                local_9 = false;
-            }
-            bool _e24 = local_9;
-            if (!(_e24)) {
-                const FurFamilies _e26 = fur_zero();
-                const FurFamilies furfamilies_4 = _e26;
-                return furfamilies_4;
-            }
-        }
-    }
-    float ni = sqrt(dot(wi, wi));
-    float nr = sqrt(dot(wr, wr));
-    float nu = sqrt(dot(u, u));
-    const bool _e36 = fur_finite(ni);
-    if (_e36) {
-        const bool _e39 = fur_finite(nr);
-        local_10 = _e39;
+    float ii = dot(wi, wi);
+    float rr = dot(wr, wr);
+    float uu = dot(u, u);
+    const bool _e6 = fur_finite(ii);
+    if (_e6) {
+        const bool _e9 = fur_finite(rr);
+        local_7 = _e9;
     } else {
-        local_10 = false;
+        local_7 = false;
     }
-    bool _e41 = local_10;
-    if (_e41) {
-        const bool _e44 = fur_finite(nu);
-        local_11 = _e44;
+    bool _e11 = local_7;
+    if (_e11) {
+        const bool _e14 = fur_finite(uu);
+        local_8 = _e14;
     } else {
-        local_11 = false;
+        local_8 = false;
     }
-    bool _e46 = local_11;
-    if (!(_e46)) {
-        const FurFamilies _e48 = fur_zero();
-        const FurFamilies furfamilies_5 = _e48;
+    bool _e16 = local_8;
+    if (!(_e16)) {
+        const FurFamilies _e18 = fur_zero();
+        const FurFamilies furfamilies_4 = _e18;
+        return furfamilies_4;
+    }
+    float ni = sqrt(ii);
+    float nr = sqrt(rr);
+    float nu = sqrt(uu);
+    if (!((ni < 1.1754944e-38))) {
+        local_9 = (nr < 1.1754944e-38);
+    } else {
+        local_9 = true;
+    }
+    bool _e29 = local_9;
+    if (!(_e29)) {
+        local_10 = (nu < 1.1754944e-38);
+    } else {
+        local_10 = true;
+    }
+    bool _e35 = local_10;
+    if (_e35) {
+        const FurFamilies _e36 = fur_zero();
+        const FurFamilies furfamilies_5 = _e36;
         return furfamilies_5;
     }
-    if (!((ni < 1.1754944e-38))) {
-        local_12 = (nr < 1.1754944e-38);
-    } else {
-        local_12 = true;
-    }
-    bool _e56 = local_12;
-    if (!(_e56)) {
-        local_13 = (nu < 1.1754944e-38);
-    } else {
-        local_13 = true;
-    }
-    bool _e62 = local_13;
-    if (_e62) {
-        const FurFamilies _e63 = fur_zero();
-        const FurFamilies furfamilies_6 = _e63;
-        return furfamilies_6;
-    }
-    float3 un = (u / (nu).xxx);
-    float si = (dot(wi, un) / ni);
-    float sr = (dot(wr, un) / nr);
-    const float _e73 = fur_asin(clamp(si, -1.0, 1.0));
-    const float _e77 = fur_asin(clamp(sr, -1.0, 1.0));
-    float3 pi = ((wi / (ni).xxx) - (si * un));
-    float3 pr = ((wr / (nr).xxx) - (sr * un));
-    const float _e89 = fur_atan2_(dot(un, cross(pi, pr)), dot(pi, pr));
-    const FurFamilies _e90 = fur_eval_far(_e73, _e77, _e89);
-    const FurFamilies furfamilies_7 = _e90;
-    return furfamilies_7;
+    float3 un = (u * (1.0 / nu));
+    float a_3 = dot(wi, un);
+    float b = dot(wr, un);
+    const float _e48 = fur_asin(clamp((a_3 * (1.0 / ni)), -1.0, 1.0));
+    const float _e55 = fur_asin(clamp((b * (1.0 / nr)), -1.0, 1.0));
+    float y_4 = dot(un, cross(wi, wr));
+    float x_7 = (dot(wi, wr) - (a_3 * b));
+    const float _e61 = fur_atan2_(y_4, x_7);
+    const FurFamilies _e63 = fur_eval_far(_e48, _e55, abs(_e61));
+    const FurFamilies furfamilies_6 = _e63;
+    return furfamilies_6;
 }
 
 float fur_f32_at(uint byte)
 {
-    uint w_3 = (byte >> 2u);
+    uint w_2 = (byte >> 2u);
     if (((byte & 3u) == 0u)) {
-        uint _e9 = asuint(fur_lut.Load(w_3*4));
+        uint _e9 = asuint(fur_lut.Load(w_2*4));
         return asfloat(_e9);
     }
-    uint _e13 = asuint(fur_lut.Load(w_3*4));
-    uint _e20 = asuint(fur_lut.Load((w_3 + 1u)*4));
+    uint _e13 = asuint(fur_lut.Load(w_2*4));
+    uint _e20 = asuint(fur_lut.Load((w_2 + 1u)*4));
     return asfloat(((_e13 >> 16u) | (_e20 << 16u)));
 }
 
@@ -861,29 +725,29 @@ FurRows fur_rows(FurDensity d_2, uint row_1, float w, float origin)
     return furrows;
 }
 
-float fur_rows_value(FurRows r, uint j_1)
+float fur_rows_value(FurRows r_1, uint j_1)
 {
-    const float _e4 = fur_node(r.d, r.r0_, j_1);
-    if ((r.w == 0.0)) {
+    const float _e4 = fur_node(r_1.d, r_1.r0_, j_1);
+    if ((r_1.w == 0.0)) {
         return _e4;
     }
-    const float _e10 = fur_node(r.d, r.r1_, j_1);
-    return (((1.0 - r.w) * _e4) + (r.w * _e10));
+    const float _e10 = fur_node(r_1.d, r_1.r1_, j_1);
+    return (((1.0 - r_1.w) * _e4) + (r_1.w * _e10));
 }
 
-float fur_rows_prefix(FurRows r_1, uint k_3)
+float fur_rows_prefix(FurRows r_2, uint k_2)
 {
-    const float _e12 = fur_f32_at((r_1.d.prefix_at + (4u * ((r_1.r0_ * r_1.d.entries) + k_3))));
-    if ((r_1.w == 0.0)) {
+    const float _e12 = fur_f32_at((r_2.d.prefix_at + (4u * ((r_2.r0_ * r_2.d.entries) + k_2))));
+    if ((r_2.w == 0.0)) {
         return _e12;
     }
-    const float _e26 = fur_f32_at((r_1.d.prefix_at + (4u * ((r_1.r1_ * r_1.d.entries) + k_3))));
-    return (((1.0 - r_1.w) * _e12) + (r_1.w * _e26));
+    const float _e26 = fur_f32_at((r_2.d.prefix_at + (4u * ((r_2.r1_ * r_2.d.entries) + k_2))));
+    return (((1.0 - r_2.w) * _e12) + (r_2.w * _e26));
 }
 
-float fur_rows_total(FurRows r_2)
+float fur_rows_total(FurRows r_3)
 {
-    const float _e5 = fur_rows_prefix(r_2, (r_2.d.entries - 1u));
+    const float _e5 = fur_rows_prefix(r_3, (r_3.d.entries - 1u));
     return _e5;
 }
 
@@ -892,20 +756,20 @@ float fur_linear_mass(float v0_, float v1_, float len)
     return ((0.5 * len) * (v0_ + v1_));
 }
 
-float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_1)
+float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_2)
 {
     float s = 0.0;
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     if (!((len_1 > 0.0))) {
         return 0.0;
     }
-    if ((t_1 > 0.0)) {
-        float disc = max(((v0_1 * v0_1) + (((2.0 * (v1_1 - v0_1)) * t_1) / len_1)), 0.0);
+    if ((t_2 > 0.0)) {
+        float disc = max(((v0_1 * v0_1) + (((2.0 * (v1_1 - v0_1)) * t_2) / len_1)), 0.0);
         float den = (v0_1 + sqrt(disc));
         if ((den > 0.0)) {
-            s = clamp(((2.0 * t_1) / den), 0.0, len_1);
+            s = clamp(((2.0 * t_2) / den), 0.0, len_1);
         } else {
             s = len_1;
         }
@@ -913,21 +777,21 @@ float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_1)
     float inset = (len_1 * 9.536743e-7);
     if ((v0_1 <= 0.0)) {
         float _e36 = s;
-        local_14 = (_e36 < inset);
+        local_11 = (_e36 < inset);
     } else {
-        local_14 = false;
+        local_11 = false;
     }
-    bool _e39 = local_14;
+    bool _e39 = local_11;
     if (_e39) {
         return inset;
     }
     if ((v1_1 <= 0.0)) {
         float _e44 = s;
-        local_15 = (_e44 > (len_1 - inset));
+        local_12 = (_e44 > (len_1 - inset));
     } else {
-        local_15 = false;
+        local_12 = false;
     }
-    bool _e48 = local_15;
+    bool _e48 = local_12;
     if (_e48) {
         return (len_1 - inset);
     }
@@ -943,7 +807,7 @@ float fur_unit(float u_1)
     return 0.0;
 }
 
-float fur_rows_invert(FurRows r_3, float t_2)
+float fur_rows_invert(FurRows r_4, float t_3)
 {
     uint lo = 0u;
     uint len_2 = (uint)0;
@@ -955,11 +819,11 @@ float fur_rows_invert(FurRows r_3, float t_2)
     float last_v1_ = 0.0;
     uint j_2 = (uint)0;
 
-    len_2 = (r_3.d.entries - 1u);
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    len_2 = (r_4.d.entries - 1u);
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         uint _e9 = len_2;
         if ((_e9 <= 1u)) {
             break;
@@ -969,30 +833,30 @@ float fur_rows_invert(FurRows r_3, float t_2)
         uint _e15 = lo;
         uint _e16 = lo;
         uint _e18 = lo;
-        const float _e20 = fur_rows_prefix(r_3, (_e18 + half_));
-        lo = ((_e20 < t_2) ? (_e16 + half_) : _e15);
+        const float _e20 = fur_rows_prefix(r_4, (_e18 + half_));
+        lo = ((_e20 < t_3) ? (_e16 + half_) : _e15);
         uint _e23 = len_2;
         len_2 = (_e23 - half_);
     }
     uint _e25 = lo;
-    uint first = (_e25 * r_3.d.block);
-    uint end = min((first + r_3.d.block), (r_3.d.nodes - 1u));
+    uint first = (_e25 * r_4.d.block);
+    uint end = min((first + r_4.d.block), (r_4.d.nodes - 1u));
     uint _e37 = lo;
-    const float _e38 = fur_rows_prefix(r_3, _e37);
+    const float _e38 = fur_rows_prefix(r_4, _e37);
     acc_2 = _e38;
-    const float _e40 = fur_rows_value(r_3, first);
+    const float _e40 = fur_rows_value(r_4, first);
     prev = _e40;
     j_2 = first;
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_4) {
             uint _e85 = j_2;
             j_2 = (_e85 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e51 = j_2;
         if ((_e51 < end)) {
         } else {
@@ -1000,17 +864,17 @@ float fur_rows_invert(FurRows r_3, float t_2)
         }
         {
             uint _e53 = j_2;
-            const float _e56 = fur_rows_value(r_3, (_e53 + 1u));
+            const float _e56 = fur_rows_value(r_4, (_e53 + 1u));
             float _e57 = prev;
-            const float _e60 = fur_linear_mass(_e57, _e56, r_3.d.step_);
+            const float _e60 = fur_linear_mass(_e57, _e56, r_4.d.step_);
             if ((_e60 > 0.0)) {
                 float _e63 = acc_2;
-                if (((t_2 - _e63) <= _e60)) {
+                if (((t_3 - _e63) <= _e60)) {
                     float _e66 = prev;
                     float _e69 = acc_2;
-                    const float _e71 = fur_invert_linear(_e66, _e56, r_3.d.step_, (t_2 - _e69));
+                    const float _e71 = fur_invert_linear(_e66, _e56, r_4.d.step_, (t_3 - _e69));
                     uint _e73 = j_2;
-                    return ((r_3.origin + (float(_e73) * r_3.d.step_)) + _e71);
+                    return ((r_4.origin + (float(_e73) * r_4.d.step_)) + _e71);
                 }
                 have_last = true;
                 uint _e81 = j_2;
@@ -1030,42 +894,42 @@ float fur_rows_invert(FurRows r_3, float t_2)
         float _e90 = last_v1_;
         float _e95 = last_v0_;
         float _e96 = last_v1_;
-        const float _e99 = fur_invert_linear(_e89, _e90, r_3.d.step_, (r_3.d.step_ * (_e95 + _e96)));
+        const float _e99 = fur_invert_linear(_e89, _e90, r_4.d.step_, (r_4.d.step_ * (_e95 + _e96)));
         uint _e101 = last_j;
-        return ((r_3.origin + (float(_e101) * r_3.d.step_)) + _e99);
+        return ((r_4.origin + (float(_e101) * r_4.d.step_)) + _e99);
     }
-    return (r_3.origin + (float(end) * r_3.d.step_));
+    return (r_4.origin + (float(end) * r_4.d.step_));
 }
 
-float fur_rows_invert_between(FurRows r_4, float t0_, float t1_, float u_2)
+float fur_rows_invert_between(FurRows r_5, float t0_, float t1_, float u_2)
 {
     float inset_1 = ((t1_ - t0_) * 9.536743e-7);
     const float _e7 = fur_unit(u_2);
-    float t_3 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_1), (t1_ - inset_1));
-    const float _e14 = fur_rows_invert(r_4, t_3);
+    float t_5 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_1), (t1_ - inset_1));
+    const float _e14 = fur_rows_invert(r_5, t_5);
     return _e14;
 }
 
-float3 fur_m_cdf(float x_7)
+float3 fur_m_cdf(float x_6)
 {
     float3 out_ = (0.0).xxx;
     uint g = 0u;
 
     const uint _e2 = fur_word(4u);
     const FurAxis _e5 = fur_axis(true, 0.15915494, _e2);
-    const FurLoc _e6 = fur_locate(_e5, x_7);
+    const FurLoc _e6 = fur_locate(_e5, x_6);
     const FurDensity _e8 = fur_density(0u);
     float off = (_e6.w * _e8.step_);
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e44 = g;
             g = (_e44 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_5 = false;
         uint _e17 = g;
         if ((_e17 < 3u)) {
         } else {
@@ -1096,15 +960,15 @@ float fur_row_total(FurDensity d_3, FurLoc l_1)
 
 float fur_positive(float v)
 {
-    bool local_16 = (bool)0;
+    bool local_13 = (bool)0;
 
     const bool _e1 = fur_finite(v);
     if (_e1) {
-        local_16 = (v > 0.0);
+        local_13 = (v > 0.0);
     } else {
-        local_16 = false;
+        local_13 = false;
     }
-    bool _e7 = local_16;
+    bool _e7 = local_13;
     return (_e7 ? v : 0.0);
 }
 
@@ -1150,8 +1014,8 @@ FurParts fur_parts(float theta_r_3)
     const FurDensity _e57 = fur_density(8u);
     const float _e58 = fur_row_total(_e57, _e23);
     const float _e60 = fur_positive((_e58 * _e26));
-    float a_3[5] = Constructarray5_float_(_e34, _e42, _e50, _e55, _e60);
-    const FurParts furparts = ConstructFurParts(a_3, mass, _e3);
+    float a_4[5] = Constructarray5_float_(_e34, _e42, _e50, _e55, _e60);
+    const FurParts furparts = ConstructFurParts(a_4, mass, _e3);
     return furparts;
 }
 
@@ -1164,8 +1028,8 @@ float fur_density_of(FurLookups l_2, float w_1, float cos_theta_i)
     float mean1_ = (((l_2.n[3] + l_2.n[4]) + l_2.n[5]) * 0.33333334);
     float mean2_ = (((l_2.n[6] + l_2.n[7]) + l_2.n[8]) * 0.33333334);
     float mean3_ = (((l_2.n[9] + l_2.n[10]) + l_2.n[11]) * 0.33333334);
-    float p_1 = ((((l_2.m[0] * mean0_) + (l_2.m[1] * mean1_)) + (l_2.m[2] * mean2_)) + ((0.5 * (l_2.ms[0] + l_2.ms[1])) * mean3_));
-    const float _e71 = fur_positive(((p_1 / w_1) / max(cos_theta_i, 1e-6)));
+    float p = ((((l_2.m[0] * mean0_) + (l_2.m[1] * mean1_)) + (l_2.m[2] * mean2_)) + ((0.5 * (l_2.ms[0] + l_2.ms[1])) * mean3_));
+    const float _e71 = fur_positive(((p / w_1) / max(cos_theta_i, 1e-6)));
     return _e71;
 }
 
@@ -1176,10 +1040,10 @@ float fur_pdf_far(float theta_i_3, float theta_r_4, float phi_2)
         return 0.0;
     }
     const FurParts _e6 = fur_parts(theta_r_4);
-    float w_4 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
+    float w_3 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
     const FurLookups _e21 = fur_lookups(theta_i_3, theta_r_4, phi_2);
     const float _e22 = fur_cos_within_half_pi(theta_i_3);
-    const float _e23 = fur_density_of(_e21, w_4, _e22);
+    const float _e23 = fur_density_of(_e21, w_3, _e22);
     return _e23;
 }
 
@@ -1197,48 +1061,48 @@ FurSample ConstructFurSample(float arg0, float arg1, float arg2, float3 arg3, ui
 FurSample fur_sample_far(float theta_r_5, float3 u_3)
 {
     FurSample out_1 = ConstructFurSample(0.0, 0.0, 0.0, (0.0).xxx, 0u, false);
-    bool local_17 = (bool)0;
+    bool local_14 = (bool)0;
     float total = 0.0;
-    uint k_4 = 0u;
+    uint k_3 = 0u;
     float acc_3 = 0.0;
     uint c = 5u;
     float u0_ = 0.0;
     uint last = 5u;
-    uint k_5 = 0u;
+    uint k_4 = 0u;
     float theta_i_4 = 0.0;
-    bool local_18 = (bool)0;
+    bool local_15 = (bool)0;
 
     const bool _e11 = fur_finite(theta_r_5);
     if (_e11) {
-        local_17 = (abs(theta_r_5) <= FUR_HALF_PI);
+        local_14 = (abs(theta_r_5) <= FUR_HALF_PI);
     } else {
-        local_17 = false;
+        local_14 = false;
     }
-    bool _e18 = local_17;
+    bool _e18 = local_14;
     if (!(_e18)) {
         FurSample _e20 = out_1;
         const FurSample fursample = _e20;
         return fursample;
     }
     const FurParts _e21 = fur_parts(theta_r_5);
-    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-    bool loop_init_7 = true;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_7) {
-            uint _e34 = k_4;
-            k_4 = (_e34 + 1u);
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e34 = k_3;
+            k_3 = (_e34 + 1u);
         }
-        loop_init_7 = false;
-        uint _e26 = k_4;
+        loop_init_6 = false;
+        uint _e26 = k_3;
         if ((_e26 < 5u)) {
         } else {
             break;
         }
         {
             float _e29 = total;
-            uint _e31 = k_4;
+            uint _e31 = k_3;
             total = (_e29 + _e21.a[min(uint(_e31), 4u)]);
         }
     }
@@ -1251,32 +1115,32 @@ FurSample fur_sample_far(float theta_r_5, float3 u_3)
     const float _e43 = fur_unit(u_3.x);
     float _e44 = total;
     float target_mass = (_e43 * _e44);
-    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_8) {
-            uint _e76 = k_5;
-            k_5 = (_e76 + 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e76 = k_4;
+            k_4 = (_e76 + 1u);
         }
-        loop_init_8 = false;
-        uint _e56 = k_5;
+        loop_init_7 = false;
+        uint _e56 = k_4;
         if ((_e56 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e60 = k_5;
+            uint _e60 = k_4;
             float wk = _e21.a[min(uint(_e60), 4u)];
             if (!((wk > 0.0))) {
                 continue;
             }
-            uint _e65 = k_5;
+            uint _e65 = k_4;
             last = _e65;
             float _e66 = acc_3;
             if ((target_mass < (_e66 + wk))) {
-                uint _e69 = k_5;
+                uint _e69 = k_4;
                 c = _e69;
                 float _e70 = acc_3;
                 const float _e73 = fur_unit(((target_mass - _e70) / wk));
@@ -1295,7 +1159,7 @@ FurSample fur_sample_far(float theta_r_5, float3 u_3)
     }
     float total_weight = ((((_e21.a[0] + _e21.a[1]) + _e21.a[2]) + _e21.a[3]) + _e21.a[4]);
     float _e98 = u0_;
-    bool negative_1 = (_e98 < 0.5);
+    bool negative = (_e98 < 0.5);
     uint _e103 = c;
     if ((_e103 < 3u)) {
         uint _e106 = c;
@@ -1327,7 +1191,7 @@ FurSample fur_sample_far(float theta_r_5, float3 u_3)
     const float _e169 = fur_rows_total(_e167);
     const float _e171 = fur_rows_invert_between(_e167, 0.0, _e169, u_3.z);
     float abs_phi_1 = clamp(_e171, 0.0, FUR_PI);
-    const float _e177 = fur_wrap_angle((negative_1 ? -(abs_phi_1) : abs_phi_1));
+    const float _e177 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
     float _e178 = theta_i_4;
     const FurLookups _e179 = fur_lookups(_e178, theta_r_5, _e177);
     float _e180 = theta_i_4;
@@ -1335,11 +1199,11 @@ FurSample fur_sample_far(float theta_r_5, float3 u_3)
     const float _e182 = fur_density_of(_e179, total_weight, _e181);
     if ((_e182 > 0.0)) {
         const bool _e187 = fur_finite(_e182);
-        local_18 = _e187;
+        local_15 = _e187;
     } else {
-        local_18 = false;
+        local_15 = false;
     }
-    bool _e189 = local_18;
+    bool _e189 = local_15;
     if (!(_e189)) {
         FurSample _e191 = out_1;
         const FurSample fursample_2 = _e191;
@@ -1347,9 +1211,9 @@ FurSample fur_sample_far(float theta_r_5, float3 u_3)
     }
     const FurFamilies _e192 = fur_assemble(_e179);
     float _e193 = theta_i_4;
-    float k_7 = (max(cos(_e193), 0.0) / _e182);
+    float k_6 = (max(cos(_e193), 0.0) / _e182);
     float _e198 = theta_i_4;
-    out_1 = ConstructFurSample(_e198, _e177, _e182, max((_e192.total * k_7), (0.0).xxx), family, true);
+    out_1 = ConstructFurSample(_e198, _e177, _e182, max((_e192.total * k_6), (0.0).xxx), family, true);
     FurSample _e206 = out_1;
     const FurSample fursample_3 = _e206;
     return fursample_3;
@@ -1363,34 +1227,34 @@ ret_Constructarray5_float3_ Constructarray5_float3_(float3 arg0, float3 arg1, fl
 
 void fur_store(uint q, FurFamilies f_1)
 {
-    uint k_6 = 0u;
+    uint k_5 = 0u;
 
     uint base_1 = (16u * q);
     float3 parts[5] = Constructarray5_float3_(f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total);
-    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-    bool loop_init_9 = true;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_9) {
-            uint _e46 = k_6;
-            k_6 = (_e46 + 1u);
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e46 = k_5;
+            k_5 = (_e46 + 1u);
         }
-        loop_init_9 = false;
-        uint _e12 = k_6;
+        loop_init_8 = false;
+        uint _e12 = k_5;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_6;
-            uint _e21 = k_6;
+            uint _e17 = k_5;
+            uint _e21 = k_5;
             fur_results.Store((base_1 + (3u * _e17))*4, asuint(parts[min(uint(_e21), 4u)].x));
-            uint _e26 = k_6;
-            uint _e32 = k_6;
+            uint _e26 = k_5;
+            uint _e32 = k_5;
             fur_results.Store(((base_1 + (3u * _e26)) + 1u)*4, asuint(parts[min(uint(_e32), 4u)].y));
-            uint _e37 = k_6;
-            uint _e43 = k_6;
+            uint _e37 = k_5;
+            uint _e43 = k_5;
             fur_results.Store(((base_1 + (3u * _e37)) + 2u)*4, asuint(parts[min(uint(_e43), 4u)].z));
         }
     }
@@ -1408,41 +1272,41 @@ uint NagaBufferLength(ByteAddressBuffer buffer)
 [numthreads(64, 1, 1)]
 void fur_eval_main(uint3 id : SV_DispatchThreadID)
 {
-    uint q_2 = id.x;
-    if ((q_2 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    uint q_1 = id.x;
+    if ((q_1 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_4 = asfloat(fur_queries.Load4(q_2*16));
-    const FurFamilies _e11 = fur_eval_far(a_4.x, a_4.y, a_4.z);
-    fur_store(q_2, _e11);
+    float4 a_5 = asfloat(fur_queries.Load4(q_1*16));
+    const FurFamilies _e11 = fur_eval_far(a_5.x, a_5.y, a_5.z);
+    fur_store(q_1, _e11);
     return;
 }
 
 [numthreads(64, 1, 1)]
 void fur_eval_dirs_main(uint3 id_1 : SV_DispatchThreadID)
 {
-    uint q_3 = id_1.x;
-    if ((((3u * q_3) + 2u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    uint q_2 = id_1.x;
+    if ((((3u * q_2) + 2u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 _e13 = asfloat(fur_queries.Load4((3u * q_3)*16));
-    float4 _e21 = asfloat(fur_queries.Load4(((3u * q_3) + 1u)*16));
-    float4 _e29 = asfloat(fur_queries.Load4(((3u * q_3) + 2u)*16));
+    float4 _e13 = asfloat(fur_queries.Load4((3u * q_2)*16));
+    float4 _e21 = asfloat(fur_queries.Load4(((3u * q_2) + 1u)*16));
+    float4 _e29 = asfloat(fur_queries.Load4(((3u * q_2) + 2u)*16));
     const FurFamilies _e31 = fur_eval_far_dirs(_e13.xyz, _e21.xyz, _e29.xyz);
-    fur_store(q_3, _e31);
+    fur_store(q_2, _e31);
     return;
 }
 
 [numthreads(64, 1, 1)]
 void fur_sample_main(uint3 id_2 : SV_DispatchThreadID)
 {
-    uint q_4 = id_2.x;
-    if ((q_4 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    uint q_3 = id_2.x;
+    if ((q_3 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_5 = asfloat(fur_queries.Load4(q_4*16));
-    const FurSample _e10 = fur_sample_far(a_5.x, a_5.yzw);
-    uint base_2 = (16u * q_4);
+    float4 a_6 = asfloat(fur_queries.Load4(q_3*16));
+    const FurSample _e10 = fur_sample_far(a_6.x, a_6.yzw);
+    uint base_2 = (16u * q_3);
     fur_results.Store(base_2*4, asuint(_e10.theta_i));
     fur_results.Store((base_2 + 1u)*4, asuint(_e10.phi));
     fur_results.Store((base_2 + 2u)*4, asuint(_e10.pdf));
@@ -1457,12 +1321,12 @@ void fur_sample_main(uint3 id_2 : SV_DispatchThreadID)
 [numthreads(64, 1, 1)]
 void fur_pdf_main(uint3 id_3 : SV_DispatchThreadID)
 {
-    uint q_5 = id_3.x;
-    if ((q_5 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    uint q_4 = id_3.x;
+    if ((q_4 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_6 = asfloat(fur_queries.Load4(q_5*16));
-    const float _e15 = fur_pdf_far(a_6.x, a_6.y, a_6.z);
-    fur_results.Store((16u * q_5)*4, asuint(_e15));
+    float4 a_7 = asfloat(fur_queries.Load4(q_4*16));
+    const float _e15 = fur_pdf_far(a_7.x, a_7.y, a_7.z);
+    fur_results.Store((16u * q_4)*4, asuint(_e15));
     return;
 }

@@ -68,9 +68,9 @@ const uint FUR_HEADER_HALVES = 80u;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
-layout(std430) readonly buffer type_14_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_13_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_15_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_14_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -117,8 +117,8 @@ float fur_cos_within_half_pi(float x_1) {
         float _e23 = acc;
         return ((_e23 * y_2) + 1.0);
     }
-    float r_5 = ((1.5707964 - a_1) + -4.371139e-8);
-    float y_3 = (r_5 * r_5);
+    float r_6 = ((1.5707964 - a_1) + -4.371139e-8);
+    float y_3 = (r_6 * r_6);
     float _e34 = acc_1;
     acc_1 = ((_e34 * y_3) - 0.0001984127);
     float _e38 = acc_1;
@@ -126,7 +126,7 @@ float fur_cos_within_half_pi(float x_1) {
     float _e42 = acc_1;
     acc_1 = ((_e42 * y_3) - 0.16666667);
     float _e46 = acc_1;
-    return (((_e46 * y_3) * r_5) + r_5);
+    return (((_e46 * y_3) * r_6) + r_6);
 }
 
 float fur_wrap_angle(float x_2) {
@@ -177,8 +177,8 @@ float fur_wrap_angle(float x_2) {
 }
 
 FurFamilies fur_zero() {
-    vec3 z_2 = vec3(0.0);
-    return FurFamilies(z_2, z_2, z_2, z_2, z_2);
+    vec3 z = vec3(0.0);
+    return FurFamilies(z, z, z, z, z);
 }
 
 bool fur_finite(float x_3) {
@@ -396,254 +396,123 @@ FurFamilies fur_eval_far(float theta_i_2, float theta_r_2, float phi_1) {
     return _e7;
 }
 
-float fur_asin_r(float z) {
-    float p = (z * (0.16666587 + (z * (-0.042743422 + (z * -0.008656363)))));
-    float q_1 = (1.0 + (z * -0.70662963));
-    return (p / q_1);
-}
-
 float fur_asin(float x_4) {
-    uint ix = (floatBitsToUint(x_4) & 2147483647u);
-    if ((ix >= 1065353216u)) {
-        return (sign(x_4) * FUR_HALF_PI);
-    }
-    if ((ix < 1056964608u)) {
-        if ((ix < 964689920u)) {
-            return x_4;
-        }
-        float _e14 = fur_asin_r((x_4 * x_4));
-        return (x_4 + (x_4 * _e14));
-    }
-    float z_3 = ((1.0 - abs(x_4)) * 0.5);
-    float s_1 = sqrt(z_3);
-    float _e24 = fur_asin_r(z_3);
-    float a_2 = (FUR_HALF_PI - (2.0 * (s_1 + (s_1 * _e24))));
-    return ((x_4 < 0.0) ? -(a_2) : a_2);
+    float poly = -0.001262491;
+    float ax = min(abs(x_4), 1.0);
+    float _e6 = poly;
+    poly = ((_e6 * ax) + 0.00667009);
+    float _e10 = poly;
+    poly = ((_e10 * ax) + -0.017088126);
+    float _e14 = poly;
+    poly = ((_e14 * ax) + 0.03089188);
+    float _e18 = poly;
+    poly = ((_e18 * ax) + -0.050174303);
+    float _e22 = poly;
+    poly = ((_e22 * ax) + 0.08897899);
+    float _e26 = poly;
+    poly = ((_e26 * ax) + -0.2145988);
+    float _e30 = poly;
+    poly = ((_e30 * ax) + FUR_HALF_PI);
+    float _e38 = poly;
+    float r_7 = (FUR_HALF_PI - (sqrt((1.0 - ax)) * _e38));
+    return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_7)) : abs(r_7));
 }
 
-float fur_atan(float x_in) {
-    float x_5 = 0.0;
-    int id_4 = -1;
-    x_5 = x_in;
-    float _e2 = x_5;
-    uint ix_1 = (floatBitsToUint(_e2) & 2147483647u);
-    float _e6 = x_5;
-    bool negative = (_e6 < 0.0);
-    if ((ix_1 >= 1283457024u)) {
-        return (negative ? -1.5707963 : 1.5707963);
-    }
-    if ((ix_1 < 1054867456u)) {
-        if ((ix_1 < 964689920u)) {
-            float _e20 = x_5;
-            return _e20;
-        }
-    } else {
-        float _e21 = x_5;
-        x_5 = abs(_e21);
-        if ((ix_1 < 1066926080u)) {
-            if ((ix_1 < 1060110336u)) {
-                float _e27 = x_5;
-                float _e32 = x_5;
-                x_5 = (((2.0 * _e27) - 1.0) / (2.0 + _e32));
-                id_4 = 0;
-            } else {
-                float _e37 = x_5;
-                float _e40 = x_5;
-                x_5 = ((_e37 - 1.0) / (_e40 + 1.0));
-                id_4 = 1;
-            }
-        } else {
-            if ((ix_1 < 1075576832u)) {
-                float _e47 = x_5;
-                float _e50 = x_5;
-                x_5 = ((_e47 - 1.5) / (1.0 + (1.5 * _e50)));
-                id_4 = 2;
-            } else {
-                float _e57 = x_5;
-                x_5 = (-1.0 / _e57);
-                id_4 = 3;
-            }
-        }
-    }
-    float _e61 = x_5;
-    float _e62 = x_5;
-    float z_4 = (_e61 * _e62);
-    float w_2 = (z_4 * z_4);
-    float s1_ = (z_4 * (0.33333328 + (w_2 * (0.14253636 + (w_2 * 0.061687607)))));
-    float s2_ = (w_2 * (-0.19999158 + (w_2 * -0.106480174)));
-    int _e78 = id_4;
-    if ((_e78 < 0)) {
-        float _e81 = x_5;
-        float _e82 = x_5;
-        return (_e81 - (_e82 * (s1_ + s2_)));
-    }
-    float hi[4] = float[4](0.4636476, 0.7853981, 0.9827937, 1.5707963);
-    float lo_1[4] = float[4](5.0121582e-9, 3.7748947e-8, 3.4473217e-8, 7.5497894e-8);
-    int _e96 = id_4;
-    float _e98 = x_5;
-    int _e101 = id_4;
-    float _e104 = x_5;
-    float r_6 = (hi[_e96] - (((_e98 * (s1_ + s2_)) - lo_1[_e101]) - _e104));
-    return (negative ? -(r_6) : r_6);
+float fur_atan_poly(float t_1) {
+    float t2_ = (t_1 * t_1);
+    float t4_ = (t2_ * t2_);
+    float p01_ = ((0.0029202348 * t_1) + -0.016366187);
+    float p23_ = ((0.043209206 * t_1) + -0.07552008);
+    float p45_ = ((0.10665919 * t_1) + -0.14211038);
+    float p67_ = ((0.19993772 * t_1) + -0.33333153);
+    return ((((p01_ * t2_) + p23_) * t4_) + ((p45_ * t2_) + p67_));
 }
 
-float fur_atan2_(float y_1, float x_6) {
-    float z_1 = 0.0;
-    bool local_7 = false;
-    uint bx = floatBitsToUint(x_6);
-    uint by = floatBitsToUint(y_1);
-    if ((bx == 1065353216u)) {
-        float _e6 = fur_atan(y_1);
-        return _e6;
-    }
-    uint m_1 = (((by >> 31u) & 1u) | ((bx >> 30u) & 2u));
-    uint ix_2 = (bx & 2147483647u);
-    uint iy = (by & 2147483647u);
-    if ((iy == 0u)) {
-        if ((m_1 < 2u)) {
-            return y_1;
-        }
-        return ((m_1 == 3u) ? -3.1415927 : FUR_PI);
-    }
-    if ((ix_2 == 0u)) {
-        return (((m_1 & 1u) != 0u) ? -1.5707964 : FUR_HALF_PI);
-    }
-    if (((ix_2 + 218103808u) < iy)) {
-        return (((m_1 & 1u) != 0u) ? -1.5707964 : FUR_HALF_PI);
-    }
-    if (((m_1 & 2u) != 0u)) {
-        local_7 = ((iy + 218103808u) < ix_2);
-    } else {
-        local_7 = false;
-    }
-    bool _e60 = local_7;
-    if (!(_e60)) {
-        float _e64 = fur_atan(abs((y_1 / x_6)));
-        z_1 = _e64;
-    }
-    switch(m_1) {
-        case 0u: {
-            float _e66 = z_1;
-            return _e66;
-        }
-        case 1u: {
-            float _e67 = z_1;
-            return -(_e67);
-        }
-        case 2u: {
-            float _e70 = z_1;
-            return (FUR_PI - (_e70 - -8.742278e-8));
-        }
-        default: {
-            float _e73 = z_1;
-            return ((_e73 - -8.742278e-8) - FUR_PI);
-        }
-    }
+float fur_atan2_(float y_1, float x_5) {
+    float r = 0.0;
+    float ax_1 = abs(x_5);
+    float ay = abs(y_1);
+    float a_2 = (min(ax_1, ay) / max(max(ax_1, ay), 1.1754944e-38));
+    float t_4 = (a_2 * a_2);
+    float _e10 = fur_atan_poly(t_4);
+    r = (a_2 + (a_2 * (t_4 * _e10)));
+    float _e15 = r;
+    float _e17 = r;
+    r = ((ay > ax_1) ? (FUR_HALF_PI - _e17) : _e15);
+    float _e21 = r;
+    float _e23 = r;
+    r = ((x_5 < 0.0) ? (FUR_PI - _e23) : _e21);
+    float _e28 = r;
+    float _e29 = r;
+    return (((floatBitsToUint(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28);
 }
 
 FurFamilies fur_eval_far_dirs(vec3 wi, vec3 wr, vec3 u) {
-    uint k_2 = 0u;
+    bool local_7 = false;
     bool local_8 = false;
     bool local_9 = false;
     bool local_10 = false;
-    bool local_11 = false;
-    bool local_12 = false;
-    bool local_13 = false;
-    bool loop_init_4 = true;
-    while(true) {
-        if (!loop_init_4) {
-            uint _e27 = k_2;
-            k_2 = (_e27 + 1u);
-        }
-        loop_init_4 = false;
-        uint _e5 = k_2;
-        if ((_e5 < 3u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e8 = k_2;
-            bool _e10 = fur_finite(wi[_e8]);
-            if (_e10) {
-                uint _e13 = k_2;
-                bool _e15 = fur_finite(wr[_e13]);
-                local_8 = _e15;
-            } else {
-                local_8 = false;
-            }
-            bool _e17 = local_8;
-            if (_e17) {
-                uint _e20 = k_2;
-                bool _e22 = fur_finite(u[_e20]);
-                local_9 = _e22;
-            } else {
-                local_9 = false;
-            }
-            bool _e24 = local_9;
-            if (!(_e24)) {
-                FurFamilies _e26 = fur_zero();
-                return _e26;
-            }
-        }
-    }
-    float ni = sqrt(dot(wi, wi));
-    float nr = sqrt(dot(wr, wr));
-    float nu = sqrt(dot(u, u));
-    bool _e36 = fur_finite(ni);
-    if (_e36) {
-        bool _e39 = fur_finite(nr);
-        local_10 = _e39;
+    float ii = dot(wi, wi);
+    float rr = dot(wr, wr);
+    float uu = dot(u, u);
+    bool _e6 = fur_finite(ii);
+    if (_e6) {
+        bool _e9 = fur_finite(rr);
+        local_7 = _e9;
     } else {
-        local_10 = false;
+        local_7 = false;
     }
-    bool _e41 = local_10;
-    if (_e41) {
-        bool _e44 = fur_finite(nu);
-        local_11 = _e44;
+    bool _e11 = local_7;
+    if (_e11) {
+        bool _e14 = fur_finite(uu);
+        local_8 = _e14;
     } else {
-        local_11 = false;
+        local_8 = false;
     }
-    bool _e46 = local_11;
-    if (!(_e46)) {
-        FurFamilies _e48 = fur_zero();
-        return _e48;
+    bool _e16 = local_8;
+    if (!(_e16)) {
+        FurFamilies _e18 = fur_zero();
+        return _e18;
     }
+    float ni = sqrt(ii);
+    float nr = sqrt(rr);
+    float nu = sqrt(uu);
     if (!((ni < 1.1754944e-38))) {
-        local_12 = (nr < 1.1754944e-38);
+        local_9 = (nr < 1.1754944e-38);
     } else {
-        local_12 = true;
+        local_9 = true;
     }
-    bool _e56 = local_12;
-    if (!(_e56)) {
-        local_13 = (nu < 1.1754944e-38);
+    bool _e29 = local_9;
+    if (!(_e29)) {
+        local_10 = (nu < 1.1754944e-38);
     } else {
-        local_13 = true;
+        local_10 = true;
     }
-    bool _e62 = local_13;
-    if (_e62) {
-        FurFamilies _e63 = fur_zero();
-        return _e63;
+    bool _e35 = local_10;
+    if (_e35) {
+        FurFamilies _e36 = fur_zero();
+        return _e36;
     }
-    vec3 un = (u / vec3(nu));
-    float si = (dot(wi, un) / ni);
-    float sr = (dot(wr, un) / nr);
-    float _e73 = fur_asin(clamp(si, -1.0, 1.0));
-    float _e77 = fur_asin(clamp(sr, -1.0, 1.0));
-    vec3 pi = ((wi / vec3(ni)) - (si * un));
-    vec3 pr = ((wr / vec3(nr)) - (sr * un));
-    float _e89 = fur_atan2_(dot(un, cross(pi, pr)), dot(pi, pr));
-    FurFamilies _e90 = fur_eval_far(_e73, _e77, _e89);
-    return _e90;
+    vec3 un = (u * (1.0 / nu));
+    float a_3 = dot(wi, un);
+    float b = dot(wr, un);
+    float _e48 = fur_asin(clamp((a_3 * (1.0 / ni)), -1.0, 1.0));
+    float _e55 = fur_asin(clamp((b * (1.0 / nr)), -1.0, 1.0));
+    float y_4 = dot(un, cross(wi, wr));
+    float x_7 = (dot(wi, wr) - (a_3 * b));
+    float _e61 = fur_atan2_(y_4, x_7);
+    FurFamilies _e63 = fur_eval_far(_e48, _e55, abs(_e61));
+    return _e63;
 }
 
 float fur_f32_at(uint byte) {
-    uint w_3 = (byte >> 2u);
+    uint w_2 = (byte >> 2u);
     if (((byte & 3u) == 0u)) {
-        uint _e9 = _group_0_binding_0_cs[w_3];
+        uint _e9 = _group_0_binding_0_cs[w_2];
         return uintBitsToFloat(_e9);
     }
-    uint _e13 = _group_0_binding_0_cs[w_3];
-    uint _e20 = _group_0_binding_0_cs[(w_3 + 1u)];
+    uint _e13 = _group_0_binding_0_cs[w_2];
+    uint _e20 = _group_0_binding_0_cs[(w_2 + 1u)];
     return uintBitsToFloat(((_e13 >> 16u) | (_e20 << 16u)));
 }
 
@@ -707,26 +576,26 @@ FurRows fur_rows(FurDensity d_2, uint row_1, float w, float origin) {
     return FurRows(d_2, min(row_1, (d_2.rows - 1u)), min((row_1 + 1u), (d_2.rows - 1u)), w, origin);
 }
 
-float fur_rows_value(FurRows r, uint j_1) {
-    float _e4 = fur_node(r.d, r.r0_, j_1);
-    if ((r.w == 0.0)) {
+float fur_rows_value(FurRows r_1, uint j_1) {
+    float _e4 = fur_node(r_1.d, r_1.r0_, j_1);
+    if ((r_1.w == 0.0)) {
         return _e4;
     }
-    float _e10 = fur_node(r.d, r.r1_, j_1);
-    return (((1.0 - r.w) * _e4) + (r.w * _e10));
+    float _e10 = fur_node(r_1.d, r_1.r1_, j_1);
+    return (((1.0 - r_1.w) * _e4) + (r_1.w * _e10));
 }
 
-float fur_rows_prefix(FurRows r_1, uint k_3) {
-    float _e12 = fur_f32_at((r_1.d.prefix_at + (4u * ((r_1.r0_ * r_1.d.entries) + k_3))));
-    if ((r_1.w == 0.0)) {
+float fur_rows_prefix(FurRows r_2, uint k_2) {
+    float _e12 = fur_f32_at((r_2.d.prefix_at + (4u * ((r_2.r0_ * r_2.d.entries) + k_2))));
+    if ((r_2.w == 0.0)) {
         return _e12;
     }
-    float _e26 = fur_f32_at((r_1.d.prefix_at + (4u * ((r_1.r1_ * r_1.d.entries) + k_3))));
-    return (((1.0 - r_1.w) * _e12) + (r_1.w * _e26));
+    float _e26 = fur_f32_at((r_2.d.prefix_at + (4u * ((r_2.r1_ * r_2.d.entries) + k_2))));
+    return (((1.0 - r_2.w) * _e12) + (r_2.w * _e26));
 }
 
-float fur_rows_total(FurRows r_2) {
-    float _e5 = fur_rows_prefix(r_2, (r_2.d.entries - 1u));
+float fur_rows_total(FurRows r_3) {
+    float _e5 = fur_rows_prefix(r_3, (r_3.d.entries - 1u));
     return _e5;
 }
 
@@ -734,18 +603,18 @@ float fur_linear_mass(float v0_, float v1_, float len) {
     return ((0.5 * len) * (v0_ + v1_));
 }
 
-float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_1) {
+float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_2) {
     float s = 0.0;
-    bool local_14 = false;
-    bool local_15 = false;
+    bool local_11 = false;
+    bool local_12 = false;
     if (!((len_1 > 0.0))) {
         return 0.0;
     }
-    if ((t_1 > 0.0)) {
-        float disc = max(((v0_1 * v0_1) + (((2.0 * (v1_1 - v0_1)) * t_1) / len_1)), 0.0);
+    if ((t_2 > 0.0)) {
+        float disc = max(((v0_1 * v0_1) + (((2.0 * (v1_1 - v0_1)) * t_2) / len_1)), 0.0);
         float den = (v0_1 + sqrt(disc));
         if ((den > 0.0)) {
-            s = clamp(((2.0 * t_1) / den), 0.0, len_1);
+            s = clamp(((2.0 * t_2) / den), 0.0, len_1);
         } else {
             s = len_1;
         }
@@ -753,21 +622,21 @@ float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_1) {
     float inset = (len_1 * 9.536743e-7);
     if ((v0_1 <= 0.0)) {
         float _e36 = s;
-        local_14 = (_e36 < inset);
+        local_11 = (_e36 < inset);
     } else {
-        local_14 = false;
+        local_11 = false;
     }
-    bool _e39 = local_14;
+    bool _e39 = local_11;
     if (_e39) {
         return inset;
     }
     if ((v1_1 <= 0.0)) {
         float _e44 = s;
-        local_15 = (_e44 > (len_1 - inset));
+        local_12 = (_e44 > (len_1 - inset));
     } else {
-        local_15 = false;
+        local_12 = false;
     }
-    bool _e48 = local_15;
+    bool _e48 = local_12;
     if (_e48) {
         return (len_1 - inset);
     }
@@ -782,7 +651,7 @@ float fur_unit(float u_1) {
     return 0.0;
 }
 
-float fur_rows_invert(FurRows r_3, float t_2) {
+float fur_rows_invert(FurRows r_4, float t_3) {
     uint lo = 0u;
     uint len_2 = 0u;
     float acc_2 = 0.0;
@@ -792,7 +661,7 @@ float fur_rows_invert(FurRows r_3, float t_2) {
     float last_v0_ = 0.0;
     float last_v1_ = 0.0;
     uint j_2 = 0u;
-    len_2 = (r_3.d.entries - 1u);
+    len_2 = (r_4.d.entries - 1u);
     while(true) {
         uint _e9 = len_2;
         if ((_e9 <= 1u)) {
@@ -803,27 +672,27 @@ float fur_rows_invert(FurRows r_3, float t_2) {
         uint _e15 = lo;
         uint _e16 = lo;
         uint _e18 = lo;
-        float _e20 = fur_rows_prefix(r_3, (_e18 + half_));
-        lo = ((_e20 < t_2) ? (_e16 + half_) : _e15);
+        float _e20 = fur_rows_prefix(r_4, (_e18 + half_));
+        lo = ((_e20 < t_3) ? (_e16 + half_) : _e15);
         uint _e23 = len_2;
         len_2 = (_e23 - half_);
     }
     uint _e25 = lo;
-    uint first = (_e25 * r_3.d.block);
-    uint end = min((first + r_3.d.block), (r_3.d.nodes - 1u));
+    uint first = (_e25 * r_4.d.block);
+    uint end = min((first + r_4.d.block), (r_4.d.nodes - 1u));
     uint _e37 = lo;
-    float _e38 = fur_rows_prefix(r_3, _e37);
+    float _e38 = fur_rows_prefix(r_4, _e37);
     acc_2 = _e38;
-    float _e40 = fur_rows_value(r_3, first);
+    float _e40 = fur_rows_value(r_4, first);
     prev = _e40;
     j_2 = first;
-    bool loop_init_5 = true;
+    bool loop_init_4 = true;
     while(true) {
-        if (!loop_init_5) {
+        if (!loop_init_4) {
             uint _e85 = j_2;
             j_2 = (_e85 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e51 = j_2;
         if ((_e51 < end)) {
         } else {
@@ -831,17 +700,17 @@ float fur_rows_invert(FurRows r_3, float t_2) {
         }
         {
             uint _e53 = j_2;
-            float _e56 = fur_rows_value(r_3, (_e53 + 1u));
+            float _e56 = fur_rows_value(r_4, (_e53 + 1u));
             float _e57 = prev;
-            float _e60 = fur_linear_mass(_e57, _e56, r_3.d.step_);
+            float _e60 = fur_linear_mass(_e57, _e56, r_4.d.step_);
             if ((_e60 > 0.0)) {
                 float _e63 = acc_2;
-                if (((t_2 - _e63) <= _e60)) {
+                if (((t_3 - _e63) <= _e60)) {
                     float _e66 = prev;
                     float _e69 = acc_2;
-                    float _e71 = fur_invert_linear(_e66, _e56, r_3.d.step_, (t_2 - _e69));
+                    float _e71 = fur_invert_linear(_e66, _e56, r_4.d.step_, (t_3 - _e69));
                     uint _e73 = j_2;
-                    return ((r_3.origin + (float(_e73) * r_3.d.step_)) + _e71);
+                    return ((r_4.origin + (float(_e73) * r_4.d.step_)) + _e71);
                 }
                 have_last = true;
                 uint _e81 = j_2;
@@ -861,36 +730,36 @@ float fur_rows_invert(FurRows r_3, float t_2) {
         float _e90 = last_v1_;
         float _e95 = last_v0_;
         float _e96 = last_v1_;
-        float _e99 = fur_invert_linear(_e89, _e90, r_3.d.step_, (r_3.d.step_ * (_e95 + _e96)));
+        float _e99 = fur_invert_linear(_e89, _e90, r_4.d.step_, (r_4.d.step_ * (_e95 + _e96)));
         uint _e101 = last_j;
-        return ((r_3.origin + (float(_e101) * r_3.d.step_)) + _e99);
+        return ((r_4.origin + (float(_e101) * r_4.d.step_)) + _e99);
     }
-    return (r_3.origin + (float(end) * r_3.d.step_));
+    return (r_4.origin + (float(end) * r_4.d.step_));
 }
 
-float fur_rows_invert_between(FurRows r_4, float t0_, float t1_, float u_2) {
+float fur_rows_invert_between(FurRows r_5, float t0_, float t1_, float u_2) {
     float inset_1 = ((t1_ - t0_) * 9.536743e-7);
     float _e7 = fur_unit(u_2);
-    float t_3 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_1), (t1_ - inset_1));
-    float _e14 = fur_rows_invert(r_4, t_3);
+    float t_5 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_1), (t1_ - inset_1));
+    float _e14 = fur_rows_invert(r_5, t_5);
     return _e14;
 }
 
-vec3 fur_m_cdf(float x_7) {
+vec3 fur_m_cdf(float x_6) {
     vec3 out_ = vec3(0.0);
     uint g = 0u;
     uint _e2 = fur_word(4u);
     FurAxis _e5 = fur_axis(true, 0.15915494, _e2);
-    FurLoc _e6 = fur_locate(_e5, x_7);
+    FurLoc _e6 = fur_locate(_e5, x_6);
     FurDensity _e8 = fur_density(0u);
     float off = (_e6.w * _e8.step_);
-    bool loop_init_6 = true;
+    bool loop_init_5 = true;
     while(true) {
-        if (!loop_init_6) {
+        if (!loop_init_5) {
             uint _e44 = g;
             g = (_e44 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_5 = false;
         uint _e17 = g;
         if ((_e17 < 3u)) {
         } else {
@@ -919,14 +788,14 @@ float fur_row_total(FurDensity d_3, FurLoc l_1) {
 }
 
 float fur_positive(float v) {
-    bool local_16 = false;
+    bool local_13 = false;
     bool _e1 = fur_finite(v);
     if (_e1) {
-        local_16 = (v > 0.0);
+        local_13 = (v > 0.0);
     } else {
-        local_16 = false;
+        local_13 = false;
     }
-    bool _e7 = local_16;
+    bool _e7 = local_13;
     return (_e7 ? v : 0.0);
 }
 
@@ -957,8 +826,8 @@ FurParts fur_parts(float theta_r_3) {
     FurDensity _e57 = fur_density(8u);
     float _e58 = fur_row_total(_e57, _e23);
     float _e60 = fur_positive((_e58 * _e26));
-    float a_3[5] = float[5](_e34, _e42, _e50, _e55, _e60);
-    return FurParts(a_3, mass, _e3);
+    float a_4[5] = float[5](_e34, _e42, _e50, _e55, _e60);
+    return FurParts(a_4, mass, _e3);
 }
 
 float fur_density_of(FurLookups l_2, float w_1, float cos_theta_i) {
@@ -969,8 +838,8 @@ float fur_density_of(FurLookups l_2, float w_1, float cos_theta_i) {
     float mean1_ = (((l_2.n[3] + l_2.n[4]) + l_2.n[5]) * 0.33333334);
     float mean2_ = (((l_2.n[6] + l_2.n[7]) + l_2.n[8]) * 0.33333334);
     float mean3_ = (((l_2.n[9] + l_2.n[10]) + l_2.n[11]) * 0.33333334);
-    float p_1 = ((((l_2.m[0] * mean0_) + (l_2.m[1] * mean1_)) + (l_2.m[2] * mean2_)) + ((0.5 * (l_2.ms[0] + l_2.ms[1])) * mean3_));
-    float _e71 = fur_positive(((p_1 / w_1) / max(cos_theta_i, 1e-6)));
+    float p = ((((l_2.m[0] * mean0_) + (l_2.m[1] * mean1_)) + (l_2.m[2] * mean2_)) + ((0.5 * (l_2.ms[0] + l_2.ms[1])) * mean3_));
+    float _e71 = fur_positive(((p / w_1) / max(cos_theta_i, 1e-6)));
     return _e71;
 }
 
@@ -980,52 +849,52 @@ float fur_pdf_far(float theta_i_3, float theta_r_4, float phi_2) {
         return 0.0;
     }
     FurParts _e6 = fur_parts(theta_r_4);
-    float w_4 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
+    float w_3 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
     FurLookups _e21 = fur_lookups(theta_i_3, theta_r_4, phi_2);
     float _e22 = fur_cos_within_half_pi(theta_i_3);
-    float _e23 = fur_density_of(_e21, w_4, _e22);
+    float _e23 = fur_density_of(_e21, w_3, _e22);
     return _e23;
 }
 
 FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     FurSample out_1 = FurSample(0.0, 0.0, 0.0, vec3(0.0), 0u, false);
-    bool local_17 = false;
+    bool local_14 = false;
     float total = 0.0;
-    uint k_4 = 0u;
+    uint k_3 = 0u;
     float acc_3 = 0.0;
     uint c = 5u;
     float u0_ = 0.0;
     uint last = 5u;
-    uint k_5 = 0u;
+    uint k_4 = 0u;
     float theta_i_4 = 0.0;
-    bool local_18 = false;
+    bool local_15 = false;
     bool _e11 = fur_finite(theta_r_5);
     if (_e11) {
-        local_17 = (abs(theta_r_5) <= FUR_HALF_PI);
+        local_14 = (abs(theta_r_5) <= FUR_HALF_PI);
     } else {
-        local_17 = false;
+        local_14 = false;
     }
-    bool _e18 = local_17;
+    bool _e18 = local_14;
     if (!(_e18)) {
         FurSample _e20 = out_1;
         return _e20;
     }
     FurParts _e21 = fur_parts(theta_r_5);
-    bool loop_init_7 = true;
+    bool loop_init_6 = true;
     while(true) {
-        if (!loop_init_7) {
-            uint _e34 = k_4;
-            k_4 = (_e34 + 1u);
+        if (!loop_init_6) {
+            uint _e34 = k_3;
+            k_3 = (_e34 + 1u);
         }
-        loop_init_7 = false;
-        uint _e26 = k_4;
+        loop_init_6 = false;
+        uint _e26 = k_3;
         if ((_e26 < 5u)) {
         } else {
             break;
         }
         {
             float _e29 = total;
-            uint _e31 = k_4;
+            uint _e31 = k_3;
             total = (_e29 + _e21.a[_e31]);
         }
     }
@@ -1037,29 +906,29 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     float _e43 = fur_unit(u_3.x);
     float _e44 = total;
     float target_mass = (_e43 * _e44);
-    bool loop_init_8 = true;
+    bool loop_init_7 = true;
     while(true) {
-        if (!loop_init_8) {
-            uint _e76 = k_5;
-            k_5 = (_e76 + 1u);
+        if (!loop_init_7) {
+            uint _e76 = k_4;
+            k_4 = (_e76 + 1u);
         }
-        loop_init_8 = false;
-        uint _e56 = k_5;
+        loop_init_7 = false;
+        uint _e56 = k_4;
         if ((_e56 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e60 = k_5;
+            uint _e60 = k_4;
             float wk = _e21.a[_e60];
             if (!((wk > 0.0))) {
                 continue;
             }
-            uint _e65 = k_5;
+            uint _e65 = k_4;
             last = _e65;
             float _e66 = acc_3;
             if ((target_mass < (_e66 + wk))) {
-                uint _e69 = k_5;
+                uint _e69 = k_4;
                 c = _e69;
                 float _e70 = acc_3;
                 float _e73 = fur_unit(((target_mass - _e70) / wk));
@@ -1078,7 +947,7 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     }
     float total_weight = ((((_e21.a[0] + _e21.a[1]) + _e21.a[2]) + _e21.a[3]) + _e21.a[4]);
     float _e98 = u0_;
-    bool negative_1 = (_e98 < 0.5);
+    bool negative = (_e98 < 0.5);
     uint _e103 = c;
     if ((_e103 < 3u)) {
         uint _e106 = c;
@@ -1110,7 +979,7 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     float _e169 = fur_rows_total(_e167);
     float _e171 = fur_rows_invert_between(_e167, 0.0, _e169, u_3.z);
     float abs_phi_1 = clamp(_e171, 0.0, FUR_PI);
-    float _e177 = fur_wrap_angle((negative_1 ? -(abs_phi_1) : abs_phi_1));
+    float _e177 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
     float _e178 = theta_i_4;
     FurLookups _e179 = fur_lookups(_e178, theta_r_5, _e177);
     float _e180 = theta_i_4;
@@ -1118,49 +987,49 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     float _e182 = fur_density_of(_e179, total_weight, _e181);
     if ((_e182 > 0.0)) {
         bool _e187 = fur_finite(_e182);
-        local_18 = _e187;
+        local_15 = _e187;
     } else {
-        local_18 = false;
+        local_15 = false;
     }
-    bool _e189 = local_18;
+    bool _e189 = local_15;
     if (!(_e189)) {
         FurSample _e191 = out_1;
         return _e191;
     }
     FurFamilies _e192 = fur_assemble(_e179);
     float _e193 = theta_i_4;
-    float k_7 = (max(cos(_e193), 0.0) / _e182);
+    float k_6 = (max(cos(_e193), 0.0) / _e182);
     float _e198 = theta_i_4;
-    out_1 = FurSample(_e198, _e177, _e182, max((_e192.total * k_7), vec3(0.0)), family, true);
+    out_1 = FurSample(_e198, _e177, _e182, max((_e192.total * k_6), vec3(0.0)), family, true);
     FurSample _e206 = out_1;
     return _e206;
 }
 
 void fur_store(uint q, FurFamilies f_1) {
-    uint k_6 = 0u;
+    uint k_5 = 0u;
     uint base_1 = (16u * q);
     vec3 parts[5] = vec3[5](f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total);
-    bool loop_init_9 = true;
+    bool loop_init_8 = true;
     while(true) {
-        if (!loop_init_9) {
-            uint _e46 = k_6;
-            k_6 = (_e46 + 1u);
+        if (!loop_init_8) {
+            uint _e46 = k_5;
+            k_5 = (_e46 + 1u);
         }
-        loop_init_9 = false;
-        uint _e12 = k_6;
+        loop_init_8 = false;
+        uint _e12 = k_5;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_6;
-            uint _e21 = k_6;
+            uint _e17 = k_5;
+            uint _e21 = k_5;
             _group_0_binding_2_cs[(base_1 + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_6;
-            uint _e32 = k_6;
+            uint _e26 = k_5;
+            uint _e32 = k_5;
             _group_0_binding_2_cs[((base_1 + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_6;
-            uint _e43 = k_6;
+            uint _e37 = k_5;
+            uint _e43 = k_5;
             _group_0_binding_2_cs[((base_1 + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1170,13 +1039,13 @@ void fur_store(uint q, FurFamilies f_1) {
 
 void main() {
     uvec3 id = gl_GlobalInvocationID;
-    uint q_2 = id.x;
-    if ((q_2 >= uint(_group_0_binding_1_cs.length()))) {
+    uint q_1 = id.x;
+    if ((q_1 >= uint(_group_0_binding_1_cs.length()))) {
         return;
     }
-    vec4 a_4 = _group_0_binding_1_cs[q_2];
-    FurFamilies _e11 = fur_eval_far(a_4.x, a_4.y, a_4.z);
-    fur_store(q_2, _e11);
+    vec4 a_5 = _group_0_binding_1_cs[q_1];
+    FurFamilies _e11 = fur_eval_far(a_5.x, a_5.y, a_5.z);
+    fur_store(q_1, _e11);
     return;
 }
 

@@ -7,14 +7,21 @@
 //! [`BakedBcsdf::from_bytes`]; evaluation then never fails, never panics and never returns NaN.
 //! Sampling and pdf ([`crate::Bcsdf`]) are in [`crate::sampling::baked`].
 
-use crate::frame::{Angles, Vec3};
+use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
 use crate::lut::cdf::{Density, DensityLayout, Nodes};
 use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
+use texels::{corner_weights, m_linear, ms_bilinear, n_bilinear};
+
+mod batch;
+mod simd;
+mod texels;
+
 use crate::math::{cos_within_half_pi, Libm, Math, PI};
 use crate::model::inv_cos2_theta_i;
 use crate::params::FurParams;
 use crate::spectrum::Rgb;
+pub use batch::BatchLengthError;
 use core::marker::PhantomData;
 
 /// One uniform table axis over [lo, lo + span] with `nodes` nodes.
@@ -51,8 +58,10 @@ impl Axis {
     pub(crate) fn locate(&self, x: f32) -> (usize, f32) {
         // `max` first: NaN becomes 0 (the callers pass finite angles anyway).
         let u = (x * self.inv_step + self.offset).max(0.0).min(self.last);
-        // u ∈ [0, nodes − 1] here; the i32 conversions are the cheap ones on every target.
-        let i = (u as i32).min(self.nodes as i32 - 2);
+        // SAFETY: u ∈ [0, nodes − 1] ⊂ [0, 8191] and never NaN (`max` maps NaN to 0), so the
+        // truncation is in range; unchecked, it is one instruction instead of a saturating
+        // sequence with two compares.
+        let i = unsafe { u.to_int_unchecked::<i32>() }.min(self.nodes as i32 - 2);
         (i as u32 as usize, u - i as f32)
     }
 }
@@ -71,6 +80,8 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) nodes: Nodes<'a>,
     /// The whole blob (the sampling section is read from it).
     pub(crate) blob: &'a [u8],
+    /// Byte offset of table `M` in the blob.
+    m_start: usize,
     /// Where each sampled density lives ([`Density::index`] order).
     pub(crate) densities: [DensityLayout; 9],
     pub(crate) sum: Axis,
@@ -79,6 +90,54 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) ms_i: Axis,
     pub(crate) ms_r: Axis,
     _math: PhantomData<M>,
+}
+
+/// Where one query reads the tables: lower texel indices and interpolation weights (table
+/// scale folded in), plus the two factors evaluated exactly.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Place {
+    /// Table `M`: texel index, weights of texels m and m + 1.
+    m: usize,
+    m_w: [f32; 2],
+    /// Table `M_s`: texel index (row-major), corner weights.
+    ms: usize,
+    ms_w: [f32; 4],
+    /// Table `N`: texel index (row-major), corner weights.
+    n: usize,
+    n_w: [f32; 4],
+    /// |φ|/π.
+    front: f32,
+    /// 1/cos²θ_i, guarded.
+    inv_cos2: f32,
+}
+
+impl Place {
+    /// The texel indices (`M`, `M_s`, `N`) and the twelve floats, for storage by field.
+    #[inline(always)]
+    fn into_parts(self) -> ([u32; 3], [f32; 12]) {
+        let [a, b] = self.m_w;
+        let [c, d, e, f] = self.ms_w;
+        let [g, h, i, j] = self.n_w;
+        (
+            [self.m as u32, self.ms as u32, self.n as u32],
+            [a, b, c, d, e, f, g, h, i, j, self.front, self.inv_cos2],
+        )
+    }
+
+    /// The inverse of [`Place::into_parts`].
+    #[inline(always)]
+    fn from_parts(index: [u32; 3], w: [f32; 12]) -> Place {
+        Place {
+            m: index[0] as usize,
+            m_w: [w[0], w[1]],
+            ms: index[1] as usize,
+            ms_w: [w[2], w[3], w[4], w[5]],
+            n: index[2] as usize,
+            n_w: [w[6], w[7], w[8], w[9]],
+            front: w[10],
+            inv_cos2: w[11],
+        }
+    }
 }
 
 /// The table lookups of one query, shared by evaluation and pdf.
@@ -94,71 +153,6 @@ pub(crate) struct Lookups {
     pub(crate) front: f32,
     /// 1/cos²θ_i, guarded.
     pub(crate) inv_cos2: f32,
-}
-
-/// The `B` bytes of texels `index` and `index + 1` of a table with `C` channels
-/// (`B` = 4·C), as a fixed-size array so that the per-channel loops below carry no bounds
-/// checks.
-#[inline(always)]
-fn texel_pair<const C: usize, const B: usize>(data: &[u8], index: usize) -> &[u8; B] {
-    let start = 2 * C * index;
-    // Validation guarantees the range; a miss would read zeros (a pointer select, so the
-    // decoding below stays branch- and blend-free), never panic.
-    match data.get(start..).and_then(|s| s.get(..B)) {
-        Some(s) => s.try_into().unwrap_or(&[0; B]),
-        None => &[0; B],
-    }
-}
-
-/// The `H` = 2·C halves of a texel pair, converted (× 2^−112, see [`lut::f16_biased`]).
-#[inline(always)]
-fn decode<const B: usize, const H: usize>(bytes: &[u8; B]) -> [f32; H] {
-    let mut out = [0.0; H];
-    for (o, pair) in out.iter_mut().zip(bytes.chunks_exact(2)) {
-        *o = f16_biased(u16::from_le_bytes([pair[0], pair[1]]));
-    }
-    out
-}
-
-/// Linear lookup between texels `index` and `index + 1` (`C` channels each, `B` = 4·C bytes,
-/// `H` = 2·C halves) with weight `w` of the upper one; `k` (table scale × 2^112) is folded
-/// into the weights.
-#[inline(always)]
-fn linear<const C: usize, const B: usize, const H: usize>(
-    data: &[u8],
-    (index, w): (usize, f32),
-    k: f32,
-) -> [f32; C] {
-    let (w0, w1) = ((1.0 - w) * k, w * k);
-    let t: [f32; H] = decode(texel_pair::<C, B>(data, index));
-    let mut out = [0.0; C];
-    for c in 0..C {
-        out[c] = w0 * t[c] + w1 * t[C + c];
-    }
-    out
-}
-
-/// Bilinear lookup in a row-major table of width `width` (`C` channels, `B` = 4·C bytes and
-/// `H` = 2·C halves per texel pair), rows by `row`, columns by `col`; `k` (table scale ×
-/// 2^112) is folded into the four corner weights.
-#[inline(always)]
-fn bilinear<const C: usize, const B: usize, const H: usize>(
-    data: &[u8],
-    width: usize,
-    (row, wy): (usize, f32),
-    (col, wx): (usize, f32),
-    k: f32,
-) -> [f32; C] {
-    let (ky0, ky1) = ((1.0 - wy) * k, wy * k);
-    let w = [ky0 * (1.0 - wx), ky0 * wx, ky1 * (1.0 - wx), ky1 * wx];
-    let i0 = row * width + col;
-    let t: [f32; H] = decode(texel_pair::<C, B>(data, i0));
-    let b: [f32; H] = decode(texel_pair::<C, B>(data, i0 + width));
-    let mut out = [0.0; C];
-    for c in 0..C {
-        out[c] = w[0] * t[c] + w[1] * t[C + c] + w[2] * b[c] + w[3] * b[C + c];
-    }
-    out
 }
 
 impl<'a> BakedBcsdf<'a, Libm> {
@@ -188,6 +182,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             unbias,
             nodes: Nodes::new(bytes, res, header.scales),
             blob: bytes,
+            m_start: res.byte_range(Table::M).start,
             densities: Density::ALL.map(|d| res.density_layout(d)),
             sum: Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
             theta_r: Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
@@ -222,43 +217,66 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// The table lookups of one query.
-    #[inline]
-    pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
-        let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
-        let abs_phi = phi.abs();
+    /// Where one query reads the tables (θ_i, θ_r and |φ| of validated angles). Pure
+    /// arithmetic, no memory reads besides `self`: the batch evaluator runs it over many
+    /// queries in one loop, which the compiler vectorises.
+    #[inline(always)]
+    pub(crate) fn place(&self, ti: f32, tr: f32, abs_phi: f32) -> Place {
         let res = &self.header.res;
-
-        // M_g(θ_i + θ_r), the three cuticle groups side by side.
-        let (i, w) = self.sum.locate(ti + tr);
+        // M_g(θ_i + θ_r): linear.
+        let (m, w) = self.sum.locate(ti + tr);
         let km = self.unbias[Table::M as usize];
-        let m = linear::<3, 12, 6>(self.tables[Table::M as usize], (i, w), km);
-
-        // M^s_back and M^s_front at (θ_i, θ_r).
-        let kms = self.unbias[Table::MS as usize];
-        let ms = bilinear::<2, 8, 4>(
-            self.tables[Table::MS as usize],
-            res.n_ms_i as usize,
-            self.ms_r.locate(tr),
-            self.ms_i.locate(ti),
-            kms,
-        );
-
-        // N_g(|θ_r|, |φ|) for the three groups and the scattered lobes, one 12-channel table.
-        let n = bilinear::<12, 48, 24>(
-            self.tables[Table::N as usize],
-            res.n_phi as usize,
-            self.theta_r.locate(tr.abs()),
-            self.phi.locate(abs_phi),
-            self.unbias[Table::N as usize],
-        );
-        Lookups {
+        // M^s_back and M^s_front at (θ_i, θ_r): bilinear.
+        let (row, wy) = self.ms_r.locate(tr);
+        let (col, wx) = self.ms_i.locate(ti);
+        let ms = row * res.n_ms_i as usize + col;
+        let ms_w = corner_weights(wy, wx, self.unbias[Table::MS as usize]);
+        // N_g(|θ_r|, |φ|), one 12-channel table: bilinear.
+        let (row, wy) = self.theta_r.locate(tr.abs());
+        let (col, wx) = self.phi.locate(abs_phi);
+        let n = row * res.n_phi as usize + col;
+        let n_w = corner_weights(wy, wx, self.unbias[Table::N as usize]);
+        Place {
             m,
+            m_w: [(1.0 - w) * km, w * km],
             ms,
+            ms_w,
             n,
+            n_w,
             front: (abs_phi * (1.0 / PI)).min(1.0),
             inv_cos2: inv_cos2_theta_i(cos_within_half_pi(ti)),
         }
+    }
+
+    /// The table reads of one query at `p`.
+    #[inline(always)]
+    pub(crate) fn gather(&self, p: &Place) -> Lookups {
+        let res = &self.header.res;
+        Lookups {
+            // Read from the blob: a pair is read as eight halves (table N follows M).
+            m: m_linear(self.blob, self.m_start, p.m, p.m_w[0], p.m_w[1]),
+            ms: ms_bilinear(
+                self.tables[Table::MS as usize],
+                res.n_ms_i as usize,
+                p.ms,
+                p.ms_w,
+            ),
+            n: n_bilinear(
+                self.tables[Table::N as usize],
+                res.n_phi as usize,
+                p.n,
+                p.n_w,
+            ),
+            front: p.front,
+            inv_cos2: p.inv_cos2,
+        }
+    }
+
+    /// The table lookups of one query.
+    #[inline]
+    pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
+        let p = self.place(angles.theta_i(), angles.theta_r(), angles.phi().abs());
+        self.gather(&p)
     }
 
     /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and
@@ -276,6 +294,23 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         Families::from_array(out)
     }
 
+    /// [`Self::assemble`] followed by [`Families::total`], without forming the families:
+    /// the same products, summed in the same order (from zero, R, TT, TRT, then the
+    /// scattered family), so the same bits.
+    #[inline(always)]
+    pub(crate) fn total(l: &Lookups) -> Rgb {
+        let [back, front] = l.ms;
+        let ms = back + l.front * (front - back);
+        let weight = [l.m[0], l.m[1], l.m[2], ms].map(|m| m * l.inv_cos2);
+        let mut total = [0.0f32; 3];
+        for (f, w) in weight.iter().enumerate() {
+            for (c, t) in total.iter_mut().enumerate() {
+                *t += l.n[3 * f + c] * w;
+            }
+        }
+        Rgb(total)
+    }
+
     /// Far-field S(ω_i, ω_r) per lobe family, from the tables (docs/model.md §8).
     #[inline]
     #[must_use]
@@ -283,12 +318,29 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         Self::assemble(&self.lookups(angles))
     }
 
-    /// Far-field S from world-space directions (see [`Angles::from_directions`]); invalid
-    /// directions give zero.
+    /// Far-field S from world-space directions: `wi` toward the light, `wr` toward the viewer,
+    /// `tangent` the fiber direction, none necessarily of unit length. Invalid directions
+    /// (non-finite, zero length) give zero; [`BakedBcsdf::try_eval_far_dirs`] says why.
+    ///
+    /// The angles come from a branch-free polynomial conversion (within about 3e-7 rad of
+    /// [`Angles::from_directions`], docs/lut.md), so the result can differ from
+    /// `eval_far(&Angles::from_directions(..)?)` in the last bits.
+    #[inline]
+    #[must_use]
     pub fn eval_far_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
-        match Angles::from_directions::<M>(wi, wr, tangent) {
-            Ok(a) => self.eval_far(&a),
-            Err(_) => Families::ZERO,
-        }
+        self.try_eval_far_dirs(wi, wr, tangent)
+            .unwrap_or(Families::ZERO)
+    }
+
+    /// [`BakedBcsdf::eval_far_dirs`], or why the directions were rejected.
+    #[inline]
+    pub fn try_eval_far_dirs(
+        &self,
+        wi: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+    ) -> Result<Families, AngleError> {
+        let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        Ok(Self::assemble(&self.gather(&self.place(ti, tr, abs_phi))))
     }
 }

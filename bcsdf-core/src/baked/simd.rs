@@ -1,0 +1,171 @@
+//! Four f32 lanes for the texel kernels ([`super::texels`]): SSE2 on x86-64 (part of the
+//! architecture's baseline, so no runtime detection and no `target-cpu` flag), plain arrays
+//! elsewhere. docs/benchmarks.md says why this is written out rather than left to the
+//! auto-vectoriser (it spread the pair-wise texel reads across scalar registers).
+//!
+//! Every operation is a lane-wise IEEE-754 operation (add, multiply, and the exact
+//! half-to-float shift of [`crate::lut::f16_biased`]), so both implementations give the same
+//! bits; `tests::matches_portable` checks the SSE2 one against the portable one.
+
+#[cfg(target_arch = "x86_64")]
+pub(crate) use sse2::F4;
+
+#[cfg(not(target_arch = "x86_64"))]
+pub(crate) use portable::F4;
+
+#[cfg(target_arch = "x86_64")]
+mod sse2 {
+    use core::arch::x86_64::{
+        __m128, _mm_add_ps, _mm_castsi128_ps, _mm_loadl_epi64, _mm_loadu_si128, _mm_mul_ps,
+        _mm_set1_ps, _mm_setzero_si128, _mm_slli_epi32, _mm_storeu_ps, _mm_unpackhi_epi16,
+        _mm_unpacklo_epi16,
+    };
+
+    /// Four f32 lanes in an SSE register.
+    #[derive(Clone, Copy, Debug)]
+    pub(crate) struct F4(__m128);
+
+    impl F4 {
+        /// `v` in every lane.
+        #[inline(always)]
+        pub(crate) fn splat(v: f32) -> F4 {
+            // SAFETY (every intrinsic call in this module): SSE2 is part of the x86-64
+            // baseline, so the target feature is always present.
+            F4(unsafe { _mm_set1_ps(v) })
+        }
+
+        /// Lane-wise product.
+        #[inline(always)]
+        pub(crate) fn mul(self, a: F4) -> F4 {
+            F4(unsafe { _mm_mul_ps(self.0, a.0) })
+        }
+
+        /// Lane-wise sum.
+        #[inline(always)]
+        pub(crate) fn add(self, a: F4) -> F4 {
+            F4(unsafe { _mm_add_ps(self.0, a.0) })
+        }
+
+        /// The lanes as an array.
+        #[inline(always)]
+        pub(crate) fn to_array(self) -> [f32; 4] {
+            let mut out = [0.0; 4];
+            // SAFETY: `out` is 16 writable bytes; `storeu` has no alignment requirement.
+            unsafe { _mm_storeu_ps(out.as_mut_ptr(), self.0) };
+            out
+        }
+
+        /// Four halves (eight little-endian bytes) decoded × 2^−112: zero-extended to 32
+        /// bits and shifted into an f32's exponent and mantissa.
+        #[inline(always)]
+        pub(crate) fn halves4(b: &[u8; 8]) -> F4 {
+            // SAFETY: `b` is 8 readable bytes; `loadl_epi64` reads 8 bytes, unaligned.
+            unsafe {
+                let v = _mm_loadl_epi64(b.as_ptr().cast());
+                let wide = _mm_unpacklo_epi16(v, _mm_setzero_si128());
+                F4(_mm_castsi128_ps(_mm_slli_epi32::<13>(wide)))
+            }
+        }
+
+        /// Eight halves (sixteen bytes) decoded as [`F4::halves4`], low four first.
+        #[inline(always)]
+        pub(crate) fn halves8(b: &[u8; 16]) -> [F4; 2] {
+            // SAFETY: `b` is 16 readable bytes; `loadu_si128` has no alignment requirement.
+            unsafe {
+                let v = _mm_loadu_si128(b.as_ptr().cast());
+                let z = _mm_setzero_si128();
+                let lo = _mm_slli_epi32::<13>(_mm_unpacklo_epi16(v, z));
+                let hi = _mm_slli_epi32::<13>(_mm_unpackhi_epi16(v, z));
+                [F4(_mm_castsi128_ps(lo)), F4(_mm_castsi128_ps(hi))]
+            }
+        }
+    }
+}
+
+#[cfg_attr(target_arch = "x86_64", allow(dead_code))]
+mod portable {
+    /// Four f32 lanes in an array.
+    #[derive(Clone, Copy, Debug)]
+    pub(crate) struct F4([f32; 4]);
+
+    impl F4 {
+        #[inline(always)]
+        fn zip(self, a: F4, f: impl Fn(f32, f32) -> f32) -> F4 {
+            F4([
+                f(self.0[0], a.0[0]),
+                f(self.0[1], a.0[1]),
+                f(self.0[2], a.0[2]),
+                f(self.0[3], a.0[3]),
+            ])
+        }
+
+        /// `v` in every lane.
+        #[inline(always)]
+        pub(crate) fn splat(v: f32) -> F4 {
+            F4([v; 4])
+        }
+
+        /// Lane-wise product.
+        #[inline(always)]
+        pub(crate) fn mul(self, a: F4) -> F4 {
+            self.zip(a, |x, y| x * y)
+        }
+
+        /// Lane-wise sum.
+        #[inline(always)]
+        pub(crate) fn add(self, a: F4) -> F4 {
+            self.zip(a, |x, y| x + y)
+        }
+
+        /// The lanes as an array.
+        #[inline(always)]
+        pub(crate) fn to_array(self) -> [f32; 4] {
+            self.0
+        }
+
+        /// Four halves (eight little-endian bytes) decoded × 2^−112.
+        #[inline(always)]
+        pub(crate) fn halves4(b: &[u8; 8]) -> F4 {
+            let h = |i: usize| crate::lut::f16_biased(u16::from_le_bytes([b[2 * i], b[2 * i + 1]]));
+            F4([h(0), h(1), h(2), h(3)])
+        }
+
+        /// Eight halves (sixteen bytes), low four first.
+        #[inline(always)]
+        pub(crate) fn halves8(b: &[u8; 16]) -> [F4; 2] {
+            let (lo, hi) = b.split_at(8);
+            [
+                F4::halves4(lo.try_into().unwrap_or(&[0; 8])),
+                F4::halves4(hi.try_into().unwrap_or(&[0; 8])),
+            ]
+        }
+    }
+}
+
+#[cfg(all(test, target_arch = "x86_64"))]
+mod tests {
+    use super::{portable, sse2};
+
+    #[test]
+    fn matches_portable() {
+        // Every half bit pattern through both decoders, and the arithmetic on the results.
+        let mut bytes = [0u8; 16];
+        for start in (0..=u16::MAX).step_by(8) {
+            for (i, pair) in bytes.chunks_exact_mut(2).enumerate() {
+                pair.copy_from_slice(&start.wrapping_add(i as u16).to_le_bytes());
+            }
+            let [a, b] = sse2::F4::halves8(&bytes);
+            let [c, d] = portable::F4::halves8(&bytes);
+            let w = 0.3_f32 * (start as f32 + 1.0);
+            let x = a.mul(sse2::F4::splat(w)).add(b);
+            let y = c.mul(portable::F4::splat(w)).add(d);
+            for (p, q) in [(a.to_array(), c.to_array()), (x.to_array(), y.to_array())] {
+                assert_eq!(
+                    p.map(f32::to_bits),
+                    q.map(f32::to_bits),
+                    "halves from {start}"
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,92 @@
+//! Reading and interpolating the half-float texels of the three tables (docs/lut.md): the
+//! inner kernel of every baked evaluation, scalar or batched.
+//!
+//! Each kernel reads whole runs of adjacent halves (a texel pair is contiguous in a row-major
+//! table) and works on four channels at a time ([`F4`]), so that the half-to-float decode
+//! (a zero-extension and one shift, [`crate::lut::f16_biased`]) and the weighted sums map
+//! onto 4-wide SIMD registers (SSE2, NEON) without shuffles. Every channel is still computed
+//! by the same sequence of IEEE operations as the scalar formula
+//! ((w₀·t₀ + w₁·t₁) + w₂·b₀) + w₃·b₁, so the results do not depend on how the compiler maps
+//! the lanes.
+//!
+//! A read that would fall outside the data is clamped to its end (validation makes this
+//! unreachable; it keeps the kernels free of panics and of out-of-bounds reads).
+
+use super::simd::F4;
+
+/// `B` bytes from `start`, clamped so that the read stays inside `data` (zeros if `data`
+/// is shorter than `B`). Validation and the axis clamping make the clamp a no-op; it makes
+/// the read safe whatever the index, at one compare per read.
+#[inline(always)]
+fn bytes<const B: usize>(data: &[u8], start: usize) -> &[u8; B] {
+    let Some(limit) = data.len().checked_sub(B) else {
+        return &[0; B];
+    };
+    let start = start.min(limit);
+    // SAFETY: start + B ≤ limit + B = data.len(), so the B bytes at `start` are in `data`;
+    // `[u8; B]` has alignment 1.
+    unsafe { &*data.as_ptr().add(start).cast::<[u8; B]>() }
+}
+
+/// The 24 halves of a 12-channel texel pair: texel `i` in groups 0–2, texel `i + 1` in 3–5.
+#[inline(always)]
+fn decode24(b: &[u8; 48]) -> [F4; 6] {
+    let (a, rest) = b.split_at(16);
+    let (c, d) = rest.split_at(16);
+    let [g0, g1] = F4::halves8(a.try_into().unwrap_or(&[0; 16]));
+    let [g2, g3] = F4::halves8(c.try_into().unwrap_or(&[0; 16]));
+    let [g4, g5] = F4::halves8(d.try_into().unwrap_or(&[0; 16]));
+    [g0, g1, g2, g3, g4, g5]
+}
+
+/// The four bilinear corner weights for row weight `wy` and column weight `wx`, with the
+/// table's scale `k` folded in: (1−wy)(1−wx), (1−wy)wx, wy(1−wx), wy·wx, each × k.
+#[inline(always)]
+pub(crate) fn corner_weights(wy: f32, wx: f32, k: f32) -> [f32; 4] {
+    let (ky0, ky1) = ((1.0 - wy) * k, wy * k);
+    [ky0 * (1.0 - wx), ky0 * wx, ky1 * (1.0 - wx), ky1 * wx]
+}
+
+/// Table `N` (12 channels) bilinearly: corner weights `w` ([`corner_weights`]) at texel
+/// `index` (row-major, row `width` texels long) and its right and lower neighbours.
+#[inline(always)]
+pub(crate) fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
+    let top = decode24(bytes::<48>(data, 24 * index));
+    let bottom = decode24(bytes::<48>(data, 24 * (index + width)));
+    let [w0, w1, w2, w3] = w.map(F4::splat);
+    let mut out = [0.0; 12];
+    for g in 0..3 {
+        // ((w0·t0 + w1·t1) + w2·b0) + w3·b1, lane-wise.
+        let s = w0.mul(top[g]).add(w1.mul(top[g + 3]));
+        let s = s.add(w2.mul(bottom[g])).add(w3.mul(bottom[g + 3]));
+        out[4 * g..4 * g + 4].copy_from_slice(&s.to_array());
+    }
+    out
+}
+
+/// Table `M` (3 channels) linearly between texels `index` and `index + 1` with weights
+/// `w0`, `w1` (scale folded in). `data` must continue past the table (the blob does: table
+/// `N` follows), so that the pair is read as one run of eight halves.
+#[inline(always)]
+pub(crate) fn m_linear(data: &[u8], start: usize, index: usize, w0: f32, w1: f32) -> [f32; 3] {
+    let [a, b] = F4::halves8(bytes::<16>(data, start + 6 * index));
+    let (a, b) = (a.to_array(), b.to_array());
+    // Texel `index` is a[0..3], texel `index + 1` is a[3], b[0], b[1].
+    [
+        w0 * a[0] + w1 * a[3],
+        w0 * a[1] + w1 * b[0],
+        w0 * a[2] + w1 * b[1],
+    ]
+}
+
+/// Table `M_s` (2 channels) bilinearly, as [`n_bilinear`].
+#[inline(always)]
+pub(crate) fn ms_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 2] {
+    let t = F4::halves4(bytes::<8>(data, 4 * index)).to_array();
+    let b = F4::halves4(bytes::<8>(data, 4 * (index + width))).to_array();
+    let mut out = [0.0; 2];
+    for c in 0..2 {
+        out[c] = w[0] * t[c] + w[1] * t[2 + c] + w[2] * b[c] + w[3] * b[2 + c];
+    }
+    out
+}

@@ -9,7 +9,8 @@
 //! - `far_field_baked_reference/<preset>`: a copy of the scalar baked path as it was before
 //!   issue 12 (`reference` below), so that the speed-up is a ratio measured in one run;
 //! - `far_field_baked_batch/<preset>/<size>`: `BakedBcsdf::eval_far_batch` over consecutive
-//!   batches of `size` queries (structure of arrays), per query (criterion's throughput);
+//!   batches of `size` queries (structure of arrays), per query (criterion's throughput),
+//!   with the CPU's best kernel (`BatchKernel::best`), and `sse2-256` with the baseline (SSE2) kernel;
 //! - `far_field_baked_dirs/<preset>`: `BakedBcsdf::eval_far_dirs(..).total()` on the same
 //!   directions as world-space vectors.
 //!
@@ -23,7 +24,7 @@
 
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
-use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::baked::{BakedBcsdf, BatchKernel};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams};
@@ -300,15 +301,22 @@ fn bench(c: &mut Criterion) {
             })
         });
         let mut group = c.benchmark_group(format!("far_field_baked_batch/{name}"));
-        for size in [64usize, 256] {
+        // The CPU's best kernel at two sizes, and the SSE2 kernel (x86-64's baseline).
+        let sse2 = baked.with_batch_kernel(BatchKernel::Baseline).unwrap();
+        let kernels = [
+            (&baked, 64usize, ""),
+            (&baked, 256, ""),
+            (&sse2, 256, "sse2-"),
+        ];
+        for (lut, size, label) in kernels {
             group.throughput(Throughput::Elements(size as u64));
             let mut out = vec![Rgb::ZERO; size];
             let mut start = 0usize;
-            group.bench_function(format!("{size}"), |b| {
+            group.bench_function(format!("{label}{size}"), |b| {
                 b.iter(|| {
                     let r = start..start + size;
                     start = (start + size) & 255;
-                    black_box(&baked)
+                    black_box(lut)
                         .eval_far_batch(&ti[r.clone()], &tr[r.clone()], &ph[r], &mut out)
                         .unwrap();
                     black_box(&out);

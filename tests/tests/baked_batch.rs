@@ -2,11 +2,12 @@
 //! `eval_far(&Angles::new(θ_i, θ_r, φ)?).total()`, or zero where `Angles::new` rejects the
 //! angles. 10⁵ queries per LUT, in batches of irregular sizes (so that every chunk boundary
 //! and remainder is crossed), mixing random angles with NaN, ±∞, φ far outside (−π, π],
-//! θ just beyond ±π/2, ±0, subnormals and the axis ends.
+//! θ just beyond ±π/2, ±0, subnormals and the axis ends. Every batch kernel this CPU has
+//! (SSE2, and AVX2 + F16C where present) is checked.
 
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
-use bcsdf_core::baked::{BakedBcsdf, BatchLengthError};
+use bcsdf_core::baked::{BakedBcsdf, BatchKernel, BatchLengthError};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams, Rgb};
@@ -73,58 +74,74 @@ fn angle(rng: &mut Rng, half_range: f32) -> f32 {
 fn batch_equals_scalar_bit_for_bit() {
     for preset in ["yan-row-a", "air-medulla", "human-hair"] {
         let blob = lut_blob(preset);
-        let lut = BakedBcsdf::from_bytes(&blob).unwrap();
-        let mut rng = Rng(0x5eed ^ preset.len() as u64);
-        let n = 100_000;
-        let ti: Vec<f32> = (0..n).map(|_| angle(&mut rng, FRAC_PI_2)).collect();
-        let tr: Vec<f32> = (0..n).map(|_| angle(&mut rng, FRAC_PI_2)).collect();
-        let ph: Vec<f32> = (0..n).map(|_| angle(&mut rng, PI)).collect();
-        let mut out = vec![Rgb::splat(-1.0); n];
-
-        // Irregular batch sizes: 1, 31, 32, 33, 64, 257 … and whatever remains.
-        const SIZES: [usize; 9] = [1, 31, 32, 33, 64, 257, 1000, 7, 4096];
-        let (mut start, mut s, mut rejected) = (0, 0, 0);
-        while start < n {
-            let end = (start + SIZES[s % SIZES.len()]).min(n);
-            rejected += lut
-                .eval_far_batch(
-                    &ti[start..end],
-                    &tr[start..end],
-                    &ph[start..end],
-                    &mut out[start..end],
-                )
-                .unwrap();
-            start = end;
-            s += 1;
+        let scalar_lut = BakedBcsdf::from_bytes(&blob).unwrap();
+        let mut kernels = vec![BatchKernel::Baseline];
+        if BatchKernel::best() != BatchKernel::Baseline {
+            kernels.push(BatchKernel::best());
         }
-
-        let mut expected_rejected = 0;
-        for k in 0..n {
-            let scalar = match Angles::new(ti[k], tr[k], ph[k]) {
-                Ok(a) => lut.eval_far(&a).total(),
-                Err(_) => {
-                    expected_rejected += 1;
-                    Rgb::ZERO
-                }
-            };
-            assert_eq!(
-                out[k].0.map(f32::to_bits),
-                scalar.0.map(f32::to_bits),
-                "{preset}: query {k} (θ_i {}, θ_r {}, φ {}): batch {:?}, scalar {:?}",
-                ti[k],
-                tr[k],
-                ph[k],
-                out[k],
-                scalar
-            );
+        for kernel in kernels {
+            let lut = scalar_lut.with_batch_kernel(kernel).unwrap();
+            check(preset, &scalar_lut, &lut);
         }
-        assert_eq!(rejected, expected_rejected, "{preset}: rejected count");
-        // The mix exercises both outcomes substantially.
-        assert!(
-            expected_rejected > n / 50 && expected_rejected < n / 5,
-            "{expected_rejected}"
+    }
+}
+
+/// The batch of `lut` against the scalar path of `scalar_lut` on 10⁵ queries.
+fn check(preset: &str, scalar_lut: &BakedBcsdf, lut: &BakedBcsdf) {
+    let kernel = lut.batch_kernel();
+    let mut rng = Rng(0x5eed ^ preset.len() as u64);
+    let n = 100_000;
+    let ti: Vec<f32> = (0..n).map(|_| angle(&mut rng, FRAC_PI_2)).collect();
+    let tr: Vec<f32> = (0..n).map(|_| angle(&mut rng, FRAC_PI_2)).collect();
+    let ph: Vec<f32> = (0..n).map(|_| angle(&mut rng, PI)).collect();
+    let mut out = vec![Rgb::splat(-1.0); n];
+
+    // Irregular batch sizes: 1, 31, 32, 33, 64, 257 … and whatever remains.
+    const SIZES: [usize; 9] = [1, 31, 32, 33, 64, 257, 1000, 7, 4096];
+    let (mut start, mut s, mut rejected) = (0, 0, 0);
+    while start < n {
+        let end = (start + SIZES[s % SIZES.len()]).min(n);
+        rejected += lut
+            .eval_far_batch(
+                &ti[start..end],
+                &tr[start..end],
+                &ph[start..end],
+                &mut out[start..end],
+            )
+            .unwrap();
+        start = end;
+        s += 1;
+    }
+
+    let mut expected_rejected = 0;
+    for k in 0..n {
+        let scalar = match Angles::new(ti[k], tr[k], ph[k]) {
+            Ok(a) => scalar_lut.eval_far(&a).total(),
+            Err(_) => {
+                expected_rejected += 1;
+                Rgb::ZERO
+            }
+        };
+        assert_eq!(
+            out[k].0.map(f32::to_bits),
+            scalar.0.map(f32::to_bits),
+            "{preset}, {kernel:?}: query {k} (θ_i {}, θ_r {}, φ {}): batch {:?}, scalar {:?}",
+            ti[k],
+            tr[k],
+            ph[k],
+            out[k],
+            scalar
         );
     }
+    assert_eq!(
+        rejected, expected_rejected,
+        "{preset}, {kernel:?}: rejected count"
+    );
+    // The mix exercises both outcomes substantially.
+    assert!(
+        expected_rejected > n / 50 && expected_rejected < n / 5,
+        "{expected_rejected}"
+    );
 }
 
 #[test]

@@ -15,6 +15,7 @@
 //! [`Families::total`], so the results equal the scalar path's bit for bit
 //! (`tests/tests/baked_batch.rs` checks 10⁵ queries, NaN, ∞ and edge angles included).
 
+use super::texels::{Baseline, NKernel};
 use super::{BakedBcsdf, Place};
 use crate::math::{wrap_angle, Math, PI};
 use crate::spectrum::Rgb;
@@ -26,6 +27,29 @@ const CHUNK: usize = 32;
 
 /// π/2, the largest |θ| [`Angles::new`] accepts.
 const HALF_PI: f32 = PI / 2.0;
+
+/// The inner kernel of [`BakedBcsdf::eval_far_batch`], chosen once per LUT from the CPU
+/// (every kernel gives the same bits).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BatchKernel {
+    /// Four lanes: SSE2 on x86-64 (its baseline), portable arrays elsewhere.
+    Baseline,
+    /// AVX2 and F16C (x86-64 CPUs since about 2013), detected at run time.
+    #[cfg(target_arch = "x86_64")]
+    Avx2F16c,
+}
+
+impl BatchKernel {
+    /// The fastest kernel this CPU supports.
+    #[must_use]
+    pub fn best() -> BatchKernel {
+        #[cfg(target_arch = "x86_64")]
+        if super::simd::avx2_f16c() {
+            return BatchKernel::Avx2F16c;
+        }
+        BatchKernel::Baseline
+    }
+}
 
 /// The slices given to a batch call differ in length.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -82,6 +106,58 @@ impl<M: Math> BakedBcsdf<'_, M> {
                 output: n,
             });
         }
+        Ok(match self.batch_kernel {
+            BatchKernel::Baseline => self.eval_chunks::<Baseline>(theta_i, theta_r, phi, out),
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: `BatchKernel::Avx2F16c` is only ever set after `avx2_f16c()` confirmed
+            // the CPU and OS support AVX, AVX2 and F16C.
+            BatchKernel::Avx2F16c => unsafe { self.eval_chunks_avx2(theta_i, theta_r, phi, out) },
+        })
+    }
+
+    /// The kernel [`BakedBcsdf::eval_far_batch`] uses on this CPU.
+    #[must_use]
+    pub fn batch_kernel(&self) -> BatchKernel {
+        self.batch_kernel
+    }
+
+    /// The same LUT with batch kernel `kernel`, or `None` if this CPU lacks it. The kernels
+    /// give the same bits; this is for tests and benchmarks.
+    #[must_use]
+    pub fn with_batch_kernel(mut self, kernel: BatchKernel) -> Option<Self> {
+        if kernel != BatchKernel::Baseline && BatchKernel::best() != kernel {
+            return None;
+        }
+        self.batch_kernel = kernel;
+        Some(self)
+    }
+
+    /// [`BakedBcsdf::eval_chunks`] compiled for AVX2 and F16C (the compiler vectorises pass 2
+    /// eight queries wide; table `N` is read with `vcvtph2ps`).
+    ///
+    /// # Safety
+    /// The CPU must support AVX, AVX2 and F16C.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx,avx2,f16c")]
+    unsafe fn eval_chunks_avx2(
+        &self,
+        theta_i: &[f32],
+        theta_r: &[f32],
+        phi: &[f32],
+        out: &mut [Rgb],
+    ) -> usize {
+        self.eval_chunks::<super::texels::Avx2F16c>(theta_i, theta_r, phi, out)
+    }
+
+    /// Every chunk of equally long slices; returns the rejected count.
+    #[inline(always)]
+    fn eval_chunks<K: NKernel>(
+        &self,
+        theta_i: &[f32],
+        theta_r: &[f32],
+        phi: &[f32],
+        out: &mut [Rgb],
+    ) -> usize {
         let mut rejected = 0;
         let chunks = theta_i
             .chunks(CHUNK)
@@ -89,14 +165,14 @@ impl<M: Math> BakedBcsdf<'_, M> {
             .zip(phi.chunks(CHUNK))
             .zip(out.chunks_mut(CHUNK));
         for (((ti, tr), ph), out) in chunks {
-            rejected += self.eval_chunk(ti, tr, ph, out);
+            rejected += self.eval_chunk::<K>(ti, tr, ph, out);
         }
-        Ok(rejected)
+        rejected
     }
 
     /// One chunk (all slices of one length ≤ [`CHUNK`]); returns the rejected count.
-    #[inline]
-    fn eval_chunk(&self, ti: &[f32], tr: &[f32], ph: &[f32], out: &mut [Rgb]) -> usize {
+    #[inline(always)]
+    fn eval_chunk<K: NKernel>(&self, ti: &[f32], tr: &[f32], ph: &[f32], out: &mut [Rgb]) -> usize {
         // Pass 1: validation, as `Angles::new` but branch-free over the chunk; φ outside
         // (−π, π] (rare) is wrapped by `wrap_angle` in a second loop. Rejected lanes get
         // angles 0 (placed, never read).
@@ -136,7 +212,7 @@ impl<M: Math> BakedBcsdf<'_, M> {
         // Pass 3: texel reads and the family sum.
         for (k, (o, ok)) in out.iter_mut().zip(valid).enumerate() {
             *o = if ok {
-                Self::total(&self.gather(&places.get(k)))
+                Self::total(&self.gather_with::<K>(&places.get(k)))
             } else {
                 Rgb::ZERO
             };

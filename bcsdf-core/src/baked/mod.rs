@@ -11,7 +11,7 @@ use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
 use crate::lut::cdf::{Density, DensityLayout, Nodes};
 use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
-use texels::{corner_weights, m_linear, ms_bilinear, n_bilinear};
+use texels::{corner_weights, m_linear, ms_bilinear, Baseline, NKernel};
 
 mod batch;
 mod simd;
@@ -21,7 +21,7 @@ use crate::math::{cos_within_half_pi, Libm, Math, PI};
 use crate::model::inv_cos2_theta_i;
 use crate::params::FurParams;
 use crate::spectrum::Rgb;
-pub use batch::BatchLengthError;
+pub use batch::{BatchKernel, BatchLengthError};
 use core::marker::PhantomData;
 
 /// One uniform table axis over [lo, lo + span] with `nodes` nodes.
@@ -82,6 +82,8 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) blob: &'a [u8],
     /// Byte offset of table `M` in the blob.
     m_start: usize,
+    /// The kernel [`BakedBcsdf::eval_far_batch`] uses.
+    batch_kernel: BatchKernel,
     /// Where each sampled density lives ([`Density::index`] order).
     pub(crate) densities: [DensityLayout; 9],
     pub(crate) sum: Axis,
@@ -183,6 +185,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             nodes: Nodes::new(bytes, res, header.scales),
             blob: bytes,
             m_start: res.byte_range(Table::M).start,
+            batch_kernel: BatchKernel::best(),
             densities: Density::ALL.map(|d| res.density_layout(d)),
             sum: Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
             theta_r: Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
@@ -251,6 +254,12 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// The table reads of one query at `p`.
     #[inline(always)]
     pub(crate) fn gather(&self, p: &Place) -> Lookups {
+        self.gather_with::<Baseline>(p)
+    }
+
+    /// [`BakedBcsdf::gather`] with table `N` read by kernel `K` (same bits).
+    #[inline(always)]
+    pub(crate) fn gather_with<K: NKernel>(&self, p: &Place) -> Lookups {
         let res = &self.header.res;
         Lookups {
             // Read from the blob: a pair is read as eight halves (table N follows M).
@@ -261,7 +270,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
                 p.ms,
                 p.ms_w,
             ),
-            n: n_bilinear(
+            n: K::n_bilinear(
                 self.tables[Table::N as usize],
                 res.n_phi as usize,
                 p.n,

@@ -169,3 +169,27 @@ mod tests {
         }
     }
 }
+
+/// Whether this x86-64 CPU and its OS support AVX2 and F16C (CPUID, and XGETBV for the
+/// AVX register state). No std: read from CPUID directly, once per [`super::BakedBcsdf`].
+#[cfg(target_arch = "x86_64")]
+pub(crate) fn avx2_f16c() -> bool {
+    use core::arch::x86_64::{__cpuid, __cpuid_count, _xgetbv};
+    // SAFETY: CPUID exists on every x86-64 CPU; leaf 7 is read only when leaf 0 says it
+    // exists; XGETBV is executed only when CPUID reports OSXSAVE (the OS enabled it).
+    unsafe {
+        if __cpuid(0).eax < 7 {
+            return false;
+        }
+        let ecx = __cpuid(1).ecx;
+        let (osxsave, avx, f16c) = (ecx & 1 << 27 != 0, ecx & 1 << 28 != 0, ecx & 1 << 29 != 0);
+        if !(osxsave && avx && f16c) {
+            return false;
+        }
+        // XMM and YMM state enabled by the OS.
+        if _xgetbv(0) & 0b110 != 0b110 {
+            return false;
+        }
+        __cpuid_count(7, 0).ebx & 1 << 5 != 0
+    }
+}

@@ -14,6 +14,22 @@
 
 use super::simd::F4;
 
+/// How a batch reads table `N` (`BakedBcsdf::batch_kernel`).
+pub(crate) trait NKernel {
+    /// Table `N` bilinearly, as [`n_bilinear`].
+    fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12];
+}
+
+/// [`n_bilinear`]: four lanes (SSE2 on x86-64, portable arrays elsewhere).
+pub(crate) struct Baseline;
+
+impl NKernel for Baseline {
+    #[inline(always)]
+    fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
+        n_bilinear(data, width, index, w)
+    }
+}
+
 /// `B` bytes from `start`, clamped so that the read stays inside `data` (zeros if `data`
 /// is shorter than `B`). Validation and the axis clamping make the clamp a no-op; it makes
 /// the read safe whatever the index, at one compare per read.
@@ -89,4 +105,61 @@ pub(crate) fn ms_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) 
         out[c] = w[0] * t[c] + w[1] * t[2 + c] + w[2] * b[c] + w[3] * b[2 + c];
     }
     out
+}
+
+/// Table `N` with AVX and F16C: `vcvtph2ps` converts eight halves per instruction (true
+/// values, so the weights carry 2^−112 instead of the decode, which keeps every product and
+/// sum bit for bit those of [`n_bilinear`]: the weights are powers-of-two rescalings, exact
+/// in the normal range they stay in), eight channels in a 256-bit register and four in a
+/// 128-bit one. Only for functions compiled with those features
+/// (`BakedBcsdf::eval_far_batch` checks the CPU once, in `from_bytes`).
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct Avx2F16c;
+
+#[cfg(target_arch = "x86_64")]
+impl NKernel for Avx2F16c {
+    #[inline(always)]
+    fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
+        use core::arch::x86_64::{
+            __m128, __m256, _mm256_add_ps, _mm256_cvtph_ps, _mm256_mul_ps, _mm256_set1_ps,
+            _mm256_storeu_ps, _mm_add_ps, _mm_cvtph_ps, _mm_loadl_epi64, _mm_loadu_si128,
+            _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps,
+        };
+        /// 2^−112: the biased decode's factor, moved onto the weights.
+        const UNBIASED: f32 = f32::from_bits((127 - 112) << 23);
+        let top = bytes::<48>(data, 24 * index);
+        let bottom = bytes::<48>(data, 24 * (index + width));
+        let w = w.map(|x| x * UNBIASED);
+        let mut out = [0.0; 12];
+        // SAFETY: only reached from functions compiled with AVX, AVX2 and F16C, after the
+        // CPU check; every load reads inside a 48-byte texel pair (offsets 0 and 24: 16
+        // bytes; 16 and 40: 8 bytes); the stores write inside `out`.
+        unsafe {
+            // Channels 0–7 of texels i and i + 1 (halves 0–7 and 12–19), channels 8–11
+            // (halves 8–11 and 20–23).
+            let wide = |b: &[u8; 48], at: usize| -> __m256 {
+                _mm256_cvtph_ps(_mm_loadu_si128(b.as_ptr().add(at).cast()))
+            };
+            let narrow = |b: &[u8; 48], at: usize| -> __m128 {
+                _mm_cvtph_ps(_mm_loadl_epi64(b.as_ptr().add(at).cast()))
+            };
+            let [w0, w1, w2, w3] = w.map(|x| _mm256_set1_ps(x));
+            let lo = _mm256_add_ps(
+                _mm256_mul_ps(w0, wide(top, 0)),
+                _mm256_mul_ps(w1, wide(top, 24)),
+            );
+            let lo = _mm256_add_ps(lo, _mm256_mul_ps(w2, wide(bottom, 0)));
+            let lo = _mm256_add_ps(lo, _mm256_mul_ps(w3, wide(bottom, 24)));
+            let [v0, v1, v2, v3] = w.map(|x| _mm_set1_ps(x));
+            let hi = _mm_add_ps(
+                _mm_mul_ps(v0, narrow(top, 16)),
+                _mm_mul_ps(v1, narrow(top, 40)),
+            );
+            let hi = _mm_add_ps(hi, _mm_mul_ps(v2, narrow(bottom, 16)));
+            let hi = _mm_add_ps(hi, _mm_mul_ps(v3, narrow(bottom, 40)));
+            _mm256_storeu_ps(out.as_mut_ptr(), lo);
+            _mm_storeu_ps(out.as_mut_ptr().add(8), hi);
+        }
+        out
+    }
 }

@@ -62,8 +62,8 @@ pub fn scattered_paths<M: Math>(
     let fm = fresnel::medulla::<M>(cos_m, slice.eta_m_prime / slice.eta_c_prime);
     let ell_m = 2.0 * slice.kappa * cos_mu;
     let ec = transmittance::<M>(ext.cortex, cortex_leg(slice, chord, cos_m));
-    let p = 1.0 - M::exp(-ext.medulla_scattering * ell_m);
-    let u = M::exp(-ext.medulla * ell_m);
+    let p = 1.0 - M::exp_neg(ext.medulla_scattering * ell_m);
+    let u = M::exp_neg(ext.medulla * ell_m);
     let base = ec * exit * ((1.0 - f) * (1.0 - fm) * p);
     let refr = (c - a) + (mu - m);
     Some(ScatteredPaths {
@@ -122,7 +122,7 @@ pub fn azimuthal_on_row<M: Math>(
         let psi = phi - PI - paths.rotation[k];
         let v = if absorb > 0.0 {
             let (c, ell) = profiles.cn_and_mean_length_at(row, psi);
-            c * M::exp(-absorb * ell)
+            c * M::exp_neg(absorb * ell)
         } else {
             profiles.cn_at(row, psi)
         };

@@ -21,6 +21,11 @@ pub trait Math: Copy + Default + core::fmt::Debug + 'static {
     fn sin(x: f32) -> f32;
     /// Cosine.
     fn cos(x: f32) -> f32;
+    /// (sin x, cos x); one argument reduction where the backend has that.
+    #[inline]
+    fn sin_cos(x: f32) -> (f32, f32) {
+        (Self::sin(x), Self::cos(x))
+    }
     /// Arc sine; the argument is clamped to `[-1, 1]` by the callers.
     fn asin(x: f32) -> f32;
     /// Four-quadrant arc tangent of `y / x`.
@@ -52,6 +57,10 @@ impl Math for Libm {
     #[inline]
     fn cos(x: f32) -> f32 {
         libm::cosf(x)
+    }
+    #[inline]
+    fn sin_cos(x: f32) -> (f32, f32) {
+        libm::sincosf(x)
     }
     #[inline]
     fn asin(x: f32) -> f32 {

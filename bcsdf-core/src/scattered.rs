@@ -196,9 +196,10 @@ impl ScatteredLongitudinal {
     #[inline]
     pub fn refract<M: Math>(&self, theta: f32) -> (f32, f32) {
         let e = theta - self.alpha;
-        let s = M::sin(e) / self.eta_m;
+        let (sin_e, cos_e) = M::sin_cos(e);
+        let s = sin_e / self.eta_m;
         let cos_p = sqrt_pos::<M>((1.0 - s) * (1.0 + s)).max(1e-6);
-        (asin_clamped::<M>(s), M::cos(e).abs() / (self.eta_m * cos_p))
+        (asin_clamped::<M>(s), cos_e.abs() / (self.eta_m * cos_p))
     }
 
     /// θ'_in = −θ'_r, the view ray's travel direction inside the medulla at θ_r.
@@ -266,10 +267,11 @@ impl ScatteredLongitudinal {
     #[inline]
     pub fn fresnel_exit<M: Math>(&self, theta_i: f32) -> f32 {
         let e = theta_i - self.alpha;
-        let s = M::sin(e) / self.eta_m;
+        let (sin_e, cos_e) = M::sin_cos(e);
+        let s = sin_e / self.eta_m;
         let cos_p = sqrt_pos::<M>((1.0 - s) * (1.0 + s));
         let medulla = 1.0 - fresnel::dielectric::<M>(cos_p, self.eta_c / self.eta_m);
-        let cuticle = 1.0 - fresnel::cuticle::<M>(M::cos(e).abs(), self.eta_c, self.layers);
+        let cuticle = 1.0 - fresnel::cuticle::<M>(cos_e.abs(), self.eta_c, self.layers);
         medulla * cuticle
     }
 

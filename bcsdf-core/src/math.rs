@@ -220,22 +220,22 @@ pub fn cos_within_half_pi(x: f32) -> f32 {
 /// Wraps an angle to `(-π, π]`. Non-finite input gives 0.
 #[inline]
 pub fn wrap_angle(x: f32) -> f32 {
-    // Fast path: already wrapped (inlined; the rest is not).
+    // Fast paths (inlined): at most one period away, the common case for sums of a few
+    // angles. The rest is not inlined.
     if x > -PI && x <= PI {
         return x;
     }
-    wrap_angle_outside(x)
-}
-
-/// [`wrap_angle`] for x outside (−π, π].
-fn wrap_angle_outside(x: f32) -> f32 {
-    // One period away at most: the common case for sums of a few angles.
     if x > PI && x <= PI + TAU {
         return x - TAU;
     }
     if x <= -PI && x > -PI - TAU {
         return x + TAU;
     }
+    wrap_angle_far(x)
+}
+
+/// [`wrap_angle`] for x more than one period outside (−π, π].
+fn wrap_angle_far(x: f32) -> f32 {
     if !x.is_finite() {
         return 0.0;
     }

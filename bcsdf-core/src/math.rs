@@ -5,6 +5,9 @@
 //!
 //! - [`Libm`] (default): the `libm` crate, a port of musl's libm. Pure Rust, no platform
 //!   intrinsics beyond IEEE arithmetic, so the same inputs give the same bits on every target.
+//!   The model's exponentials, all of the form e^−x with x ≥ 0 ([`Math::exp_neg`]), use
+//!   [`exp_neg_polynomial`] instead: plain f32 arithmetic as well (so just as deterministic),
+//!   within 1 ulp, and about half the instructions of `libm::expf`.
 //! - `FastMath` (cargo feature `micromath`): `micromath` approximations of `sin`, `cos`,
 //!   `atan2` and `exp`, and the polynomial [`asin_polynomial`] (micromath's own `asin` is off
 //!   by up to 0.018 rad); `sqrt` stays exact (it is not transcendental and is a single
@@ -172,7 +175,7 @@ pub fn exp_neg_polynomial(x: f32) -> f32 {
     p = p * r + 8.333_452e-3;
     p = p * r + 4.166_579_6e-2;
     p = p * r + 0.166_666_65;
-    p = p * r + 0.500_000_0;
+    p = p * r + 0.5;
     let e = p * z + r + 1.0;
     e * f32::from_bits((127 - k) << 23)
 }

@@ -40,7 +40,7 @@ impl Gaussian {
         if e > 0.5 * CUTOFF_SIGMAS * CUTOFF_SIGMAS {
             0.0
         } else {
-            self.norm * M::exp(-e)
+            self.norm * M::exp_neg(e)
         }
     }
 }
@@ -79,7 +79,7 @@ impl WrappedGaussian {
     }
 
     /// D(x) for any finite x.
-    #[inline]
+    #[inline(always)]
     pub fn eval<M: Math>(&self, x: f32) -> f32 {
         let x = crate::math::wrap_angle(x);
         let mut sum = self.gaussian.eval::<M>(x);

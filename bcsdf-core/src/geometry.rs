@@ -32,8 +32,8 @@ pub fn bravais_index<M: Math>(eta: f32, sin_theta: f32, cos_theta: f32) -> f32 {
 impl ViewSlice {
     /// The slice for a view direction at longitudinal angle `theta_r`.
     pub fn new<M: Math>(params: &FurParams, theta_r: f32) -> ViewSlice {
-        let s = M::sin(theta_r).clamp(-1.0, 1.0);
-        let c = M::cos(theta_r);
+        let (s, c) = M::sin_cos(theta_r);
+        let s = s.clamp(-1.0, 1.0);
         let inv_cos_t = |eta: f32| {
             let sin_t = s / eta;
             1.0 / sqrt_pos::<M>(1.0 - sin_t * sin_t)
@@ -152,7 +152,8 @@ impl Chord {
         t: f32,
         region: Region,
     ) -> Chord {
-        let (s, c) = (M::sin(t), M::cos(t).max(0.0));
+        let (s, c) = M::sin_cos(t);
+        let c = c.max(0.0);
         let k = match var {
             ChordVariable::A => 1.0,
             ChordVariable::M => slice.h_medulla(),

@@ -62,8 +62,8 @@ pub fn scattered_paths<M: Math>(
     let fm = fresnel::medulla::<M>(cos_m, slice.eta_m_prime / slice.eta_c_prime);
     let ell_m = 2.0 * slice.kappa * cos_mu;
     let ec = transmittance::<M>(ext.cortex, cortex_leg(slice, chord, cos_m));
-    let p = 1.0 - M::exp(-ext.medulla_scattering * ell_m);
-    let u = M::exp(-ext.medulla * ell_m);
+    let p = 1.0 - M::exp_neg(ext.medulla_scattering * ell_m);
+    let u = M::exp_neg(ext.medulla * ell_m);
     let base = ec * exit * ((1.0 - f) * (1.0 - fm) * p);
     let refr = (c - a) + (mu - m);
     Some(ScatteredPaths {
@@ -122,7 +122,7 @@ pub fn azimuthal_on_row<M: Math>(
         let psi = phi - PI - paths.rotation[k];
         let v = if absorb > 0.0 {
             let (c, ell) = profiles.cn_and_mean_length_at(row, psi);
-            c * M::exp(-absorb * ell)
+            c * M::exp_neg(absorb * ell)
         } else {
             profiles.cn_at(row, psi)
         };
@@ -196,9 +196,10 @@ impl ScatteredLongitudinal {
     #[inline]
     pub fn refract<M: Math>(&self, theta: f32) -> (f32, f32) {
         let e = theta - self.alpha;
-        let s = M::sin(e) / self.eta_m;
+        let (sin_e, cos_e) = M::sin_cos(e);
+        let s = sin_e / self.eta_m;
         let cos_p = sqrt_pos::<M>((1.0 - s) * (1.0 + s)).max(1e-6);
-        (asin_clamped::<M>(s), M::cos(e).abs() / (self.eta_m * cos_p))
+        (asin_clamped::<M>(s), cos_e.abs() / (self.eta_m * cos_p))
     }
 
     /// θ'_in = −θ'_r, the view ray's travel direction inside the medulla at θ_r.
@@ -266,10 +267,11 @@ impl ScatteredLongitudinal {
     #[inline]
     pub fn fresnel_exit<M: Math>(&self, theta_i: f32) -> f32 {
         let e = theta_i - self.alpha;
-        let s = M::sin(e) / self.eta_m;
+        let (sin_e, cos_e) = M::sin_cos(e);
+        let s = sin_e / self.eta_m;
         let cos_p = sqrt_pos::<M>((1.0 - s) * (1.0 + s));
         let medulla = 1.0 - fresnel::dielectric::<M>(cos_p, self.eta_c / self.eta_m);
-        let cuticle = 1.0 - fresnel::cuticle::<M>(M::cos(e).abs(), self.eta_c, self.layers);
+        let cuticle = 1.0 - fresnel::cuticle::<M>(cos_e.abs(), self.eta_c, self.layers);
         medulla * cuticle
     }
 

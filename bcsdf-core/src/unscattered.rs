@@ -47,9 +47,9 @@ impl Extinction {
 pub(crate) fn transmittance<M: Math>(sigma: Rgb, length: f32) -> Rgb {
     let [r, g, b] = sigma.0;
     if r == g && g == b {
-        Rgb::splat(M::exp(-r * length))
+        Rgb::splat(M::exp_neg(r * length))
     } else {
-        sigma.map(|s| M::exp(-s * length))
+        sigma.map(|s| M::exp_neg(s * length))
     }
 }
 
@@ -119,7 +119,7 @@ pub fn attenuations<M: Math>(
             let tm = 1.0 - fm;
             let tc = transmittance::<M>(ext.cortex, 2.0 * cortex_leg(slice, chord, cos_m));
             // One medulla chord ℓ_m = 2κ cos μ at full extinction.
-            let um = M::exp(-ext.medulla * 2.0 * slice.kappa * cos_mu);
+            let um = M::exp_neg(ext.medulla * 2.0 * slice.kappa * cos_mu);
             let tm2 = tm * tm;
             out[3] = tc * (base * fm);
             out[4] = tc * (base * tm2 * um);

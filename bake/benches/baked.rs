@@ -10,7 +10,7 @@
 //!   issue 12 (`reference` below), so that the speed-up is a ratio measured in one run;
 //! - `far_field_baked_batch/<preset>/<size>`: `BakedBcsdf::eval_far_batch` over consecutive
 //!   batches of `size` queries (structure of arrays), per query (criterion's throughput),
-//!   with the CPU's best kernel (`BatchKernel::best`), and `sse2-256` with the baseline (SSE2) kernel;
+//!   with the CPU's best kernel (`Kernel::best`), and `sse2-256` with the baseline (SSE2) kernel;
 //! - `far_field_baked_dirs/<preset>`: `BakedBcsdf::eval_far_dirs(..).total()` on the same
 //!   directions as world-space vectors.
 //!
@@ -24,7 +24,7 @@
 
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
-use bcsdf_core::baked::{BakedBcsdf, BatchKernel};
+use bcsdf_core::baked::{BakedBcsdf, Kernel};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams};
@@ -44,6 +44,8 @@ mod reference {
         header: LutHeader,
         tables: [&'a [u8]; 3],
         unbias: [f32; 3],
+        /// sum, θ_r, φ, M^s θ_i, M^s θ_r.
+        axes: [Axis; 5],
     }
 
     struct Axis {
@@ -151,23 +153,28 @@ mod reference {
     impl<'a> Lut<'a> {
         pub fn new(blob: &'a [u8]) -> Lut<'a> {
             let header = bcsdf_core::lut::validate(blob).unwrap();
+            let res = header.res;
             Lut {
                 header,
                 tables: Table::ALL.map(|t| &blob[header.res.byte_range(t)]),
                 unbias: header.scales.map(|s| s * F16_UNBIAS),
+                axes: [
+                    Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
+                    Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
+                    Axis::new(0.0, 1.0 / PI, res.n_phi),
+                    Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_i),
+                    Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_r),
+                ],
             }
         }
 
-        #[inline(never)]
+        /// Inlined into the caller, as `BakedBcsdf::eval_far` was.
+        #[inline]
         pub fn eval_far_total(&self, angles: &Angles) -> Rgb {
             let res = &self.header.res;
             let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
             let abs_phi = phi.abs();
-            let sum = Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum);
-            let theta_r = Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r);
-            let phi_axis = Axis::new(0.0, 1.0 / PI, res.n_phi);
-            let ms_i = Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_i);
-            let ms_r = Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_r);
+            let [sum, theta_r, phi_axis, ms_i, ms_r] = &self.axes;
             let m = linear::<3, 12, 6>(self.tables[0], sum.locate(ti + tr), self.unbias[0]);
             let ms = bilinear::<2, 8, 4>(
                 self.tables[2],
@@ -302,7 +309,7 @@ fn bench(c: &mut Criterion) {
         });
         let mut group = c.benchmark_group(format!("far_field_baked_batch/{name}"));
         // The CPU's best kernel at two sizes, and the SSE2 kernel (x86-64's baseline).
-        let sse2 = baked.with_batch_kernel(BatchKernel::Baseline).unwrap();
+        let sse2 = baked.with_kernel(Kernel::Baseline).unwrap();
         let kernels = [
             (&baked, 64usize, ""),
             (&baked, 256, ""),

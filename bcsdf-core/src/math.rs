@@ -121,7 +121,7 @@ impl Math for FastMath {
 }
 
 /// Arc sine by Abramowitz & Stegun 4.4.46: asin x = π/2 − √(1 − x)·Σ a_k x^k on [0, 1]
-/// (|error| ≤ 2e-8 in exact arithmetic; ≤ 2.5e-7 rad in f32, measured by
+/// (|error| ≤ 2e-8 in exact arithmetic; ≤ 3e-7 rad in f32 (Estrin's scheme), measured by
 /// `tests::asin_polynomial_accuracy`), odd-extended, branch-free. Used by `FastMath` and by
 /// the baked evaluator's direction conversion ([`crate::frame`]).
 #[inline]
@@ -137,10 +137,8 @@ pub fn asin_polynomial(x: f32) -> f32 {
         -0.001_262_491,
     ];
     let ax = x.abs().min(1.0);
-    let mut poly = A[7];
-    for &a in A[..7].iter().rev() {
-        poly = poly * ax + a;
-    }
+    // Estrin's scheme: the polynomial runs beside the square root instead of after it.
+    let poly = estrin8(&[A[7], A[6], A[5], A[4], A[3], A[2], A[1], A[0]], ax);
     let r = PI / 2.0 - libm::sqrtf(1.0 - ax) * poly;
     // copysign rather than `if`: branch-free (−0 gives −0).
     r.copysign(x)
@@ -184,8 +182,8 @@ pub fn atan2_polynomial(y: f32, x: f32) -> f32 {
 
 /// The degree-7 polynomial c₀x⁷ + c₁x⁶ + … + c₇ by Estrin's scheme: pairs, then pairs of
 /// pairs (x², x⁴), three multiply-add levels deep instead of Horner's seven, so that the
-/// polynomial of [`atan2_polynomial`] does not lengthen the dependency chain of an
-/// evaluation.
+/// polynomials of [`asin_polynomial`] and [`atan2_polynomial`] do not lengthen the
+/// dependency chain of an evaluation from directions.
 #[inline(always)]
 fn estrin8(c: &[f32; 8], x: f32) -> f32 {
     let x2 = x * x;
@@ -419,7 +417,7 @@ mod tests {
             let err = (f64::from(asin_polynomial(x)) - libm::asin(f64::from(x))).abs();
             worst = worst.max(err);
         }
-        assert!(worst < 2.5e-7, "asin: worst absolute error {worst}");
+        assert!(worst < 3e-7, "asin: worst absolute error {worst}");
     }
 
     #[test]

@@ -1,13 +1,14 @@
-//! `BakedBcsdf::eval_far_batch` against the scalar path, bit for bit: for every query,
+//! `BakedBcsdf::eval_far_batch` (and the scalar path of every kernel) against the scalar
+//! path of the baseline kernel, bit for bit: for every query,
 //! `eval_far(&Angles::new(θ_i, θ_r, φ)?).total()`, or zero where `Angles::new` rejects the
 //! angles. 10⁵ queries per LUT, in batches of irregular sizes (so that every chunk boundary
 //! and remainder is crossed), mixing random angles with NaN, ±∞, φ far outside (−π, π],
-//! θ just beyond ±π/2, ±0, subnormals and the axis ends. Every batch kernel this CPU has
+//! θ just beyond ±π/2, ±0, subnormals and the axis ends. Every kernel this CPU has
 //! (SSE2, and AVX2 + F16C where present) is checked.
 
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
-use bcsdf_core::baked::{BakedBcsdf, BatchKernel, BatchLengthError};
+use bcsdf_core::baked::{BakedBcsdf, BatchLengthError, Kernel};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams, Rgb};
@@ -74,21 +75,26 @@ fn angle(rng: &mut Rng, half_range: f32) -> f32 {
 fn batch_equals_scalar_bit_for_bit() {
     for preset in ["yan-row-a", "air-medulla", "human-hair"] {
         let blob = lut_blob(preset);
-        let scalar_lut = BakedBcsdf::from_bytes(&blob).unwrap();
-        let mut kernels = vec![BatchKernel::Baseline];
-        if BatchKernel::best() != BatchKernel::Baseline {
-            kernels.push(BatchKernel::best());
+        // The reference: the scalar path on the baseline kernel.
+        let scalar_lut = BakedBcsdf::from_bytes(&blob)
+            .unwrap()
+            .with_kernel(Kernel::Baseline)
+            .unwrap();
+        let mut kernels = vec![Kernel::Baseline];
+        if Kernel::best() != Kernel::Baseline {
+            kernels.push(Kernel::best());
         }
         for kernel in kernels {
-            let lut = scalar_lut.with_batch_kernel(kernel).unwrap();
+            let lut = scalar_lut.with_kernel(kernel).unwrap();
             check(preset, &scalar_lut, &lut);
         }
     }
 }
 
-/// The batch of `lut` against the scalar path of `scalar_lut` on 10⁵ queries.
+/// The batch and the scalar path of `lut` against the scalar path of `scalar_lut` on 10⁵
+/// queries.
 fn check(preset: &str, scalar_lut: &BakedBcsdf, lut: &BakedBcsdf) {
-    let kernel = lut.batch_kernel();
+    let kernel = lut.kernel();
     let mut rng = Rng(0x5eed ^ preset.len() as u64);
     let n = 100_000;
     let ti: Vec<f32> = (0..n).map(|_| angle(&mut rng, FRAC_PI_2)).collect();
@@ -122,6 +128,14 @@ fn check(preset: &str, scalar_lut: &BakedBcsdf, lut: &BakedBcsdf) {
                 Rgb::ZERO
             }
         };
+        if let Ok(a) = Angles::new(ti[k], tr[k], ph[k]) {
+            let own = lut.eval_far(&a).total();
+            assert_eq!(
+                own.0.map(f32::to_bits),
+                scalar.0.map(f32::to_bits),
+                "{preset}, {kernel:?}: scalar path, query {k}"
+            );
+        }
         assert_eq!(
             out[k].0.map(f32::to_bits),
             scalar.0.map(f32::to_bits),

@@ -28,10 +28,11 @@ const CHUNK: usize = 32;
 /// π/2, the largest |θ| [`Angles::new`] accepts.
 const HALF_PI: f32 = PI / 2.0;
 
-/// The inner kernel of [`BakedBcsdf::eval_far_batch`], chosen once per LUT from the CPU
-/// (every kernel gives the same bits).
+/// The instruction set the baked evaluator runs on ([`BakedBcsdf::eval_far`],
+/// [`BakedBcsdf::eval_far_dirs`], [`BakedBcsdf::eval_far_batch`]), chosen once per LUT from
+/// the CPU in `from_bytes`. Every kernel gives the same bits.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum BatchKernel {
+pub enum Kernel {
     /// Four lanes: SSE2 on x86-64 (its baseline), portable arrays elsewhere.
     Baseline,
     /// AVX2 and F16C (x86-64 CPUs since about 2013), detected at run time.
@@ -39,15 +40,15 @@ pub enum BatchKernel {
     Avx2F16c,
 }
 
-impl BatchKernel {
+impl Kernel {
     /// The fastest kernel this CPU supports.
     #[must_use]
-    pub fn best() -> BatchKernel {
+    pub fn best() -> Kernel {
         #[cfg(target_arch = "x86_64")]
         if super::simd::avx2_f16c() {
-            return BatchKernel::Avx2F16c;
+            return Kernel::Avx2F16c;
         }
-        BatchKernel::Baseline
+        Kernel::Baseline
     }
 }
 
@@ -106,29 +107,29 @@ impl<M: Math> BakedBcsdf<'_, M> {
                 output: n,
             });
         }
-        Ok(match self.batch_kernel {
-            BatchKernel::Baseline => self.eval_chunks::<Baseline>(theta_i, theta_r, phi, out),
+        Ok(match self.kernel {
+            Kernel::Baseline => self.eval_chunks::<Baseline>(theta_i, theta_r, phi, out),
             #[cfg(target_arch = "x86_64")]
-            // SAFETY: `BatchKernel::Avx2F16c` is only ever set after `avx2_f16c()` confirmed
+            // SAFETY: `Kernel::Avx2F16c` is only ever set after `avx2_f16c()` confirmed
             // the CPU and OS support AVX, AVX2 and F16C.
-            BatchKernel::Avx2F16c => unsafe { self.eval_chunks_avx2(theta_i, theta_r, phi, out) },
+            Kernel::Avx2F16c => unsafe { self.eval_chunks_avx2(theta_i, theta_r, phi, out) },
         })
     }
 
-    /// The kernel [`BakedBcsdf::eval_far_batch`] uses on this CPU.
+    /// The kernel the evaluator uses on this CPU.
     #[must_use]
-    pub fn batch_kernel(&self) -> BatchKernel {
-        self.batch_kernel
+    pub fn kernel(&self) -> Kernel {
+        self.kernel
     }
 
-    /// The same LUT with batch kernel `kernel`, or `None` if this CPU lacks it. The kernels
-    /// give the same bits; this is for tests and benchmarks.
+    /// The same LUT evaluated with `kernel`, or `None` if this CPU lacks it. The kernels give
+    /// the same bits; this is for tests and benchmarks.
     #[must_use]
-    pub fn with_batch_kernel(mut self, kernel: BatchKernel) -> Option<Self> {
-        if kernel != BatchKernel::Baseline && BatchKernel::best() != kernel {
+    pub fn with_kernel(mut self, kernel: Kernel) -> Option<Self> {
+        if kernel != Kernel::Baseline && Kernel::best() != kernel {
             return None;
         }
-        self.batch_kernel = kernel;
+        self.kernel = kernel;
         Some(self)
     }
 

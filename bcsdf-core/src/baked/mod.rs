@@ -21,7 +21,7 @@ use crate::math::{cos_within_half_pi, Libm, Math, PI};
 use crate::model::inv_cos2_theta_i;
 use crate::params::FurParams;
 use crate::spectrum::Rgb;
-pub use batch::{BatchKernel, BatchLengthError};
+pub use batch::{BatchLengthError, Kernel};
 use core::marker::PhantomData;
 
 /// One uniform table axis over [lo, lo + span] with `nodes` nodes.
@@ -82,8 +82,8 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) blob: &'a [u8],
     /// Byte offset of table `M` in the blob.
     m_start: usize,
-    /// The kernel [`BakedBcsdf::eval_far_batch`] uses.
-    batch_kernel: BatchKernel,
+    /// The instruction set of the evaluation ([`Kernel`]).
+    kernel: Kernel,
     /// Where each sampled density lives ([`Density::index`] order).
     pub(crate) densities: [DensityLayout; 9],
     pub(crate) sum: Axis,
@@ -185,7 +185,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             nodes: Nodes::new(bytes, res, header.scales),
             blob: bytes,
             m_start: res.byte_range(Table::M).start,
-            batch_kernel: BatchKernel::best(),
+            kernel: Kernel::best(),
             densities: Density::ALL.map(|d| res.density_layout(d)),
             sum: Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
             theta_r: Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
@@ -324,7 +324,47 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     #[inline]
     #[must_use]
     pub fn eval_far(&self, angles: &Angles) -> Families {
-        Self::assemble(&self.lookups(angles))
+        self.eval_at(angles.theta_i(), angles.theta_r(), angles.phi().abs())
+    }
+
+    /// The families at validated θ_i, θ_r and |φ|: with the AVX2 + F16C table-`N` kernel
+    /// where the CPU has it (checked once, in `from_bytes`; the same bits either way).
+    #[inline]
+    fn eval_at(&self, ti: f32, tr: f32, abs_phi: f32) -> Families {
+        #[cfg(target_arch = "x86_64")]
+        if self.kernel == Kernel::Avx2F16c {
+            // SAFETY: the kernel is only set after the CPU check.
+            return unsafe { self.eval_at_avx2(ti, tr, abs_phi) };
+        }
+        Self::assemble(&self.gather(&self.place(ti, tr, abs_phi)))
+    }
+
+    /// [`BakedBcsdf::try_eval_far_dirs`] compiled for AVX2 and F16C.
+    ///
+    /// # Safety
+    /// The CPU must support AVX, AVX2 and F16C.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx,avx2,f16c")]
+    unsafe fn eval_dirs_avx2(
+        &self,
+        wi: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+    ) -> Result<Families, AngleError> {
+        let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        let p = self.place(ti, tr, abs_phi);
+        Ok(Self::assemble(&self.gather_with::<texels::Avx2F16c>(&p)))
+    }
+
+    /// [`BakedBcsdf::eval_at`] compiled for AVX2 and F16C.
+    ///
+    /// # Safety
+    /// The CPU must support AVX, AVX2 and F16C.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx,avx2,f16c")]
+    unsafe fn eval_at_avx2(&self, ti: f32, tr: f32, abs_phi: f32) -> Families {
+        let p = self.place(ti, tr, abs_phi);
+        Self::assemble(&self.gather_with::<texels::Avx2F16c>(&p))
     }
 
     /// Far-field S from world-space directions: `wi` toward the light, `wr` toward the viewer,
@@ -349,6 +389,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         wr: Vec3,
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
+        #[cfg(target_arch = "x86_64")]
+        if self.kernel == Kernel::Avx2F16c {
+            // SAFETY: the kernel is only set after the CPU check.
+            return unsafe { self.eval_dirs_avx2(wi, wr, tangent) };
+        }
         let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
         Ok(Self::assemble(&self.gather(&self.place(ti, tr, abs_phi))))
     }

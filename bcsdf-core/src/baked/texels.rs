@@ -14,7 +14,7 @@
 
 use super::simd::F4;
 
-/// How a batch reads table `N` (`BakedBcsdf::batch_kernel`).
+/// How a batch reads table `N` (`BakedBcsdf::kernel`).
 pub(crate) trait NKernel {
     /// Table `N` bilinearly, as [`n_bilinear`].
     fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12];

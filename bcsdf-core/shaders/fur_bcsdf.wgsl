@@ -255,16 +255,16 @@ fn fur_eval_far(theta_i: f32, theta_r: f32, phi: f32) -> FurFamilies {
 // to an ulp or two; the GPU built-ins are far less precise (llvmpipe's moved results by 1e-2
 // on a lobe's flank).
 fn fur_asin(x: f32) -> f32 {
-    // Abramowitz & Stegun 4.4.46, Horner from the highest coefficient.
+    // Abramowitz & Stegun 4.4.46, Estrin's scheme (math::estrin8) from the highest
+    // coefficient.
     let ax = min(abs(x), 1.0);
-    var poly = -0.001262491;
-    poly = poly * ax + 0.00667009;
-    poly = poly * ax + -0.017088126;
-    poly = poly * ax + 0.03089188;
-    poly = poly * ax + -0.050174303;
-    poly = poly * ax + 0.08897899;
-    poly = poly * ax + -0.2145988;
-    poly = poly * ax + FUR_HALF_PI;
+    let x2 = ax * ax;
+    let x4 = x2 * x2;
+    let p01 = -0.001262491 * ax + 0.00667009;
+    let p23 = -0.017088126 * ax + 0.03089188;
+    let p45 = -0.050174303 * ax + 0.08897899;
+    let p67 = -0.2145988 * ax + FUR_HALF_PI;
+    let poly = (p01 * x2 + p23) * x4 + (p45 * x2 + p67);
     let r = FUR_HALF_PI - sqrt(1.0 - ax) * poly;
     // copysign(r, x), as on the CPU.
     return select(abs(r), -abs(r), (bitcast<u32>(x) & 0x80000000u) != 0u);

@@ -397,35 +397,26 @@ FurFamilies fur_eval_far(float theta_i_2, float theta_r_2, float phi_1) {
 }
 
 float fur_asin(float x_4) {
-    float poly = -0.001262491;
     float ax = min(abs(x_4), 1.0);
-    float _e6 = poly;
-    poly = ((_e6 * ax) + 0.00667009);
-    float _e10 = poly;
-    poly = ((_e10 * ax) + -0.017088126);
-    float _e14 = poly;
-    poly = ((_e14 * ax) + 0.03089188);
-    float _e18 = poly;
-    poly = ((_e18 * ax) + -0.050174303);
-    float _e22 = poly;
-    poly = ((_e22 * ax) + 0.08897899);
-    float _e26 = poly;
-    poly = ((_e26 * ax) + -0.2145988);
-    float _e30 = poly;
-    poly = ((_e30 * ax) + FUR_HALF_PI);
-    float _e38 = poly;
-    float r_7 = (FUR_HALF_PI - (sqrt((1.0 - ax)) * _e38));
+    float x2_ = (ax * ax);
+    float x4_ = (x2_ * x2_);
+    float p01_ = ((-0.001262491 * ax) + 0.00667009);
+    float p23_ = ((-0.017088126 * ax) + 0.03089188);
+    float p45_ = ((-0.050174303 * ax) + 0.08897899);
+    float p67_ = ((-0.2145988 * ax) + FUR_HALF_PI);
+    float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
+    float r_7 = (FUR_HALF_PI - (sqrt((1.0 - ax)) * poly));
     return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_7)) : abs(r_7));
 }
 
 float fur_atan_poly(float t_1) {
     float t2_ = (t_1 * t_1);
     float t4_ = (t2_ * t2_);
-    float p01_ = ((0.0029202348 * t_1) + -0.016366187);
-    float p23_ = ((0.043209206 * t_1) + -0.07552008);
-    float p45_ = ((0.10665919 * t_1) + -0.14211038);
-    float p67_ = ((0.19993772 * t_1) + -0.33333153);
-    return ((((p01_ * t2_) + p23_) * t4_) + ((p45_ * t2_) + p67_));
+    float p01_1 = ((0.0029202348 * t_1) + -0.016366187);
+    float p23_1 = ((0.043209206 * t_1) + -0.07552008);
+    float p45_1 = ((0.10665919 * t_1) + -0.14211038);
+    float p67_1 = ((0.19993772 * t_1) + -0.33333153);
+    return ((((p01_1 * t2_) + p23_1) * t4_) + ((p45_1 * t2_) + p67_1));
 }
 
 float fur_atan2_(float y_1, float x_5) {

@@ -3,7 +3,7 @@
 //!
 //! The queries go through in chunks of [`CHUNK`], in three passes:
 //!
-//! 1. validation and φ wrapping (exactly [`Angles::new`]);
+//! 1. validation and φ wrapping (exactly [`Angles::new`](crate::Angles::new));
 //! 2. the axis locations, interpolation weights, |φ|/π and 1/cos²θ_i of every query
 //!    ([`BakedBcsdf::place`]): pure arithmetic over arrays, which the compiler vectorises
 //!    (4 queries per SSE2 instruction on x86-64);
@@ -25,7 +25,7 @@ use core::fmt;
 /// (about 2 KB of places).
 const CHUNK: usize = 32;
 
-/// π/2, the largest |θ| [`Angles::new`] accepts.
+/// π/2, the largest |θ| [`Angles::new`](crate::Angles::new) accepts.
 const HALF_PI: f32 = PI / 2.0;
 
 /// The instruction set the baked evaluator runs on ([`BakedBcsdf::eval_far`],
@@ -79,7 +79,7 @@ impl<M: Math> BakedBcsdf<'_, M> {
     /// the value at (θ_i, θ_r, φ) = (`theta_i[k]`, `theta_r[k]`, `phi[k]`) in radians.
     ///
     /// Equal bit for bit to `eval_far(&Angles::new(θ_i, θ_r, φ)?).total()` per query; a
-    /// query that [`Angles::new`] rejects (non-finite, |θ| > π/2) gives zero. Returns the
+    /// query that [`Angles::new`](crate::Angles::new) rejects (non-finite, |θ| > π/2) gives zero. Returns the
     /// number of rejected queries, or an error (and writes nothing) when the four slices
     /// differ in length. No allocation; about 2 KB of stack.
     ///

@@ -24,9 +24,13 @@ pub fn translations() -> Result<Vec<Translation>, String> {
         .map_err(|e| format!("validation: {e:?}"))?;
     let mut out = Vec::new();
 
-    // SPIR-V, one module with every entry point.
-    let words = spv::write_vec(&module, &info, &spv::Options::default(), None)
-        .map_err(|e| format!("SPIR-V: {e}"))?;
+    // SPIR-V, one module with every entry point. naga's default adds debug names only in
+    // builds with debug assertions; set it explicitly so that the output does not depend on
+    // the build profile (names help shader debuggers).
+    let mut spv_options = spv::Options::default();
+    spv_options.flags.insert(spv::WriterFlags::DEBUG);
+    let words =
+        spv::write_vec(&module, &info, &spv_options, None).map_err(|e| format!("SPIR-V: {e}"))?;
     out.push(Translation {
         name: "fur_bcsdf.spv".into(),
         bytes: words.iter().flat_map(|w| w.to_le_bytes()).collect(),

@@ -1,6 +1,9 @@
 //! LUT files on disk: the OpenEXR form (one f16 layer per table, metadata attributes) and the
 //! raw little-endian blob, both written atomically.
 //!
+//! Over 600 lines: it mixes error plumbing, EXR attributes and blob I/O; the split into
+//! `lutfile/{exr, blob, error}` is issue 13 (maintainability), not done yet.
+//!
 //! # The raw blob
 //!
 //! Exactly the bytes of `bcsdf_core::lut` (header, tables, checksum): [`write_blob`] writes
@@ -48,9 +51,6 @@
 //! detected by the blob checksum, and any change to the preset name or error summary by
 //! `meta_checksum`. The attributes of each part are written sorted by name, so the same LUT
 //! always gives the same file bytes.
-//!
-//! Over 600 lines: it mixes error plumbing, EXR attributes and blob I/O; the split into
-//! `lutfile/{exr, blob, error}` is issue 13 (maintainability), not done yet.
 
 use std::collections::HashMap;
 use std::fmt;

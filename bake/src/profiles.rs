@@ -1,6 +1,9 @@
 //! Medulla profiles for the std tools (MODEL.md §7): parallel generation, a cache file, and
 //! a model that owns its profiles.
 //!
+//! Over 600 lines: generation, the cache format and model building; the split into
+//! `profiles/{generate, cache, model}` is issue 13 (maintainability), not done yet.
+//!
 //! - [`generate_parallel`] runs the core's per-cell generators
 //!   ([`bcsdf_core::medulla::generate_cn_cell`], [`bcsdf_core::medulla::generate_cm_row`]) on
 //!   rayon, each cell into its own disjoint chunk of the tables. Every cell draws from its own
@@ -64,9 +67,6 @@
 //! reported before any generation work: pass no cache directory to work without a cache.
 //! A read-only directory that already holds a valid file for the key is fine (a hit only
 //! reads).
-//!
-//! Over 600 lines: generation, the cache format and model building; the split into
-//! `profiles/{generate, cache, model}` is issue 13 (maintainability), not done yet.
 
 use bcsdf_core::medulla::{
     generate_cm_row, generate_cn_cell, MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout,

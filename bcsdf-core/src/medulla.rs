@@ -3,6 +3,9 @@
 //! with deterministic Monte Carlo walks, stored as flat f32 tables and looked up with
 //! interpolation in every axis.
 //!
+//! Over 600 lines: layout, the two photon walks and the table lookups (with their sampling)
+//! in one file; splitting generation from lookup is left to issue 13.
+//!
 //! Tables live in caller-provided memory: [`MedullaProfiles`] borrows them, so the core needs
 //! no allocator. Each table cell is simulated from its own PCG32 stream (seed, table, cell),
 //! so a table is the same bits whichever order or thread its cells are computed in.
@@ -15,9 +18,6 @@
 //! - C^M: `[half][θ'_in][θ'_out]`, half 0 = back, 1 = front; θ'_in on `n_in` nodes spanning
 //!   `[0, theta_in_max]` (negative by C(out | in) = C(−out | −in)); θ'_out in `n_out` bins of
 //!   [−π/2, π/2]. Angles are of the **travel** direction inside the medulla.
-//!
-//! Over 600 lines: layout, the two photon walks and the table lookups (with their sampling)
-//! in one file; splitting generation from lookup is left to issue 13.
 
 use crate::math::{wrap_angle, PI, TAU};
 use crate::params::FurParams;

@@ -1,5 +1,8 @@
 //! `viewer compare`: a baked LUT against the analytic model it was baked from.
 //!
+//! Over 600 lines: the run loop, model rebuilding and image writing; moving the report model
+//! and image writing out is issue 13, not done yet.
+//!
 //! For each LUT: read it (`bake::lutfile::read_exr`) and validate its tables, rebuild the
 //! analytic model from the parameters and profile provenance in its header
 //! (`bake::tables::rebuild_model`, profiles from the cache when present), measure both with
@@ -13,9 +16,6 @@
 //! `--budget`, a folder without LUTs); 1 for I/O failures such as an unwritable output
 //! folder. With `--all`, every LUT is reported before the run ends: 2 if any could not be
 //! read, else 3 if any exceeded the budget.
-//!
-//! Over 600 lines: the run loop, model rebuilding and image writing; moving the report model
-//! and image writing out is issue 13, not done yet.
 
 use crate::cli::CompareArgs;
 use crate::error::Error;

@@ -3,6 +3,9 @@
 //! sampler needs (docs/model.md §10), and the little-endian byte layout
 //! the core reads in place (from `include_bytes!`, a memory map or a loaded file).
 //!
+//! Over 600 lines (header layout, validation, errors); the sampling section already lives in
+//! [`cdf`]; splitting the header codec from validation is left to issue 13.
+//!
 //! The far field is
 //!
 //! S(θ_i, θ_r, φ) = [Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s(|θ_r|, |φ|)]
@@ -51,9 +54,6 @@
 //! | 156 | reserved, zero (4 bytes) |
 //! | 160 | table data (u16 halves) |
 //! | [`LutResolution::sampling_start`] | sampling section (f32 prefix sums, [`cdf`]) |
-//!
-//! Over 600 lines (header layout, validation, errors); the sampling section already lives in
-//! [`cdf`]; splitting the header codec from validation is left to issue 13.
 
 pub mod cdf;
 

@@ -25,6 +25,7 @@
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
 use bcsdf_core::baked::{BakedBcsdf, Kernel};
+use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams};
@@ -215,23 +216,8 @@ fn directions(a: &Angles) -> (Vec3, Vec3, Vec3) {
 }
 
 fn queries() -> Vec<Angles> {
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((state >> 40) as f32) / (1u64 << 24) as f32
-    };
-    (0..256)
-        .map(|_| {
-            Angles::from_degrees(
-                -80.0 + 160.0 * next(),
-                -80.0 + 160.0 * next(),
-                -180.0 + 360.0 * next(),
-            )
-            .unwrap()
-        })
-        .collect()
+    let mut stream = QueryStream::new();
+    (0..QUERY_COUNT).map(|_| stream.angles()).collect()
 }
 
 fn bench(c: &mut Criterion) {

@@ -15,6 +15,7 @@
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, Bcsdf, FurParams};
@@ -22,19 +23,8 @@ use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::time::Duration;
 
 fn inputs() -> Vec<(f32, [f32; 3])> {
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((state >> 40) as f32) / (1u64 << 24) as f32
-    };
-    (0..256)
-        .map(|_| {
-            let tr = (-80.0 + 160.0 * next()).to_radians();
-            (tr, [next(), next(), next()])
-        })
-        .collect()
+    let mut stream = QueryStream::new();
+    (0..QUERY_COUNT).map(|_| stream.sample_input()).collect()
 }
 
 fn bench(c: &mut Criterion) {

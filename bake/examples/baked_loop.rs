@@ -1,6 +1,7 @@
 //! Tight loop over the baked evaluator (for profiling: `perf stat`, callgrind).
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams};
@@ -16,23 +17,8 @@ fn main() {
     let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
     let blob = bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT);
     let lut = BakedBcsdf::from_bytes(&blob).unwrap();
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((state >> 40) as f32) / (1u64 << 24) as f32
-    };
-    let qs: Vec<Angles> = (0..256)
-        .map(|_| {
-            Angles::from_degrees(
-                -80.0 + 160.0 * next(),
-                -80.0 + 160.0 * next(),
-                -180.0 + 360.0 * next(),
-            )
-            .unwrap()
-        })
-        .collect();
+    let mut stream = QueryStream::new();
+    let qs: Vec<Angles> = (0..QUERY_COUNT).map(|_| stream.angles()).collect();
     // Arguments: evaluations (default 20M), index mask into the 256 queries (default 255),
     // batch size (default 0: the scalar `eval_far`; `dirs`: the scalar `eval_far_dirs` on the
     // same queries as vectors; otherwise `eval_far_batch` over consecutive batches of that

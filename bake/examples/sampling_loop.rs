@@ -1,6 +1,7 @@
 //! Tight loop over the baked sampler and pdf (for profiling: `perf stat`, callgrind).
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Bcsdf, FurParams};
@@ -22,21 +23,8 @@ fn main() {
         }
     };
     let lut = BakedBcsdf::from_bytes(&blob).unwrap();
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((state >> 40) as f32) / (1u64 << 24) as f32
-    };
-    let xs: Vec<(f32, [f32; 3])> = (0..256)
-        .map(|_| {
-            (
-                (-80.0 + 160.0 * next()).to_radians(),
-                [next(), next(), next()],
-            )
-        })
-        .collect();
+    let mut stream = QueryStream::new();
+    let xs: Vec<(f32, [f32; 3])> = (0..QUERY_COUNT).map(|_| stream.sample_input()).collect();
     let n: usize = std::env::args()
         .nth(1)
         .and_then(|s| s.parse().ok())

@@ -5,28 +5,15 @@
 //! θ_i, θ_r ∈ ±80° and φ ∈ (−180°, 180°], so branch and cache behaviour is that of a renderer
 //! rather than of one repeated point.
 
+use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::{presets, Angles, FurBcsdf, FurParams};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 
 fn queries() -> Vec<(Angles, f32)> {
-    // A small LCG: deterministic, no dependency.
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((state >> 40) as f32) / (1u64 << 24) as f32
-    };
-    (0..256)
-        .map(|_| {
-            let a = Angles::from_degrees(
-                -80.0 + 160.0 * next(),
-                -80.0 + 160.0 * next(),
-                -180.0 + 360.0 * next(),
-            )
-            .unwrap();
-            (a, -1.0 + 2.0 * next())
-        })
+    // The shared deterministic list (bcsdf_core::bench_support): angles, then an offset h.
+    let mut stream = QueryStream::new();
+    (0..QUERY_COUNT)
+        .map(|_| stream.angles_and_offset())
         .collect()
 }
 

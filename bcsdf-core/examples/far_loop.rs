@@ -5,30 +5,17 @@
 //! evaluates N far-field queries (default 20 000) from the same 256-query list as
 //! `benches/eval.rs` and prints the time per query and the sum of all lobes.
 
+use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
 use bcsdf_core::{presets, Angles, FurBcsdf, FurParams};
 use std::time::Instant;
 
 fn queries() -> Vec<Angles> {
-    // The LCG of benches/eval.rs, so that both see the same directions.
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((state >> 40) as f32) / (1u64 << 24) as f32
-    };
-    (0..256)
-        .map(|_| {
-            let a = Angles::from_degrees(
-                -80.0 + 160.0 * next(),
-                -80.0 + 160.0 * next(),
-                -180.0 + 360.0 * next(),
-            )
-            .unwrap();
-            let _h = next();
-            a
-        })
+    // The list of benches/eval.rs (each query there also draws an offset h), so that both
+    // see the same directions.
+    let mut stream = QueryStream::new();
+    (0..QUERY_COUNT)
+        .map(|_| stream.angles_and_offset().0)
         .collect()
 }
 

@@ -45,7 +45,29 @@ impl fmt::Display for AngleError {
     }
 }
 
+impl core::error::Error for AngleError {}
+
 /// Validated query angles: θ_i, θ_r ∈ [−π/2, π/2] and φ = φ_r − φ_i ∈ (−π, π], radians.
+///
+/// Directions point away from the fiber, ω_i toward the light and ω_r toward the viewer;
+/// θ = asin(ω·u) is measured from the normal plane of the fiber tangent u, and φ is the
+/// azimuth from ω_i to ω_r around u, in the right-handed frame (v, w, u) (docs/model.md §1).
+///
+/// ```
+/// use bcsdf_core::{AngleError, Angles, Libm};
+///
+/// let a = Angles::from_degrees(30.0, -20.0, 270.0).unwrap();
+/// assert!((a.phi().to_degrees() + 90.0).abs() < 1e-4); // φ wrapped into (−180°, 180°]
+///
+/// // From world-space vectors (tangent along z here; none needs unit length).
+/// let b = Angles::from_directions::<Libm>([0.0, 2.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 5.0])
+///     .unwrap();
+/// assert_eq!((b.theta_i(), b.theta_r()), (0.0, 0.0));
+/// assert!((b.phi().to_degrees() + 90.0).abs() < 1e-4);
+///
+/// assert_eq!(Angles::new(f32::NAN, 0.0, 0.0), Err(AngleError::NonFinite));
+/// assert_eq!(Angles::from_degrees(95.0, 0.0, 0.0), Err(AngleError::ThetaOutOfRange));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Angles {
     theta_i: f32,
@@ -182,6 +204,18 @@ pub(crate) fn polynomial_angles<M: Math>(
 /// The fiber frame (v, w, u) of one view direction (docs/model.md §1): u the unit tangent,
 /// v the unit projection of ω_r onto the normal plane (so that φ_r = 0), w = u × v. It turns
 /// sampled angles back into a world-space direction.
+///
+/// ```
+/// use bcsdf_core::{Angles, Frame, Libm};
+///
+/// let (wr, tangent) = ([0.3, -1.0, 0.4], [0.0, 0.2, 1.0]);
+/// let frame = Frame::from_view::<Libm>(wr, tangent).unwrap();
+/// let angles = Angles::new(0.4, frame.theta_r(), -2.0).unwrap();
+/// let wi = frame.to_world(&angles);
+/// // The direction has the angles it was made from.
+/// let back = Angles::from_directions::<Libm>(wi, wr, tangent).unwrap();
+/// assert!((back.theta_i() - 0.4).abs() < 1e-5 && (back.phi() + 2.0).abs() < 1e-5);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Frame {
     v: Vec3,
@@ -261,5 +295,191 @@ impl Frame {
             st * self.u[1] + a * self.v[1] + b * self.w[1],
             st * self.u[2] + a * self.v[2] + b * self.w[2],
         ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Libm;
+
+    const HALF_PI: f32 = PI / 2.0;
+
+    fn close(a: f32, b: f32, tol: f32) -> bool {
+        (a - b).abs() <= tol
+    }
+
+    /// Angles on a grid covering the domain, poles and φ = π included.
+    fn grid() -> impl Iterator<Item = Angles> {
+        let thetas = [-HALF_PI, -1.2, -0.5, 0.0, 0.3, 1.0, 1.5, HALF_PI];
+        let phis = [-3.0, -1.6, -0.2, 0.0, 0.7, 2.0, PI];
+        thetas.into_iter().flat_map(move |ti| {
+            thetas.into_iter().flat_map(move |tr| {
+                phis.into_iter()
+                    .map(move |phi| Angles::new(ti, tr, phi).unwrap())
+            })
+        })
+    }
+
+    #[test]
+    fn new_validates_and_wraps() {
+        assert_eq!(Angles::new(f32::NAN, 0.0, 0.0), Err(AngleError::NonFinite));
+        assert_eq!(
+            Angles::new(0.0, f32::INFINITY, 0.0),
+            Err(AngleError::NonFinite)
+        );
+        assert_eq!(
+            Angles::new(0.0, 0.0, f32::NEG_INFINITY),
+            Err(AngleError::NonFinite)
+        );
+        assert_eq!(Angles::new(1.6, 0.0, 0.0), Err(AngleError::ThetaOutOfRange));
+        assert_eq!(
+            Angles::new(0.0, -1.6, 0.0),
+            Err(AngleError::ThetaOutOfRange)
+        );
+        // The poles themselves are valid.
+        let a = Angles::new(HALF_PI, -HALF_PI, 0.0).unwrap();
+        assert_eq!((a.theta_i(), a.theta_r()), (HALF_PI, -HALF_PI));
+        // φ is wrapped to (−π, π]: −π becomes π, 3π/2 becomes −π/2.
+        assert_eq!(Angles::new(0.0, 0.0, -PI).unwrap().phi(), PI);
+        assert!(close(
+            Angles::new(0.0, 0.0, 1.5 * PI).unwrap().phi(),
+            -HALF_PI,
+            1e-6
+        ));
+        let far = Angles::new(0.0, 0.0, 1e4).unwrap().phi();
+        let want = (1e4f64 + core::f64::consts::PI).rem_euclid(core::f64::consts::TAU)
+            - core::f64::consts::PI;
+        assert!((f64::from(far) - want).abs() < 2e-3, "{far} {want}");
+    }
+
+    #[test]
+    fn from_degrees_clamps_the_poles_and_rejects_beyond() {
+        let a = Angles::from_degrees(90.0, -90.0, 180.0).unwrap();
+        assert_eq!((a.theta_i(), a.theta_r(), a.phi()), (HALF_PI, -HALF_PI, PI));
+        assert_eq!(
+            Angles::from_degrees(90.01, 0.0, 0.0),
+            Err(AngleError::ThetaOutOfRange)
+        );
+        assert_eq!(
+            Angles::from_degrees(0.0, 0.0, f32::NAN),
+            Err(AngleError::NonFinite)
+        );
+        let b = Angles::from_degrees(45.0, 10.0, -190.0).unwrap();
+        assert!(close(b.theta_i(), PI / 4.0, 1e-7));
+        assert!(close(b.phi(), 170f32.to_radians(), 1e-5));
+    }
+
+    #[test]
+    fn mirrored_negates_phi_only() {
+        let a = Angles::new(0.3, -0.2, 1.0).unwrap();
+        let m = a.mirrored();
+        assert_eq!((m.theta_i(), m.theta_r(), m.phi()), (0.3, -0.2, -1.0));
+        // φ = π is its own mirror image (−π wraps back to π).
+        assert_eq!(Angles::new(0.0, 0.0, PI).unwrap().mirrored().phi(), PI);
+    }
+
+    #[test]
+    fn frame_round_trips_through_directions() {
+        let views: [(Vec3, Vec3); 4] = [
+            ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+            ([0.3, -1.0, 0.4], [0.0, 0.2, 1.0]),
+            ([-2.0, 0.5, -3.0], [1.0, 1.0, 1.0]),
+            ([0.0, 0.0, 4.0], [0.1, -3.0, 0.2]),
+        ];
+        for (wr, tangent) in views {
+            let frame = Frame::from_view::<Libm>(wr, tangent).unwrap();
+            let want_tr = Angles::from_directions::<Libm>(wr, wr, tangent)
+                .unwrap()
+                .theta_r();
+            assert!(close(frame.theta_r(), want_tr, 1e-6));
+            for a in grid() {
+                let a = Angles::new(a.theta_i(), frame.theta_r(), a.phi()).unwrap();
+                let wi = frame.to_world(&a);
+                let len = libm::sqrtf(dot(wi, wi));
+                assert!(close(len, 1.0, 1e-6), "|ω_i| = {len}");
+                let back = Angles::from_directions::<Libm>(wi, wr, tangent).unwrap();
+                assert!(close(back.theta_i(), a.theta_i(), 2e-3), "{a:?} {back:?}");
+                assert!(close(back.theta_r(), a.theta_r(), 1e-6), "{a:?} {back:?}");
+                // φ is meaningless at the poles; elsewhere it comes back (mod 2π).
+                if a.theta_i().abs() < 1.5 && a.theta_r().abs() < 1.5 {
+                    let d = crate::math::wrap_angle(back.phi() - a.phi());
+                    assert!(d.abs() < 1e-4, "{a:?} {back:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn frame_along_the_fiber_is_still_orthonormal() {
+        let frame = Frame::from_view::<Libm>([0.0, 0.0, 2.0], [0.0, 0.0, 1.0]).unwrap();
+        assert!(close(frame.theta_r(), HALF_PI, 1e-6));
+        for a in grid() {
+            let wi = frame.to_world(&a);
+            assert!(close(dot(wi, wi), 1.0, 1e-5));
+            // θ_i is still the angle to the normal plane.
+            assert!(close(
+                libm::asinf(wi[2].clamp(-1.0, 1.0)),
+                a.theta_i(),
+                2e-3
+            ));
+        }
+        assert_eq!(Frame::from_view::<Libm>([0.0; 3], [0.0, 0.0, 1.0]), None);
+        assert_eq!(
+            Frame::from_view::<Libm>([1.0, 0.0, 0.0], [f32::NAN; 3]),
+            None
+        );
+    }
+
+    #[test]
+    fn canonical_frame_is_the_fiber_frame() {
+        let f = Frame::canonical();
+        let wi = f.to_world(&Angles::new(0.0, 0.0, HALF_PI).unwrap());
+        // φ = φ_r − φ_i = π/2 with φ_r = 0: ω_i at azimuth −π/2, i.e. along −w = −y.
+        assert!(close(wi[0], 0.0, 1e-6) && close(wi[1], -1.0, 1e-6) && wi[2] == 0.0);
+        let wi = f.to_world(&Angles::new(HALF_PI, 0.0, 0.0).unwrap());
+        assert!(close(wi[2], 1.0, 1e-6));
+    }
+
+    #[test]
+    fn directions_are_validated() {
+        let (x, z) = ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
+        let from = Angles::from_directions::<Libm>;
+        assert_eq!(from([0.0; 3], x, z), Err(AngleError::Degenerate));
+        assert_eq!(from(x, x, [1e-30, 0.0, 0.0]), Err(AngleError::Degenerate));
+        assert_eq!(from([f32::NAN, 0.0, 0.0], x, z), Err(AngleError::NonFinite));
+        // Finite components whose squared length overflows.
+        assert_eq!(from([f32::MAX, 0.0, 0.0], x, z), Err(AngleError::NonFinite));
+        // Lengths do not matter.
+        let a = from([0.2, 0.5, 0.1], [-1.0, 0.3, 0.6], z).unwrap();
+        let b = from([2e3, 5e3, 1e3], [-1e-3, 0.3e-3, 0.6e-3], [0.0, 0.0, 7.0]).unwrap();
+        assert!(close(a.theta_i(), b.theta_i(), 1e-6));
+        assert!(close(a.theta_r(), b.theta_r(), 1e-6));
+        assert!(close(a.phi(), b.phi(), 1e-6));
+    }
+
+    #[test]
+    fn polynomial_angles_agree_with_libm() {
+        let frame = Frame::from_view::<Libm>([0.3, -1.0, 0.4], [0.0, 0.2, 1.0]).unwrap();
+        let (wr, tangent) = ([0.3, -1.0, 0.4], [0.0, 0.2, 1.0]);
+        for a in grid() {
+            let a = Angles::new(a.theta_i(), frame.theta_r(), a.phi()).unwrap();
+            let wi = frame.to_world(&a);
+            let exact = Angles::from_directions::<Libm>(wi, wr, tangent).unwrap();
+            let [ti, tr, phi] = polynomial_angles::<Libm>(wi, wr, tangent).unwrap();
+            assert!(close(ti, exact.theta_i(), 1e-6), "{a:?}");
+            assert!(close(tr, exact.theta_r(), 1e-6), "{a:?}");
+            if exact.theta_i().abs() < 1.5 {
+                assert!(close(phi, exact.phi().abs(), 1e-5), "{a:?}");
+            }
+        }
+        assert_eq!(
+            polynomial_angles::<Libm>([0.0; 3], wr, tangent),
+            Err(AngleError::Degenerate)
+        );
+        assert_eq!(
+            polynomial_angles::<Libm>([f32::NAN; 3], wr, tangent),
+            Err(AngleError::NonFinite)
+        );
     }
 }

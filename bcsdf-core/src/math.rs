@@ -123,7 +123,7 @@ impl Math for FastMath {
 /// Arc sine by Abramowitz & Stegun 4.4.46: asin x = π/2 − √(1 − x)·Σ a_k x^k on [0, 1]
 /// (|error| ≤ 2e-8 in exact arithmetic; ≤ 3e-7 rad in f32 (Estrin's scheme), measured by
 /// `tests::asin_polynomial_accuracy`), odd-extended, branch-free. Used by `FastMath` and by
-/// the baked evaluator's direction conversion ([`crate::frame`]).
+/// the baked evaluator's direction conversion ([`crate::BakedBcsdf::eval_far_dirs`]).
 #[inline]
 pub fn asin_polynomial(x: f32) -> f32 {
     const A: [f32; 8] = [

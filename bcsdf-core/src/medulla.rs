@@ -145,6 +145,8 @@ impl fmt::Display for ProfileError {
     }
 }
 
+impl core::error::Error for ProfileError {}
+
 impl ProfileLayout {
     /// The slice of profile space `params` needs: their g, σ_N over the range cos θ_tm spans
     /// for θ_r ∈ [−90°, 90°], σ_M = σ_ms·κ, and θ'_in up to asin(1/η_m).

@@ -4,6 +4,7 @@
 
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams};
@@ -27,21 +28,9 @@ fn bench(c: &mut Criterion) {
         unsafe { fur_lut_open(blob.as_ptr(), blob.len(), &mut lut) },
         fur_status::FUR_OK
     );
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((state >> 40) as f32) / (1u64 << 24) as f32
-    };
-    let qs: Vec<[f32; 3]> = (0..256)
-        .map(|_| {
-            [
-                (-80.0 + 160.0 * next()).to_radians(),
-                (-80.0 + 160.0 * next()).to_radians(),
-                (-180.0 + 360.0 * next()).to_radians(),
-            ]
-        })
+    let mut stream = QueryStream::new();
+    let qs: Vec<[f32; 3]> = (0..QUERY_COUNT)
+        .map(|_| stream.degrees().map(f32::to_radians))
         .collect();
     let mut i = 0usize;
     c.bench_function("eval_far_rust", |b| {

@@ -1,7 +1,7 @@
 //! Throughput of the WGSL evaluator on the first adapter (criterion, elements = evaluations):
 //! 2^18 random angle queries per iteration, upload, dispatch and readback included.
 //! `cargo bench -p bcsdf-gpu`. Prints "skipped: no GPU adapter" without one.
-use bcsdf_core::rng::{cell_stream, Pcg32};
+use bcsdf_core::bench_support::indexed_radians;
 use bcsdf_gpu::GpuLut;
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 
@@ -18,17 +18,7 @@ fn bench(c: &mut Criterion) {
         }
     };
     let n = 1usize << 18;
-    let q: Vec<[f32; 3]> = (0..n as u64)
-        .map(|i| {
-            let mut r = Pcg32::new(cell_stream(3, 1, i), cell_stream(3, 2, i));
-            let pi = std::f32::consts::PI;
-            [
-                (r.uniform() - 0.5) * pi,
-                (r.uniform() - 0.5) * pi,
-                (r.uniform() - 0.5) * 2.0 * pi,
-            ]
-        })
-        .collect();
+    let q: Vec<[f32; 3]> = (0..n as u64).map(indexed_radians).collect();
     let mut g = c.benchmark_group(format!("gpu_eval/{}", gpu.adapter_name()));
     g.throughput(Throughput::Elements(n as u64)).sample_size(10);
     g.bench_function("eval_far_2^18", |b| b.iter(|| gpu.eval(&q).unwrap()));

@@ -2,7 +2,7 @@
 //! queries per dispatch, the median of 7 timed runs after one warm-up (upload of the queries,
 //! dispatch, readback included). `cargo run --release -p bcsdf-gpu --example throughput [LUT]`
 //! (without a LUT file, human-hair is baked here).
-use bcsdf_core::rng::{cell_stream, Pcg32};
+use bcsdf_core::bench_support::indexed_radians;
 use bcsdf_gpu::GpuLut;
 use std::time::Instant;
 
@@ -24,17 +24,7 @@ fn main() {
         }
     };
     let n = 1usize << 20;
-    let q: Vec<[f32; 3]> = (0..n as u64)
-        .map(|i| {
-            let mut r = Pcg32::new(cell_stream(3, 1, i), cell_stream(3, 2, i));
-            let pi = std::f32::consts::PI;
-            [
-                (r.uniform() - 0.5) * pi,
-                (r.uniform() - 0.5) * pi,
-                (r.uniform() - 0.5) * 2.0 * pi,
-            ]
-        })
-        .collect();
+    let q: Vec<[f32; 3]> = (0..n as u64).map(indexed_radians).collect();
     gpu.eval(&q).unwrap();
     let mut times: Vec<f64> = (0..7)
         .map(|_| {

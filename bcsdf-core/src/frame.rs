@@ -351,6 +351,8 @@ mod tests {
         let want = (1e4f64 + core::f64::consts::PI).rem_euclid(core::f64::consts::TAU)
             - core::f64::consts::PI;
         assert!((f64::from(far) - want).abs() < 2e-3, "{far} {want}");
+        // So large that it names no direction: treated like a non-finite φ would be wrapped.
+        assert_eq!(Angles::new(0.0, 0.0, 1e30).unwrap().phi(), 0.0);
     }
 
     #[test]

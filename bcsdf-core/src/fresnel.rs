@@ -53,3 +53,91 @@ pub fn cuticle<M: Math>(cos_a: f32, eta_c_prime: f32, l: f32) -> f32 {
 pub fn medulla<M: Math>(cos_m: f32, eta_rel: f32) -> f32 {
     dielectric::<M>(cos_m, eta_rel)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Libm;
+
+    fn close(a: f32, b: f32, tol: f32) -> bool {
+        (a - b).abs() <= tol
+    }
+
+    #[test]
+    fn normal_incidence_is_the_textbook_formula() {
+        for eta in [1.2f32, 1.55, 2.0, 1.0 / 1.55] {
+            let want = ((eta - 1.0) / (eta + 1.0)) * ((eta - 1.0) / (eta + 1.0));
+            let (rs, rp) = dielectric_sp::<Libm>(1.0, eta);
+            assert!(close(rs, want, 1e-7) && close(rp, want, 1e-7), "η {eta}");
+            assert!(close(dielectric::<Libm>(1.0, eta), want, 1e-7));
+        }
+    }
+
+    #[test]
+    fn grazing_and_total_internal_reflection_reflect_everything() {
+        assert_eq!(dielectric::<Libm>(0.0, 1.55), 1.0);
+        // From the dense side (η < 1) beyond the critical angle sin θ_c = η.
+        let eta = 1.0 / 1.55;
+        let cos_c = libm::sqrtf(1.0 - eta * eta);
+        for cos_i in [0.0, 0.3, 0.9 * cos_c] {
+            assert_eq!(dielectric_sp::<Libm>(cos_i, eta), (1.0, 1.0), "cos {cos_i}");
+            assert_eq!(medulla::<Libm>(cos_i, eta), 1.0);
+        }
+        // Inside the critical angle: below 1, rising toward it as θ_i nears θ_c.
+        let r =
+            [1.0, 1.1 * cos_c, 1.01 * cos_c, 1.0001 * cos_c].map(|c| dielectric::<Libm>(c, eta));
+        assert!(r.windows(2).all(|w| w[0] < w[1]) && r[3] < 1.0, "{r:?}");
+        assert!(r[3] > 0.9, "{r:?}");
+        // An index-matched boundary reflects nothing at any angle.
+        for cos_i in [0.0, 0.5, 1.0] {
+            assert_eq!(dielectric_sp::<Libm>(cos_i, 1.0), (0.0, 0.0));
+        }
+    }
+
+    #[test]
+    fn brewster_angle_and_reciprocity() {
+        let eta = 1.55f32;
+        // r_p vanishes at tan θ_B = η.
+        let cos_b = 1.0 / libm::sqrtf(1.0 + eta * eta);
+        let (rs, rp) = dielectric_sp::<Libm>(cos_b, eta);
+        assert!(rp < 1e-10 && rs > 0.1, "{rs} {rp}");
+        // Stokes: the same reflectance from either side of the interface.
+        for k in 1..20 {
+            let cos_i = k as f32 / 20.0;
+            let sin_t = libm::sqrtf(1.0 - cos_i * cos_i) / eta;
+            let cos_t = libm::sqrtf(1.0 - sin_t * sin_t);
+            let outside = dielectric::<Libm>(cos_i, eta);
+            let inside = dielectric::<Libm>(cos_t, 1.0 / eta);
+            assert!(
+                close(outside, inside, 1e-5),
+                "cos {cos_i}: {outside} vs {inside}"
+            );
+        }
+        // Clamped cosines: beyond 1 is normal incidence, below 0 grazing.
+        assert_eq!(dielectric::<Libm>(1.5, eta), dielectric::<Libm>(1.0, eta));
+        assert_eq!(dielectric::<Libm>(-0.5, eta), 1.0);
+    }
+
+    #[test]
+    fn cuticle_layers_interpolate_between_no_reflection_and_a_mirror() {
+        let eta = 1.55;
+        // Half a layer is the plain interface (at normal incidence r_s = r_p).
+        assert!(close(
+            cuticle::<Libm>(1.0, eta, 0.5),
+            dielectric::<Libm>(1.0, eta),
+            1e-7
+        ));
+        for cos_a in [0.1f32, 0.5, 0.9, 1.0] {
+            assert_eq!(cuticle::<Libm>(cos_a, eta, 0.0), 0.0);
+            let mut prev = 0.0;
+            for l in [0.25, 0.5, 1.0, 2.0, 8.0, 64.0] {
+                let f = cuticle::<Libm>(cos_a, eta, l);
+                assert!(f > prev && f <= 1.0, "cos {cos_a}, l {l}: {f}");
+                prev = f;
+            }
+            assert!(cuticle::<Libm>(cos_a, eta, 1e6) > 0.999);
+        }
+        // Under total internal reflection every plate is a mirror.
+        assert_eq!(cuticle::<Libm>(0.2, 0.7, 0.3), 1.0);
+    }
+}

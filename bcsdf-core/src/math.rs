@@ -283,7 +283,9 @@ pub fn cos_within_half_pi(x: f32) -> f32 {
     (acc * y) * m + m
 }
 
-/// Wraps an angle to `(-π, π]`. Non-finite input gives 0.
+/// Wraps an angle to `(-π, π]`. Non-finite input gives 0, and so does finite input too
+/// large for the f32 reduction to place (|x| beyond about 2e8, where one ulp of x exceeds
+/// two turns, so that x names no direction).
 #[inline]
 #[must_use]
 pub fn wrap_angle(x: f32) -> f32 {
@@ -320,7 +322,14 @@ fn wrap_angle_far(x: f32) -> f32 {
     if y > PI {
         y -= TAU;
     }
-    y
+    // |x| beyond about 2e8 (one ulp of x is then 16, over two turns), where the f32 product
+    // above can be off by more than a turn: such an angle names no direction, so it is
+    // treated like non-finite input (a WGSL twin can do the same; it has no f64 to reduce in).
+    if y > -PI && y <= PI {
+        y
+    } else {
+        0.0
+    }
 }
 
 /// `asin` with its argument clamped to `[-1, 1]` (rounding can push `sin` values just past 1).
@@ -453,5 +462,135 @@ mod tests {
         assert_eq!(wrap_angle(-PI), PI);
         assert_eq!(wrap_angle(f32::NAN), 0.0);
         assert_eq!(wrap_angle(f32::INFINITY), 0.0);
+    }
+
+    #[test]
+    fn wrap_angle_handles_huge_and_non_finite_input() {
+        for x in [f32::NEG_INFINITY, f32::INFINITY, f32::NAN, -f32::NAN] {
+            assert_eq!(wrap_angle(x), 0.0, "{x}");
+        }
+        // Far outside: still in (−π, π] and the same direction as the f64 reduction of the
+        // same f32 (up to the f32 rounding of x − 2πk, which grows with |x|); beyond about
+        // 2e8, where x names no direction, 0.
+        for x in [
+            1e4f32,
+            -1e4,
+            123_456.7,
+            -7.5e6,
+            1e8,
+            3e8,
+            -1e9,
+            1e30,
+            f32::MAX,
+            -f32::MAX,
+        ] {
+            let y = wrap_angle(x);
+            assert!(y > -PI && y <= PI, "{x} → {y}");
+        }
+        assert_eq!(wrap_angle(1e30), 0.0);
+        assert_eq!(wrap_angle(-f32::MAX), 0.0);
+        for x in [1e4f32, -1e4, 123_456.7, -7.5e6] {
+            let want = (f64::from(x) + core::f64::consts::PI).rem_euclid(core::f64::consts::TAU)
+                - core::f64::consts::PI;
+            let got = f64::from(wrap_angle(x));
+            // Compare on the circle: ±π are the same point.
+            let d = (got - want).rem_euclid(core::f64::consts::TAU);
+            let d = d.min(core::f64::consts::TAU - d);
+            assert!(
+                d < 1e-6 * f64::from(x.abs()).max(1.0),
+                "{x}: {got} vs {want}"
+            );
+        }
+        // The ends of the one-period fast paths.
+        assert_eq!(wrap_angle(PI), PI);
+        assert_eq!(wrap_angle(PI + TAU), PI + TAU - TAU);
+        assert!(wrap_angle(-PI - TAU) > -PI);
+        // Wrapping twice changes nothing.
+        for x in grid(-1e3, 1e3, 10_000) {
+            assert_eq!(wrap_angle(wrap_angle(x)), wrap_angle(x), "{x}");
+        }
+    }
+
+    #[test]
+    fn asin_polynomial_ends_and_symmetry() {
+        assert_eq!(asin_polynomial(0.0), 0.0);
+        assert!(asin_polynomial(-0.0).is_sign_negative());
+        assert_eq!(asin_polynomial(1.0), PI / 2.0);
+        assert_eq!(asin_polynomial(-1.0), -PI / 2.0);
+        // Beyond ±1 the argument is clamped (callers clamp anyway).
+        assert_eq!(asin_polynomial(1.5), PI / 2.0);
+        for x in grid(0.0, 1.0, 10_000) {
+            assert_eq!(asin_polynomial(-x), -asin_polynomial(x), "odd at {x}");
+        }
+        // Monotone: a sampler inverting it must not see it turn back.
+        let mut prev = -PI;
+        for x in grid(-1.0, 1.0, 100_000) {
+            let y = asin_polynomial(x);
+            assert!(y >= prev, "not monotone at {x}");
+            prev = y;
+        }
+    }
+
+    #[test]
+    fn cos_within_half_pi_ends_symmetry_and_monotonicity() {
+        assert_eq!(cos_within_half_pi(0.0), 1.0);
+        let pole = cos_within_half_pi(PI / 2.0);
+        // cos of the f32 nearest π/2 is −4.37e-8 in exact arithmetic.
+        assert!(
+            (f64::from(pole) - libm::cos(f64::from(PI / 2.0))).abs() < 1e-12,
+            "{pole}"
+        );
+        let mut prev = 1.0f32;
+        for x in grid(0.0, PI / 2.0, 50_000) {
+            let c = cos_within_half_pi(x);
+            assert_eq!(c.to_bits(), cos_within_half_pi(-x).to_bits(), "even at {x}");
+            assert!(c <= prev, "not decreasing at {x}");
+            prev = c;
+        }
+        // Relative accuracy near the pole, where 1/cos²θ magnifies errors.
+        for k in 1..=1000 {
+            let x = PI / 2.0 - k as f32 * 1e-6;
+            let exact = libm::cos(f64::from(x));
+            let rel = (f64::from(cos_within_half_pi(x)) - exact).abs() / exact;
+            assert!(rel < 2e-6, "{x}: relative error {rel}");
+        }
+    }
+
+    #[test]
+    fn clamped_helpers_never_give_nan() {
+        assert_eq!(asin_clamped::<Libm>(1.000_001), PI / 2.0);
+        assert_eq!(asin_clamped::<Libm>(-1.5), -PI / 2.0);
+        assert_eq!(sqrt_pos::<Libm>(-1e-9), 0.0);
+        assert_eq!(sqrt_pos::<Libm>(4.0), 2.0);
+    }
+
+    #[test]
+    fn libm_backend_is_libm() {
+        for x in grid(-10.0, 10.0, 1_000) {
+            let (s, c) = Libm::sin_cos(x);
+            assert_eq!(s.to_bits(), libm::sinf(x).to_bits());
+            assert_eq!(c.to_bits(), libm::cosf(x).to_bits());
+            assert_eq!(Libm::atan2(x, 1.5), libm::atan2f(x, 1.5));
+            assert_eq!(Libm::exp(x), libm::expf(x));
+            if x >= 0.0 {
+                assert_eq!(Libm::exp_neg(x), exp_neg_polynomial(x));
+            }
+        }
+        assert_eq!(Libm::sqrt(2.0), libm::sqrtf(2.0));
+    }
+
+    #[cfg(feature = "micromath")]
+    #[test]
+    fn fast_math_backend_is_close() {
+        for x in grid(-1.0, 1.0, 1_000) {
+            assert_eq!(FastMath::asin(x), asin_polynomial(x));
+            assert!((FastMath::sin(x) - libm::sinf(x)).abs() < 1e-3, "sin {x}");
+            assert!((FastMath::cos(x) - libm::cosf(x)).abs() < 1e-3, "cos {x}");
+            let e = FastMath::exp_neg(x.abs() * 10.0);
+            let want = libm::expf(-x.abs() * 10.0);
+            assert!((e - want).abs() <= 1e-3 * want.max(1e-6), "exp {x}");
+        }
+        assert_eq!(FastMath::exp(-100.0), 0.0);
+        assert_eq!(FastMath::sqrt(2.0), libm::sqrtf(2.0));
     }
 }

@@ -398,3 +398,6 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         Ok(Self::assemble(&self.gather(&self.place(ti, tr, abs_phi))))
     }
 }
+
+#[cfg(test)]
+pub(crate) mod tests;

@@ -335,47 +335,8 @@ impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
 
 #[cfg(test)]
 mod tests {
-    extern crate std;
     use super::*;
-    use crate::lut::{self, LutHeader, LutResolution};
-    use crate::presets;
-    use std::vec;
-
-    /// A LUT with pseudo-random positive values (some exactly zero) in every table.
-    fn blob() -> std::vec::Vec<u8> {
-        let res = LutResolution {
-            n_sum: 33,
-            n_theta_r: 5,
-            n_phi: 27,
-            n_ms_i: 19,
-            n_ms_r: 7,
-        };
-        let header = LutHeader {
-            res,
-            scales: [1.0; lut::TABLE_COUNT],
-            params: presets::PRESETS[0].input,
-            profiles: None,
-        };
-        let mut b = vec![0u8; res.blob_len()];
-        b[..lut::HEADER_LEN].copy_from_slice(&header.encode());
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let end = res.sampling_start();
-        for pair in b[lut::HEADER_LEN..end].chunks_exact_mut(2) {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1);
-            let r = (state >> 33) as u32;
-            // Halves in [0, 2) with one in eight zero: 0x0000..0x4000.
-            let bits = if r.is_multiple_of(8) {
-                0
-            } else {
-                (r % 0x4000) as u16
-            };
-            pair.copy_from_slice(&bits.to_le_bytes());
-        }
-        lut::seal(&mut b);
-        b
-    }
+    use crate::baked::tests::random as blob;
 
     /// ∫ of the rows' interpolant from the first node to x, segment by segment (the exact
     /// integral of a linear function), written independently of `Rows`.
@@ -425,5 +386,41 @@ mod tests {
             }
         }
         assert!(checked > 1000);
+    }
+
+    #[test]
+    fn samples_carry_the_pdf_and_the_weight_of_their_direction() {
+        let b = blob();
+        let lut = BakedBcsdf::from_bytes(&b).unwrap();
+        let mut drawn = 0;
+        for k in 0..400 {
+            let theta_r = -1.5 + 3.0 * (k % 20) as f32 / 19.0;
+            let u = [
+                (k as f32 * 0.618_034) % 1.0,
+                (k as f32 * 0.414_214) % 1.0,
+                0.37,
+            ];
+            let Some(s) = lut.sample(theta_r, u) else {
+                continue;
+            };
+            drawn += 1;
+            assert_eq!(s.angles.theta_r(), theta_r);
+            // The density is the one `pdf` gives for that direction, bit for bit.
+            assert_eq!(s.pdf.to_bits(), lut.pdf(&s.angles).to_bits(), "{s:?}");
+            assert_eq!(
+                lut.sample_direction(theta_r, u).map(|d| d.angles),
+                Some(s.angles)
+            );
+            // weight = S·cos θ_i / pdf.
+            let value = lut.eval(&s.angles).total();
+            let k = libm::cosf(s.angles.theta_i()) / s.pdf;
+            for (w, v) in s.weight.0.iter().zip(value.0) {
+                assert!((w - v * k).abs() <= 1e-5 * (v * k).max(1e-6), "{s:?}");
+            }
+        }
+        assert!(drawn > 300, "{drawn}");
+        // Invalid θ_r: nothing drawn.
+        assert!(lut.sample(f32::NAN, [0.5; 3]).is_none());
+        assert!(lut.sample(1.6, [0.5; 3]).is_none());
     }
 }

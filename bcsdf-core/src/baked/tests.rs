@@ -1,0 +1,341 @@
+//! Unit tests of the baked evaluator on small synthetic LUTs: axis location, interpolation
+//! in every table, the exact factors, the direction and batch paths, and rejection.
+
+extern crate std;
+
+use super::*;
+use crate::lut::{LutResolution, HEADER_LEN};
+use crate::math::wrap_angle;
+use crate::presets;
+use std::vec;
+use std::vec::Vec;
+
+/// A small resolution with a different node count on every axis.
+pub(crate) const RES: LutResolution = LutResolution {
+    n_sum: 33,
+    n_theta_r: 5,
+    n_phi: 27,
+    n_ms_i: 19,
+    n_ms_r: 7,
+};
+
+/// A sealed LUT at `res` for the first preset's parameters, every stored half from
+/// `half(table, x, y, channel)`.
+pub(crate) fn blob(
+    res: LutResolution,
+    half: impl Fn(Table, usize, usize, usize) -> u16,
+) -> Vec<u8> {
+    let header = LutHeader {
+        res,
+        scales: [1.0; TABLE_COUNT],
+        params: presets::PRESETS[0].input,
+        profiles: None,
+    };
+    let mut b = vec![0u8; res.blob_len()];
+    b[..HEADER_LEN].copy_from_slice(&header.encode());
+    for t in Table::ALL {
+        let (w, h) = res.dims(t);
+        let start = res.byte_range(t).start;
+        for y in 0..h {
+            for x in 0..w {
+                for c in 0..t.channels() {
+                    let at = start + 2 * ((y * w + x) * t.channels() + c);
+                    b[at..at + 2].copy_from_slice(&half(t, x, y, c).to_le_bytes());
+                }
+            }
+        }
+    }
+    lut::seal(&mut b);
+    b
+}
+
+/// The f16 bits of `v`, which must be 0 or a normal half exactly (small integers are).
+fn half(v: f32) -> u16 {
+    if v == 0.0 {
+        return 0;
+    }
+    let bits = v.to_bits();
+    let exp = ((bits >> 23) & 0xff) as i32 - 127 + 15;
+    assert!(
+        bits & 0x1fff == 0 && (1..31).contains(&exp) && v > 0.0,
+        "{v}"
+    );
+    ((exp as u16) << 10) | ((bits >> 13) & 0x3ff) as u16
+}
+
+/// Every table affine in its node indices: M = x + c, N = x + 2y + c, M_s = x + 3y + c.
+fn affine() -> Vec<u8> {
+    blob(RES, |t, x, y, c| {
+        let k = match t {
+            Table::M => 0.0,
+            Table::N => 2.0,
+            Table::MS => 3.0,
+        };
+        half(x as f32 + k * y as f32 + c as f32)
+    })
+}
+
+fn close(a: f32, b: f32, tol: f32) -> bool {
+    (a - b).abs() <= tol
+}
+
+#[test]
+fn axis_locates_nodes_interpolates_and_clamps() {
+    // [0, π] on 5 nodes: π/4 apart.
+    let a = Axis::new(0.0, 1.0 / PI, 5);
+    assert_eq!(a.locate(0.0), (0, 0.0));
+    assert_eq!(a.locate(PI / 2.0).0, 2);
+    let (i, w) = a.locate(PI / 8.0);
+    assert!(i == 0 && close(w, 0.5, 1e-6), "{i} {w}");
+    let (i, w) = a.locate(3.0 * PI / 4.0 + PI / 16.0);
+    assert!(i == 3 && close(w, 0.25, 1e-5), "{i} {w}");
+    // The last node is reached as the upper end of the last interval.
+    let (i, w) = a.locate(PI);
+    assert!(i == 3 && close(w, 1.0, 1e-6), "{i} {w}");
+    // Outside the axis (and NaN): clamped to the ends.
+    assert_eq!(a.locate(-1.0), (0, 0.0));
+    assert_eq!(a.locate(f32::NEG_INFINITY), (0, 0.0));
+    assert_eq!(a.locate(f32::NAN), (0, 0.0));
+    assert_eq!(a.locate(10.0), (3, 1.0));
+    assert_eq!(a.locate(f32::INFINITY), (3, 1.0));
+    // Centred on 0: [−π, π] on 33 nodes, x = 0 on node 16.
+    let c = Axis::new(-PI, 1.0 / (2.0 * PI), 33);
+    assert_eq!(c.locate(0.0), (16, 0.0));
+    let (i, w) = c.locate(-PI);
+    assert!(i == 0 && w < 1e-5, "{i} {w}");
+    let (i, w) = c.locate(PI);
+    assert!(i == 31 && close(w, 1.0, 1e-5), "{i} {w}");
+    // Node positions: lo + (i + w)·step recovers x everywhere inside.
+    for k in 0..=1000 {
+        let x = -PI + 2.0 * PI * k as f32 / 1000.0;
+        let (i, w) = c.locate(x);
+        assert!(i <= 31 && (0.0..=1.0).contains(&w));
+        let back = -PI + (i as f32 + w) * (2.0 * PI / 32.0);
+        assert!(close(back, x, 2e-6), "{x}: {i} {w}");
+    }
+    // Two nodes: a single interval.
+    let two = Axis::new(0.0, 1.0 / PI, 2);
+    assert_eq!(two.locate(PI / 2.0), (0, 0.5));
+}
+
+#[test]
+fn lookups_interpolate_every_table_linearly() {
+    let b = affine();
+    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let r = RES;
+    let thetas = [-PI / 2.0, -1.3, -0.4, 0.0, 0.05, 0.9, PI / 2.0];
+    let phis = [-PI, -2.0, -0.1, 0.0, 0.7, 3.0, PI];
+    for ti in thetas {
+        for tr in thetas {
+            for phi in phis {
+                let l = lut.lookups(&Angles::new(ti, tr, phi).unwrap());
+                // The node coordinates of the query on each axis.
+                let sum = (ti + tr + PI) * (r.n_sum - 1) as f32 / (2.0 * PI);
+                let col_n = phi.abs() * (r.n_phi - 1) as f32 / PI;
+                let row_n = tr.abs() * (r.n_theta_r - 1) as f32 / (PI / 2.0);
+                let col_ms = (ti + PI / 2.0) * (r.n_ms_i - 1) as f32 / PI;
+                let row_ms = (tr + PI / 2.0) * (r.n_ms_r - 1) as f32 / PI;
+                let tol = 1e-4 * (r.n_sum + r.n_phi) as f32;
+                for c in 0..3 {
+                    assert!(close(l.m[c], sum + c as f32, tol), "M {ti} {tr}: {l:?}");
+                }
+                for c in 0..12 {
+                    let want = col_n + 2.0 * row_n + c as f32;
+                    assert!(
+                        close(l.n[c], want, tol),
+                        "N {tr} {phi}: {} vs {want}",
+                        l.n[c]
+                    );
+                }
+                for c in 0..2 {
+                    let want = col_ms + 3.0 * row_ms + c as f32;
+                    assert!(
+                        close(l.ms[c], want, tol),
+                        "M_s {ti} {tr}: {} vs {want}",
+                        l.ms[c]
+                    );
+                }
+                assert!(close(l.front, phi.abs() / PI, 1e-6));
+            }
+        }
+    }
+}
+
+#[test]
+fn a_constant_lut_leaves_the_exact_cos2_factor() {
+    // Every table 1: each family is 1/cos²θ_i (the blend of two equal halves is 1 too).
+    let b = blob(RES, |_, _, _, _| half(1.0));
+    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    for deg in [-90.0f32, -89.5, -60.0, -10.0, 0.0, 25.0, 80.0, 90.0] {
+        let a = Angles::from_degrees(deg, 33.0, 100.0).unwrap();
+        let want = inv_cos2_theta_i(libm::cosf(a.theta_i()));
+        let got = lut.eval_far(&a);
+        for f in got.as_array() {
+            for c in f.0 {
+                assert!(close(c, want, 2e-6 * want), "θ_i {deg}: {c} vs {want}");
+            }
+        }
+        assert!(close(got.total().0[0], 4.0 * want, 8e-6 * want));
+    }
+    // The grazing guard: at the pole 1/cos² is held at 1/MIN_COS2_THETA_I.
+    let pole = lut.eval_far(&Angles::new(PI / 2.0, 0.0, 0.0).unwrap());
+    assert!(close(pole.total().0[1], 4.0e4, 1.0));
+}
+
+#[test]
+fn value_reads_texels_and_is_zero_outside() {
+    let b = affine();
+    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    assert_eq!(lut.value(Table::M, 7, 0, 2), 9.0);
+    assert_eq!(lut.value(Table::N, 3, 4, 11), 3.0 + 8.0 + 11.0);
+    assert_eq!(lut.value(Table::MS, 18, 6, 1), 18.0 + 18.0 + 1.0);
+    assert_eq!(lut.value(Table::M, 33, 0, 0), 0.0);
+    assert_eq!(lut.value(Table::N, 0, 5, 0), 0.0);
+    assert_eq!(lut.value(Table::MS, 0, 0, 2), 0.0);
+    assert_eq!(lut.header().res, RES);
+    assert_eq!(lut.params().eta_c(), presets::PRESETS[0].input.eta_c);
+}
+
+/// A LUT at [`RES`] with pseudo-random halves in [0, 2), one in eight zero.
+pub(crate) fn random() -> Vec<u8> {
+    blob(RES, |t, x, y, c| {
+        let mut z = (t as u64) << 48 ^ (x as u64) << 32 ^ (y as u64) << 16 ^ c as u64;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        let r = (z ^ (z >> 31)) as u32;
+        if r % 8 == 0 {
+            0
+        } else {
+            (r % 0x4000) as u16
+        }
+    })
+}
+
+#[test]
+fn directions_agree_with_angles_and_reject_like_angles() {
+    let b = random();
+    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let (wr, tangent) = ([0.3, -1.0, 0.4], [0.0, 0.2, 1.0]);
+    let frame = crate::Frame::from_view::<Libm>(wr, tangent).unwrap();
+    for k in 0..200 {
+        let ti = -1.4 + 2.8 * (k as f32 / 199.0);
+        let phi = wrap_angle(0.37 * k as f32);
+        let a = Angles::new(ti, frame.theta_r(), phi).unwrap();
+        let wi = frame.to_world(&a);
+        let exact = Angles::from_directions::<Libm>(wi, wr, tangent).unwrap();
+        let (got, want) = (lut.eval_far_dirs(wi, wr, tangent), lut.eval_far(&exact));
+        for (g, w) in got.total().0.iter().zip(want.total().0) {
+            // The polynomial angles differ by ~3e-7 rad; the tables are smooth at that scale.
+            assert!(close(*g, w, 1e-3 * w.max(1.0)), "{a:?}: {g} vs {w}");
+        }
+    }
+    assert_eq!(lut.eval_far_dirs([0.0; 3], wr, tangent), Families::ZERO);
+    assert_eq!(
+        lut.try_eval_far_dirs([f32::NAN, 0.0, 0.0], wr, tangent),
+        Err(AngleError::NonFinite)
+    );
+    assert_eq!(
+        lut.try_eval_far_dirs(wr, wr, [0.0; 3]),
+        Err(AngleError::Degenerate)
+    );
+}
+
+#[test]
+fn batch_equals_the_scalar_path_bit_for_bit() {
+    let b = random();
+    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let n = 100; // more than three chunks, the last one partial
+    let mut ti: Vec<f32> = (0..n).map(|k| -1.5 + 0.03 * k as f32).collect();
+    let tr: Vec<f32> = (0..n).map(|k| 1.2 - 0.024 * k as f32).collect();
+    let mut phi: Vec<f32> = (0..n).map(|k| -7.0 + 0.14 * k as f32).collect();
+    ti[5] = f32::NAN;
+    ti[40] = 2.0;
+    phi[77] = f32::INFINITY;
+    phi[78] = 1e30;
+    let mut out = vec![Rgb([9.0; 3]); n];
+    let rejected = lut.eval_far_batch(&ti, &tr, &phi, &mut out).unwrap();
+    assert_eq!(rejected, 3);
+    for k in 0..n {
+        let want =
+            Angles::new(ti[k], tr[k], phi[k]).map_or(Rgb::ZERO, |a| lut.eval_far(&a).total());
+        assert_eq!(
+            out[k].0.map(f32::to_bits),
+            want.0.map(f32::to_bits),
+            "query {k}"
+        );
+    }
+    // Every kernel this CPU has gives the same bits.
+    let base = lut.with_kernel(Kernel::Baseline).unwrap();
+    let mut again = vec![Rgb::ZERO; n];
+    base.eval_far_batch(&ti, &tr, &phi, &mut again).unwrap();
+    assert_eq!(again, out);
+    let a = Angles::new(0.3, -0.2, 1.0).unwrap();
+    assert_eq!(base.eval_far(&a), lut.eval_far(&a));
+    assert_eq!(base.kernel(), Kernel::Baseline);
+}
+
+#[test]
+fn batch_rejects_slices_of_different_lengths() {
+    let b = random();
+    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let mut out = [Rgb([5.0; 3]); 2];
+    let e = lut
+        .eval_far_batch(&[0.0; 2], &[0.0; 3], &[0.0; 2], &mut out)
+        .unwrap_err();
+    assert_eq!(
+        e,
+        BatchLengthError {
+            inputs: [2, 3, 2],
+            output: 2
+        }
+    );
+    assert_eq!(out, [Rgb([5.0; 3]); 2], "nothing written");
+    let text = std::format!("{e}");
+    assert!(
+        text.contains("theta_r 3") && text.contains("output 2"),
+        "{text}"
+    );
+    let _: &dyn core::error::Error = &e;
+    assert_eq!(lut.eval_far_batch(&[], &[], &[], &mut []), Ok(0));
+}
+
+#[test]
+fn from_bytes_rejects_damaged_blobs() {
+    let good = random();
+    assert!(BakedBcsdf::from_bytes(&good).is_ok());
+    assert_eq!(
+        BakedBcsdf::from_bytes(&good[..100]).unwrap_err(),
+        LutError::TooShort { len: 100 }
+    );
+    let mut magic = good.clone();
+    magic[0] = b'X';
+    assert_eq!(
+        BakedBcsdf::from_bytes(&magic).unwrap_err(),
+        LutError::BadMagic
+    );
+    let mut long = good.clone();
+    long.push(0);
+    assert!(matches!(
+        BakedBcsdf::from_bytes(&long),
+        Err(LutError::Length { .. })
+    ));
+    // A changed table byte fails the checksum.
+    let mut flipped = good.clone();
+    flipped[HEADER_LEN + 10] ^= 1;
+    assert!(matches!(
+        BakedBcsdf::from_bytes(&flipped),
+        Err(LutError::Checksum { .. })
+    ));
+    // A negative half is caught even when the checksum is made to match.
+    let mut negative = good;
+    negative[HEADER_LEN + 1] |= 0x80;
+    lut::seal(&mut negative);
+    assert!(matches!(
+        BakedBcsdf::from_bytes(&negative),
+        Err(LutError::Value {
+            table: Table::M,
+            index: 0,
+            ..
+        })
+    ));
+}

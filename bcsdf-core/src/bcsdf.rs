@@ -58,6 +58,37 @@ pub struct SampledDirection {
 ///
 /// Implemented by the analytic model ([`crate::FurBcsdf`]) and the baked tables
 /// ([`crate::baked::BakedBcsdf`]). No method allocates, panics or returns NaN.
+///
+/// Conventions (docs/model.md §10): `eval` is the far-field S(ω_i, ω_r) per [`LobeFamily`];
+/// `pdf` is the density of ω_i given ω_r **per unit solid angle** of the whole mixture the
+/// sampler draws from, p_ω = p(θ_i, φ)/cos θ_i ([`solid_angle_pdf`]); a [`Sample`] carries
+/// that same density and the weight S·cos θ_i/p_ω, the Monte Carlo estimate of the radiance
+/// reflected toward ω_r for unit radiance arriving from ω_i.
+///
+/// ```
+/// use bcsdf_core::{presets, Bcsdf, FurBcsdf, FurParams, Rgb};
+///
+/// /// Radiance reflected toward θ_r under uniform unit illumination (the albedo), estimated
+/// /// from `n` importance samples. Works for either evaluator.
+/// fn albedo(bcsdf: &impl Bcsdf, theta_r: f32, n: u32) -> Rgb {
+///     let mut sum = Rgb::ZERO;
+///     for k in 0..n {
+///         let u = [(k as f32 + 0.5) / n as f32, (k as f32 * 0.618_034).fract(), 0.5];
+///         if let Some(s) = bcsdf.sample(theta_r, u) {
+///             // The sample's density is the one `pdf` gives for its direction.
+///             assert!((s.pdf - bcsdf.pdf(&s.angles)).abs() <= 1e-5 * s.pdf);
+///             sum += s.weight;
+///         }
+///     }
+///     sum * (1.0 / n as f32)
+/// }
+///
+/// let params = FurParams::new(&presets::find("human-hair").unwrap().input).unwrap();
+/// let hair: FurBcsdf = FurBcsdf::unscattered(params);
+/// let a = albedo(&hair, 0.3, 64);
+/// // Pigmented hair absorbs part of the light, more of the blue.
+/// assert!(a.0.iter().all(|&c| c > 0.0 && c < 1.0) && a.0[2] < a.0[0]);
+/// ```
 pub trait Bcsdf {
     /// The math backend used for direction-to-angle conversions.
     type Math: Math;

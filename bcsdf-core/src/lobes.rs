@@ -132,6 +132,25 @@ impl Lobe {
 }
 
 /// Per-lobe RGB values of one evaluation; [`Lobes::total`] is the BCSDF value.
+///
+/// ```
+/// use bcsdf_core::{Lobe, LobeFamily, LobeGroup, Lobes, Rgb, LOBE_COUNT};
+///
+/// let mut values = [Rgb::ZERO; LOBE_COUNT];
+/// values[Lobe::R.index()] = Rgb::splat(0.125);
+/// values[Lobe::TrT.index()] = Rgb::splat(0.25);
+/// values[Lobe::TttTs.index()] = Rgb::splat(0.5);
+/// let lobes = Lobes::from_array(values);
+///
+/// assert_eq!(lobes.get(Lobe::TrT), Rgb::splat(0.25));
+/// assert_eq!(lobes.total(), Rgb::splat(0.875));
+/// // TrT crosses the cuticle twice: it shares the TT group's tilt and roughness.
+/// assert_eq!(Lobe::TrT.group(), Some(LobeGroup::TT));
+/// assert_eq!(lobes.families().get(LobeFamily::TT), Rgb::splat(0.25));
+/// assert_eq!(LobeFamily::of(Lobe::TttTs), LobeFamily::Scattered);
+/// assert_eq!(Lobe::TttTs.name(), "TttT_s");
+/// assert_eq!(lobes.iter().filter(|(_, v)| v.max_channel() > 0.0).count(), 3);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Lobes {
     values: [Rgb; LOBE_COUNT],
@@ -218,6 +237,15 @@ impl LobeFamily {
 }
 
 /// Per-family RGB values of one far-field evaluation; [`Families::total`] is S.
+///
+/// ```
+/// use bcsdf_core::{Families, LobeFamily, Rgb};
+///
+/// let f = Families::from_array([Rgb::splat(1.0), Rgb::splat(2.0), Rgb::ZERO, Rgb::splat(0.5)]);
+/// assert_eq!(f.get(LobeFamily::TT), Rgb::splat(2.0));
+/// assert_eq!(f.total(), Rgb::splat(3.5));
+/// assert_eq!(LobeFamily::ALL.map(LobeFamily::name), ["R", "TT", "TRT", "scattered"]);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Families {
     values: [Rgb; FAMILY_COUNT],

@@ -569,7 +569,36 @@ pub struct NRow {
     flip: bool,
 }
 
-/// Validated profiles over borrowed tables.
+/// Validated profiles over borrowed tables: C^N and ℓ̄ (`[σ][h_m][ψ]`) and C^M
+/// (`[half][θ'_in][θ'_out]`), laid out as the module documentation says, usually filled by
+/// [`generate`] for the [`ProfileLayout`] of a parameter set.
+///
+/// ```
+/// use bcsdf_core::medulla::generate;
+/// use bcsdf_core::{
+///     presets, FurParams, MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout, Resolution,
+/// };
+///
+/// let params = FurParams::new(&presets::find("air-medulla").unwrap().input).unwrap();
+/// let res = Resolution { n_sigma: 2, n_h: 4, n_psi: 16, n_in: 3, n_out: 8 };
+/// let layout = ProfileLayout::for_params(&params, res);
+/// let (mut cn, mut lbar, mut cm) =
+///     (vec![0.0; layout.cn_len()], vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
+/// let budget = PhotonBudget { per_cn_cell: 2_000, per_cm_row: 2_000 };
+/// generate(&layout, &budget, 7, &mut cn, &mut lbar, &mut cm).unwrap();
+/// let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+///
+/// // Each C^N row is a density over ψ: its integral over the circle is 1.
+/// let row = profiles.n_row(layout.sigma_n_min, 0.3);
+/// assert!((profiles.row_mass(&row) - 1.0).abs() < 1e-4);
+///
+/// // Tables of the wrong size (or with negative or non-finite values) are refused.
+/// let short = MedullaProfiles::new(layout, &cn[1..], &lbar, &cm).unwrap_err();
+/// assert_eq!(
+///     short,
+///     ProfileError::WrongLength { table: "C^N", expected: cn.len(), found: cn.len() - 1 }
+/// );
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct MedullaProfiles<'a> {
     layout: ProfileLayout,

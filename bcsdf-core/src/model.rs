@@ -44,7 +44,25 @@ pub(crate) struct Scattering<'a> {
 /// Built with [`FurBcsdf::new`] from medulla profiles (the full model), or with
 /// [`FurBcsdf::unscattered`] (the eight unscattered paths only; the scattered lobes are then
 /// zero — exact when σ_ms = 0 or κ = 0). Construction precomputes the lobe constants;
-/// evaluation allocates nothing.
+/// evaluation allocates nothing. The crate documentation shows the full model; here,
+/// human hair, which has no medulla:
+///
+/// ```
+/// use bcsdf_core::{presets, Angles, FurBcsdf, FurParams, Lobe, LobeFamily, Rgb};
+///
+/// let params = FurParams::new(&presets::find("human-hair").unwrap().input).unwrap();
+/// let model: FurBcsdf = FurBcsdf::unscattered(params); // κ = 0: this is the whole model
+/// let angles = Angles::from_degrees(20.0, -15.0, 160.0).unwrap();
+///
+/// let lobes = model.eval_far_lobes(&angles); // the eleven paths
+/// let families = model.eval_far(&angles); // the same, summed per family
+/// assert_eq!(families, lobes.families());
+/// assert!(lobes.get(Lobe::TT).max_channel() > 0.0); // through the fiber, forward
+/// assert_eq!(lobes.get(Lobe::TrT), Rgb::ZERO); // no medulla to reflect off
+/// assert_eq!(families.get(LobeFamily::Scattered), Rgb::ZERO);
+/// // The far field is even in φ.
+/// assert_eq!(model.eval_far(&angles.mirrored()), families);
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct FurBcsdf<'a, M: Math = Libm> {
     params: FurParams,

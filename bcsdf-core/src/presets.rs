@@ -118,6 +118,17 @@ pub const PRESETS: [Preset; 5] = [
 ];
 
 /// The built-in preset called `name`.
+///
+/// ```
+/// use bcsdf_core::{presets, FurParams};
+///
+/// let preset = presets::find("yan-row-a").unwrap();
+/// assert_eq!(preset.input.eta_c, 1.55);
+/// let params = FurParams::new(&preset.input).unwrap();
+/// assert!((params.beta_m().to_degrees() - 11.64).abs() < 1e-4);
+/// assert!(presets::find("no-such-fur").is_none());
+/// ```
+#[must_use]
 pub fn find(name: &str) -> Option<&'static Preset> {
     PRESETS.iter().find(|p| p.name == name)
 }

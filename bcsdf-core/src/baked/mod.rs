@@ -5,7 +5,7 @@
 //!
 //! with linear interpolation in every table axis. The data is validated once, in
 //! [`BakedBcsdf::from_bytes`]; evaluation then never fails, never panics and never returns NaN.
-//! Sampling and pdf ([`crate::Bcsdf`]) are in [`crate::sampling::baked`].
+//! Sampling and pdf ([`crate::Bcsdf`]) are in the crate's `sampling::baked` module.
 
 use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
@@ -66,9 +66,49 @@ impl Axis {
     }
 }
 
-/// A validated LUT, borrowed. The math backend `M` serves only the direction-to-angle
-/// conversion of [`BakedBcsdf::eval_far_dirs`]; cos θ_i comes from
-/// [`cos_within_half_pi`].
+/// A validated LUT, borrowed: the baked far field of one parameter set, evaluated, sampled
+/// and given a pdf ([`Bcsdf`](crate::Bcsdf)) straight from the bytes, without allocating.
+///
+/// The math backend `M` serves only the direction-to-angle conversion of
+/// [`BakedBcsdf::eval_far_dirs`]; cos θ_i comes from a libm-free polynomial that the WGSL
+/// evaluator shares (`math::cos_within_half_pi`).
+///
+/// A `.furlut` blob normally comes from the `bake` tool, as a file, a memory map or
+/// `include_bytes!`. Here, the smallest one, written with the format's own encoder, every
+/// table value 1:
+///
+/// ```
+/// use bcsdf_core::lut::{self, HEADER_LEN, TABLE_COUNT};
+/// use bcsdf_core::{presets, Angles, BakedBcsdf, Bcsdf, LutError, LutHeader, LutResolution};
+///
+/// let res = LutResolution { n_sum: 2, n_theta_r: 2, n_phi: 2, n_ms_i: 2, n_ms_r: 2 };
+/// let header = LutHeader {
+///     res,
+///     scales: [1.0; TABLE_COUNT],
+///     params: presets::find("human-hair").unwrap().input,
+///     profiles: None,
+/// };
+/// let mut blob = vec![0u8; res.blob_len()];
+/// blob[..HEADER_LEN].copy_from_slice(&header.encode());
+/// for half in blob[HEADER_LEN..res.sampling_start()].chunks_exact_mut(2) {
+///     half.copy_from_slice(&0x3c00u16.to_le_bytes()); // 1.0 as an IEEE binary16
+/// }
+/// lut::seal(&mut blob); // the sampling section and the checksum
+///
+/// let baked = BakedBcsdf::from_bytes(&blob).unwrap();
+/// let angles = Angles::from_degrees(60.0, -10.0, 90.0).unwrap();
+/// // M = N = M^s = 1: each of the four families is 1/cos²θ_i = 4.
+/// let s = baked.eval_far(&angles).total();
+/// assert!((s.0[0] - 16.0).abs() < 1e-3);
+/// // Importance sampling through the engine-facing trait.
+/// let sample = baked.sample(angles.theta_r(), [0.2, 0.7, 0.4]).unwrap();
+/// assert_eq!(sample.pdf, baked.pdf(&sample.angles));
+///
+/// // Damaged or foreign bytes are rejected with the reason.
+/// blob[HEADER_LEN] ^= 1;
+/// assert!(matches!(BakedBcsdf::from_bytes(&blob), Err(LutError::Checksum { .. })));
+/// assert_eq!(BakedBcsdf::from_bytes(b"FURLUT").unwrap_err(), LutError::TooShort { len: 6 });
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) header: LutHeader,
@@ -160,6 +200,17 @@ pub(crate) struct Lookups {
 impl<'a> BakedBcsdf<'a, Libm> {
     /// Validates `bytes` (header, lengths, versions, checksum, every value) and borrows it.
     /// With the default `Libm` backend; see [`BakedBcsdf::from_bytes_with`] for another.
+    ///
+    /// ```
+    /// use bcsdf_core::{BakedBcsdf, LutError};
+    ///
+    /// let mut bytes = vec![0u8; 4096];
+    /// assert_eq!(BakedBcsdf::from_bytes(&bytes).unwrap_err(), LutError::BadMagic);
+    /// bytes[..8].copy_from_slice(b"FURLUT\0\0");
+    /// let e = BakedBcsdf::from_bytes(&bytes).unwrap_err();
+    /// assert_eq!(e, LutError::FormatVersion { found: 0 });
+    /// assert!(e.to_string().contains("re-bake"));
+    /// ```
     pub fn from_bytes(bytes: &'a [u8]) -> Result<BakedBcsdf<'a, Libm>, LutError> {
         Self::from_bytes_with(bytes)
     }

@@ -184,3 +184,45 @@ pub(crate) fn finish(
         family: d.family,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn direction(theta_i: f32) -> SampledDirection {
+        SampledDirection {
+            angles: Angles::new(theta_i, 0.2, 1.0).unwrap(),
+            family: LobeFamily::TT,
+        }
+    }
+
+    #[test]
+    fn solid_angle_pdf_divides_by_a_guarded_cosine() {
+        assert_eq!(solid_angle_pdf(1.0, 0.5), 2.0);
+        assert_eq!(solid_angle_pdf(1.0, 0.0), 1.0 / MIN_COS_THETA_PDF);
+        assert_eq!(solid_angle_pdf(1.0, -0.3), 1.0 / MIN_COS_THETA_PDF);
+        assert_eq!(solid_angle_pdf(0.0, 0.0), 0.0);
+    }
+
+    #[test]
+    fn finish_forms_the_weight_and_refuses_bad_densities() {
+        let value = Families::from_array([Rgb([1.0, 2.0, 3.0]), Rgb::ZERO, Rgb::ZERO, Rgb::ZERO]);
+        let d = direction(0.5);
+        let s = finish(d, value, 0.25, Some([0.0, 0.0, 1.0])).unwrap();
+        let k = libm::cosf(0.5) / 0.25;
+        assert_eq!(s.weight, Rgb([k, 2.0 * k, 3.0 * k]));
+        assert_eq!(
+            (s.pdf, s.family, s.angles),
+            (0.25, LobeFamily::TT, d.angles)
+        );
+        assert_eq!(s.wi, Some([0.0, 0.0, 1.0]));
+        for pdf in [0.0, -1.0, f32::NAN, f32::INFINITY] {
+            assert_eq!(finish(d, value, pdf, None), None, "pdf {pdf}");
+        }
+        // A weight that would overflow (or a NaN value) becomes 0, never NaN or ∞.
+        let huge = Families::from_array([Rgb([f32::MAX, f32::NAN, 1.0]); 4]);
+        let s = finish(d, huge, 1e-30, None).unwrap();
+        assert_eq!(s.weight.0[..2], [0.0, 0.0]);
+        assert!(s.weight.is_finite());
+    }
+}

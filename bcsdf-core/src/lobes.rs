@@ -291,3 +291,63 @@ impl Lobes {
         Families::from_array(out)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lobe_order_indices_and_names_agree() {
+        for (i, lobe) in Lobe::ALL.iter().enumerate() {
+            assert_eq!(lobe.index(), i);
+            for other in &Lobe::ALL[..i] {
+                assert_ne!(lobe.name(), other.name());
+            }
+        }
+        // The unscattered and scattered lists split ALL in order.
+        assert_eq!(Lobe::UNSCATTERED[..], Lobe::ALL[..UNSCATTERED_COUNT]);
+        assert_eq!(Lobe::SCATTERED[..], Lobe::ALL[UNSCATTERED_COUNT..]);
+        for (i, lobe) in Lobe::UNSCATTERED.iter().enumerate() {
+            assert_eq!(lobe.group(), Some(Lobe::unscattered_group(i)));
+            assert!(!lobe.is_scattered());
+        }
+        assert!(Lobe::SCATTERED.iter().all(|l| l.is_scattered()));
+    }
+
+    #[test]
+    fn groups_follow_the_cuticle_crossings() {
+        // R touches the cuticle once; the TT group crosses it twice; TRT reflects inside.
+        let group = |g| Lobe::ALL.iter().filter(move |l| l.group() == Some(g));
+        assert_eq!(group(LobeGroup::R).count(), 1);
+        assert!(group(LobeGroup::TT).all(|l| !l.name().contains('R')));
+        assert!(group(LobeGroup::TRT).all(|l| l.name().contains('R')));
+        assert_eq!(group(LobeGroup::TRT).count(), 3);
+        for lobe in Lobe::ALL {
+            let fam = LobeFamily::of(lobe);
+            match lobe.group() {
+                Some(g) => assert_eq!(fam as usize, g as usize),
+                None => assert_eq!(fam, LobeFamily::Scattered),
+            }
+        }
+    }
+
+    #[test]
+    fn families_sum_their_lobes() {
+        let mut values = [Rgb::ZERO; LOBE_COUNT];
+        for (i, v) in values.iter_mut().enumerate() {
+            *v = Rgb([1.0, 2.0, 4.0]) * (1u32 << i) as f32;
+        }
+        let lobes = Lobes::from_array(values);
+        let fam = lobes.families();
+        // Bit masks of the lobes in each family: R {0}, TT {1,3,4,5}, TRT {2,6,7}, s {8,9,10}.
+        let masks = [0b1u32, 0b11_1010, 0b1100_0100, 0b111_0000_0000];
+        for (f, mask) in LobeFamily::ALL.iter().zip(masks) {
+            assert_eq!(fam.get(*f), Rgb([1.0, 2.0, 4.0]) * mask as f32, "{f:?}");
+        }
+        assert_eq!(fam.total(), lobes.total());
+        assert_eq!(lobes.total(), Rgb([2047.0, 4094.0, 8188.0]));
+        assert_eq!(lobes.as_array(), &values);
+        assert_eq!(Lobes::ZERO.total(), Rgb::ZERO);
+        assert_eq!(Families::ZERO, Lobes::ZERO.families());
+    }
+}

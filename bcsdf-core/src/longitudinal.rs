@@ -49,3 +49,39 @@ impl GroupLobes {
         &self.azimuthal[group as usize]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Libm;
+    use crate::presets;
+
+    #[test]
+    fn groups_are_shifted_and_scaled_as_the_model_says() {
+        let params = FurParams::new(&presets::PRESETS[0].input).unwrap();
+        let g = GroupLobes::new(&params);
+        let (a, bm, bn) = (params.alpha(), params.beta_m(), params.beta_n());
+        assert_eq!(g.shift, [-2.0 * a, a, 3.0 * a]);
+        for (k, scale) in [1.0f32, 0.5, 1.5].into_iter().enumerate() {
+            assert!((g.longitudinal[k].beta() - scale * bm).abs() < 1e-7);
+        }
+        for (k, scale) in [1.0f32, 2.0, 3.0].into_iter().enumerate() {
+            let want = libm::sqrtf(scale) * bn;
+            assert!((g.azimuthal[k].beta() - want).abs() < 1e-6);
+            assert_eq!(
+                g.d([LobeGroup::R, LobeGroup::TT, LobeGroup::TRT][k]).beta(),
+                g.azimuthal[k].beta()
+            );
+        }
+        // M_p peaks where θ_i + θ_r = α_p and depends on the sum only.
+        for (k, group) in [LobeGroup::R, LobeGroup::TT, LobeGroup::TRT]
+            .into_iter()
+            .enumerate()
+        {
+            let peak = g.m::<Libm>(group, 0.4, g.shift[k] - 0.4);
+            assert_eq!(peak, g.m::<Libm>(group, -0.1, g.shift[k] + 0.1));
+            assert!(peak > g.m::<Libm>(group, 0.41, g.shift[k] - 0.4));
+            assert!(peak > g.m::<Libm>(group, 0.39, g.shift[k] - 0.4));
+        }
+    }
+}

@@ -831,3 +831,6 @@ impl<'a> MedullaProfiles<'a> {
         row(ji) * (1.0 - wi) + row(ji + 1) * wi
     }
 }
+
+#[cfg(test)]
+mod tests;

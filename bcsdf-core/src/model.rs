@@ -308,3 +308,110 @@ fn join(u: &[Rgb; UNSCATTERED_COUNT], s: &[Rgb; SCATTERED_COUNT]) -> [Rgb; LOBE_
     out[UNSCATTERED_COUNT..].copy_from_slice(s);
     out
 }
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::math::PI;
+    use crate::medulla::{generate, PhotonBudget, ProfileLayout, Resolution};
+    use crate::presets;
+    use std::vec;
+
+    fn params(name: &str) -> FurParams {
+        FurParams::new(&presets::find(name).unwrap().input).unwrap()
+    }
+
+    #[test]
+    fn the_cos2_factor_is_guarded_at_grazing_light() {
+        assert_eq!(inv_cos2_theta_i(1.0), 1.0);
+        assert_eq!(inv_cos2_theta_i(0.5), 4.0);
+        assert_eq!(inv_cos2_theta_i(0.0), 1.0 / MIN_COS2_THETA_I);
+        assert_eq!(inv_cos2_theta_i(-1e-9), 1.0 / MIN_COS2_THETA_I);
+    }
+
+    #[test]
+    fn evaluations_are_finite_non_negative_and_zero_off_the_fiber() {
+        let model: FurBcsdf = FurBcsdf::unscattered(params("air-medulla"));
+        assert!(model.profiles().is_none());
+        let thetas = [-PI / 2.0, -1.0, -0.2, 0.0, 0.4, 1.3, PI / 2.0];
+        for ti in thetas {
+            for tr in thetas {
+                for phi in [-3.0, -0.5, 0.0, 1.0, PI] {
+                    let a = Angles::new(ti, tr, phi).unwrap();
+                    for lobes in [model.eval_far_lobes(&a), model.eval_near(&a, 0.37)] {
+                        for (lobe, v) in lobes.iter() {
+                            assert!(
+                                v.0.iter().all(|c| c.is_finite() && *c >= 0.0),
+                                "{lobe:?} {a:?}"
+                            );
+                        }
+                    }
+                    // Off the fiber (|h| > 1) or NaN: nothing.
+                    assert_eq!(model.eval_near(&a, 1.01), Lobes::ZERO);
+                    assert_eq!(model.eval_near(&a, f32::NAN), Lobes::ZERO);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn direction_paths_are_the_angle_paths() {
+        let model: FurBcsdf = FurBcsdf::unscattered(params("human-hair"));
+        let (wi, wr, u) = ([0.2, 0.9, -0.3], [-1.0, 0.4, 0.5], [0.1, 0.0, 2.0]);
+        let a = Angles::from_directions::<Libm>(wi, wr, u).unwrap();
+        assert_eq!(model.eval_far_dirs(wi, wr, u), model.eval_far_lobes(&a));
+        assert_eq!(
+            model.eval_near_dirs(wi, wr, u, 0.2),
+            model.eval_near(&a, 0.2)
+        );
+        assert_eq!(model.eval_far_dirs([0.0; 3], wr, u), Lobes::ZERO);
+        assert_eq!(
+            model.eval_near_dirs(wi, wr, [f32::NAN; 3], 0.2),
+            Lobes::ZERO
+        );
+        // The lobe products: each unscattered lobe is N_p·M_p/cos²θ_i.
+        let n = model.azimuthal_far(a.theta_r(), a.phi());
+        let lobes = model.eval_far_lobes(&a);
+        let inv = inv_cos2_theta_i(libm::cosf(a.theta_i()));
+        for (p, lobe) in Lobe::UNSCATTERED.iter().enumerate() {
+            let m = model.longitudinal(lobe.group().unwrap(), a.theta_i(), a.theta_r());
+            let want = n[p] * (m * inv);
+            for c in 0..3 {
+                assert!((lobes.get(*lobe).0[c] - want.0[c]).abs() <= 1e-6 * want.0[c].max(1e-6));
+            }
+        }
+        assert_eq!(model.longitudinal_scattered(&a), 0.0);
+    }
+
+    #[test]
+    fn profiles_must_match_the_parameters() {
+        let p = params("air-medulla");
+        let res = Resolution {
+            n_sigma: 2,
+            n_h: 2,
+            n_psi: 8,
+            n_in: 2,
+            n_out: 4,
+        };
+        let layout = ProfileLayout::for_params(&p, res);
+        let (mut cn, mut lbar, mut cm) = (
+            vec![0.0; layout.cn_len()],
+            vec![0.0; layout.cn_len()],
+            vec![0.0; layout.cm_len()],
+        );
+        let budget = PhotonBudget {
+            per_cn_cell: 200,
+            per_cm_row: 200,
+        };
+        generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).unwrap();
+        let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+        let other = FurBcsdf::<Libm>::new(params("yan-row-a"), profiles);
+        assert_eq!(other.err(), Some(ProfileError::Mismatch));
+        let model = FurBcsdf::<Libm>::new(p, profiles).unwrap();
+        assert_eq!(model.params(), &p);
+        assert!(model.profiles().is_some());
+        let a = Angles::new(0.2, -0.1, 2.5).unwrap();
+        assert!(model.longitudinal_scattered(&a) > 0.0);
+    }
+}

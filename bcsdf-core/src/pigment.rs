@@ -33,3 +33,29 @@ impl Pigment {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn melanin_mixes_the_two_pigments_linearly() {
+        let eu = Pigment::Melanin {
+            eumelanin: 1.0,
+            pheomelanin: 0.0,
+        };
+        assert_eq!(eu.sigma_ca(), EUMELANIN_SIGMA_A);
+        let mix = Pigment::Melanin {
+            eumelanin: 0.5,
+            pheomelanin: 2.0,
+        };
+        let want = EUMELANIN_SIGMA_A * 0.5 + PHEOMELANIN_SIGMA_A * 2.0;
+        assert_eq!(mix.sigma_ca(), want);
+        // Melanin absorbs blue most: brown and red fibers.
+        for s in [EUMELANIN_SIGMA_A, PHEOMELANIN_SIGMA_A] {
+            assert!(s.0[0] < s.0[1] && s.0[1] < s.0[2]);
+        }
+        let given = Rgb([0.1, 0.2, 0.3]);
+        assert_eq!(Pigment::Absorption(given).sigma_ca(), given);
+    }
+}

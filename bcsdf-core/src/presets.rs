@@ -132,3 +132,20 @@ pub const PRESETS: [Preset; 5] = [
 pub fn find(name: &str) -> Option<&'static Preset> {
     PRESETS.iter().find(|p| p.name == name)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::FurParams;
+
+    #[test]
+    fn every_preset_is_valid_findable_and_named_once() {
+        for (i, p) in PRESETS.iter().enumerate() {
+            assert!(FurParams::new(&p.input).is_ok(), "{}", p.name);
+            assert_eq!(find(p.name), Some(p));
+            assert!(!p.source.is_empty());
+            assert!(PRESETS[..i].iter().all(|q| q.name != p.name), "{}", p.name);
+        }
+        assert_eq!(find("Yan-Row-A"), None, "names are case-sensitive");
+    }
+}

@@ -30,6 +30,7 @@ pub fn solid_angle_pdf(p_theta_phi: f32, cos_theta_i: f32) -> f32 {
 
 /// An importance-sampled incident direction (docs/model.md §10).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[must_use]
 pub struct Sample {
     /// The sampled ω_i as angles: θ_i, the given θ_r, and φ = φ_r − φ_i.
     pub angles: Angles,
@@ -46,6 +47,7 @@ pub struct Sample {
 
 /// A sampled direction before evaluation: angles, and the family it came from.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[must_use]
 pub struct SampledDirection {
     /// θ_i, θ_r, φ.
     pub angles: Angles,
@@ -94,7 +96,6 @@ pub trait Bcsdf {
     type Math: Math;
 
     /// Far-field S(ω_i, ω_r) per [`LobeFamily`]; [`Families::total`] is S (docs/model.md §8).
-    #[must_use]
     fn eval(&self, angles: &Angles) -> Families;
 
     /// Density per unit solid angle with which [`Bcsdf::sample`] draws ω_i given ω_r
@@ -103,7 +104,6 @@ pub trait Bcsdf {
     fn pdf(&self, angles: &Angles) -> f32;
 
     /// `eval` and `pdf` of one direction, sharing their work.
-    #[must_use]
     fn eval_with_pdf(&self, angles: &Angles) -> (Families, f32) {
         (self.eval(angles), self.pdf(angles))
     }
@@ -127,7 +127,6 @@ pub trait Bcsdf {
     /// [`Bcsdf::eval`] from world-space directions `wi` (toward the light), `wr` (toward
     /// the viewer) and the fiber tangent (none needs to be unit length); zero for invalid
     /// directions.
-    #[must_use]
     fn eval_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
         match Angles::from_directions::<Self::Math>(wi, wr, tangent) {
             Ok(a) => self.eval(&a),

@@ -220,6 +220,7 @@ pub struct FarFieldQuery<'a> {
 
 impl FarFieldQuery<'_> {
     /// N_p(φ) for the eight unscattered paths, in [`Lobe::UNSCATTERED`] order.
+    #[must_use]
     pub fn azimuthal<M: Math>(&self, phi: f32) -> [Rgb; UNSCATTERED_COUNT] {
         self.azimuthal_with_density::<M>(phi, &[0.0; UNSCATTERED_COUNT])
             .0
@@ -228,6 +229,7 @@ impl FarFieldQuery<'_> {
     /// N_p(φ) as [`FarFieldQuery::azimuthal`], and with the same nodes
     /// Σ_p c_p·½ ∫ [D_p(φ − Φ_p(h)) + D_p(−φ − Φ_p(h))] dh over h ∈ [0, 1] where path p exists
     /// (the analytic sampler's density, docs/model.md §10), for `coeffs` c_p.
+    #[must_use]
     pub fn azimuthal_with_density<M: Math>(
         &self,
         phi: f32,
@@ -254,6 +256,7 @@ impl FarFieldQuery<'_> {
     /// end), each integrated with 2-point Gauss–Legendre in the segment's smooth variable.
     /// Measured against a fine reference: ≤ 1.2e-3 relative (docs/accuracy.md), below the
     /// tables' own Monte Carlo noise.
+    #[must_use]
     pub fn azimuthal_scattered<M: Math>(
         &self,
         profiles: &MedullaProfiles<'_>,
@@ -267,6 +270,7 @@ impl FarFieldQuery<'_> {
     /// N^s_p(φ) as [`FarFieldQuery::azimuthal_scattered`], and with the same nodes
     /// Σ_k c_k·½ ∫ [C^N(φ − π − Φ^s_k) + C^N(−φ − π − Φ^s_k)]/‖C^N row‖ dh over the h that
     /// enter the medulla (the analytic sampler's density, docs/model.md §10).
+    #[must_use]
     pub fn azimuthal_scattered_with_density<M: Math>(
         &self,
         profiles: &MedullaProfiles<'_>,

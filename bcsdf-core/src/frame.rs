@@ -141,14 +141,17 @@ impl Angles {
     }
 
     /// θ_i, longitudinal angle of the light direction (radians).
+    #[must_use]
     pub fn theta_i(&self) -> f32 {
         self.theta_i
     }
     /// θ_r, longitudinal angle of the view direction (radians).
+    #[must_use]
     pub fn theta_r(&self) -> f32 {
         self.theta_r
     }
     /// φ = φ_r − φ_i in (−π, π] (radians).
+    #[must_use]
     pub fn phi(&self) -> f32 {
         self.phi
     }

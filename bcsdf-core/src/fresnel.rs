@@ -6,6 +6,7 @@ use crate::math::{sqrt_pos, Math};
 /// from a medium into one whose relative index is `eta` (= n_t / n_i).
 /// Total internal reflection gives `(1, 1)`.
 #[inline]
+#[must_use]
 pub fn dielectric_sp<M: Math>(cos_i: f32, eta: f32) -> (f32, f32) {
     // An index-matched boundary reflects nothing (exactly, not up to rounding).
     if eta == 1.0 {
@@ -24,6 +25,7 @@ pub fn dielectric_sp<M: Math>(cos_i: f32, eta: f32) -> (f32, f32) {
 
 /// Unpolarised dielectric reflectance (r_s + r_p)/2; 1 under total internal reflection.
 #[inline]
+#[must_use]
 pub fn dielectric<M: Math>(cos_i: f32, eta: f32) -> f32 {
     let (rs, rp) = dielectric_sp::<M>(cos_i, eta);
     0.5 * (rs + rp)
@@ -35,6 +37,7 @@ pub fn dielectric<M: Math>(cos_i: f32, eta: f32) -> f32 {
 /// one plate's reflectance `2r/(1+r)`; their average `R1` gives `f = l·R1 / (1 + (l−1)·R1)`.
 /// `l = 0.5` is the plain interface, `l → 0` removes the cuticle reflection, `l → ∞` gives 1.
 #[inline]
+#[must_use]
 pub fn cuticle<M: Math>(cos_a: f32, eta_c_prime: f32, l: f32) -> f32 {
     let (rs, rp) = dielectric_sp::<M>(cos_a, eta_c_prime);
     let plate = |r: f32| 2.0 * r / (1.0 + r);
@@ -50,6 +53,7 @@ pub fn cuticle<M: Math>(cos_a: f32, eta_c_prime: f32, l: f32) -> f32 {
 /// Medulla-boundary reflectance `f_m` at incidence `m` (cosine `cos_m`) from the cortex side,
 /// relative index `η'_m / η'_c`; 1 under total internal reflection.
 #[inline]
+#[must_use]
 pub fn medulla<M: Math>(cos_m: f32, eta_rel: f32) -> f32 {
     dielectric::<M>(cos_m, eta_rel)
 }

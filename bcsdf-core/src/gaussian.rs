@@ -20,6 +20,7 @@ pub struct Gaussian {
 
 impl Gaussian {
     /// G(·; β); β > 0 is guaranteed by parameter validation.
+    #[must_use]
     pub fn new(beta: f32) -> Gaussian {
         Gaussian {
             beta,
@@ -29,12 +30,14 @@ impl Gaussian {
     }
 
     /// Standard deviation β.
+    #[must_use]
     pub fn beta(&self) -> f32 {
         self.beta
     }
 
     /// G(x; β); exactly zero beyond [`CUTOFF_SIGMAS`]·β.
     #[inline]
+    #[must_use]
     pub fn eval<M: Math>(&self, x: f32) -> f32 {
         let e = x * x * self.inv_two_beta2;
         if e > 0.5 * CUTOFF_SIGMAS * CUTOFF_SIGMAS {
@@ -55,6 +58,7 @@ pub struct WrappedGaussian {
 
 impl WrappedGaussian {
     /// D(·; β).
+    #[must_use]
     pub fn new(beta: f32) -> WrappedGaussian {
         // After wrapping x to (−π, π], term k is at least 2π|k| − π away from 0.
         let reach = CUTOFF_SIGMAS * beta;
@@ -69,17 +73,20 @@ impl WrappedGaussian {
     }
 
     /// Standard deviation β of the underlying Gaussian.
+    #[must_use]
     pub fn beta(&self) -> f32 {
         self.gaussian.beta()
     }
 
     /// Distance beyond which a single period contributes nothing: [`CUTOFF_SIGMAS`]·β.
+    #[must_use]
     pub fn reach(&self) -> f32 {
         CUTOFF_SIGMAS * self.gaussian.beta()
     }
 
     /// D(x) for any finite x.
     #[inline(always)]
+    #[must_use]
     pub fn eval<M: Math>(&self, x: f32) -> f32 {
         let x = crate::math::wrap_angle(x);
         let mut sum = self.gaussian.eval::<M>(x);

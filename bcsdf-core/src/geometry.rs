@@ -24,6 +24,7 @@ pub struct ViewSlice {
 
 /// Bravais' effective index for the normal-plane projection: √(η² − sin²θ)/cos θ.
 #[inline]
+#[must_use]
 pub fn bravais_index<M: Math>(eta: f32, sin_theta: f32, cos_theta: f32) -> f32 {
     let cos = cos_theta.abs().max(1e-6);
     (M::sqrt((eta * eta - sin_theta * sin_theta).max(0.0)) / cos).max(1.0)
@@ -31,6 +32,7 @@ pub fn bravais_index<M: Math>(eta: f32, sin_theta: f32, cos_theta: f32) -> f32 {
 
 impl ViewSlice {
     /// The slice for a view direction at longitudinal angle `theta_r`.
+    #[must_use]
     pub fn new<M: Math>(params: &FurParams, theta_r: f32) -> ViewSlice {
         let (s, c) = M::sin_cos(theta_r);
         let s = s.clamp(-1.0, 1.0);
@@ -48,11 +50,13 @@ impl ViewSlice {
     }
 
     /// |h| above which the cortex ray misses the medulla: κ·η'_c.
+    #[must_use]
     pub fn h_medulla(&self) -> f32 {
         self.kappa * self.eta_c_prime
     }
 
     /// |h| above which the medulla reflects totally: κ·η'_m.
+    #[must_use]
     pub fn h_tir(&self) -> f32 {
         self.kappa * self.eta_m_prime
     }
@@ -127,6 +131,7 @@ impl Chord {
     /// cos t of the segment variable t this chord was built from (see [`ChordVariable`]);
     /// 0 when that angle is not defined at this chord.
     #[inline]
+    #[must_use]
     pub fn variable_cos(&self, var: ChordVariable) -> f32 {
         match (var, self.medulla) {
             (ChordVariable::A, _) => self.cos_a,
@@ -138,6 +143,7 @@ impl Chord {
     }
 
     /// The chord at offset `h` (clamped to [−1, 1]).
+    #[must_use]
     pub fn at_offset<M: Math>(slice: &ViewSlice, h: f32) -> Chord {
         let h = h.clamp(-1.0, 1.0);
         Chord::build::<M>(slice, h, None, None)
@@ -146,6 +152,7 @@ impl Chord {
     /// The chord at h = K·sin t for the segment variable `var`, known to lie in `region`; the
     /// variable's own angle and cosine are taken from `t` directly, which keeps them exact
     /// where asin is singular.
+    #[must_use]
     pub fn at_variable<M: Math>(
         slice: &ViewSlice,
         var: ChordVariable,

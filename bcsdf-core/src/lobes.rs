@@ -69,6 +69,7 @@ impl Lobe {
     ];
 
     /// The path's name as written in MODEL.md (`"TttRttT"`).
+    #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
             Lobe::R => "R",
@@ -101,12 +102,14 @@ impl Lobe {
     pub const SCATTERED: [Lobe; 3] = [Lobe::TttTs, Lobe::TtrtTs, Lobe::TttRttTs];
 
     /// Index into [`Lobes`].
+    #[must_use]
     pub const fn index(self) -> usize {
         self as usize
     }
 
     /// The cuticle group whose M_p and roughness an unscattered path uses; `None` for the
     /// scattered lobes, which share M^s.
+    #[must_use]
     pub const fn group(self) -> Option<LobeGroup> {
         match self {
             Lobe::R => Some(LobeGroup::R),
@@ -117,6 +120,7 @@ impl Lobe {
     }
 
     /// The cuticle group of unscattered path `index` (< [`UNSCATTERED_COUNT`]).
+    #[must_use]
     pub const fn unscattered_group(index: usize) -> LobeGroup {
         match index {
             0 => LobeGroup::R,
@@ -126,6 +130,7 @@ impl Lobe {
     }
 
     /// True for the lobes scattered inside the medulla.
+    #[must_use]
     pub const fn is_scattered(self) -> bool {
         self.group().is_none()
     }
@@ -152,6 +157,7 @@ impl Lobe {
 /// assert_eq!(lobes.iter().filter(|(_, v)| v.max_channel() > 0.0).count(), 3);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[must_use]
 pub struct Lobes {
     values: [Rgb; LOBE_COUNT],
 }
@@ -168,11 +174,13 @@ impl Lobes {
     }
 
     /// One lobe's value.
+    #[must_use]
     pub fn get(&self, lobe: Lobe) -> Rgb {
         self.values[lobe.index()]
     }
 
     /// All values in [`Lobe::ALL`] order.
+    #[must_use]
     pub fn as_array(&self) -> &[Rgb; LOBE_COUNT] {
         &self.values
     }
@@ -183,6 +191,7 @@ impl Lobes {
     }
 
     /// The sum over all lobes: S.
+    #[must_use]
     pub fn total(&self) -> Rgb {
         self.values.iter().fold(Rgb::ZERO, |acc, &v| acc + v)
     }
@@ -216,6 +225,7 @@ impl LobeFamily {
     ];
 
     /// Short name: `R`, `TT`, `TRT`, `scattered`.
+    #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
             LobeFamily::R => "R",
@@ -226,6 +236,7 @@ impl LobeFamily {
     }
 
     /// The family a lobe belongs to.
+    #[must_use]
     pub const fn of(lobe: Lobe) -> LobeFamily {
         match lobe.group() {
             Some(LobeGroup::R) => LobeFamily::R,
@@ -247,6 +258,7 @@ impl LobeFamily {
 /// assert_eq!(LobeFamily::ALL.map(LobeFamily::name), ["R", "TT", "TRT", "scattered"]);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[must_use]
 pub struct Families {
     values: [Rgb; FAMILY_COUNT],
 }
@@ -265,17 +277,20 @@ impl Families {
 
     /// One family's value.
     #[inline]
+    #[must_use]
     pub fn get(&self, family: LobeFamily) -> Rgb {
         self.values[family as usize]
     }
 
     /// All values in [`LobeFamily::ALL`] order.
+    #[must_use]
     pub fn as_array(&self) -> &[Rgb; FAMILY_COUNT] {
         &self.values
     }
 
     /// The sum over all families: S.
     #[inline]
+    #[must_use]
     pub fn total(&self) -> Rgb {
         self.values.iter().fold(Rgb::ZERO, |acc, &v| acc + v)
     }

@@ -19,6 +19,7 @@ pub struct GroupLobes {
 
 impl GroupLobes {
     /// The three groups' constants for `params`.
+    #[must_use]
     pub fn new(params: &FurParams) -> GroupLobes {
         let (alpha, bm, bn) = (params.alpha(), params.beta_m(), params.beta_n());
         GroupLobes {
@@ -38,6 +39,7 @@ impl GroupLobes {
 
     /// M_p(θ_i, θ_r) for one group.
     #[inline]
+    #[must_use]
     pub fn m<M: Math>(&self, group: LobeGroup, theta_i: f32, theta_r: f32) -> f32 {
         let g = group as usize;
         self.longitudinal[g].eval::<M>(theta_r + theta_i - self.shift[g])
@@ -45,6 +47,7 @@ impl GroupLobes {
 
     /// D_p for one group.
     #[inline]
+    #[must_use]
     pub fn d(&self, group: LobeGroup) -> &WrappedGaussian {
         &self.azimuthal[group as usize]
     }

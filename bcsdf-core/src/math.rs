@@ -26,6 +26,7 @@ pub trait Math: Copy + Default + core::fmt::Debug + 'static {
     fn cos(x: f32) -> f32;
     /// (sin x, cos x); one argument reduction where the backend has that.
     #[inline]
+    #[must_use]
     fn sin_cos(x: f32) -> (f32, f32) {
         (Self::sin(x), Self::cos(x))
     }
@@ -38,11 +39,13 @@ pub trait Math: Copy + Default + core::fmt::Debug + 'static {
     /// e^−x for x ≥ 0: every exponential of the model is an attenuation or a Gaussian, so
     /// this is the one the evaluation calls. Defaults to `exp(−x)`.
     #[inline]
+    #[must_use]
     fn exp_neg(x: f32) -> f32 {
         Self::exp(-x)
     }
     /// Square root (exact in every backend).
     #[inline]
+    #[must_use]
     fn sqrt(x: f32) -> f32 {
         libm::sqrtf(x)
     }
@@ -125,6 +128,7 @@ impl Math for FastMath {
 /// `tests::asin_polynomial_accuracy`), odd-extended, branch-free. Used by `FastMath` and by
 /// the baked evaluator's direction conversion ([`crate::BakedBcsdf::eval_far_dirs`]).
 #[inline]
+#[must_use]
 pub fn asin_polynomial(x: f32) -> f32 {
     const A: [f32; 8] = [
         core::f32::consts::FRAC_PI_2, // a0 = 1.5707963050 rounds to the same f32
@@ -334,12 +338,14 @@ fn wrap_angle_far(x: f32) -> f32 {
 
 /// `asin` with its argument clamped to `[-1, 1]` (rounding can push `sin` values just past 1).
 #[inline]
+#[must_use]
 pub fn asin_clamped<M: Math>(x: f32) -> f32 {
     M::asin(x.clamp(-1.0, 1.0))
 }
 
 /// `sqrt(max(x, 0))`: a cosine from a sine without NaN from rounding.
 #[inline]
+#[must_use]
 pub fn sqrt_pos<M: Math>(x: f32) -> f32 {
     M::sqrt(x.max(0.0))
 }

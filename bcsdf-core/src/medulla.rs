@@ -150,6 +150,7 @@ impl core::error::Error for ProfileError {}
 impl ProfileLayout {
     /// The slice of profile space `params` needs: their g, σ_N over the range cos θ_tm spans
     /// for θ_r ∈ [−90°, 90°], σ_M = σ_ms·κ, and θ'_in up to asin(1/η_m).
+    #[must_use]
     pub fn for_params(params: &FurParams, res: Resolution) -> ProfileLayout {
         let sigma_m = params.sigma_ms() * params.kappa();
         let eta_m = params.eta_m();
@@ -165,17 +166,20 @@ impl ProfileLayout {
     }
 
     /// True when these profiles were made for `params` (same g and profile axes).
+    #[must_use]
     pub fn matches(&self, params: &FurParams) -> bool {
         let want = ProfileLayout::for_params(params, self.res);
         want == *self
     }
 
     /// Entries of C^N (and of ℓ̄).
+    #[must_use]
     pub fn cn_len(&self) -> usize {
         self.res.n_sigma * self.res.n_h * self.res.n_psi
     }
 
     /// Entries of C^M (both halves).
+    #[must_use]
     pub fn cm_len(&self) -> usize {
         2 * self.res.n_in * self.res.n_out
     }
@@ -215,6 +219,7 @@ impl ProfileLayout {
     }
 
     /// σ_N of node `k`.
+    #[must_use]
     pub fn sigma_n_node(&self, k: usize) -> f32 {
         if self.res.n_sigma == 1 {
             self.sigma_n_min
@@ -225,11 +230,13 @@ impl ProfileLayout {
     }
 
     /// h_m of node `j`: j / n_h.
+    #[must_use]
     pub fn h_node(&self, j: usize) -> f32 {
         j as f32 / self.res.n_h as f32
     }
 
     /// θ'_in of node `j`.
+    #[must_use]
     pub fn theta_in_node(&self, j: usize) -> f32 {
         self.theta_in_max * j as f32 / (self.res.n_in - 1) as f32
     }
@@ -646,17 +653,20 @@ impl<'a> MedullaProfiles<'a> {
     }
 
     /// The layout.
+    #[must_use]
     pub fn layout(&self) -> &ProfileLayout {
         &self.layout
     }
 
     /// The raw tables `(C^N, ℓ̄, C^M)`.
+    #[must_use]
     pub fn tables(&self) -> (&'a [f32], &'a [f32], &'a [f32]) {
         (self.cn, self.lbar, self.cm)
     }
 
     /// Prepares C^N / ℓ̄ lookups at fixed σ_N and h_m: the four (σ, h) corner rows and their
     /// bilinear weights, with the h → −h symmetry folded in.
+    #[must_use]
     pub fn n_row(&self, sigma_n: f32, h_m: f32) -> NRow {
         let r = self.layout.res;
         let sig_step = if r.n_sigma > 1 {
@@ -715,18 +725,21 @@ impl<'a> MedullaProfiles<'a> {
 
     /// C^N(ψ) along a prepared row (see [`MedullaProfiles::n_row`]).
     #[inline]
+    #[must_use]
     pub fn cn_at(&self, row: &NRow, psi: f32) -> f32 {
         Self::at_position(self.cn, row, self.psi_position(row, psi))
     }
 
     /// ℓ̄(ψ) along a prepared row.
     #[inline]
+    #[must_use]
     pub fn mean_length_at(&self, row: &NRow, psi: f32) -> f32 {
         Self::at_position(self.lbar, row, self.psi_position(row, psi))
     }
 
     /// (C^N(ψ), ℓ̄(ψ)) along a prepared row, sharing the interpolation position.
     #[inline]
+    #[must_use]
     pub fn cn_and_mean_length_at(&self, row: &NRow, psi: f32) -> (f32, f32) {
         let pos = self.psi_position(row, psi);
         (
@@ -795,17 +808,20 @@ impl<'a> MedullaProfiles<'a> {
 
     /// C^N(ψ | h_m, σ_N, g): pdf over ψ of the rotation of scattered photons; trilinear,
     /// circular in ψ, with C^N(ψ | −h_m) = C^N(−ψ | h_m).
+    #[must_use]
     pub fn cn(&self, sigma_n: f32, h_m: f32, psi: f32) -> f32 {
         self.cn_at(&self.n_row(sigma_n, h_m), psi)
     }
 
     /// ℓ̄(ψ | h_m, σ_N, g): mean path length (medulla radii) of the scattered photons.
+    #[must_use]
     pub fn mean_length(&self, sigma_n: f32, h_m: f32, psi: f32) -> f32 {
         self.mean_length_at(&self.n_row(sigma_n, h_m), psi)
     }
 
     /// C^M_half(θ'_out | θ'_in, σ_M, g) (travel-direction angles), bilinear, with the
     /// θ → −θ symmetry.
+    #[must_use]
     pub fn cm(&self, half: Half, theta_out: f32, theta_in: f32) -> f32 {
         let r = self.layout.res;
         let (out, inn) = if theta_in < 0.0 {

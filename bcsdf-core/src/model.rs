@@ -28,6 +28,7 @@ pub const MODEL_VERSION: u32 = 1;
 /// 1/cos²θ_i of eq. 1, with cos²θ_i kept at or above [`MIN_COS2_THETA_I`]. The analytic and
 /// the baked evaluators both divide by this.
 #[inline]
+#[must_use]
 pub fn inv_cos2_theta_i(cos_theta_i: f32) -> f32 {
     1.0 / (cos_theta_i * cos_theta_i).max(MIN_COS2_THETA_I)
 }
@@ -77,6 +78,7 @@ pub(crate) type Azimuthal = ([Rgb; UNSCATTERED_COUNT], [Rgb; SCATTERED_COUNT]);
 impl<M: Math> FurBcsdf<'static, M> {
     /// The unscattered part of the model only (R … TttRttT); the scattered lobes are zero.
     /// This is the whole model when σ_ms = 0 or κ = 0.
+    #[must_use]
     pub fn unscattered(params: FurParams) -> FurBcsdf<'static, M> {
         FurBcsdf {
             params,
@@ -109,11 +111,13 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     }
 
     /// The parameters this model was built from.
+    #[must_use]
     pub fn params(&self) -> &FurParams {
         &self.params
     }
 
     /// The medulla profiles, when the model has them.
+    #[must_use]
     pub fn profiles(&self) -> Option<&MedullaProfiles<'a>> {
         self.scattering.as_ref().map(|s| &s.profiles)
     }
@@ -160,6 +164,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
 
     /// Near-field azimuthal lobes: N_p(h, φ) = A_p(h)·D_p(φ − Φ_p(h)) (report eq. 4) and the
     /// scattered N^s_p(h, φ) (report eq. 6), in [`Lobe::ALL`] order.
+    #[must_use]
     pub fn azimuthal_near(&self, theta_r: f32, phi: f32, h: f32) -> [Rgb; LOBE_COUNT] {
         let (u, s) = self.azimuthal_near_parts(theta_r, phi, h);
         join(&u, &s)
@@ -193,6 +198,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
 
     /// Far-field azimuthal lobes N_p(φ) = ½ ∫ N_p(h, φ) dh (MODEL.md §5, §6), in
     /// [`Lobe::ALL`] order.
+    #[must_use]
     pub fn azimuthal_far(&self, theta_r: f32, phi: f32) -> [Rgb; LOBE_COUNT] {
         let (u, s) = self.azimuthal_far_parts(theta_r, phi);
         join(&u, &s)
@@ -245,11 +251,13 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     }
 
     /// M_p(θ_i, θ_r) = G(θ_r + θ_i − α_p; β_M) of one cuticle group (report eq. 2–3).
+    #[must_use]
     pub fn longitudinal(&self, group: LobeGroup, theta_i: f32, theta_r: f32) -> f32 {
         self.groups.m::<M>(group, theta_i, theta_r)
     }
 
     /// M^s(θ_i, θ_r, φ), the longitudinal scattered lobe (0 without profiles).
+    #[must_use]
     pub fn longitudinal_scattered(&self, angles: &Angles) -> f32 {
         match &self.scattering {
             Some(s) => s.longitudinal.eval::<M>(
@@ -270,7 +278,6 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     }
 
     /// Far-field S(ω_i, ω_r) per lobe (the eleven-lobe breakdown of [`FurBcsdf::eval_far`]).
-    #[must_use]
     pub fn eval_far_lobes(&self, angles: &Angles) -> Lobes {
         let n = self.azimuthal_far_parts(angles.theta_r(), angles.phi());
         self.assemble(angles, &n)
@@ -278,7 +285,6 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
 
     /// Far-field S(ω_i, ω_r) per lobe family, the type both evaluators return
     /// (docs/model.md §8); [`FurBcsdf::eval_far_lobes`] has the per-lobe breakdown.
-    #[must_use]
     pub fn eval_far(&self, angles: &Angles) -> Families {
         self.eval_far_lobes(angles).families()
     }
@@ -293,7 +299,6 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     }
 
     /// Far-field S per lobe from world-space directions; invalid directions give zero.
-    #[must_use]
     pub fn eval_far_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Lobes {
         match Angles::from_directions::<M>(wi, wr, tangent) {
             Ok(a) => self.eval_far_lobes(&a),

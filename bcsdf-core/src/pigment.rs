@@ -23,6 +23,7 @@ pub enum Pigment {
 
 impl Pigment {
     /// The cortex absorption σ_ca this pigment stands for (not validated here).
+    #[must_use]
     pub fn sigma_ca(&self) -> Rgb {
         match *self {
             Pigment::Absorption(s) => s,

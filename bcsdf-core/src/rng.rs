@@ -11,6 +11,7 @@ const MULTIPLIER: u64 = 6_364_136_223_846_793_005;
 
 impl Pcg32 {
     /// A generator for `seed` on stream `stream` (distinct streams are independent).
+    #[must_use]
     pub fn new(seed: u64, stream: u64) -> Pcg32 {
         let mut rng = Pcg32 {
             state: 0,
@@ -47,6 +48,7 @@ impl Pcg32 {
 
 /// Mixes `(seed, table, cell)` into one 64-bit stream id (SplitMix64 finaliser), so every
 /// table cell has its own stream and results do not depend on the order cells are computed in.
+#[must_use]
 pub fn cell_stream(seed: u64, table: u64, cell: u64) -> u64 {
     let mut z =
         seed ^ table.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ cell.wrapping_mul(0xbf58_476d_1ce4_e5b9);

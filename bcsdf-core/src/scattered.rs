@@ -41,6 +41,7 @@ pub struct ScatteredPaths {
 /// `exit` is A'_tT = exp(−σ_ca·(1 − κ)/cos θ_tc), which depends only on θ_r
 /// ([`exit_transmittance`]).
 #[inline]
+#[must_use]
 pub fn scattered_paths<M: Math>(
     slice: &ViewSlice,
     chord: &Chord,
@@ -83,6 +84,7 @@ pub fn scattered_paths<M: Math>(
 
 /// A'_tT = exp(−σ_ca·(1 − κ)/cos θ_tc): the radial exit through the cortex (report eq. 7–9).
 #[inline]
+#[must_use]
 pub fn exit_transmittance<M: Math>(slice: &ViewSlice, ext: &Extinction) -> Rgb {
     transmittance::<M>(ext.cortex, 1.0 - slice.kappa)
 }
@@ -91,6 +93,7 @@ pub fn exit_transmittance<M: Math>(slice: &ViewSlice, ext: &Extinction) -> Rgb {
 /// (report eq. 6, 10), for the three lobes. `sigma_n` = σ_ms·κ/cos θ_tm is the medulla's 2D
 /// optical radius; ℓ̄ is tabulated in medulla radii, hence the factor κ.
 #[inline]
+#[must_use]
 pub fn azimuthal_at<M: Math>(
     profiles: &MedullaProfiles<'_>,
     paths: &ScatteredPaths,
@@ -105,6 +108,7 @@ pub fn azimuthal_at<M: Math>(
 
 /// [`azimuthal_at`] with the C^N row already prepared (shared by ±φ in the far field).
 #[inline]
+#[must_use]
 pub fn azimuthal_on_row<M: Math>(
     profiles: &MedullaProfiles<'_>,
     row: &NRow,
@@ -156,6 +160,7 @@ impl ScatteredLongitudinal {
     /// Precomputes μ_x(θ'_in) = 1 / ∫ C^M_x(θ'_i(θ_i) | θ'_in)·|dθ'_i/dθ_i| dθ_i over
     /// θ_i ∈ [−π/2, π/2] (only directions that can leave the fiber; photons trapped by total
     /// internal reflection are not sent anywhere else).
+    #[must_use]
     pub fn new<M: Math>(params: &FurParams, profiles: &MedullaProfiles<'_>) -> Self {
         let layout = profiles.layout();
         let n_in = layout.res.n_in.min(MAX_N_IN);
@@ -194,6 +199,7 @@ impl ScatteredLongitudinal {
     /// θ' inside the medulla for an outside angle θ (sin θ' = sin(θ − α)/η_m, MODEL.md §6)
     /// and the Jacobian |dθ'/dθ| = |cos(θ − α)|/(η_m cos θ').
     #[inline]
+    #[must_use]
     pub fn refract<M: Math>(&self, theta: f32) -> (f32, f32) {
         let e = theta - self.alpha;
         let (sin_e, cos_e) = M::sin_cos(e);
@@ -265,6 +271,7 @@ impl ScatteredLongitudinal {
     /// times that of the cuticle (incidence θ_i − α from outside, index η_c, layers l), for
     /// the radial exit of the report's simplification, in full 3D.
     #[inline]
+    #[must_use]
     pub fn fresnel_exit<M: Math>(&self, theta_i: f32) -> f32 {
         let e = theta_i - self.alpha;
         let (sin_e, cos_e) = M::sin_cos(e);
@@ -278,6 +285,7 @@ impl ScatteredLongitudinal {
     /// M^s(θ_i, θ_r, φ) = (1 − |φ|/π)·M^s_back + (|φ|/π)·M^s_front with
     /// M^s_x = μ_x(θ_r)·F_t(θ_i)·C^M_x(θ'_i | θ'_in)·|dθ'_i/dθ_i|, where θ'_in = −θ'_r is the
     /// travel direction of the view ray inside the medulla.
+    #[must_use]
     pub fn eval<M: Math>(
         &self,
         profiles: &MedullaProfiles<'_>,

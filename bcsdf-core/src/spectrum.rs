@@ -28,6 +28,7 @@ impl Rgb {
 
     /// The same value in all three channels.
     #[inline]
+    #[must_use]
     pub const fn splat(v: f32) -> Rgb {
         Rgb([v, v, v])
     }

@@ -32,6 +32,7 @@ pub struct Extinction {
 
 impl Extinction {
     /// The coefficients for `params` at the view slice `slice`.
+    #[must_use]
     pub fn new(params: &crate::params::FurParams, slice: &ViewSlice) -> Extinction {
         Extinction {
             cortex: params.sigma_ca() * slice.inv_cos_tc,
@@ -60,6 +61,7 @@ pub(crate) fn transmittance<M: Math>(sigma: Rgb, length: f32) -> Rgb {
 /// reflection at the cuticle (π + 2c), medulla refraction (μ − m), reflection off the medulla
 /// from the cortex (π − 2m) and reflection inside the medulla (π + 2μ); R is Φ_R = −2a.
 #[inline]
+#[must_use]
 pub fn exit_azimuths(chord: &Chord) -> [f32; UNSCATTERED_COUNT] {
     let (a, c) = (chord.a, chord.c);
     let mut phi = [0.0; UNSCATTERED_COUNT];
@@ -89,6 +91,7 @@ pub fn exit_azimuths(chord: &Chord) -> [f32; UNSCATTERED_COUNT] {
 /// [`crate::Lobe::UNSCATTERED`] order; zero for a path that does not exist. `l` is the number of
 /// cuticle layers.
 #[inline]
+#[must_use]
 pub fn attenuations<M: Math>(
     slice: &ViewSlice,
     chord: &Chord,
@@ -139,6 +142,7 @@ pub(crate) fn cortex_leg(slice: &ViewSlice, chord: &Chord, cos_m: f32) -> f32 {
 
 /// Φ_p and A_p of all eight paths at `chord`, in [`crate::Lobe::UNSCATTERED`] order.
 #[inline]
+#[must_use]
 pub fn paths_at<M: Math>(
     slice: &ViewSlice,
     chord: &Chord,

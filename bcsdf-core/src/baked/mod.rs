@@ -248,16 +248,19 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     }
 
     /// The header: resolution, scales, parameters, profile provenance.
+    #[must_use]
     pub fn header(&self) -> &LutHeader {
         &self.header
     }
 
     /// The validated parameters the tables were baked from.
+    #[must_use]
     pub fn params(&self) -> &FurParams {
         &self.params
     }
 
     /// One stored value (× its table scale) at texel (x, y), channel c; 0 outside the table.
+    #[must_use]
     pub fn value(&self, table: Table, x: usize, y: usize, c: usize) -> f32 {
         let (w, h) = self.header.res.dims(table);
         let ch = table.channels();
@@ -373,7 +376,6 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
 
     /// Far-field S(ω_i, ω_r) per lobe family, from the tables (docs/model.md §8).
     #[inline]
-    #[must_use]
     pub fn eval_far(&self, angles: &Angles) -> Families {
         self.eval_at(angles.theta_i(), angles.theta_r(), angles.phi().abs())
     }
@@ -426,7 +428,6 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// [`Angles::from_directions`], docs/lut.md), so the result can differ from
     /// `eval_far(&Angles::from_directions(..)?)` in the last bits.
     #[inline]
-    #[must_use]
     pub fn eval_far_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
         self.try_eval_far_dirs(wi, wr, tangent)
             .unwrap_or(Families::ZERO)

@@ -203,7 +203,7 @@ pub(crate) fn random() -> Vec<u8> {
         z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
         let r = (z ^ (z >> 31)) as u32;
-        if r % 8 == 0 {
+        if r.is_multiple_of(8) {
             0
         } else {
             (r % 0x4000) as u16

@@ -133,7 +133,10 @@ pub use math::FastMath;
 pub use math::{Libm, Math};
 pub use medulla::{MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout, Resolution};
 pub use model::{FurBcsdf, MODEL_VERSION};
-pub use params::{FurParams, FurParamsInput, ParamError, ParamName};
+pub use params::{
+    Domain, FurParams, FurParamsInput, InputError, ParamDefault, ParamError, ParamName, ParamSpec,
+    ParamValue, SCHEMA,
+};
 pub use pigment::{Pigment, EUMELANIN_SIGMA_A, PHEOMELANIN_SIGMA_A};
 pub use presets::Preset;
 pub use spectrum::Rgb;

@@ -3,7 +3,10 @@
 
 extern crate std;
 
+use super::lookup::locate;
+use super::walk::{sample_hg_2d, sample_hg_3d_cos};
 use super::*;
+use crate::math::TAU;
 use crate::presets;
 use std::vec;
 use std::vec::Vec;

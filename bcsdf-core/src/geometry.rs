@@ -234,3 +234,85 @@ impl Chord {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Libm;
+    use crate::presets;
+
+    fn slice(name: &str, theta_r: f32) -> ViewSlice {
+        let params = FurParams::new(&presets::find(name).unwrap().input).unwrap();
+        ViewSlice::new::<Libm>(&params, theta_r)
+    }
+
+    #[test]
+    fn bravais_indices_grow_with_the_view_angle() {
+        // In the normal plane (θ_r = 0) the effective index is the index itself.
+        assert!((bravais_index::<Libm>(1.55, 0.0, 1.0) - 1.55).abs() < 1e-7);
+        let mut prev = 1.55;
+        for k in 1..10 {
+            let t = 0.15 * k as f32;
+            let eta = bravais_index::<Libm>(1.55, libm::sinf(t), libm::cosf(t));
+            // η' = √(η² − sin²θ)/cos θ, and η'² − 1 = (η² − 1)/cos²θ.
+            let want = libm::sqrtf(1.55 * 1.55 - libm::sinf(t).powi(2)) / libm::cosf(t);
+            assert!((eta - want).abs() < 1e-5 * want && eta > prev, "{t}");
+            prev = eta;
+        }
+        // Never below 1 (no total internal reflection appears from rounding).
+        assert_eq!(bravais_index::<Libm>(1.0, 0.3, 0.96), 1.0);
+    }
+
+    #[test]
+    fn slices_hold_the_medulla_thresholds() {
+        let s = slice("air-medulla", 0.0);
+        assert!((s.eta_c_prime - 1.55).abs() < 1e-6 && (s.eta_m_prime - 1.2).abs() < 1e-6);
+        assert_eq!((s.inv_cos_tc, s.inv_cos_tm), (1.0, 1.0));
+        assert!((s.h_medulla() - 0.5 * 1.55).abs() < 1e-6);
+        assert!((s.h_tir() - 0.5 * 1.2).abs() < 1e-6);
+        let tilted = slice("air-medulla", 0.8);
+        let want = 1.0 / libm::sqrtf(1.0 - (libm::sinf(0.8) / 1.55).powi(2));
+        assert!((tilted.inv_cos_tc - want).abs() < 1e-6);
+    }
+
+    #[test]
+    fn chords_classify_the_medulla_event() {
+        // η_m < η_c: misses above κη'_c, total reflection between κη'_m and κη'_c.
+        let s = slice("air-medulla", 0.0);
+        let at = |h: f32| Chord::at_offset::<Libm>(&s, h);
+        assert!(matches!(at(0.1).medulla, MedullaEvent::Enter { .. }));
+        assert!(matches!(
+            at(-0.7).medulla,
+            MedullaEvent::TotalReflection { .. }
+        ));
+        assert_eq!(at(0.9).medulla, MedullaEvent::Miss);
+        // Snell in the cross-section: sin a = h, sin c = h/η'_c, and at the medulla
+        // sin m = sin c/κ, sin μ = (η'_c/η'_m) sin m.
+        let c = at(0.2);
+        assert!((libm::sinf(c.a) - 0.2).abs() < 1e-6);
+        assert!((libm::sinf(c.c) * s.eta_c_prime - 0.2).abs() < 1e-6);
+        match c.medulla {
+            MedullaEvent::Enter { m, cos_m, mu, .. } => {
+                assert!((libm::sinf(m) - libm::sinf(c.c) / 0.5).abs() < 1e-6);
+                assert!((libm::sinf(mu) * 1.2 - libm::sinf(m) * 1.55).abs() < 1e-5);
+                assert!((cos_m - libm::cosf(m)).abs() < 1e-6);
+                assert_eq!(c.variable_cos(ChordVariable::M), cos_m);
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(at(0.9).variable_cos(ChordVariable::Mu), 0.0);
+        // Offsets beyond the fiber are clamped to its edge.
+        assert_eq!(at(3.0), at(1.0));
+        // Built from the segment variable: the same chord, the variable's angle exact.
+        let t = 0.3f32;
+        let v = Chord::at_variable::<Libm>(&s, ChordVariable::A, t, Region::Enter);
+        assert_eq!(v.a, t);
+        assert!((v.h - libm::sinf(t)).abs() < 1e-7);
+        // Without a medulla every chord misses it.
+        let hair = slice("human-hair", 0.4);
+        assert_eq!(
+            Chord::at_offset::<Libm>(&hair, 0.0).medulla,
+            MedullaEvent::Miss
+        );
+    }
+}

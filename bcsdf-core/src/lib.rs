@@ -94,31 +94,34 @@ mod lobes;
 mod pigment;
 mod spectrum;
 
-// The model's building blocks: hidden from the docs, kept public for the independent tests
-// in fur-tests (tracer, furnace, reference quadratures) and for the bake tool and benches.
-#[doc(hidden)] // shared query generators of the benchmarks and profiling examples
+// The model's building blocks: hidden from the docs and not a stable interface, but public
+// so that the independent tests can check them one by one (fur-tests' ray tracer reaches
+// geometry and unscattered, others math and model), the tools and tests can share the
+// random streams (rng) and the benches one query list (bench_support). The rest stay public
+// beside them so that a new test of a building block needs no visibility change.
+#[doc(hidden)] // query generators shared by the benches and profiling examples
 pub mod bench_support;
-#[doc(hidden)] // far-field quadrature, for the accuracy tests
+#[doc(hidden)] // the far-field quadrature (N_p, N^s_p)
 pub mod far_field;
-#[doc(hidden)] // Fresnel factors, for the independent tests
+#[doc(hidden)] // the Fresnel factors
 pub mod fresnel;
-#[doc(hidden)] // Gaussian lobes, for the independent tests
+#[doc(hidden)] // the Gaussian and wrapped Gaussian lobe shapes
 pub mod gaussian;
-#[doc(hidden)] // cross-section geometry, for the ray-tracer test
+#[doc(hidden)] // the cross-section geometry: fur-tests' ray tracer
 pub mod geometry;
-#[doc(hidden)] // longitudinal lobes, for the independent tests
+#[doc(hidden)] // M_p per cuticle group
 pub mod longitudinal;
-#[doc(hidden)] // the Math trait lives here (re-exported); the helpers are for tests
+#[doc(hidden)] // Math, Libm, FastMath are re-exported; the helpers are used by fur-tests
 pub mod math;
-#[doc(hidden)] // model constants (MIN_COS2_THETA_I), for tests and benches; FurBcsdf is re-exported
+#[doc(hidden)] // FurBcsdf is re-exported; MIN_COS2_THETA_I and inv_cos2_theta_i by tests, benches
 pub mod model;
-#[doc(hidden)] // PCG32, for the tools' and tests' reproducible streams
+#[doc(hidden)] // PCG32: viewer sample's documented stream, the GPU tests, fur-tests
 pub mod rng;
-#[doc(hidden)] // the samplers' building blocks; sampling itself is the Bcsdf trait
+#[doc(hidden)] // the samplers' 1D building blocks; sampling itself is the Bcsdf trait
 pub mod sampling;
-#[doc(hidden)] // the scattered lobes, for the independent tests
+#[doc(hidden)] // the scattered lobes
 pub mod scattered;
-#[doc(hidden)] // the unscattered paths, for the ray-tracer test
+#[doc(hidden)] // the unscattered paths: fur-tests' ray tracer
 pub mod unscattered;
 
 pub use baked::{BakedBcsdf, BatchLengthError, Kernel};

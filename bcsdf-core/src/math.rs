@@ -585,16 +585,26 @@ mod tests {
         assert_eq!(Libm::sqrt(2.0), libm::sqrtf(2.0));
     }
 
+    /// Within the errors docs/accuracy.md reports for micromath (sin, cos 1.1e-3 absolute,
+    /// atan2 2.8e-3, exp 2.4e-3 relative); asin is this crate's polynomial.
     #[cfg(feature = "micromath")]
     #[test]
-    fn fast_math_backend_is_close() {
-        for x in grid(-1.0, 1.0, 1_000) {
-            assert_eq!(FastMath::asin(x), asin_polynomial(x));
-            assert!((FastMath::sin(x) - libm::sinf(x)).abs() < 1e-3, "sin {x}");
-            assert!((FastMath::cos(x) - libm::cosf(x)).abs() < 1e-3, "cos {x}");
-            let e = FastMath::exp_neg(x.abs() * 10.0);
-            let want = libm::expf(-x.abs() * 10.0);
-            assert!((e - want).abs() <= 1e-3 * want.max(1e-6), "exp {x}");
+    fn fast_math_backend_is_within_its_documented_error() {
+        for x in grid(-4.0, 4.0, 4_000) {
+            assert_eq!(FastMath::asin(x / 4.0), asin_polynomial(x / 4.0));
+            assert!((FastMath::sin(x) - libm::sinf(x)).abs() < 1.2e-3, "sin {x}");
+            assert!((FastMath::cos(x) - libm::cosf(x)).abs() < 1.2e-3, "cos {x}");
+            assert!(
+                (FastMath::atan2(x, 1.3) - libm::atan2f(x, 1.3)).abs() < 3e-3,
+                "atan2 {x}"
+            );
+        }
+        for x in grid(0.0, 87.0, 8_700) {
+            let (e, want) = (FastMath::exp_neg(x), libm::expf(-x));
+            assert!(
+                (e - want).abs() <= 2.5e-3 * want,
+                "exp(−{x}): {e} vs {want}"
+            );
         }
         assert_eq!(FastMath::exp(-100.0), 0.0);
         assert_eq!(FastMath::sqrt(2.0), libm::sqrtf(2.0));

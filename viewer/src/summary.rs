@@ -3,55 +3,28 @@
 //! and every figure) and, with `--all`, one page for the folder linking each LUT's page.
 //! Plain HTML with relative links and a little inline CSS; no scripts.
 
-use crate::compare::{pct, Outcome};
-use bake::metrics::{ErrorBudget, ErrorSummary, Exceeded, MetricSet};
+use crate::report::{
+    self, budget_rows, named_pcts, pct, worst_rows, Image, IndexRow, Outcome, IMAGES,
+};
+use bake::metrics::{ErrorBudget, ErrorSummary, MetricSet, METRIC_NAMES};
 use bcsdf_core::lut::LutHeader;
 use bcsdf_core::Pigment;
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// One image on a page.
-#[derive(Clone, Copy, Debug)]
-pub struct Image {
-    /// File name, relative to the page.
-    pub file: &'static str,
-    /// Width and height in pixels.
-    pub size: (usize, usize),
-    /// What it shows.
-    pub caption: &'static str,
-}
-
-/// Everything on a LUT's page.
+/// Everything on a LUT's page besides its images ([`IMAGES`], written beside it).
 #[derive(Clone, Copy, Debug)]
 pub struct PresetPage<'a> {
-    /// Preset name stored in the LUT.
-    pub preset: &'a str,
     /// The LUT file.
     pub lut: &'a Path,
     /// Its header (parameters, resolution, profile provenance).
     pub header: &'a LutHeader,
-    /// The metrics measured now.
-    pub errors: &'a ErrorSummary,
+    /// What the comparison measured.
+    pub outcome: &'a Outcome,
     /// The metrics stored at bake time, if any.
     pub stored: Option<&'a ErrorSummary>,
     /// The budget.
     pub budget: &'a ErrorBudget,
-    /// Metrics above the budget.
-    pub exceeded: &'a [Exceeded],
-    /// Mean relative difference of the renders per channel.
-    pub render: [f64; 3],
-    /// The figures.
-    pub images: &'a [Image],
-}
-
-/// One LUT of a `--all` run: its file name and what came of it (the error message when it
-/// could not be read).
-#[derive(Clone, Debug)]
-pub struct IndexRow {
-    /// File name within the folder.
-    pub file: String,
-    /// The comparison, or why there is none.
-    pub outcome: Result<Outcome, String>,
 }
 
 const STYLE: &str = "body{font-family:sans-serif;margin:1.5em;max-width:1400px}\
@@ -78,35 +51,17 @@ pub fn escape(text: &str) -> String {
     s
 }
 
-/// A JSON string literal.
-pub fn json_string(text: &str) -> String {
-    let mut s = String::from("\"");
-    for c in text.chars() {
-        match c {
-            '"' => s.push_str("\\\""),
-            '\\' => s.push_str("\\\\"),
-            c if (c as u32) < 0x20 => {
-                let _ = write!(s, "\\u{:04x}", c as u32);
-            }
-            c => s.push(c),
-        }
-    }
-    s.push('"');
-    s
-}
-
-fn verdict(pass: bool) -> &'static str {
-    if pass {
-        "<span class=\"pass\">PASS</span>"
-    } else {
-        "<span class=\"fail\">FAIL</span>"
-    }
+/// A verdict, coloured.
+fn verdict(pass: bool) -> String {
+    let class = if pass { "pass" } else { "fail" };
+    format!("<span class=\"{class}\">{}</span>", report::verdict(pass))
 }
 
 /// The page of one LUT.
 pub fn preset_page(p: &PresetPage<'_>) -> String {
     let mut s = String::new();
-    let title = format!("{}: baked vs analytic", p.preset);
+    let o = p.outcome;
+    let title = format!("{}: baked vs analytic", o.preset);
     let _ = write!(
         s,
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{}</title><style>{STYLE}</style></head><body>\n",
@@ -116,31 +71,34 @@ pub fn preset_page(p: &PresetPage<'_>) -> String {
         s,
         "<h1>{} {}</h1>\n<p>LUT <code>{}</code>, compared with the analytic model rebuilt from the parameters stored in it.</p>",
         escape(&title),
-        verdict(p.exceeded.is_empty()),
+        verdict(o.pass()),
         escape(&p.lut.display().to_string())
     );
 
     s.push_str("<h2>Error metrics</h2>\n<table><tr><th>metric</th><th>R</th><th>G</th><th>B</th><th>budget</th><th>result</th></tr>\n");
-    let bounds = [p.budget.e1, p.budget.e_albedo, p.budget.e_peak];
-    for ((name, v), bound) in p.errors.rows().into_iter().zip(bounds) {
-        let fail = p.exceeded.iter().any(|e| e.metric == name);
+    for row in o.metric_rows(p.budget) {
+        let v = row.values;
         let _ = writeln!(
             s,
-            "<tr><td>{name}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            row.name,
             pct(v[0]),
             pct(v[1]),
             pct(v[2]),
-            pct(bound),
-            verdict(!fail)
+            pct(row.budget),
+            verdict(row.pass)
         );
     }
-    let _ = writeln!(
-        s,
-        "<tr><td>render</td><td>{}</td><td>{}</td><td>{}</td><td></td><td></td></tr>\n</table>",
-        pct(p.render[0]),
-        pct(p.render[1]),
-        pct(p.render[2])
-    );
+    if let Some(r) = o.render {
+        let _ = writeln!(
+            s,
+            "<tr><td>render</td><td>{}</td><td>{}</td><td>{}</td><td></td><td></td></tr>",
+            pct(r[0]),
+            pct(r[1]),
+            pct(r[2])
+        );
+    }
+    s.push_str("</table>\n");
     let _ = writeln!(
         s,
         "<p>E1: energy-weighted relative L1 (weight cos&sup2;&theta;<sub>i</sub>); E_albedo: worst \
@@ -150,19 +108,16 @@ pub fn preset_page(p: &PresetPage<'_>) -> String {
         MetricSet::DEFAULT.len(),
         MetricSet::DEFAULT.max_theta_deg
     );
-    if let Some(st) = p.stored {
-        let w = st.worst();
+    if let Some(stored) = p.stored {
         let _ = writeln!(
             s,
-            "<p>Stored in the LUT at bake time (worst channel): E1 {}, E_albedo {}, E_peak {}.</p>",
-            pct(w[0]),
-            pct(w[1]),
-            pct(w[2])
+            "<p>Stored in the LUT at bake time (worst channel): {}.</p>",
+            named_pcts(&worst_rows(stored))
         );
     }
-    if !p.exceeded.is_empty() {
+    if !o.pass() {
         s.push_str("<ul>\n");
-        for e in p.exceeded {
+        for e in &o.exceeded {
             let _ = writeln!(s, "<li class=\"fail\">{}</li>", escape(&e.to_string()));
         }
         s.push_str("</ul>\n");
@@ -176,14 +131,13 @@ pub fn preset_page(p: &PresetPage<'_>) -> String {
 
     s.push_str("<h2>Figures</h2>\n");
     let is_render = |i: &&Image| matches!(i.file, "analytic.png" | "baked.png" | "difference.png");
-    for img in p
-        .images
+    for img in IMAGES
         .iter()
         .filter(|i| !is_render(i) && i.file != "families.png")
     {
         figure(&mut s, img);
     }
-    let renders: Vec<&Image> = p.images.iter().filter(is_render).collect();
+    let renders: Vec<&Image> = IMAGES.iter().filter(is_render).collect();
     s.push_str("<figure class=\"renders\">");
     for img in &renders {
         let _ = write!(
@@ -201,7 +155,7 @@ pub fn preset_page(p: &PresetPage<'_>) -> String {
             .join("; "),
     );
     s.push_str(")</figcaption></figure>\n");
-    for img in p.images.iter().filter(|i| i.file == "families.png") {
+    for img in IMAGES.iter().filter(|i| i.file == "families.png") {
         figure(&mut s, img);
     }
     s.push_str("</body></html>\n");
@@ -284,30 +238,25 @@ pub fn index_page(dir: &Path, budget: &ErrorBudget, rows: &[IndexRow]) -> String
     );
     let pass = rows
         .iter()
-        .filter(|r| matches!(&r.outcome, Ok(o) if o.exceeded.is_empty()))
+        .filter(|r| matches!(&r.outcome, Ok(o) if o.pass()))
         .count();
     let _ = writeln!(
         s,
-        "<p>{pass} of {} LUTs within the budget E1 {}, E_albedo {}, E_peak {} (worst channel shown).</p>",
+        "<p>{pass} of {} LUTs within the budget {} (worst channel shown).</p>",
         rows.len(),
-        pct(budget.e1),
-        pct(budget.e_albedo),
-        pct(budget.e_peak)
+        named_pcts(&budget_rows(budget))
     );
-    s.push_str("<table><tr><th>LUT</th><th>preset</th><th>E1</th><th>E_albedo</th><th>E_peak</th><th>render</th><th>result</th><th>render</th></tr>\n");
+    s.push_str("<table><tr><th>LUT</th><th>preset</th>");
+    for name in METRIC_NAMES {
+        let _ = write!(s, "<th>{name}</th>");
+    }
+    s.push_str("<th>render</th><th>result</th><th>render</th></tr>\n");
     for row in rows {
-        let stem = Path::new(&row.file)
-            .file_stem()
-            .map(|x| x.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let folder = format!("{stem}-compare");
+        let folder = report::compare_folder(Path::new(&row.file));
         match &row.outcome {
             Ok(o) => {
                 let w = o.errors.worst();
-                let render = o
-                    .render
-                    .map(|r| pct(r[0].max(r[1]).max(r[2])))
-                    .unwrap_or_default();
+                let render = o.render_worst().map(pct).unwrap_or_default();
                 let _ = writeln!(
                     s,
                     "<tr><td><a href=\"{folder}/index.html\">{}</a></td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td><a href=\"{folder}/index.html\"><img src=\"{folder}/analytic.png\" width=\"192\" height=\"144\" alt=\"render\"></a></td></tr>",
@@ -317,7 +266,7 @@ pub fn index_page(dir: &Path, budget: &ErrorBudget, rows: &[IndexRow]) -> String
                     pct(w[1]),
                     pct(w[2]),
                     render,
-                    verdict(o.exceeded.is_empty())
+                    verdict(o.pass())
                 );
             }
             Err(message) => {
@@ -341,6 +290,5 @@ mod tests {
     #[test]
     fn text_is_escaped() {
         assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
-        assert_eq!(json_string("a\"b\\c\n"), "\"a\\\"b\\\\c\\u000a\"");
     }
 }

@@ -1,14 +1,15 @@
 //! The HTML summary pages of `viewer compare`: one self-contained page per LUT
-//! (`index.html` beside its images: parameters, the metrics table, the render difference
-//! and every figure) and, with `--all`, one page for the folder linking each LUT's page.
-//! Plain HTML with relative links and a little inline CSS; no scripts.
+//! (`index.html` beside its images: the parameters, one row per [`SCHEMA`] entry; the
+//! metrics table; the render difference and every figure) and, with `--all`, one page for the folder linking each LUT's page.
+//! Plain HTML with relative links and a little inline CSS; no scripts. What is shown is the
+//! report model of [`crate::report`].
 
 use crate::report::{
     self, budget_rows, named_pcts, pct, worst_rows, Image, IndexRow, Outcome, IMAGES,
 };
 use bake::metrics::{ErrorBudget, ErrorSummary, MetricSet, METRIC_NAMES};
 use bcsdf_core::lut::LutHeader;
-use bcsdf_core::Pigment;
+use bcsdf_core::{FurParamsInput, ParamDefault, ParamValue, Rgb, SCHEMA};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -33,7 +34,7 @@ td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}\
 th{background:#eee}td:first-child,th:first-child{text-align:left}\
 .pass{color:#060;font-weight:bold}.fail{color:#b00;font-weight:bold}\
 figure{margin:1em 0}figcaption{color:#555;font-size:90%}\
-.renders img{margin-right:8px}";
+.renders img{margin-right:8px}.params td{text-align:left}";
 
 /// Escapes text for HTML.
 pub fn escape(text: &str) -> String {
@@ -123,11 +124,8 @@ pub fn preset_page(p: &PresetPage<'_>) -> String {
         s.push_str("</ul>\n");
     }
 
-    s.push_str("<h2>Parameters</h2>\n<table>\n");
-    for (k, v) in parameters(p.header) {
-        let _ = writeln!(s, "<tr><td>{}</td><td>{}</td></tr>", escape(&k), escape(&v));
-    }
-    s.push_str("</table>\n");
+    s.push_str("<h2>Parameters</h2>\n");
+    parameter_table(&mut s, p.header);
 
     s.push_str("<h2>Figures</h2>\n");
     let is_render = |i: &&Image| matches!(i.file, "analytic.png" | "baked.png" | "difference.png");
@@ -176,53 +174,79 @@ fn figure(s: &mut String, img: &Image) {
     );
 }
 
-/// The header as (name, value) rows.
-fn parameters(h: &LutHeader) -> Vec<(String, String)> {
-    let p = &h.params;
-    let mut rows = vec![("eta_c".to_string(), format!("{}", p.eta_c))];
-    match p.pigment {
-        Pigment::Absorption(rgb) => rows.push((
-            "sigma_ca".into(),
-            format!("{}, {}, {}", rgb.0[0], rgb.0[1], rgb.0[2]),
-        )),
-        Pigment::Melanin {
-            eumelanin,
-            pheomelanin,
-        } => rows.push((
-            "melanin".into(),
-            format!("eumelanin {eumelanin}, pheomelanin {pheomelanin}"),
-        )),
+/// One parameter on a LUT's page: its [`SCHEMA`] row and its value in the header.
+#[derive(Clone, Debug, PartialEq)]
+struct ParamRow {
+    symbol: &'static str,
+    key: &'static str,
+    value: String,
+    unit: &'static str,
+    meaning: &'static str,
+}
+
+/// The parameters of `params` in [`SCHEMA`] order, one row per parameter given. The colour
+/// form not in use (σ_ca, or eumelanin and pheomelanin) has no row; a [`ParamDefault::SameAs`]
+/// parameter left absent reads `= β_m` (the header stores them resolved, so only hand-made
+/// inputs show this).
+fn parameter_rows(params: &FurParamsInput) -> Vec<ParamRow> {
+    SCHEMA
+        .iter()
+        .filter_map(|spec| {
+            let value = match (params.value(spec.name), spec.default) {
+                (Some(ParamValue::Scalar(v)), _) => format!("{v}"),
+                (Some(ParamValue::Rgb(Rgb([r, g, b]))), _) => format!("{r}, {g}, {b}"),
+                (None, ParamDefault::SameAs(source)) => format!("= {}", source.spec().symbol),
+                (None, _) => return None,
+            };
+            Some(ParamRow {
+                symbol: spec.symbol,
+                key: spec.key,
+                value,
+                unit: spec.unit,
+                meaning: spec.meaning,
+            })
+        })
+        .collect()
+}
+
+/// The parameter table of a LUT's page: symbol, key, value, unit and meaning per
+/// [`SCHEMA`] row, then the LUT's resolution and profile provenance.
+fn parameter_table(s: &mut String, h: &LutHeader) {
+    s.push_str(
+        "<table class=\"params\"><tr><th>parameter</th><th>key</th><th>value</th><th>unit</th><th>meaning</th></tr>\n",
+    );
+    for row in parameter_rows(&h.params) {
+        let _ = writeln!(
+            s,
+            "<tr><td>{}</td><td><code>{}</code></td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            escape(row.symbol),
+            escape(row.key),
+            escape(&row.value),
+            escape(row.unit),
+            escape(row.meaning)
+        );
     }
-    let opt = |v: Option<f32>, default: &str| v.map_or(default.to_string(), |x| x.to_string());
-    rows.extend([
-        ("alpha (deg)".into(), format!("{}", p.alpha_deg)),
-        ("beta_m (deg)".into(), format!("{}", p.beta_m_deg)),
-        ("beta_n (deg)".into(), opt(p.beta_n_deg, "= beta_m")),
-        ("l".into(), format!("{}", p.l)),
-        ("kappa".into(), format!("{}", p.kappa)),
-        ("eta_m".into(), opt(p.eta_m, "= eta_c")),
-        ("sigma_ms".into(), format!("{}", p.sigma_ms)),
-        ("sigma_ma".into(), format!("{}", p.sigma_ma)),
-        ("g".into(), format!("{}", p.g)),
-    ]);
+    s.push_str("</table>\n<table class=\"params\">\n");
     let res: Vec<String> = h
         .res
         .axes()
         .iter()
         .map(|(n, v)| format!("{n} {v}"))
         .collect();
-    rows.push(("LUT resolution".into(), res.join(", ")));
-    rows.push((
-        "medulla profiles".into(),
-        match &h.profiles {
-            None => "none (no medulla scattering)".into(),
-            Some(pr) => format!(
-                "generator v{}, seed {}, {} photons per C^N cell, {} per C^M row",
-                pr.generator_version, pr.seed, pr.budget.per_cn_cell, pr.budget.per_cm_row
-            ),
-        },
-    ));
-    rows
+    let profiles = match &h.profiles {
+        None => "none (no medulla scattering)".into(),
+        Some(pr) => format!(
+            "generator v{}, seed {}, {} photons per C^N cell, {} per C^M row",
+            pr.generator_version, pr.seed, pr.budget.per_cn_cell, pr.budget.per_cm_row
+        ),
+    };
+    for (k, v) in [
+        ("LUT resolution", res.join(", ")),
+        ("medulla profiles", profiles),
+    ] {
+        let _ = writeln!(s, "<tr><td>{k}</td><td>{}</td></tr>", escape(&v));
+    }
+    s.push_str("</table>\n");
 }
 
 /// The `--all` page: one row per LUT linking its page, with each metric's worst channel and
@@ -286,6 +310,85 @@ pub fn index_page(dir: &Path, budget: &ErrorBudget, rows: &[IndexRow]) -> String
 #[cfg(test)]
 mod tests {
     use super::*;
+    use bcsdf_core::lut::{LutResolution, TABLE_COUNT};
+    use bcsdf_core::Pigment;
+
+    fn input(pigment: Pigment) -> FurParamsInput {
+        FurParamsInput {
+            eta_c: 1.55,
+            pigment,
+            alpha_deg: 3.0,
+            beta_m_deg: 10.0,
+            beta_n_deg: None,
+            l: 0.5,
+            kappa: 0.25,
+            eta_m: Some(1.4),
+            sigma_ms: 2.5,
+            sigma_ma: 0.0,
+            g: 0.8,
+        }
+    }
+
+    #[test]
+    fn the_parameter_table_walks_the_schema() {
+        let rgb = input(Pigment::Absorption(Rgb([0.25, 0.5, 1.0])));
+        let rows = parameter_rows(&rgb);
+        // Every schema row but the melanin pair, in schema order.
+        let keys: Vec<&str> = rows.iter().map(|r| r.key).collect();
+        let expected: Vec<&str> = SCHEMA
+            .iter()
+            .map(|s| s.key)
+            .filter(|k| !matches!(*k, "eumelanin" | "pheomelanin"))
+            .collect();
+        assert_eq!(keys, expected);
+        for row in &rows {
+            let spec = SCHEMA.iter().find(|s| s.key == row.key).unwrap();
+            assert_eq!(
+                (row.symbol, row.unit, row.meaning),
+                (spec.symbol, spec.unit, spec.meaning)
+            );
+        }
+        let value = |key: &str| rows.iter().find(|r| r.key == key).unwrap().value.clone();
+        assert_eq!(value("sigma_ca"), "0.25, 0.5, 1");
+        assert_eq!(value("eta_c"), "1.55");
+        assert_eq!(value("beta_n_deg"), "= β_m");
+        assert_eq!(value("eta_m"), "1.4");
+        assert_eq!(value("g"), "0.8");
+
+        let melanin = input(Pigment::Melanin {
+            eumelanin: 1.5,
+            pheomelanin: 0.0,
+        });
+        let rows = parameter_rows(&melanin.resolved());
+        assert_eq!(rows.len(), SCHEMA.len() - 1, "no sigma_ca row");
+        assert!(rows.iter().all(|r| r.key != "sigma_ca"));
+        let value = |key: &str| rows.iter().find(|r| r.key == key).unwrap().value.clone();
+        assert_eq!(value("eumelanin"), "1.5");
+        assert_eq!(value("pheomelanin"), "0");
+        assert_eq!(value("beta_n_deg"), "10", "resolved: beta_n = beta_m");
+
+        let header = LutHeader {
+            res: LutResolution::DEFAULT,
+            scales: [1.0; TABLE_COUNT],
+            params: rgb,
+            profiles: None,
+        };
+        let mut html = String::new();
+        parameter_table(&mut html, &header);
+        for spec in SCHEMA
+            .iter()
+            .filter(|s| s.key != "eumelanin" && s.key != "pheomelanin")
+        {
+            let cell = format!(
+                "<tr><td>{}</td><td><code>{}</code></td>",
+                spec.symbol, spec.key
+            );
+            assert!(html.contains(&cell), "{cell} in {html}");
+            assert!(html.contains(spec.meaning), "{}", spec.meaning);
+        }
+        assert!(!html.contains("eumelanin"));
+        assert!(html.contains("none (no medulla scattering)"));
+    }
 
     #[test]
     fn text_is_escaped() {

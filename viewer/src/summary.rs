@@ -1,8 +1,8 @@
 //! The HTML summary pages of `viewer compare`: one self-contained page per LUT
 //! (`index.html` beside its images: the parameters, one row per [`SCHEMA`] entry; the
-//! metrics table; the render difference and every figure) and, with `--all`, one page for the folder linking each LUT's page.
-//! Plain HTML with relative links and a little inline CSS; no scripts. What is shown is the
-//! report model of [`crate::report`].
+//! metrics table; the render difference and every figure) and, with `--all`, one page for
+//! the folder linking each LUT's page. Plain HTML with relative links and a little inline
+//! CSS; no scripts. What is shown is the report model of [`crate::report`].
 
 use crate::report::{
     self, budget_rows, named_pcts, pct, worst_rows, Image, IndexRow, Outcome, IMAGES,

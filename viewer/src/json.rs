@@ -2,7 +2,7 @@
 //!
 //! - `viewer probe`: one line per query, [`write_lobes`] / [`write_families`];
 //! - `viewer sample`: the numbers of its text lines, [`write_number`];
-//! - `viewer compare`: `compare.json`, [`pretty`] on [`crate::report::Report`].
+//! - `viewer compare`: `compare.json`, [`pretty`] on the report model's `Report`.
 //!
 //! Numbers are serde_json's (ryu): the shortest decimal that parses back to the same value
 //! in the type written (f32 for the model's answers, f64 for the metrics), so `1` prints as

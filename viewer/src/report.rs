@@ -3,8 +3,9 @@
 //! `--all` run ([`IndexRow`]), the images written per LUT ([`IMAGES`]), percentages
 //! ([`pct`]) and `compare.json` ([`Report`]).
 //!
-//! [`crate::compare`] builds it; the text tables (`compare`) and the HTML pages
-//! ([`crate::summary`]) present it. This module depends on neither.
+//! `compare` builds it; the text tables (`compare`) and the HTML pages (`summary`) present
+//! it. This module imports neither (only `figures` and `render` for the image sizes and
+//! `json` for ordered objects), so there is no import cycle between them.
 
 use crate::figures::{HEATMAP_SIZE, POLAR_SIZE};
 use crate::json::Ordered;

@@ -126,7 +126,11 @@ fn fur_wrap_angle(x: f32) -> f32 {
     if (y > FUR_PI) {
         y = y - FUR_TAU;
     }
-    return y;
+    // |x| beyond about 2e8 names no direction (one ulp is over two turns): 0, as on the CPU.
+    if (y > -FUR_PI && y <= FUR_PI) {
+        return y;
+    }
+    return 0.0;
 }
 
 fn fur_zero() -> FurFamilies {

@@ -189,6 +189,7 @@ float fur_wrap_angle(
     bool local_1 = {};
     bool local_2 = {};
     float y = {};
+    bool local_3 = {};
     if (x_2 > -3.1415927) {
         local = x_2 <= FUR_PI;
     } else {
@@ -228,7 +229,18 @@ float fur_wrap_angle(
         y = _e47 - FUR_TAU;
     }
     float _e50 = y;
-    return _e50;
+    if (_e50 > -3.1415927) {
+        float _e55 = y;
+        local_3 = _e55 <= FUR_PI;
+    } else {
+        local_3 = false;
+    }
+    bool _e59 = local_3;
+    if (_e59) {
+        float _e60 = y;
+        return _e60;
+    }
+    return 0.0;
 }
 
 FurFamilies fur_zero(
@@ -248,37 +260,37 @@ bool fur_valid(
     float theta_r,
     float phi
 ) {
-    bool local_3 = {};
     bool local_4 = {};
     bool local_5 = {};
     bool local_6 = {};
+    bool local_7 = {};
     bool _e3 = fur_finite(theta_i);
     if (_e3) {
         bool _e6 = fur_finite(theta_r);
-        local_3 = _e6;
-    } else {
-        local_3 = false;
-    }
-    bool _e8 = local_3;
-    if (_e8) {
-        bool _e11 = fur_finite(phi);
-        local_4 = _e11;
+        local_4 = _e6;
     } else {
         local_4 = false;
     }
-    bool _e13 = local_4;
-    if (_e13) {
-        local_5 = metal::abs(theta_i) <= FUR_HALF_PI;
+    bool _e8 = local_4;
+    if (_e8) {
+        bool _e11 = fur_finite(phi);
+        local_5 = _e11;
     } else {
         local_5 = false;
     }
-    bool _e20 = local_5;
-    if (_e20) {
-        local_6 = metal::abs(theta_r) <= FUR_HALF_PI;
+    bool _e13 = local_5;
+    if (_e13) {
+        local_6 = metal::abs(theta_i) <= FUR_HALF_PI;
     } else {
         local_6 = false;
     }
-    bool _e27 = local_6;
+    bool _e20 = local_6;
+    if (_e20) {
+        local_7 = metal::abs(theta_r) <= FUR_HALF_PI;
+    } else {
+        local_7 = false;
+    }
+    bool _e27 = local_7;
     return _e27;
 }
 
@@ -540,28 +552,28 @@ FurFamilies fur_eval_far_dirs(
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_7 = {};
     bool local_8 = {};
     bool local_9 = {};
     bool local_10 = {};
+    bool local_11 = {};
     float ii = metal::dot(wi, wi);
     float rr = metal::dot(wr, wr);
     float uu = metal::dot(u, u);
     bool _e6 = fur_finite(ii);
     if (_e6) {
         bool _e9 = fur_finite(rr);
-        local_7 = _e9;
-    } else {
-        local_7 = false;
-    }
-    bool _e11 = local_7;
-    if (_e11) {
-        bool _e14 = fur_finite(uu);
-        local_8 = _e14;
+        local_8 = _e9;
     } else {
         local_8 = false;
     }
-    bool _e16 = local_8;
+    bool _e11 = local_8;
+    if (_e11) {
+        bool _e14 = fur_finite(uu);
+        local_9 = _e14;
+    } else {
+        local_9 = false;
+    }
+    bool _e16 = local_9;
     if (!(_e16)) {
         FurFamilies _e18 = fur_zero();
         return _e18;
@@ -570,17 +582,17 @@ FurFamilies fur_eval_far_dirs(
     float nr = metal::sqrt(rr);
     float nu = metal::sqrt(uu);
     if (!((ni < 0.000000000000000000000000000000000000011754944))) {
-        local_9 = nr < 0.000000000000000000000000000000000000011754944;
-    } else {
-        local_9 = true;
-    }
-    bool _e29 = local_9;
-    if (!(_e29)) {
-        local_10 = nu < 0.000000000000000000000000000000000000011754944;
+        local_10 = nr < 0.000000000000000000000000000000000000011754944;
     } else {
         local_10 = true;
     }
-    bool _e35 = local_10;
+    bool _e29 = local_10;
+    if (!(_e29)) {
+        local_11 = nu < 0.000000000000000000000000000000000000011754944;
+    } else {
+        local_11 = true;
+    }
+    bool _e35 = local_11;
     if (_e35) {
         FurFamilies _e36 = fur_zero();
         return _e36;
@@ -746,8 +758,8 @@ float fur_invert_linear(
     float t_2
 ) {
     float s = 0.0;
-    bool local_11 = {};
     bool local_12 = {};
+    bool local_13 = {};
     if (!((len_1 > 0.0))) {
         return 0.0;
     }
@@ -763,21 +775,21 @@ float fur_invert_linear(
     float inset = len_1 * 0.0000009536743;
     if (v0_1 <= 0.0) {
         float _e36 = s;
-        local_11 = _e36 < inset;
+        local_12 = _e36 < inset;
     } else {
-        local_11 = false;
+        local_12 = false;
     }
-    bool _e39 = local_11;
+    bool _e39 = local_12;
     if (_e39) {
         return inset;
     }
     if (v1_1 <= 0.0) {
         float _e44 = s;
-        local_12 = _e44 > (len_1 - inset);
+        local_13 = _e44 > (len_1 - inset);
     } else {
-        local_12 = false;
+        local_13 = false;
     }
-    bool _e48 = local_12;
+    bool _e48 = local_13;
     if (_e48) {
         return len_1 - inset;
     }
@@ -963,14 +975,14 @@ float fur_row_total(
 float fur_positive(
     float v
 ) {
-    bool local_13 = {};
+    bool local_14 = {};
     bool _e1 = fur_finite(v);
     if (_e1) {
-        local_13 = v > 0.0;
+        local_14 = v > 0.0;
     } else {
-        local_13 = false;
+        local_14 = false;
     }
-    bool _e7 = local_13;
+    bool _e7 = local_14;
     return _e7 ? v : 0.0;
 }
 
@@ -1052,7 +1064,7 @@ FurSample fur_sample_far(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FurSample out_1 = FurSample {0.0, 0.0, 0.0, {}, metal::float3(0.0), 0u, false};
-    bool local_14 = {};
+    bool local_15 = {};
     float total = 0.0;
     uint k_3 = 0u;
     float acc_3 = 0.0;
@@ -1061,14 +1073,14 @@ FurSample fur_sample_far(
     uint last = 5u;
     uint k_4 = 0u;
     float theta_i_4 = 0.0;
-    bool local_15 = {};
+    bool local_16 = {};
     bool _e11 = fur_finite(theta_r_5);
     if (_e11) {
-        local_14 = metal::abs(theta_r_5) <= FUR_HALF_PI;
+        local_15 = metal::abs(theta_r_5) <= FUR_HALF_PI;
     } else {
-        local_14 = false;
+        local_15 = false;
     }
-    bool _e18 = local_14;
+    bool _e18 = local_15;
     if (!(_e18)) {
         FurSample _e20 = out_1;
         return _e20;
@@ -1187,11 +1199,11 @@ FurSample fur_sample_far(
     float _e182 = fur_density_of(_e179, total_weight, _e181);
     if (_e182 > 0.0) {
         bool _e187 = fur_finite(_e182);
-        local_15 = _e187;
+        local_16 = _e187;
     } else {
-        local_15 = false;
+        local_16 = false;
     }
-    bool _e189 = local_15;
+    bool _e189 = local_16;
     if (!(_e189)) {
         FurSample _e191 = out_1;
         return _e191;

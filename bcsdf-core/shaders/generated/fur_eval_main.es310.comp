@@ -134,6 +134,7 @@ float fur_wrap_angle(float x_2) {
     bool local_1 = false;
     bool local_2 = false;
     float y = 0.0;
+    bool local_3 = false;
     if ((x_2 > -3.1415927)) {
         local = (x_2 <= FUR_PI);
     } else {
@@ -173,7 +174,18 @@ float fur_wrap_angle(float x_2) {
         y = (_e47 - FUR_TAU);
     }
     float _e50 = y;
-    return _e50;
+    if ((_e50 > -3.1415927)) {
+        float _e55 = y;
+        local_3 = (_e55 <= FUR_PI);
+    } else {
+        local_3 = false;
+    }
+    bool _e59 = local_3;
+    if (_e59) {
+        float _e60 = y;
+        return _e60;
+    }
+    return 0.0;
 }
 
 FurFamilies fur_zero() {
@@ -186,37 +198,37 @@ bool fur_finite(float x_3) {
 }
 
 bool fur_valid(float theta_i, float theta_r, float phi) {
-    bool local_3 = false;
     bool local_4 = false;
     bool local_5 = false;
     bool local_6 = false;
+    bool local_7 = false;
     bool _e3 = fur_finite(theta_i);
     if (_e3) {
         bool _e6 = fur_finite(theta_r);
-        local_3 = _e6;
-    } else {
-        local_3 = false;
-    }
-    bool _e8 = local_3;
-    if (_e8) {
-        bool _e11 = fur_finite(phi);
-        local_4 = _e11;
+        local_4 = _e6;
     } else {
         local_4 = false;
     }
-    bool _e13 = local_4;
-    if (_e13) {
-        local_5 = (abs(theta_i) <= FUR_HALF_PI);
+    bool _e8 = local_4;
+    if (_e8) {
+        bool _e11 = fur_finite(phi);
+        local_5 = _e11;
     } else {
         local_5 = false;
     }
-    bool _e20 = local_5;
-    if (_e20) {
-        local_6 = (abs(theta_r) <= FUR_HALF_PI);
+    bool _e13 = local_5;
+    if (_e13) {
+        local_6 = (abs(theta_i) <= FUR_HALF_PI);
     } else {
         local_6 = false;
     }
-    bool _e27 = local_6;
+    bool _e20 = local_6;
+    if (_e20) {
+        local_7 = (abs(theta_r) <= FUR_HALF_PI);
+    } else {
+        local_7 = false;
+    }
+    bool _e27 = local_7;
     return _e27;
 }
 
@@ -439,28 +451,28 @@ float fur_atan2_(float y_1, float x_5) {
 }
 
 FurFamilies fur_eval_far_dirs(vec3 wi, vec3 wr, vec3 u) {
-    bool local_7 = false;
     bool local_8 = false;
     bool local_9 = false;
     bool local_10 = false;
+    bool local_11 = false;
     float ii = dot(wi, wi);
     float rr = dot(wr, wr);
     float uu = dot(u, u);
     bool _e6 = fur_finite(ii);
     if (_e6) {
         bool _e9 = fur_finite(rr);
-        local_7 = _e9;
-    } else {
-        local_7 = false;
-    }
-    bool _e11 = local_7;
-    if (_e11) {
-        bool _e14 = fur_finite(uu);
-        local_8 = _e14;
+        local_8 = _e9;
     } else {
         local_8 = false;
     }
-    bool _e16 = local_8;
+    bool _e11 = local_8;
+    if (_e11) {
+        bool _e14 = fur_finite(uu);
+        local_9 = _e14;
+    } else {
+        local_9 = false;
+    }
+    bool _e16 = local_9;
     if (!(_e16)) {
         FurFamilies _e18 = fur_zero();
         return _e18;
@@ -469,17 +481,17 @@ FurFamilies fur_eval_far_dirs(vec3 wi, vec3 wr, vec3 u) {
     float nr = sqrt(rr);
     float nu = sqrt(uu);
     if (!((ni < 1.1754944e-38))) {
-        local_9 = (nr < 1.1754944e-38);
-    } else {
-        local_9 = true;
-    }
-    bool _e29 = local_9;
-    if (!(_e29)) {
-        local_10 = (nu < 1.1754944e-38);
+        local_10 = (nr < 1.1754944e-38);
     } else {
         local_10 = true;
     }
-    bool _e35 = local_10;
+    bool _e29 = local_10;
+    if (!(_e29)) {
+        local_11 = (nu < 1.1754944e-38);
+    } else {
+        local_11 = true;
+    }
+    bool _e35 = local_11;
     if (_e35) {
         FurFamilies _e36 = fur_zero();
         return _e36;
@@ -596,8 +608,8 @@ float fur_linear_mass(float v0_, float v1_, float len) {
 
 float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_2) {
     float s = 0.0;
-    bool local_11 = false;
     bool local_12 = false;
+    bool local_13 = false;
     if (!((len_1 > 0.0))) {
         return 0.0;
     }
@@ -613,21 +625,21 @@ float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_2) {
     float inset = (len_1 * 9.536743e-7);
     if ((v0_1 <= 0.0)) {
         float _e36 = s;
-        local_11 = (_e36 < inset);
+        local_12 = (_e36 < inset);
     } else {
-        local_11 = false;
+        local_12 = false;
     }
-    bool _e39 = local_11;
+    bool _e39 = local_12;
     if (_e39) {
         return inset;
     }
     if ((v1_1 <= 0.0)) {
         float _e44 = s;
-        local_12 = (_e44 > (len_1 - inset));
+        local_13 = (_e44 > (len_1 - inset));
     } else {
-        local_12 = false;
+        local_13 = false;
     }
-    bool _e48 = local_12;
+    bool _e48 = local_13;
     if (_e48) {
         return (len_1 - inset);
     }
@@ -779,14 +791,14 @@ float fur_row_total(FurDensity d_3, FurLoc l_1) {
 }
 
 float fur_positive(float v) {
-    bool local_13 = false;
+    bool local_14 = false;
     bool _e1 = fur_finite(v);
     if (_e1) {
-        local_13 = (v > 0.0);
+        local_14 = (v > 0.0);
     } else {
-        local_13 = false;
+        local_14 = false;
     }
-    bool _e7 = local_13;
+    bool _e7 = local_14;
     return (_e7 ? v : 0.0);
 }
 
@@ -849,7 +861,7 @@ float fur_pdf_far(float theta_i_3, float theta_r_4, float phi_2) {
 
 FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     FurSample out_1 = FurSample(0.0, 0.0, 0.0, vec3(0.0), 0u, false);
-    bool local_14 = false;
+    bool local_15 = false;
     float total = 0.0;
     uint k_3 = 0u;
     float acc_3 = 0.0;
@@ -858,14 +870,14 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     uint last = 5u;
     uint k_4 = 0u;
     float theta_i_4 = 0.0;
-    bool local_15 = false;
+    bool local_16 = false;
     bool _e11 = fur_finite(theta_r_5);
     if (_e11) {
-        local_14 = (abs(theta_r_5) <= FUR_HALF_PI);
+        local_15 = (abs(theta_r_5) <= FUR_HALF_PI);
     } else {
-        local_14 = false;
+        local_15 = false;
     }
-    bool _e18 = local_14;
+    bool _e18 = local_15;
     if (!(_e18)) {
         FurSample _e20 = out_1;
         return _e20;
@@ -978,11 +990,11 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     float _e182 = fur_density_of(_e179, total_weight, _e181);
     if ((_e182 > 0.0)) {
         bool _e187 = fur_finite(_e182);
-        local_15 = _e187;
+        local_16 = _e187;
     } else {
-        local_15 = false;
+        local_16 = false;
     }
-    bool _e189 = local_15;
+    bool _e189 = local_16;
     if (!(_e189)) {
         FurSample _e191 = out_1;
         return _e191;

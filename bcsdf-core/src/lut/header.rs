@@ -72,7 +72,7 @@ fn pigment_record(pigment: &Pigment) -> (u32, [f32; 3]) {
 }
 
 impl LutHeader {
-    /// The header as bytes, checksum field zero (see [`seal`]).
+    /// The header as bytes, checksum field zero (see [`seal`](super::seal)).
     #[must_use]
     pub fn encode(&self) -> [u8; HEADER_LEN] {
         let mut out = [0u8; HEADER_LEN];
@@ -133,7 +133,7 @@ impl LutHeader {
 
     /// Reads and checks the header of `bytes` (magic, versions, resolution, total length,
     /// scales, parameters, flags); the table values and checksum are checked by
-    /// [`validate`].
+    /// [`validate`](super::validate).
     pub fn decode(bytes: &[u8]) -> Result<LutHeader, LutError> {
         if bytes.len() < HEADER_LEN {
             return Err(LutError::TooShort { len: bytes.len() });

@@ -352,7 +352,14 @@ pub enum LutError {
     },
 }
 
-impl core::error::Error for LutError {}
+impl core::error::Error for LutError {
+    fn source(&self) -> Option<&(dyn core::error::Error + 'static)> {
+        match self {
+            LutError::Params(e) => Some(e),
+            _ => None,
+        }
+    }
+}
 
 impl fmt::Display for LutError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

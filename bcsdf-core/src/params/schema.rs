@@ -1,0 +1,297 @@
+//! The parameter schema (docs/model.md §2): one [`ParamSpec`] per parameter in [`SCHEMA`],
+//! and the [`ParamName`] lookups that read it. Every serialisation of the parameter set
+//! iterates this table.
+
+use super::{ParamError, ParamName};
+use crate::spectrum::Rgb;
+use core::fmt;
+
+/// A parameter's valid domain: an interval whose ends are open or closed.
+///
+/// [`Display`](fmt::Display) writes it in interval notation, e.g. `(1, 3]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Domain {
+    /// Lower end.
+    pub lo: f32,
+    /// Whether `lo` itself is valid.
+    pub lo_inclusive: bool,
+    /// Upper end.
+    pub hi: f32,
+    /// Whether `hi` itself is valid.
+    pub hi_inclusive: bool,
+}
+
+impl Domain {
+    const fn closed(lo: f32, hi: f32) -> Domain {
+        Domain {
+            lo,
+            lo_inclusive: true,
+            hi,
+            hi_inclusive: true,
+        }
+    }
+
+    /// Whether `value` lies in the domain (NaN and ±∞ never do).
+    #[must_use]
+    pub fn contains(&self, value: f32) -> bool {
+        let above = if self.lo_inclusive {
+            value >= self.lo
+        } else {
+            value > self.lo
+        };
+        let below = if self.hi_inclusive {
+            value <= self.hi
+        } else {
+            value < self.hi
+        };
+        value.is_finite() && above && below
+    }
+}
+
+impl fmt::Display for Domain {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let open = if self.lo_inclusive { '[' } else { '(' };
+        let close = if self.hi_inclusive { ']' } else { ')' };
+        write!(f, "{open}{}, {}{close}", self.lo, self.hi)
+    }
+}
+
+/// What a parameter is when a preset or override leaves it out.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamDefault {
+    /// It must be given.
+    Required,
+    /// This value.
+    Value(f32),
+    /// The (resolved) value of another parameter, e.g. η_m = η_c.
+    SameAs(ParamName),
+    /// One of the colour forms: σ_ca, or eumelanin and/or pheomelanin (an absent
+    /// concentration is 0 when the other one is given).
+    Colour,
+}
+
+/// The value of one parameter: a number, or (σ_ca only) an RGB triple.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamValue {
+    /// One number (for σ_ca: all three channels).
+    Scalar(f32),
+    /// Three numbers; only σ_ca takes them.
+    Rgb(Rgb),
+}
+
+/// One row of the parameter schema (docs/model.md §2): everything a serialisation needs to
+/// know about a parameter. Every format — the LUT header, the EXR attributes, preset files,
+/// `--set` overrides, the viewer's summary page — iterates [`SCHEMA`], so adding a parameter
+/// is a change here (and in [`FurParamsInput`]'s fields).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParamSpec {
+    /// Which parameter.
+    pub name: ParamName,
+    /// The key in preset files, EXR attributes and `--set` (`eta_c`).
+    pub key: &'static str,
+    /// The symbol of docs/model.md (`η_c`).
+    pub symbol: &'static str,
+    /// Unit: `""` (dimensionless), `"deg"`, or `"1/R"` (per fiber radius).
+    pub unit: &'static str,
+    /// What it is, in a few words.
+    pub meaning: &'static str,
+    /// The valid values.
+    pub domain: Domain,
+    /// What an absent value means.
+    pub default: ParamDefault,
+}
+
+/// The parameter schema, in [`ParamName::ALL`] order (which is also the order of the LUT
+/// header's parameter block, docs/lut.md).
+pub const SCHEMA: [ParamSpec; 13] = [
+    ParamSpec {
+        name: ParamName::EtaC,
+        key: "eta_c",
+        symbol: "η_c",
+        unit: "",
+        meaning: "cortex and cuticle refractive index",
+        domain: Domain {
+            lo: 1.0,
+            lo_inclusive: false,
+            hi: 3.0,
+            hi_inclusive: true,
+        },
+        default: ParamDefault::Required,
+    },
+    ParamSpec {
+        name: ParamName::SigmaCa,
+        key: "sigma_ca",
+        symbol: "σ_ca",
+        unit: "1/R",
+        meaning: "cortex absorption (RGB)",
+        domain: Domain::closed(0.0, 1000.0),
+        default: ParamDefault::Colour,
+    },
+    ParamSpec {
+        name: ParamName::Eumelanin,
+        key: "eumelanin",
+        symbol: "c_eu",
+        unit: "",
+        meaning: "eumelanin concentration (colours σ_ca)",
+        domain: Domain::closed(0.0, 100.0),
+        default: ParamDefault::Colour,
+    },
+    ParamSpec {
+        name: ParamName::Pheomelanin,
+        key: "pheomelanin",
+        symbol: "c_pheo",
+        unit: "",
+        meaning: "pheomelanin concentration (colours σ_ca)",
+        domain: Domain::closed(0.0, 100.0),
+        default: ParamDefault::Colour,
+    },
+    ParamSpec {
+        name: ParamName::AlphaDeg,
+        key: "alpha_deg",
+        symbol: "α",
+        unit: "deg",
+        meaning: "cuticle scale tilt",
+        domain: Domain::closed(-30.0, 30.0),
+        default: ParamDefault::Required,
+    },
+    ParamSpec {
+        name: ParamName::BetaMDeg,
+        key: "beta_m_deg",
+        symbol: "β_m",
+        unit: "deg",
+        meaning: "longitudinal roughness",
+        domain: Domain::closed(0.5, 45.0),
+        default: ParamDefault::Required,
+    },
+    ParamSpec {
+        name: ParamName::BetaNDeg,
+        key: "beta_n_deg",
+        symbol: "β_n",
+        unit: "deg",
+        meaning: "azimuthal roughness",
+        domain: Domain::closed(0.5, 45.0),
+        default: ParamDefault::SameAs(ParamName::BetaMDeg),
+    },
+    ParamSpec {
+        name: ParamName::L,
+        key: "l",
+        symbol: "l",
+        unit: "",
+        meaning: "cuticle layers",
+        domain: Domain::closed(0.0, 64.0),
+        default: ParamDefault::Required,
+    },
+    ParamSpec {
+        name: ParamName::Kappa,
+        key: "kappa",
+        symbol: "κ",
+        unit: "",
+        meaning: "medulla radius / fiber radius",
+        domain: Domain::closed(0.0, 0.99),
+        default: ParamDefault::Required,
+    },
+    ParamSpec {
+        name: ParamName::EtaM,
+        key: "eta_m",
+        symbol: "η_m",
+        unit: "",
+        meaning: "medulla refractive index",
+        domain: Domain {
+            lo: 1.0,
+            lo_inclusive: false,
+            hi: 3.0,
+            hi_inclusive: true,
+        },
+        default: ParamDefault::SameAs(ParamName::EtaC),
+    },
+    ParamSpec {
+        name: ParamName::SigmaMs,
+        key: "sigma_ms",
+        symbol: "σ_ms",
+        unit: "1/R",
+        meaning: "medulla scattering coefficient",
+        domain: Domain::closed(0.0, 100.0),
+        default: ParamDefault::Required,
+    },
+    ParamSpec {
+        name: ParamName::SigmaMa,
+        key: "sigma_ma",
+        symbol: "σ_ma",
+        unit: "1/R",
+        meaning: "medulla absorption coefficient",
+        domain: Domain::closed(0.0, 100.0),
+        default: ParamDefault::Value(0.0),
+    },
+    ParamSpec {
+        name: ParamName::G,
+        key: "g",
+        symbol: "g",
+        unit: "",
+        meaning: "Henyey–Greenstein anisotropy in the medulla",
+        domain: Domain {
+            lo: -1.0,
+            lo_inclusive: false,
+            hi: 1.0,
+            hi_inclusive: false,
+        },
+        default: ParamDefault::Required,
+    },
+];
+
+impl ParamName {
+    /// Every parameter, in docs/model.md §2 order (the order of [`SCHEMA`]).
+    pub const ALL: [ParamName; 13] = [
+        ParamName::EtaC,
+        ParamName::SigmaCa,
+        ParamName::Eumelanin,
+        ParamName::Pheomelanin,
+        ParamName::AlphaDeg,
+        ParamName::BetaMDeg,
+        ParamName::BetaNDeg,
+        ParamName::L,
+        ParamName::Kappa,
+        ParamName::EtaM,
+        ParamName::SigmaMs,
+        ParamName::SigmaMa,
+        ParamName::G,
+    ];
+
+    /// This parameter's row of [`SCHEMA`].
+    #[must_use]
+    pub const fn spec(self) -> &'static ParamSpec {
+        &SCHEMA[self as usize]
+    }
+
+    /// The key used in preset files, EXR attributes and `--set`.
+    #[must_use]
+    pub const fn key(self) -> &'static str {
+        self.spec().key
+    }
+
+    /// Whether this is one of the colour parameters (σ_ca, eumelanin, pheomelanin).
+    #[must_use]
+    pub const fn is_colour(self) -> bool {
+        matches!(self.spec().default, ParamDefault::Colour)
+    }
+
+    /// Looks a parameter up by its key; `None` for an unknown key.
+    #[must_use]
+    pub fn from_key(key: &str) -> Option<ParamName> {
+        SCHEMA.iter().find(|s| s.key == key).map(|s| s.name)
+    }
+
+    /// The valid domain.
+    #[must_use]
+    pub const fn domain(self) -> Domain {
+        self.spec().domain
+    }
+
+    /// Checks one value against this parameter's domain (NaN is never valid).
+    pub fn check(self, value: f32) -> Result<f32, ParamError> {
+        if self.domain().contains(value) {
+            Ok(value)
+        } else {
+            Err(ParamError { name: self, value })
+        }
+    }
+}

@@ -1,0 +1,127 @@
+//! Unit tests of the parameter schema and the input setters.
+
+extern crate std;
+use super::*;
+use std::string::ToString;
+
+fn human_hair() -> FurParamsInput {
+    crate::presets::find("human-hair").unwrap().input
+}
+
+#[test]
+fn schema_rows_follow_all_and_keys_are_unique() {
+    for (i, (spec, name)) in SCHEMA.iter().zip(ParamName::ALL).enumerate() {
+        assert_eq!(spec.name, name, "row {i}");
+        assert_eq!(name.spec(), spec);
+        assert_eq!(ParamName::from_key(spec.key), Some(name));
+        assert!(
+            SCHEMA[..i].iter().all(|s| s.key != spec.key),
+            "{}",
+            spec.key
+        );
+        assert!(!spec.symbol.is_empty() && !spec.meaning.is_empty());
+    }
+    assert_eq!(ParamName::from_key("Eta_C"), None);
+    assert_eq!(ParamName::from_key(""), None);
+}
+
+#[test]
+fn domain_text_is_interval_notation() {
+    assert_eq!(ParamName::EtaC.domain().to_string(), "(1, 3]");
+    assert_eq!(ParamName::Kappa.domain().to_string(), "[0, 0.99]");
+    assert_eq!(ParamName::G.domain().to_string(), "(-1, 1)");
+    assert_eq!(ParamName::AlphaDeg.domain().to_string(), "[-30, 30]");
+}
+
+#[test]
+fn domains_honour_open_and_closed_ends() {
+    for spec in &SCHEMA {
+        let d = spec.domain;
+        assert_eq!(d.contains(d.lo), d.lo_inclusive, "{}", spec.key);
+        assert_eq!(d.contains(d.hi), d.hi_inclusive, "{}", spec.key);
+        assert!(d.contains(0.5 * (d.lo + d.hi)), "{}", spec.key);
+        for bad in [
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            d.lo - 1.0,
+            d.hi + 1.0,
+        ] {
+            assert!(!d.contains(bad), "{} {bad}", spec.key);
+            assert!(spec.name.check(bad).is_err());
+        }
+    }
+}
+
+#[test]
+fn param_error_names_key_value_and_range() {
+    let e = ParamName::Kappa.check(1.2).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "invalid kappa = 1.2: valid range is [0, 0.99]"
+    );
+    let mut input = human_hair();
+    input.g = 1.0;
+    let e = FurParams::new(&input).unwrap_err();
+    assert_eq!(e.name, ParamName::G);
+}
+
+#[test]
+fn set_value_then_value_round_trips_every_parameter() {
+    for (i, spec) in SCHEMA.iter().enumerate() {
+        let mut input = human_hair();
+        let v = 0.25 + i as f32 * 0.01;
+        input.set(spec.name, v);
+        let expected = if spec.name == ParamName::SigmaCa {
+            ParamValue::Rgb(Rgb::splat(v))
+        } else {
+            ParamValue::Scalar(v)
+        };
+        assert_eq!(input.value(spec.name), Some(expected), "{}", spec.key);
+    }
+    let mut input = human_hair();
+    input.set_value(ParamName::SigmaCa, ParamValue::Rgb(Rgb([0.1, 0.2, 0.3])));
+    assert_eq!(input.pigment, Pigment::Absorption(Rgb([0.1, 0.2, 0.3])));
+    assert_eq!(input.value(ParamName::Eumelanin), None);
+}
+
+#[test]
+fn colour_forms_exclude_each_other() {
+    let mut input = human_hair();
+    input.set(ParamName::SigmaCa, 0.7);
+    input.set(ParamName::Eumelanin, 1.5);
+    assert_eq!(input.value(ParamName::SigmaCa), None);
+    assert_eq!(
+        input.value(ParamName::Pheomelanin),
+        Some(ParamValue::Scalar(0.0))
+    );
+    input.set(ParamName::Pheomelanin, 0.5);
+    assert_eq!(
+        input.pigment,
+        Pigment::Melanin {
+            eumelanin: 1.5,
+            pheomelanin: 0.5
+        }
+    );
+    input.set(ParamName::SigmaCa, 2.0);
+    assert_eq!(input.value(ParamName::Eumelanin), None);
+    assert_eq!(
+        input.value(ParamName::SigmaCa),
+        Some(ParamValue::Rgb(Rgb::splat(2.0)))
+    );
+}
+
+#[test]
+fn resolved_fills_same_as_defaults_only() {
+    let mut input = human_hair();
+    input.beta_n_deg = None;
+    input.eta_m = None;
+    let r = input.resolved();
+    assert_eq!(r.beta_n_deg, Some(input.beta_m_deg));
+    assert_eq!(r.eta_m, Some(input.eta_c));
+    assert_eq!(r.resolved(), r);
+    input.eta_m = Some(1.4);
+    assert_eq!(input.resolved().eta_m, Some(1.4));
+    // Validation gives the same parameters either way.
+    assert_eq!(FurParams::new(&input), FurParams::new(&input.resolved()));
+}

@@ -66,8 +66,8 @@ use bcsdf_core::{FurParamsInput, Pigment, Rgb, MODEL_VERSION};
 use exr::prelude as x;
 use exr::prelude::traits::*;
 
+use crate::fsutil::AtomicWriter;
 use crate::metrics::{ErrorSummary, METRIC_NAMES};
-use crate::profiles::AtomicWriter;
 
 /// Metadata beside the tables (the tables' own header is inside the blob).
 #[derive(Clone, Debug, PartialEq)]

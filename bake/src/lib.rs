@@ -28,5 +28,5 @@ pub mod profiles;
 pub mod shard;
 pub mod tables;
 
-pub use overrides::{apply_overrides, Override, OverrideError, OverrideErrorKind, OverrideValue};
+pub use overrides::{apply_overrides, Override, OverrideError, OverrideErrorKind};
 pub use presets::{NamedPreset, PresetError};

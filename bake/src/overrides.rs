@@ -2,22 +2,13 @@
 //!
 //! The key is a [`ParamName::key`] (`eta_c`, `sigma_ca`, `kappa`, …). The value is one number;
 //! `sigma_ca` also takes three, `r,g,b`. Each value is checked against its parameter's valid
-//! range when parsed. Overrides apply left to right with [`FurParamsInput::set`]'s meaning:
+//! range when parsed. Overrides apply left to right with [`FurParamsInput::set_value`]'s meaning:
 //! `sigma_ca` replaces any melanin colour, and `eumelanin` / `pheomelanin` replace an RGB
 //! `sigma_ca` (the other concentration then starts from 0).
 
-use bcsdf_core::{FurParamsInput, ParamError, ParamName, Pigment, Rgb};
+use bcsdf_core::{FurParamsInput, ParamError, ParamName, ParamValue, Rgb};
 use std::fmt;
 use std::str::FromStr;
-
-/// The value of one override.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum OverrideValue {
-    /// One number (for `sigma_ca`: all three channels).
-    Scalar(f32),
-    /// `r,g,b`; only `sigma_ca` takes it.
-    Rgb(Rgb),
-}
 
 /// One parsed `key=value` override.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -25,7 +16,7 @@ pub struct Override {
     /// The parameter to set.
     pub name: ParamName,
     /// Its new value (already range-checked).
-    pub value: OverrideValue,
+    pub value: ParamValue,
 }
 
 /// What is wrong with an override.
@@ -55,11 +46,11 @@ pub struct OverrideError {
     pub kind: OverrideErrorKind,
 }
 
-/// All valid keys, comma-separated, in MODEL.md order.
+/// All valid keys, comma-separated, in schema order ([`bcsdf_core::SCHEMA`]).
 pub fn valid_keys() -> String {
-    ParamName::ALL
+    bcsdf_core::SCHEMA
         .iter()
-        .map(|p| p.key())
+        .map(|s| s.key)
         .collect::<Vec<_>>()
         .join(", ")
 }
@@ -121,19 +112,16 @@ impl Override {
                 .map_err(|e| fail(OverrideErrorKind::OutOfRange(e)))?;
         }
         let value = if parts.len() == 3 {
-            OverrideValue::Rgb(Rgb(numbers))
+            ParamValue::Rgb(Rgb(numbers))
         } else {
-            OverrideValue::Scalar(numbers[0])
+            ParamValue::Scalar(numbers[0])
         };
         Ok(Override { name, value })
     }
 
     /// Applies this override to `input`.
     pub fn apply(&self, input: &mut FurParamsInput) {
-        match self.value {
-            OverrideValue::Scalar(v) => input.set(self.name, v),
-            OverrideValue::Rgb(rgb) => input.pigment = Pigment::Absorption(rgb),
-        }
+        input.set_value(self.name, self.value);
     }
 }
 

@@ -1,11 +1,12 @@
-//! Preset files (MODEL.md §9): named parameter sets in TOML.
+//! Preset files (docs/model.md §9): named parameter sets in TOML.
 //!
 //! The format is the one of `bcsdf-core/presets.toml` (see its header comment): one
 //! `[[preset]]` table per preset with
 //!
 //! - `name`, `source`: text; `source` records where the numbers come from;
-//! - `eta_c`, `alpha_deg`, `beta_m_deg`, `l`, `kappa`, `sigma_ms`, `g`: required numbers;
-//! - `beta_n_deg` (default `beta_m_deg`), `eta_m` (default `eta_c`), `sigma_ma` (default 0);
+//! - one number per parameter of the schema ([`bcsdf_core::SCHEMA`]: key, domain, default),
+//!   e.g. `eta_c`, `alpha_deg`, `kappa`; a parameter with a default may be left out
+//!   (`beta_n_deg` follows `beta_m_deg`, `eta_m` follows `eta_c`, `sigma_ma` is 0);
 //! - the colour, exactly one of: `sigma_ca = value` or `sigma_ca = [r, g, b]`, or
 //!   `eumelanin` and/or `pheomelanin` (concentrations, the missing one is 0).
 //!
@@ -14,8 +15,9 @@
 //! the file, the line, the preset and the field, e.g.
 //! `presets.toml:12: preset "foo": invalid kappa = 1.2: valid range is [0, 0.99]`.
 
-use bcsdf_core::{FurParams, FurParamsInput, ParamName, Pigment, Rgb};
-use serde::de::{self, Deserializer, SeqAccess, Visitor};
+use bcsdf_core::{
+    FurParams, FurParamsInput, InputError, ParamDefault, ParamName, ParamValue, Rgb, SCHEMA,
+};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::fmt;
@@ -113,7 +115,12 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<NamedPreset>, PresetError> {
     let mut out: Vec<NamedPreset> = Vec::with_capacity(raw.preset.len());
     let mut first_line: BTreeMap<String, usize> = BTreeMap::new();
     for entry in &raw.preset {
-        let preset = entry.get_ref();
+        let preset = RawPreset::read(entry).map_err(|(span, preset, message)| PresetError {
+            file: file.to_string(),
+            line: Some(line_of(text, span.start)),
+            preset,
+            message,
+        })?;
         let err = |span: Range<usize>, message: String| PresetError {
             file: file.to_string(),
             line: Some(line_of(text, span.start)),
@@ -182,7 +189,7 @@ fn toml_error(text: &str, file: &str, e: &toml::de::Error) -> PresetError {
     }
     let mut preset = None;
     let line = e.span().map(|span| {
-        if let Ok(lenient) = toml::from_str::<LenientFile>(text) {
+        if let Ok(lenient) = toml::from_str::<RawFile>(text) {
             if let Some(table) = lenient
                 .preset
                 .iter()
@@ -216,143 +223,147 @@ fn contains(span: &Range<usize>, pos: usize) -> bool {
     span.start <= pos && (pos < span.end || span.is_empty() && pos == span.start)
 }
 
-/// Only used to give context to an error of the strict parse.
-#[derive(Deserialize)]
-struct LenientFile {
-    #[serde(default)]
-    #[allow(clippy::type_complexity)]
-    preset: Vec<Spanned<BTreeMap<Spanned<String>, Spanned<toml::Value>>>>,
-}
+/// A preset table as written: every key and value with its span.
+type RawTable = BTreeMap<Spanned<String>, Spanned<toml::Value>>;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawFile {
     #[serde(default)]
-    preset: Vec<Spanned<RawPreset>>,
+    preset: Vec<Spanned<RawTable>>,
 }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
+/// One preset table, its keys checked against the parameter schema
+/// ([`bcsdf_core::SCHEMA`]): `name`, `source` and one value per given parameter.
 struct RawPreset {
     name: Spanned<String>,
     source: Spanned<String>,
-    eta_c: Spanned<f32>,
-    sigma_ca: Option<Spanned<SigmaCa>>,
-    eumelanin: Option<Spanned<f32>>,
-    pheomelanin: Option<Spanned<f32>>,
-    alpha_deg: Spanned<f32>,
-    beta_m_deg: Spanned<f32>,
-    beta_n_deg: Option<Spanned<f32>>,
-    l: Spanned<f32>,
-    kappa: Spanned<f32>,
-    eta_m: Option<Spanned<f32>>,
-    sigma_ms: Spanned<f32>,
-    sigma_ma: Option<Spanned<f32>>,
-    g: Spanned<f32>,
+    values: Vec<(ParamName, ParamValue, Range<usize>)>,
 }
 
+/// The keys of a preset table besides the parameters.
+const TEXT_KEYS: [&str; 2] = ["name", "source"];
+
 impl RawPreset {
-    /// The unvalidated input; fails only on the colour rule (`table`: the preset's span).
-    fn to_input(&self, table: Range<usize>) -> Result<FurParamsInput, (Range<usize>, String)> {
-        let value = |s: &Spanned<f32>| *s.get_ref();
-        let opt = |s: &Option<Spanned<f32>>| s.as_ref().map(value);
-        let pigment =
-            match (&self.sigma_ca, &self.eumelanin, &self.pheomelanin) {
-                (Some(s), None, None) => Pigment::Absorption(s.get_ref().0),
-                (None, None, None) => return Err((
-                    table,
-                    "no colour: give sigma_ca = value | [r, g, b], or eumelanin and/or pheomelanin"
-                        .to_string(),
+    /// Reads the table's keys: unknown keys and values of the wrong type are errors at
+    /// their span; a missing `name` or `source` is an error at the table.
+    fn read(
+        table: &Spanned<RawTable>,
+    ) -> Result<RawPreset, (Range<usize>, Option<String>, String)> {
+        let entries = table.get_ref();
+        let text_of = |key: &str| {
+            entries
+                .iter()
+                .find(|(k, _)| k.get_ref() == key)
+                .map(|(_, v)| v)
+        };
+        let name_value = text_of("name").and_then(|v| v.get_ref().as_str());
+        let preset_name = name_value.map(str::to_string);
+        let fail = |span: Range<usize>, message: String| (span, preset_name.clone(), message);
+        let text = |key: &str| match text_of(key) {
+            None => Err(fail(table.span(), format!("missing field `{key}`"))),
+            Some(v) => match v.get_ref().as_str() {
+                Some(t) => Ok(Spanned::new(v.span(), t.to_string())),
+                None => Err(fail(
+                    v.span(),
+                    format!(
+                        "{key}: invalid type: {}, expected a string",
+                        v.get_ref().type_str()
+                    ),
                 )),
-                (None, eu, pheo) => Pigment::Melanin {
-                    eumelanin: opt(eu).unwrap_or(0.0),
-                    pheomelanin: opt(pheo).unwrap_or(0.0),
-                },
-                (Some(s), eu, _) => {
-                    let other = if eu.is_some() {
-                        "eumelanin"
-                    } else {
-                        "pheomelanin"
-                    };
-                    return Err((
-                        s.span(),
-                        format!(
-                            "sigma_ca and {other} both given: give exactly one colour form, \
-                         sigma_ca or eumelanin/pheomelanin"
-                        ),
-                    ));
-                }
+            },
+        };
+        let (name, source) = (text("name")?, text("source")?);
+        let mut values = Vec::new();
+        for (key, value) in entries {
+            let key_text = key.get_ref().as_str();
+            if TEXT_KEYS.contains(&key_text) {
+                continue;
+            }
+            let Some(param) = ParamName::from_key(key_text) else {
+                return Err(fail(
+                    key.span(),
+                    format!(
+                        "unknown field `{key_text}`, expected one of {}",
+                        TEXT_KEYS
+                            .iter()
+                            .copied()
+                            .chain(SCHEMA.iter().map(|s| s.key))
+                            .map(|k| format!("`{k}`"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                ));
             };
-        Ok(FurParamsInput {
-            eta_c: value(&self.eta_c),
-            pigment,
-            alpha_deg: value(&self.alpha_deg),
-            beta_m_deg: value(&self.beta_m_deg),
-            beta_n_deg: opt(&self.beta_n_deg),
-            l: value(&self.l),
-            kappa: value(&self.kappa),
-            eta_m: opt(&self.eta_m),
-            sigma_ms: value(&self.sigma_ms),
-            sigma_ma: opt(&self.sigma_ma).unwrap_or(0.0),
-            g: value(&self.g),
+            let parsed = param_value(param, value.get_ref())
+                .map_err(|expected| fail(value.span(), format!("{key_text}: {expected}")))?;
+            values.push((param, parsed, value.span()));
+        }
+        Ok(RawPreset {
+            name,
+            source,
+            values,
         })
     }
 
-    /// Where the value of parameter `name` is written (the table when it is defaulted).
+    /// The unvalidated input; fails only on a missing parameter or the colour rule
+    /// (`table`: the preset's span).
+    fn to_input(&self, table: Range<usize>) -> Result<FurParamsInput, (Range<usize>, String)> {
+        FurParamsInput::from_values(|name| self.value_of(name).map(|(v, _)| v)).map_err(|e| {
+            let span = match e {
+                InputError::TwoColours { .. } => self.span_of(ParamName::SigmaCa, table),
+                InputError::Missing(_) | InputError::NoColour => table,
+            };
+            (span, e.to_string())
+        })
+    }
+
+    fn value_of(&self, name: ParamName) -> Option<(ParamValue, Range<usize>)> {
+        self.values
+            .iter()
+            .find(|(n, _, _)| *n == name)
+            .map(|(_, v, span)| (*v, span.clone()))
+    }
+
+    /// Where the value of parameter `name` is written: its own value, else (a defaulted
+    /// parameter) the value it defaults to, else the table.
     fn span_of(&self, name: ParamName, table: Range<usize>) -> Range<usize> {
-        let opt = |s: &Option<Spanned<f32>>| s.as_ref().map(Spanned::span);
-        let span = match name {
-            ParamName::EtaC => Some(self.eta_c.span()),
-            ParamName::SigmaCa => self.sigma_ca.as_ref().map(Spanned::span),
-            ParamName::Eumelanin => opt(&self.eumelanin),
-            ParamName::Pheomelanin => opt(&self.pheomelanin),
-            ParamName::AlphaDeg => Some(self.alpha_deg.span()),
-            ParamName::BetaMDeg => Some(self.beta_m_deg.span()),
-            ParamName::BetaNDeg => opt(&self.beta_n_deg).or(Some(self.beta_m_deg.span())),
-            ParamName::L => Some(self.l.span()),
-            ParamName::Kappa => Some(self.kappa.span()),
-            ParamName::EtaM => opt(&self.eta_m).or(Some(self.eta_c.span())),
-            ParamName::SigmaMs => Some(self.sigma_ms.span()),
-            ParamName::SigmaMa => opt(&self.sigma_ma),
-            ParamName::G => Some(self.g.span()),
+        let own = self.value_of(name).map(|(_, span)| span);
+        let source = match name.spec().default {
+            ParamDefault::SameAs(source) => self.value_of(source).map(|(_, span)| span),
+            _ => None,
         };
-        span.unwrap_or(table)
+        own.or(source).unwrap_or(table)
     }
 }
 
-/// `sigma_ca = value` (all channels) or `sigma_ca = [r, g, b]`.
-struct SigmaCa(Rgb);
-
-impl<'de> Deserialize<'de> for SigmaCa {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = SigmaCa;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a number or an array of three numbers [r, g, b]")
-            }
-            fn visit_f64<E: de::Error>(self, v: f64) -> Result<SigmaCa, E> {
-                Ok(SigmaCa(Rgb::splat(v as f32)))
-            }
-            fn visit_i64<E: de::Error>(self, v: i64) -> Result<SigmaCa, E> {
-                Ok(SigmaCa(Rgb::splat(v as f32)))
-            }
-            fn visit_u64<E: de::Error>(self, v: u64) -> Result<SigmaCa, E> {
-                Ok(SigmaCa(Rgb::splat(v as f32)))
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<SigmaCa, A::Error> {
-                let mut rgb = [0.0f32; 3];
-                for (i, c) in rgb.iter_mut().enumerate() {
-                    *c = seq
-                        .next_element::<f32>()?
-                        .ok_or_else(|| de::Error::invalid_length(i, &self))?;
-                }
-                if seq.next_element::<de::IgnoredAny>()?.is_some() {
-                    return Err(de::Error::invalid_length(4, &self));
-                }
-                Ok(SigmaCa(Rgb(rgb)))
+/// A parameter's value from TOML: a number (integers accepted), or for `sigma_ca` also
+/// `[r, g, b]`. The error says what was expected.
+fn param_value(name: ParamName, value: &toml::Value) -> Result<ParamValue, String> {
+    let number = |v: &toml::Value| match v {
+        toml::Value::Float(f) => Some(*f as f32),
+        toml::Value::Integer(i) => Some(*i as f32),
+        _ => None,
+    };
+    let rgb_ok = name == ParamName::SigmaCa;
+    let expected = if rgb_ok {
+        "a number or an array of three numbers [r, g, b]"
+    } else {
+        "a number"
+    };
+    match value {
+        toml::Value::Array(items) if rgb_ok => {
+            let numbers: Option<Vec<f32>> = items.iter().map(number).collect();
+            match numbers.as_deref() {
+                Some(&[r, g, b]) => Ok(ParamValue::Rgb(Rgb([r, g, b]))),
+                _ => Err(format!(
+                    "invalid value: an array of {} elements, expected {expected}",
+                    items.len()
+                )),
             }
         }
-        d.deserialize_any(V)
+        v => number(v)
+            .map(ParamValue::Scalar)
+            .ok_or_else(|| format!("invalid type: {}, expected {expected}", v.type_str())),
     }
 }

@@ -66,6 +66,9 @@ pub use math::FastMath;
 pub use math::{Libm, Math};
 pub use medulla::{MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout, Resolution};
 pub use model::{FurBcsdf, MODEL_VERSION};
-pub use params::{FurParams, FurParamsInput, ParamError, ParamName};
+pub use params::{
+    Domain, FurParams, FurParamsInput, InputError, ParamDefault, ParamError, ParamName, ParamSpec,
+    ParamValue, SCHEMA,
+};
 pub use pigment::Pigment;
 pub use spectrum::Rgb;

@@ -3,8 +3,7 @@
 //! sampler needs (docs/model.md §10), and the little-endian byte layout
 //! the core reads in place (from `include_bytes!`, a memory map or a loaded file).
 //!
-//! Over 600 lines (header layout, validation, errors); the sampling section already lives in
-//! [`cdf`]; splitting the header codec from validation is left to issue 13.
+//! The header codec is in `header.rs`, the sampling section in [`cdf`].
 //!
 //! The far field is
 //!
@@ -56,11 +55,10 @@
 //! | [`LutResolution::sampling_start`] | sampling section (f32 prefix sums, [`cdf`]) |
 
 pub mod cdf;
+mod header;
 
 use crate::medulla::{PhotonBudget, Resolution};
-use crate::params::{FurParams, FurParamsInput, ParamError};
-use crate::pigment::Pigment;
-use crate::spectrum::Rgb;
+use crate::params::{FurParamsInput, ParamError};
 use core::fmt;
 use core::ops::Range;
 
@@ -91,6 +89,7 @@ pub const MAX_VALUES: usize = 1 << 26;
 pub const SCALE_RANGE: (f32, f32) = (1.0 / (1u64 << 60) as f32, (1u32 << 15) as f32);
 
 /// FNV-1a 64 (the LUT checksum; also used by the profile cache).
+#[must_use]
 pub fn fnv1a64(bytes: &[u8]) -> u64 {
     fnv1a64_continue(0xcbf2_9ce4_8422_2325, bytes)
 }
@@ -129,6 +128,7 @@ impl Table {
     pub const ALL: [Table; TABLE_COUNT] = [Table::M, Table::N, Table::MS];
 
     /// Layer name in the EXR file and in messages.
+    #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
             Table::M => "M",
@@ -138,6 +138,7 @@ impl Table {
     }
 
     /// Channel names, in texel order.
+    #[must_use]
     pub const fn channel_names(self) -> &'static [&'static str] {
         match self {
             Table::M => &["R", "TT", "TRT"],
@@ -147,6 +148,7 @@ impl Table {
     }
 
     /// Channels per texel.
+    #[must_use]
     pub const fn channels(self) -> usize {
         self.channel_names().len()
     }
@@ -178,6 +180,7 @@ impl LutResolution {
     };
 
     /// The node counts with their names, for messages and metadata.
+    #[must_use]
     pub fn axes(&self) -> [(&'static str, u32); 5] {
         [
             ("n_sum", self.n_sum),
@@ -205,6 +208,7 @@ impl LutResolution {
     }
 
     /// (width, height) of a table in texels.
+    #[must_use]
     pub fn dims(&self, table: Table) -> (usize, usize) {
         match table {
             Table::M => (self.n_sum as usize, 1),
@@ -214,17 +218,20 @@ impl LutResolution {
     }
 
     /// Number of f16 values in a table.
+    #[must_use]
     pub fn values(&self, table: Table) -> usize {
         let (w, h) = self.dims(table);
         w * h * table.channels()
     }
 
     /// Number of f16 values in all tables.
+    #[must_use]
     pub fn total_values(&self) -> usize {
         Table::ALL.iter().map(|&t| self.values(t)).sum()
     }
 
     /// Byte range of a table inside the blob.
+    #[must_use]
     pub fn byte_range(&self, table: Table) -> Range<usize> {
         let start = HEADER_LEN
             + Table::ALL[..table as usize]
@@ -235,6 +242,7 @@ impl LutResolution {
     }
 
     /// Length of the whole blob in bytes: header, tables and sampling section.
+    #[must_use]
     pub fn blob_len(&self) -> usize {
         self.sampling_start() + 4 * self.sampling_values()
     }
@@ -344,6 +352,8 @@ pub enum LutError {
     },
 }
 
+impl core::error::Error for LutError {}
+
 impl fmt::Display for LutError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
@@ -403,6 +413,7 @@ impl fmt::Display for LutError {
 /// alike), which the caller multiplies back, usually folded into the table scale
 /// ([`F16_UNBIAS`]).
 #[inline(always)]
+#[must_use]
 pub fn f16_biased(bits: u16) -> f32 {
     f32::from_bits(u32::from(bits) << 13)
 }
@@ -413,6 +424,7 @@ pub const F16_UNBIAS: f32 = f32::from_bits((127 + 112) << 23);
 /// Checks that the bits are a non-negative finite half (sign bit clear, exponent not all
 /// ones).
 #[inline]
+#[must_use]
 pub fn is_valid_value(bits: u16) -> bool {
     bits & 0x8000 == 0 && bits & 0x7c00 != 0x7c00
 }
@@ -421,237 +433,8 @@ fn is_valid_scale(s: f32) -> bool {
     s.is_finite() && (SCALE_RANGE.0..=SCALE_RANGE.1).contains(&s) && s.to_bits() & 0x007f_ffff == 0
 }
 
-struct Writer<'a> {
-    out: &'a mut [u8; HEADER_LEN],
-    at: usize,
-}
-
-impl Writer<'_> {
-    fn bytes(&mut self, b: &[u8]) {
-        self.out[self.at..self.at + b.len()].copy_from_slice(b);
-        self.at += b.len();
-    }
-    fn u32(&mut self, v: u32) {
-        self.bytes(&v.to_le_bytes());
-    }
-    fn u64(&mut self, v: u64) {
-        self.bytes(&v.to_le_bytes());
-    }
-    fn f32(&mut self, v: f32) {
-        self.bytes(&v.to_le_bytes());
-    }
-}
-
-struct Reader<'a> {
-    bytes: &'a [u8],
-    at: usize,
-}
-
-impl Reader<'_> {
-    fn take<const N: usize>(&mut self) -> [u8; N] {
-        let mut b = [0u8; N];
-        // The caller checked the header length; a short read would leave zeros, never panic.
-        if let Some(src) = self.bytes.get(self.at..self.at + N) {
-            b.copy_from_slice(src);
-        }
-        self.at += N;
-        b
-    }
-    fn u32(&mut self) -> u32 {
-        u32::from_le_bytes(self.take())
-    }
-    fn u64(&mut self) -> u64 {
-        u64::from_le_bytes(self.take())
-    }
-    fn f32(&mut self) -> f32 {
-        f32::from_le_bytes(self.take())
-    }
-}
-
-impl LutHeader {
-    /// The header as bytes, checksum field zero (see [`seal`]).
-    pub fn encode(&self) -> [u8; HEADER_LEN] {
-        let mut out = [0u8; HEADER_LEN];
-        let mut w = Writer {
-            out: &mut out,
-            at: 0,
-        };
-        w.bytes(&MAGIC);
-        w.u32(FORMAT_VERSION);
-        w.u32(crate::model::MODEL_VERSION);
-        for (_, n) in self.res.axes() {
-            w.u32(n);
-        }
-        for s in self.scales {
-            w.f32(s);
-        }
-        let p = &self.params;
-        w.f32(p.eta_c);
-        let (kind, pig) = match p.pigment {
-            Pigment::Absorption(s) => (0, s.0),
-            Pigment::Melanin {
-                eumelanin,
-                pheomelanin,
-            } => (1, [eumelanin, pheomelanin, 0.0]),
-        };
-        w.u32(kind);
-        for v in pig {
-            w.f32(v);
-        }
-        for v in [
-            p.alpha_deg,
-            p.beta_m_deg,
-            p.beta_n_deg.unwrap_or(p.beta_m_deg),
-            p.l,
-            p.kappa,
-            p.eta_m.unwrap_or(p.eta_c),
-            p.sigma_ms,
-            p.sigma_ma,
-            p.g,
-        ] {
-            w.f32(v);
-        }
-        match &self.profiles {
-            Some(pr) => {
-                w.u32(1);
-                w.u32(pr.generator_version);
-                w.u64(pr.seed);
-                w.u32(pr.budget.per_cn_cell);
-                w.u32(pr.budget.per_cm_row);
-                for n in [
-                    pr.res.n_sigma,
-                    pr.res.n_h,
-                    pr.res.n_psi,
-                    pr.res.n_in,
-                    pr.res.n_out,
-                ] {
-                    w.u32(n as u32);
-                }
-            }
-            None => w.bytes(&[0u8; CHECKSUM.start - PROFILES]),
-        }
-        debug_assert_eq!(w.at, CHECKSUM.start);
-        out
-    }
-
-    /// Reads and checks the header of `bytes` (magic, versions, resolution, total length,
-    /// scales, parameters, flags); the table values and checksum are checked by
-    /// [`validate`].
-    pub fn decode(bytes: &[u8]) -> Result<LutHeader, LutError> {
-        if bytes.len() < HEADER_LEN {
-            return Err(LutError::TooShort { len: bytes.len() });
-        }
-        if bytes[..8] != MAGIC {
-            return Err(LutError::BadMagic);
-        }
-        let mut r = Reader { bytes, at: 8 };
-        let format = r.u32();
-        if format != FORMAT_VERSION {
-            return Err(LutError::FormatVersion { found: format });
-        }
-        let model = r.u32();
-        if model != crate::model::MODEL_VERSION {
-            return Err(LutError::ModelVersion { found: model });
-        }
-        let res = LutResolution {
-            n_sum: r.u32(),
-            n_theta_r: r.u32(),
-            n_phi: r.u32(),
-            n_ms_i: r.u32(),
-            n_ms_r: r.u32(),
-        };
-        res.validate()?;
-        if bytes.len() != res.blob_len() {
-            return Err(LutError::Length {
-                expected: res.blob_len(),
-                found: bytes.len(),
-            });
-        }
-        let mut scales = [0.0; TABLE_COUNT];
-        for (t, s) in Table::ALL.iter().zip(scales.iter_mut()) {
-            *s = r.f32();
-            if !is_valid_scale(*s) {
-                return Err(LutError::Scale {
-                    table: *t,
-                    value: *s,
-                });
-            }
-        }
-        let eta_c = r.f32();
-        let kind = r.u32();
-        let pig = [r.f32(), r.f32(), r.f32()];
-        let pigment = match kind {
-            0 => Pigment::Absorption(Rgb(pig)),
-            1 if pig[2] == 0.0 => Pigment::Melanin {
-                eumelanin: pig[0],
-                pheomelanin: pig[1],
-            },
-            _ => return Err(LutError::Field { field: "pigment" }),
-        };
-        let mut v = [0.0f32; 9];
-        for x in v.iter_mut() {
-            *x = r.f32();
-        }
-        let params = FurParamsInput {
-            eta_c,
-            pigment,
-            alpha_deg: v[0],
-            beta_m_deg: v[1],
-            beta_n_deg: Some(v[2]),
-            l: v[3],
-            kappa: v[4],
-            eta_m: Some(v[5]),
-            sigma_ms: v[6],
-            sigma_ma: v[7],
-            g: v[8],
-        };
-        FurParams::new(&params).map_err(LutError::Params)?;
-        let has_profiles = r.u32();
-        let generator_version = r.u32();
-        let seed = r.u64();
-        let budget = PhotonBudget {
-            per_cn_cell: r.u32(),
-            per_cm_row: r.u32(),
-        };
-        let pres = Resolution {
-            n_sigma: r.u32() as usize,
-            n_h: r.u32() as usize,
-            n_psi: r.u32() as usize,
-            n_in: r.u32() as usize,
-            n_out: r.u32() as usize,
-        };
-        let profiles = match has_profiles {
-            0 => {
-                if bytes[PROFILES..CHECKSUM.start].iter().any(|&b| b != 0) {
-                    return Err(LutError::Field { field: "profiles" });
-                }
-                None
-            }
-            1 => Some(ProfileProvenance {
-                generator_version,
-                seed,
-                budget,
-                res: pres,
-            }),
-            _ => {
-                return Err(LutError::Field {
-                    field: "has_profiles",
-                })
-            }
-        };
-        if bytes[CHECKSUM.end..HEADER_LEN].iter().any(|&b| b != 0) {
-            return Err(LutError::Field { field: "reserved" });
-        }
-        Ok(LutHeader {
-            res,
-            scales,
-            params,
-            profiles,
-        })
-    }
-}
-
 /// The checksum of a blob: FNV-1a 64 over every byte except the checksum field.
+#[must_use]
 pub fn checksum(blob: &[u8]) -> u64 {
     let head = blob.get(..CHECKSUM.start).unwrap_or(blob);
     let tail = blob.get(CHECKSUM.end..).unwrap_or(&[]);

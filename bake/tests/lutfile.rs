@@ -750,10 +750,13 @@ proptest! {
     }
 }
 
+/// Named byte ranges of a file.
+type Spans = Vec<(String, Range<usize>)>;
+
 /// The layout of a multi-part EXR file: every attribute of every part header (name and the
 /// byte range of the whole attribute: name, type, size, value), and the byte ranges of the
 /// compressed pixel data of every chunk.
-fn exr_layout(bytes: &[u8]) -> (Vec<(String, Range<usize>)>, Vec<Range<usize>>) {
+fn exr_layout(bytes: &[u8]) -> (Spans, Vec<Range<usize>>) {
     let cstr_end = |at: usize| at + bytes[at..].iter().position(|&b| b == 0).unwrap() + 1;
     let i32_at = |at: usize| i32::from_le_bytes(bytes[at..at + 4].try_into().unwrap());
     let mut spans = Vec::new();

@@ -27,6 +27,8 @@
 //! the table lengths, and finally every value through [`MedullaProfiles::new`]. The first
 //! failure is a [`CacheError`] with a one-line message.
 //!
+//! [`MedullaProfiles::new`]: bcsdf_core::medulla::MedullaProfiles::new
+//!
 //! Files are written atomically ([`AtomicWriter`]): to a temporary file in the cache
 //! directory, flushed to disk, then renamed over the final name, so a reader sees the old file
 //! or the new one, never a half-written one; a write that fails or is interrupted leaves any

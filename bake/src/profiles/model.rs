@@ -52,6 +52,8 @@ pub struct OwnedModel {
 impl OwnedModel {
     /// Pairs `params` with `profiles`, which must have been made for them
     /// ([`ProfileLayout::matches`]); `None` gives the unscattered model.
+    ///
+    /// [`ProfileLayout::matches`]: bcsdf_core::medulla::ProfileLayout::matches
     pub fn new(
         params: FurParams,
         profiles: Option<OwnedProfiles>,

@@ -12,7 +12,7 @@
 //! |---|---|---|
 //! | `lut_format_version` | int | [`lut::FORMAT_VERSION`] (checked first: a LUT of another format is refused by its version, whatever else changed) |
 //! | `model_version` | int | [`bcsdf_core::MODEL_VERSION`] (checked first, likewise) |
-//! | `lut_header` | bytes (type hint `furlut_header`) | the blob's first [`HEADER_LEN`] bytes, verbatim: magic, versions, resolution, scales, parameters, profile provenance, checksum |
+//! | `lut_header` | bytes (type hint `furlut_header`, not checked) | the blob's first [`HEADER_LEN`] bytes, verbatim: magic, versions, resolution, scales, parameters, profile provenance, checksum |
 //! | `preset` | string | preset name (UTF-8) |
 //! | `E1_R` … `E_peak_B` | double | the measured error summary (nine values: `E1`, `E_albedo`, `E_peak` × `R`, `G`, `B`; all or none) |
 //! | `meta_checksum` | string | FNV-1a 64 of the preset name and error summary, 16 hex digits |

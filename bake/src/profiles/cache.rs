@@ -27,8 +27,6 @@
 //! the table lengths, and finally every value through [`MedullaProfiles::new`]. The first
 //! failure is a [`CacheError`] with a one-line message.
 //!
-//! [`MedullaProfiles::new`]: bcsdf_core::medulla::MedullaProfiles::new
-//!
 //! Files are written atomically ([`AtomicWriter`]): to a temporary file in the cache
 //! directory, flushed to disk, then renamed over the final name, so a reader sees the old file
 //! or the new one, never a half-written one; a write that fails or is interrupted leaves any
@@ -39,6 +37,8 @@
 //! reported before any generation work: pass no cache directory to work without a cache.
 //! A read-only directory that already holds a valid file for the key is fine (a hit only
 //! reads).
+//!
+//! [`MedullaProfiles::new`]: bcsdf_core::medulla::MedullaProfiles::new
 
 use super::generate::generate_parallel;
 use super::{Error, OwnedProfiles};

@@ -7,8 +7,8 @@
 //! field evaluation costs 10–40 µs, and up to ~1 ms for the narrowest roughness.
 
 use bcsdf_core::{
-    presets, Angles, FurBcsdf, FurParams, FurParamsInput, Lobes, ParamName, Pigment, Rgb, Vec3,
-    LOBE_COUNT,
+    presets, Angles, FurBcsdf, FurParams, FurParamsInput, Lobes, ParamName, ParamValue, Pigment,
+    Rgb, Vec3, LOBE_COUNT,
 };
 use proptest::prelude::*;
 
@@ -194,32 +194,11 @@ proptest! {
     }
 }
 
-/// One parameter set to an invalid value.
+/// One parameter set to an invalid value (σ_ca: in its green channel only).
 fn set_invalid(input: &mut FurParamsInput, name: ParamName, v: f32) {
     match name {
-        ParamName::SigmaCa => input.pigment = Pigment::Absorption(Rgb([0.5, v, 0.5])),
-        ParamName::Eumelanin => {
-            input.pigment = Pigment::Melanin {
-                eumelanin: v,
-                pheomelanin: 0.1,
-            }
-        }
-        ParamName::Pheomelanin => {
-            input.pigment = Pigment::Melanin {
-                eumelanin: 0.1,
-                pheomelanin: v,
-            }
-        }
-        ParamName::EtaC => input.eta_c = v,
-        ParamName::AlphaDeg => input.alpha_deg = v,
-        ParamName::BetaMDeg => input.beta_m_deg = v,
-        ParamName::BetaNDeg => input.beta_n_deg = Some(v),
-        ParamName::L => input.l = v,
-        ParamName::Kappa => input.kappa = v,
-        ParamName::EtaM => input.eta_m = Some(v),
-        ParamName::SigmaMs => input.sigma_ms = v,
-        ParamName::SigmaMa => input.sigma_ma = v,
-        ParamName::G => input.g = v,
+        ParamName::SigmaCa => input.set_value(name, ParamValue::Rgb(Rgb([0.5, v, 0.5]))),
+        _ => input.set(name, v),
     }
 }
 

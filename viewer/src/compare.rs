@@ -1,15 +1,14 @@
 //! `viewer compare`: a baked LUT against the analytic model it was baked from.
 //!
-//! Over 600 lines: the run loop, model rebuilding and image writing; moving the report model
-//! and image writing out is issue 13, not done yet.
-//!
 //! For each LUT: read it (`bake::lutfile::read_exr`) and validate its tables, rebuild the
 //! analytic model from the parameters and profile provenance in its header
 //! (`bake::tables::rebuild_model`, profiles from the cache when present), measure both with
 //! the shared metrics (`bake::metrics::compare` on `MetricSet::DEFAULT`), print a table per
 //! RGB channel against the budget, and (unless `--no-images`) write the figures
-//! ([`crate::figures`]), the fur renders ([`crate::render`]), `compare.json` and an
-//! `index.html` page ([`crate::summary`]).
+//! ([`crate::figures`]), the fur renders ([`crate::render`]), `compare.json`
+//! ([`crate::report::Report`]) and an `index.html` page ([`crate::summary`]). What was
+//! measured is the report model of [`crate::report`]; this module runs the comparison and
+//! prints its text tables.
 //!
 //! Exit codes: 0 within budget; 3 when a metric exceeds the budget (stderr names each
 //! metric and channel); 2 for bad input (missing, corrupt or incompatible LUT, bad
@@ -20,9 +19,14 @@
 use crate::cli::CompareArgs;
 use crate::error::Error;
 use crate::figures::{self, HEATMAP_SIZE, POLAR_SIZE};
+use crate::json;
 use crate::plot::write_file;
-use crate::render::{self, RENDER_H, RENDER_W};
-use crate::summary::{self, Image, IndexRow, PresetPage};
+use crate::render;
+use crate::report::{
+    budget_rows, compare_folder, named_pcts, pct, stem, verdict, worst_rows, IndexRow, Outcome,
+    Report,
+};
+use crate::summary::{self, PresetPage};
 use bake::lutfile::{self, LutFile};
 use bake::metrics::{self, ErrorBudget, ErrorSummary, Exceeded, MetricSet, METRIC_NAMES};
 use bake::profiles::{self, OwnedModel};
@@ -34,55 +38,6 @@ use std::fs;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
-
-/// The image files written per LUT, with their fixed sizes and what they show.
-pub const IMAGES: [(&str, (usize, usize), &str); 6] = [
-    (
-        "heatmap.png",
-        HEATMAP_SIZE,
-        "S cos^2 theta_i over (theta_i, phi) for four theta_r: analytic | baked | relative error",
-    ),
-    (
-        "polar.png",
-        POLAR_SIZE,
-        "S over phi per lobe family at fixed (theta_i, theta_r): analytic solid, baked dashed",
-    ),
-    (
-        "analytic.png",
-        (RENDER_W, RENDER_H),
-        "fur patch lit by one directional light, analytic far field",
-    ),
-    (
-        "baked.png",
-        (RENDER_W, RENDER_H),
-        "the same patch with the baked tables (same exposure)",
-    ),
-    (
-        "difference.png",
-        (RENDER_W, RENDER_H),
-        "|baked - analytic|, amplified by 1 / E1 budget, same exposure",
-    ),
-    (
-        "families.png",
-        (RENDER_W, RENDER_H),
-        "the analytic render split into the lobe families R, TT, TRT and scattered",
-    ),
-];
-
-/// What one LUT's comparison measured.
-#[derive(Clone, Debug)]
-pub struct Outcome {
-    /// Preset name stored in the LUT.
-    pub preset: String,
-    /// The metrics.
-    pub errors: ErrorSummary,
-    /// Metrics above the budget.
-    pub exceeded: Vec<Exceeded>,
-    /// Mean relative difference of the renders per channel (when images were made).
-    pub render: Option<[f64; 3]>,
-    /// The page written (when images were made).
-    pub page: Option<PathBuf>,
-}
 
 /// Why one LUT could not be compared.
 #[derive(Debug)]
@@ -132,7 +87,7 @@ fn run_one(lut: &Path, args: &CompareArgs, budget: &ErrorBudget) -> Result<(), E
         Err(Failure::Input(m)) => return Err(Error::Input(m)),
         Err(Failure::Fatal(e)) => return Err(e),
     };
-    if outcome.exceeded.is_empty() {
+    if outcome.pass() {
         Ok(())
     } else {
         Err(Error::Budget(over_budget_message(lut, &outcome.exceeded)))
@@ -154,7 +109,7 @@ fn run_all(dir: &Path, args: &CompareArgs, budget: &ErrorBudget) -> Result<(), E
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let out = (!args.no_images).then(|| root.join(format!("{}-compare", stem(lut))));
+        let out = (!args.no_images).then(|| root.join(compare_folder(lut)));
         let result = load(lut).map_err(Failure::Input).and_then(|file| {
             if let Some(dir) = &out {
                 prepare_out_dir(dir).map_err(Failure::Fatal)?;
@@ -163,7 +118,7 @@ fn run_all(dir: &Path, args: &CompareArgs, budget: &ErrorBudget) -> Result<(), E
         });
         match result {
             Ok(outcome) => {
-                if !outcome.exceeded.is_empty() {
+                if !outcome.pass() {
                     eprintln_line(&format!(
                         "error: {}",
                         over_budget_message(lut, &outcome.exceeded)
@@ -254,13 +209,7 @@ fn load(path: &Path) -> Result<LutFile, String> {
 
 /// `<lut-stem>-compare/` beside the LUT.
 fn default_out(lut: &Path) -> PathBuf {
-    lut.with_file_name(format!("{}-compare", stem(lut)))
-}
-
-fn stem(path: &Path) -> String {
-    path.file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "lut".into())
+    lut.with_file_name(compare_folder(lut))
 }
 
 /// Creates `dir` if needed and checks a file can be written in it (before any work).
@@ -448,24 +397,12 @@ fn write_images(
     renders.families().write_png(&dir.join("families.png"))?;
     outcome.render = Some(diff);
 
-    let images: Vec<Image> = IMAGES
-        .iter()
-        .map(|&(name, size, caption)| Image {
-            file: name,
-            size,
-            caption,
-        })
-        .collect();
     let page = PresetPage {
-        preset: &preset,
         lut,
         header,
-        errors: &outcome.errors,
+        outcome,
         stored: file.meta.errors.as_ref(),
         budget,
-        exceeded: &outcome.exceeded,
-        render: diff,
-        images: &images,
     };
     write_file(
         &dir.join("index.html"),
@@ -473,19 +410,10 @@ fn write_images(
     )?;
     write_file(
         &dir.join("compare.json"),
-        json_report(lut, outcome, budget).as_bytes(),
+        json::pretty(&Report::new(lut, outcome, budget)).as_bytes(),
     )?;
     outcome.page = Some(dir.join("index.html"));
     Ok(())
-}
-
-/// A percentage with three decimals: `0.123%`.
-pub fn pct(v: f64) -> String {
-    if v.is_finite() {
-        format!("{:.3}%", 100.0 * v)
-    } else {
-        format!("{v}")
-    }
 }
 
 /// The per-LUT table: one row per metric, R G B columns in percent, budget and result.
@@ -502,18 +430,17 @@ fn preset_table(
         "  {:<9} {:>9} {:>9} {:>9} {:>9}  result",
         "metric", "R", "G", "B", "budget"
     );
-    let bounds = [budget.e1, budget.e_albedo, budget.e_peak];
-    for ((name, v), bound) in o.errors.rows().into_iter().zip(bounds) {
-        let fail = o.exceeded.iter().any(|e| e.metric == name);
+    for row in o.metric_rows(budget) {
+        let v = row.values;
         let _ = writeln!(
             out,
             "  {:<9} {:>9} {:>9} {:>9} {:>9}  {}",
-            name,
+            row.name,
             pct(v[0]),
             pct(v[1]),
             pct(v[2]),
-            pct(bound),
-            if fail { "FAIL" } else { "PASS" }
+            pct(row.budget),
+            verdict(row.pass)
         );
     }
     if let Some(r) = o.render {
@@ -527,16 +454,10 @@ fn preset_table(
         );
     }
     if let Some(s) = stored {
-        let w = s.worst();
         let _ = writeln!(
             out,
-            "  stored at bake time (worst channel): {} {}, {} {}, {} {}",
-            METRIC_NAMES[0],
-            pct(w[0]),
-            METRIC_NAMES[1],
-            pct(w[1]),
-            METRIC_NAMES[2],
-            pct(w[2])
+            "  stored at bake time (worst channel): {}",
+            named_pcts(&worst_rows(s))
         );
     }
 }
@@ -545,25 +466,21 @@ fn preset_table(
 fn summary_table(out: &mut String, rows: &[IndexRow], budget: &ErrorBudget) {
     let _ = writeln!(
         out,
-        "\nsummary of {} LUTs (worst channel; budget E1 {}, E_albedo {}, E_peak {}):",
+        "\nsummary of {} LUTs (worst channel; budget {}):",
         rows.len(),
-        pct(budget.e1),
-        pct(budget.e_albedo),
-        pct(budget.e_peak)
+        named_pcts(&budget_rows(budget))
     );
+    let [m0, m1, m2] = METRIC_NAMES;
     let _ = writeln!(
         out,
-        "  {:<28} {:<16} {:>9} {:>9} {:>9} {:>9}  result",
-        "LUT", "preset", "E1", "E_albedo", "E_peak", "render"
+        "  {:<28} {:<16} {m0:>9} {m1:>9} {m2:>9} {:>9}  result",
+        "LUT", "preset", "render"
     );
     for row in rows {
         match &row.outcome {
             Ok(o) => {
                 let w = o.errors.worst();
-                let render = o
-                    .render
-                    .map(|r| pct(r[0].max(r[1]).max(r[2])))
-                    .unwrap_or_else(|| "-".into());
+                let render = o.render_worst().map_or_else(|| "-".into(), pct);
                 let _ = writeln!(
                     out,
                     "  {:<28} {:<16} {:>9} {:>9} {:>9} {:>9}  {}",
@@ -573,11 +490,7 @@ fn summary_table(out: &mut String, rows: &[IndexRow], budget: &ErrorBudget) {
                     pct(w[1]),
                     pct(w[2]),
                     render,
-                    if o.exceeded.is_empty() {
-                        "PASS"
-                    } else {
-                        "FAIL"
-                    }
+                    verdict(o.pass())
                 );
             }
             Err(_) => {
@@ -589,63 +502,6 @@ fn summary_table(out: &mut String, rows: &[IndexRow], budget: &ErrorBudget) {
             }
         }
     }
-}
-
-/// `compare.json`: the numbers of the page, for scripts and tests.
-fn json_report(lut: &Path, o: &Outcome, budget: &ErrorBudget) -> String {
-    let num = |v: f64| {
-        if v.is_finite() {
-            format!("{v}")
-        } else {
-            "null".into()
-        }
-    };
-    let triple = |v: [f64; 3]| format!("[{},{},{}]", num(v[0]), num(v[1]), num(v[2]));
-    let mut s = String::from("{\n");
-    let _ = writeln!(
-        s,
-        "  \"lut\": {},",
-        summary::json_string(&lut.display().to_string())
-    );
-    let _ = writeln!(s, "  \"preset\": {},", summary::json_string(&o.preset));
-    let _ = writeln!(
-        s,
-        "  \"budget\": {{\"E1\": {}, \"E_albedo\": {}, \"E_peak\": {}}},",
-        num(budget.e1),
-        num(budget.e_albedo),
-        num(budget.e_peak)
-    );
-    let _ = writeln!(
-        s,
-        "  \"metrics\": {{\"E1\": {}, \"E_albedo\": {}, \"E_peak\": {}}},",
-        triple(o.errors.e1),
-        triple(o.errors.e_albedo),
-        triple(o.errors.e_peak)
-    );
-    let exceeded: Vec<String> = o
-        .exceeded
-        .iter()
-        .map(|e| {
-            format!(
-                "{{\"metric\": \"{}\", \"channel\": \"{}\"}}",
-                e.metric, e.channel
-            )
-        })
-        .collect();
-    let _ = writeln!(s, "  \"exceeded\": [{}],", exceeded.join(", "));
-    let _ = writeln!(s, "  \"pass\": {},", o.exceeded.is_empty());
-    let _ = writeln!(
-        s,
-        "  \"render_difference\": {},",
-        o.render.map(triple).unwrap_or_else(|| "null".into())
-    );
-    let images: Vec<String> = IMAGES
-        .iter()
-        .map(|(name, (w, h), _)| format!("\"{name}\": [{w},{h}]"))
-        .collect();
-    let _ = writeln!(s, "  \"images\": {{{}}}", images.join(", "));
-    s.push_str("}\n");
-    s
 }
 
 /// Writes to stdout (a closed pipe ends the run quietly, see [`Error::report`]).

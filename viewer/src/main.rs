@@ -10,6 +10,7 @@ mod json;
 mod plot;
 mod probe;
 mod render;
+mod report;
 mod sample;
 mod source;
 mod summary;

@@ -1,9 +1,9 @@
 //! `viewer compare` end to end, on LUTs baked here with `bake::tables::bake` from models with a
 //! tiny photon budget and written with `bake::lutfile::write_exr`:
 //!
-//! - a good LUT passes (exit 0), writes every image with its documented size, and its fur
-//!   renders (decoded from the PNGs and from `compare.json`) differ by less than the E1
-//!   budget;
+//! - a good LUT passes (exit 0), writes every image with its documented size and a page
+//!   listing every parameter of the schema, and its fur renders (decoded from the PNGs and
+//!   from `compare.json`) differ by less than the E1 budget;
 //! - a LUT whose tables were scaled after baking (then resealed, so the file is valid) fails
 //!   with exit code 3 and stderr naming the metrics, and its renders differ by more than the
 //!   budget; a looser `--budget` lets it pass;
@@ -18,7 +18,7 @@
 use bake::lutfile::{self, LutFile, LutMeta};
 use bake::profiles::{self, ProfileOptions};
 use bcsdf_core::lut::{self, LutResolution, Table};
-use bcsdf_core::{FurParams, PhotonBudget};
+use bcsdf_core::{FurParams, ParamDefault, PhotonBudget, SCHEMA};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
@@ -226,7 +226,8 @@ fn triple(v: &serde_json::Value) -> [f64; 3] {
     std::array::from_fn(|i| a[i].as_f64().expect("a number"))
 }
 
-/// Every image exists with its documented size, the page links them all.
+/// Every image exists with its documented size, the page links them all and lists every
+/// parameter of the schema that is not a colour form (those depend on the preset).
 #[track_caller]
 fn check_outputs(dir: &Path) {
     for (name, size) in images() {
@@ -238,6 +239,10 @@ fn check_outputs(dir: &Path) {
             page.contains(&format!("src=\"{name}\"")),
             "page lacks {name}"
         );
+    }
+    for spec in SCHEMA.iter().filter(|s| s.default != ParamDefault::Colour) {
+        let cell = format!("<td>{}</td><td><code>{}</code></td>", spec.symbol, spec.key);
+        assert!(page.contains(&cell), "page lacks the {} row", spec.key);
     }
 }
 

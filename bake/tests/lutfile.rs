@@ -9,7 +9,7 @@ use bake::lutfile::{
 use bake::metrics::ErrorSummary;
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bcsdf_core::lut::{self, LutError, LutResolution, Table};
-use bcsdf_core::params::ParamValue;
+use bcsdf_core::params::{ParamValue, SCHEMA};
 use bcsdf_core::{FurParams, ParamName, PhotonBudget, Pigment, Rgb, MODEL_VERSION};
 use exr::prelude as x;
 use exr::prelude::traits::*;
@@ -229,6 +229,28 @@ fn exr_layers_hold_the_blob_halves_and_the_metadata() {
     assert_eq!(get("eumelanin"), &x::AttributeValue::F32(eumelanin));
     assert!(m.get(b"sigma_ca".as_slice()).is_none());
     assert!(m.get(b"pigment".as_slice()).is_none());
+    // Every schema row: an attribute named by its key with the header's value (and a
+    // `key=` entry in `params`), or, for the colour form not in use, no attribute.
+    let resolved = header.params.resolved();
+    for spec in &SCHEMA {
+        let attr = m.get(spec.key.as_bytes());
+        let in_text = text("params")
+            .split(' ')
+            .any(|kv| kv.starts_with(&format!("{}=", spec.key)));
+        match resolved.value(spec.name) {
+            Some(ParamValue::Scalar(v)) => {
+                assert_eq!(attr, Some(&x::AttributeValue::F32(v)), "{}", spec.key);
+                assert!(in_text, "{}", spec.key);
+            }
+            Some(ParamValue::Rgb(c)) => {
+                let [r, g, b] = c.0;
+                let v3 = x::AttributeValue::FloatVec3((r, g, b));
+                assert_eq!(attr, Some(&v3), "{}", spec.key);
+                assert!(in_text, "{}", spec.key);
+            }
+            None => assert!(attr.is_none() && !in_text, "{}", spec.key),
+        }
+    }
     let stored = u64::from_le_bytes(air()[lut::CHECKSUM].try_into().unwrap());
     assert_eq!(text("lut_checksum"), format!("{stored:016x}"));
     let seed = header.profiles.unwrap().seed;

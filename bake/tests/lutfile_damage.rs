@@ -67,7 +67,10 @@ fn a_damaged_header_attribute_is_refused_naming_the_file_and_the_problem() {
             Some(x::AttributeValue::Text(x::Text::from("FURLUT"))),
             "attribute lut_header of layer \"M\" has type \"string\", expected bytes".into(),
         ),
-        (None, "layer \"M\" has no attribute lut_header".into()),
+        (
+            None,
+            "layer \"M\" has no attribute lut_header (written by an older bake: re-bake it".into(),
+        ),
         (changed(0, b"X"), "not a fur LUT (bad magic)".into()),
         (
             changed(12, &model),

@@ -313,7 +313,15 @@ impl Attrs<'_> {
 
     /// The [`HEADER`] attribute's bytes: exactly [`HEADER_LEN`] of them (not yet decoded).
     pub(super) fn header_bytes(&self) -> Result<&[u8], Kind> {
-        match self.get(HEADER)? {
+        let Some(value) = self.map.get(HEADER.as_bytes()) else {
+            // LUT EXR files written before the header was stored verbatim lack it.
+            return Err(Kind::Format(format!(
+                "layer {} has no attribute {HEADER} (written by an older bake: re-bake it, or \
+                 read the .furlut written beside it)",
+                shown(self.layer.as_bytes())
+            )));
+        };
+        match value {
             x::AttributeValue::Bytes { bytes, .. } if bytes.len() == HEADER_LEN => Ok(bytes),
             x::AttributeValue::Bytes { bytes, .. } => Err(Kind::Format(format!(
                 "attribute {HEADER} holds {} bytes, expected the {HEADER_LEN} bytes of a LUT header",

@@ -6,7 +6,8 @@
 //! ([`metrics`]), one preset end to end ([`pipeline`], used by the `bake` binary) — plus
 //! preset files, `key=value` parameter overrides, splitting a preset list over N jobs
 //! ([`shard`], `bake --shard K/N`), and generating (in parallel) and caching
-//! the medulla profiles the full model needs ([`profiles`]).
+//! the medulla profiles the full model needs ([`profiles`]). [`fsutil`] writes files atomically
+//! and checks output folders (the viewer uses it too).
 //!
 //! ```
 //! let presets = bake::presets::builtin().unwrap();
@@ -17,6 +18,7 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod fsutil;
 pub mod lutfile;
 pub mod metrics;
 pub mod overrides;

@@ -2,6 +2,7 @@
 //! → measured error → `<out>/<preset>.exr` and `<out>/<preset>.furlut`, both written
 //! atomically.
 
+use crate::fsutil;
 use crate::lutfile::{self, LutFile, LutFileError, LutMeta};
 use crate::metrics::{compare, ErrorSummary, MetricSet};
 use crate::presets::NamedPreset;
@@ -133,18 +134,12 @@ impl fmt::Display for BakeError {
 
 impl std::error::Error for BakeError {}
 
-/// Creates `dir` if needed and checks a file can be created in it.
+/// Creates `dir` if needed and checks a file can be created in it ([`fsutil::prepare_dir`]).
 pub fn prepare_out_dir(dir: &Path) -> Result<(), BakeError> {
-    let err = |source| BakeError::OutDir {
-        dir: dir.to_path_buf(),
-        source,
-    };
-    std::fs::create_dir_all(dir).map_err(err)?;
-    tempfile::Builder::new()
-        .prefix(".bake-probe-")
-        .tempfile_in(dir)
-        .map(drop)
-        .map_err(err)
+    fsutil::prepare_dir(dir).map_err(|e| BakeError::OutDir {
+        dir: e.dir,
+        source: e.source,
+    })
 }
 
 /// Bakes one preset into `opts.out_dir`; `on_step` hears each step as it starts.

@@ -5,9 +5,10 @@
 //! Budgets are reduced (a few thousand photons per cell) so the whole file runs in seconds;
 //! the bits compared are whole tables.
 
+use bake::fsutil::{self, AtomicWriter};
 use bake::profiles::{
-    self, build_model, decode, encode, fnv1a64, generate_parallel, load_or_generate, AtomicWriter,
-    CacheError, CacheOutcome, Error, OwnedModel, OwnedProfiles, ProfileKey, ProfileOptions,
+    self, build_model, decode, encode, fnv1a64, generate_parallel, load_or_generate, CacheError,
+    CacheOutcome, Error, OwnedModel, OwnedProfiles, ProfileKey, ProfileOptions,
 };
 use bcsdf_core::medulla::{self, PhotonBudget, ProfileError, ProfileLayout, Resolution};
 use bcsdf_core::{presets, Angles, FurBcsdf, FurParams};
@@ -485,7 +486,7 @@ fn writes_are_atomic() {
 
     // A committed write replaces the file whole.
     let new = b"new".repeat(1000);
-    profiles::write_atomic(&path, &new).unwrap();
+    fsutil::write_atomic(&path, &new).unwrap();
     assert_eq!(std::fs::read(&path).unwrap(), new);
     assert_eq!(files_in(dir.path()), vec![path.clone()]);
 
@@ -494,7 +495,7 @@ fn writes_are_atomic() {
     let blocked = dir.path().join("blocked");
     std::fs::create_dir(&blocked).unwrap();
     std::fs::write(blocked.join("inside"), b"x").unwrap();
-    assert!(profiles::write_atomic(&blocked, b"data").is_err());
+    assert!(fsutil::write_atomic(&blocked, b"data").is_err());
     assert_eq!(files_in(dir.path()), vec![blocked.clone(), path.clone()]);
 
     // Concurrent writers of the same key: every reader sees a complete file.

@@ -6,8 +6,7 @@
 //! outside the canvas is clipped. Everything is deterministic: the same calls give the same
 //! bytes.
 
-use std::fs;
-use std::io::{self, BufWriter, Write};
+use std::io;
 use std::path::Path;
 
 /// An sRGB colour, 8 bits per channel.
@@ -290,26 +289,17 @@ impl Canvas {
         out
     }
 
-    /// Writes the canvas to `path` as PNG (via a temporary file renamed into place, so a
-    /// reader never sees half a file).
+    /// Writes the canvas to `path` as PNG, atomically ([`write_file`]).
     pub fn write_png(&self, path: &Path) -> io::Result<()> {
         write_file(path, &self.png_bytes())
     }
 }
 
-/// Writes `bytes` to `path` through a temporary file in the same directory.
+/// Writes `bytes` to `path` atomically with [`bake::fsutil::write_atomic`]: a temporary file
+/// in the same folder, flushed to disk and renamed into place, so a reader never sees half a
+/// file and a failed write leaves any existing file untouched.
 pub fn write_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    let mut tmp = path.as_os_str().to_owned();
-    tmp.push(".tmp");
-    let tmp = std::path::PathBuf::from(tmp);
-    {
-        let mut f = BufWriter::new(fs::File::create(&tmp)?);
-        f.write_all(bytes)?;
-        f.flush()?;
-    }
-    fs::rename(&tmp, path).inspect_err(|_| {
-        let _ = fs::remove_file(&tmp);
-    })
+    bake::fsutil::write_atomic(path, bytes)
 }
 
 /// Width in pixels of `text` at `scale`.
@@ -464,5 +454,26 @@ mod tests {
         assert_eq!(&bytes[1..4], b"PNG");
         assert_eq!(u32::from_be_bytes(bytes[16..20].try_into().unwrap()), 64);
         assert_eq!(u32::from_be_bytes(bytes[20..24].try_into().unwrap()), 8);
+    }
+
+    #[test]
+    fn png_files_are_written_whole_and_failures_keep_the_old_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("c.png");
+        let c = Canvas::new(4, 2, WHITE);
+        c.write_png(&path).unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), c.png_bytes());
+        // A folder in the way of the rename: an error, and nothing else in the folder.
+        let blocked = dir.path().join("blocked.png");
+        std::fs::create_dir(&blocked).unwrap();
+        std::fs::write(blocked.join("inside"), b"x").unwrap();
+        assert!(c.write_png(&blocked).is_err());
+        let mut names: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        names.sort();
+        assert_eq!(names, ["blocked.png", "c.png"]);
+        assert_eq!(std::fs::read(blocked.join("inside")).unwrap(), b"x");
     }
 }

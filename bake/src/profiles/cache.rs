@@ -1,36 +1,6 @@
-//! Medulla profiles for the std tools (MODEL.md §7): parallel generation, a cache file, and
-//! a model that owns its profiles.
-//!
-//! Over 600 lines: generation, the cache format and model building; the split into
-//! `profiles/{generate, cache, model}` is issue 13 (maintainability), not done yet.
-//!
-//! - [`generate_parallel`] runs the core's per-cell generators
-//!   ([`bcsdf_core::medulla::generate_cn_cell`], [`bcsdf_core::medulla::generate_cm_row`]) on
-//!   rayon, each cell into its own disjoint chunk of the tables. Every cell draws from its own
-//!   random stream, so the tables are the same bits for any thread count and across runs with
-//!   the same seed.
-//! - [`load_or_generate`] reuses a cache file when it was made for exactly the same
-//!   generator version, layout, photon budget and seed, and otherwise (re)generates and
-//!   (re)writes it. A stale or corrupt file is never used: the [`CacheOutcome`] says why it
-//!   was replaced.
-//! - [`build_model`] / [`OwnedModel`]: a [`FurBcsdf`] for any valid parameter set, with the
-//!   profiles when the parameters scatter in the medulla (σ_ms > 0 and κ > 0) and without them
-//!   otherwise (the unscattered model is then exact).
-//!
-//! ```no_run
-//! use bake::profiles::{build_model, ProfileOptions};
-//! use bcsdf_core::{presets, Angles, FurParams};
-//!
-//! let params = FurParams::new(&presets::find("yan-row-a").unwrap().input).unwrap();
-//! let opts = ProfileOptions {
-//!     cache_dir: bake::profiles::default_cache_dir(),
-//!     ..ProfileOptions::default()
-//! };
-//! let (owned, _outcome) = build_model(params, &opts).unwrap();
-//! let fur = owned.model();
-//! let s = fur.eval_far(&Angles::from_degrees(30.0, -20.0, 45.0).unwrap());
-//! # let _ = s;
-//! ```
+//! The profile cache: one checked binary file per [`ProfileKey`], [`load_or_generate`] that
+//! reuses a valid file and (re)generates and atomically (re)writes a missing, stale or
+//! corrupt one, and the default cache directory.
 //!
 //! # Cache file format (`FORMAT_VERSION` 1)
 //!
@@ -60,22 +30,25 @@
 //! Files are written atomically ([`AtomicWriter`]): to a temporary file in the cache
 //! directory, flushed to disk, then renamed over the final name, so a reader sees the old file
 //! or the new one, never a half-written one; a write that fails or is interrupted leaves any
-//! existing file untouched (a crash can at worst leave a stray `.medulla-*.partial` file,
-//! which is never read).
+//! existing file untouched (a crash can at worst leave a stray `.medulla-*.partial` file
+//! ([`crate::fsutil`] names temporary files after their destination), which is never read).
 //!
 //! **An unwritable cache directory is an error** ([`Error::CacheDir`], naming the directory),
 //! reported before any generation work: pass no cache directory to work without a cache.
 //! A read-only directory that already holds a valid file for the key is fine (a hit only
 //! reads).
+//!
+//! [`MedullaProfiles::new`]: bcsdf_core::medulla::MedullaProfiles::new
 
+use super::generate::generate_parallel;
+use super::{Error, OwnedProfiles};
+use crate::fsutil::AtomicWriter;
 use bcsdf_core::medulla::{
-    generate_cm_row, generate_cn_cell, MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout,
-    Resolution, GENERATOR_VERSION,
+    PhotonBudget, ProfileError, ProfileLayout, Resolution, GENERATOR_VERSION,
 };
-use bcsdf_core::{FurBcsdf, FurParams, Libm, Math};
-use rayon::prelude::*;
+use bcsdf_core::FurParams;
 use std::fmt;
-use std::fs::{self, File};
+use std::fs;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
@@ -90,9 +63,6 @@ const HEADER_LEN: usize = 96;
 
 /// Bytes of the trailing checksum.
 const CHECKSUM_LEN: usize = 8;
-
-/// The seed used when none is given (`viewer probe --seed` defaults to it).
-pub const DEFAULT_SEED: u64 = 1;
 
 /// FNV-1a 64 of `bytes` (the cache checksum and file-name hash).
 pub fn fnv1a64(bytes: &[u8]) -> u64 {
@@ -142,182 +112,6 @@ impl ProfileKey {
     pub fn file_name(&self) -> String {
         format!("medulla-{:016x}.furprof", fnv1a64(&self.to_bytes()))
     }
-}
-
-/// Medulla profiles in owned memory, with the key they were generated for. The tables are
-/// validated at construction, so [`OwnedProfiles::view`] cannot fail.
-#[derive(Clone, Debug, PartialEq)]
-pub struct OwnedProfiles {
-    layout: ProfileLayout,
-    budget: PhotonBudget,
-    seed: u64,
-    cn: Vec<f32>,
-    lbar: Vec<f32>,
-    cm: Vec<f32>,
-}
-
-impl OwnedProfiles {
-    /// Wraps tables in the core's layouts; checks them like [`MedullaProfiles::new`].
-    pub fn new(
-        key: ProfileKey,
-        cn: Vec<f32>,
-        lbar: Vec<f32>,
-        cm: Vec<f32>,
-    ) -> Result<OwnedProfiles, ProfileError> {
-        MedullaProfiles::new(key.layout, &cn, &lbar, &cm)?;
-        Ok(OwnedProfiles {
-            layout: key.layout,
-            budget: key.budget,
-            seed: key.seed,
-            cn,
-            lbar,
-            cm,
-        })
-    }
-
-    /// The borrowed, validated view the model takes.
-    pub fn view(&self) -> MedullaProfiles<'_> {
-        MedullaProfiles::new(self.layout, &self.cn, &self.lbar, &self.cm)
-            .expect("OwnedProfiles are validated at construction and immutable")
-    }
-
-    /// The layout.
-    pub fn layout(&self) -> &ProfileLayout {
-        &self.layout
-    }
-
-    /// The photon budget they were generated with.
-    pub fn budget(&self) -> PhotonBudget {
-        self.budget
-    }
-
-    /// The seed they were generated with.
-    pub fn seed(&self) -> u64 {
-        self.seed
-    }
-
-    /// Layout, budget and seed.
-    pub fn key(&self) -> ProfileKey {
-        ProfileKey {
-            layout: self.layout,
-            budget: self.budget,
-            seed: self.seed,
-        }
-    }
-
-    /// The tables `(C^N, ℓ̄, C^M)`.
-    pub fn tables(&self) -> (&[f32], &[f32], &[f32]) {
-        (&self.cn, &self.lbar, &self.cm)
-    }
-}
-
-/// Why profiles could not be made or cached.
-#[derive(Debug)]
-pub enum Error {
-    /// The layout is invalid, or the generated tables failed validation.
-    Profile(ProfileError),
-    /// The local thread pool could not be built.
-    ThreadPool(String),
-    /// The cache directory cannot be created or written to.
-    CacheDir {
-        /// The directory.
-        dir: PathBuf,
-        /// What the system said.
-        source: io::Error,
-    },
-    /// Writing or renaming the cache file failed.
-    CacheWrite {
-        /// The cache file.
-        path: PathBuf,
-        /// What the system said.
-        source: io::Error,
-    },
-}
-
-impl fmt::Display for Error {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Error::Profile(e) => write!(f, "medulla profiles: {e}"),
-            Error::ThreadPool(e) => write!(f, "cannot start the profile generator threads: {e}"),
-            Error::CacheDir { dir, source } => write!(
-                f,
-                "profile cache directory {} is not writable: {source}",
-                dir.display()
-            ),
-            Error::CacheWrite { path, source } => {
-                write!(f, "cannot write profile cache {}: {source}", path.display())
-            }
-        }
-    }
-}
-
-impl std::error::Error for Error {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            Error::CacheDir { source, .. } | Error::CacheWrite { source, .. } => Some(source),
-            _ => None,
-        }
-    }
-}
-
-impl From<ProfileError> for Error {
-    fn from(e: ProfileError) -> Error {
-        Error::Profile(e)
-    }
-}
-
-/// Generates every table of `layout` with rayon: C^N / ℓ̄ cells and C^M rows in parallel,
-/// each into its own chunk. `threads`: a local pool of that many threads (`Some(0)` means
-/// rayon's default count), or `None` for rayon's global pool. The result is the same bits for
-/// any thread count, and equal to [`bcsdf_core::medulla::generate`].
-pub fn generate_parallel(
-    layout: &ProfileLayout,
-    budget: &PhotonBudget,
-    seed: u64,
-    threads: Option<usize>,
-) -> Result<OwnedProfiles, Error> {
-    layout.validate()?;
-    let mut cn = vec![0.0f32; layout.cn_len()];
-    let mut lbar = vec![0.0f32; layout.cn_len()];
-    let mut cm = vec![0.0f32; layout.cm_len()];
-    let mut work = || {
-        let n_psi = layout.res.n_psi;
-        let n_out = layout.res.n_out;
-        let (back, front) = cm.split_at_mut(layout.res.n_in * n_out);
-        // The C^M rows are the longest tasks: start them alongside the C^N cells.
-        rayon::join(
-            || {
-                back.par_chunks_mut(n_out)
-                    .zip(front.par_chunks_mut(n_out))
-                    .enumerate()
-                    .for_each(|(row, (b, f))| {
-                        generate_cm_row(layout, row, budget, seed, b, f);
-                    })
-            },
-            || {
-                cn.par_chunks_mut(n_psi)
-                    .zip(lbar.par_chunks_mut(n_psi))
-                    .enumerate()
-                    .for_each(|(cell, (c, l))| {
-                        generate_cn_cell(layout, cell, budget, seed, c, l);
-                    })
-            },
-        );
-    };
-    match threads {
-        None => work(),
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .map_err(|e| Error::ThreadPool(e.to_string()))?
-            .install(work),
-    }
-    let key = ProfileKey {
-        layout: *layout,
-        budget: *budget,
-        seed,
-    };
-    Ok(OwnedProfiles::new(key, cn, lbar, cm)?)
 }
 
 /// Why a cache file was not used. [`Display`](fmt::Display) gives one line.
@@ -511,90 +305,6 @@ pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, Cach
     OwnedProfiles::new(*expected, cn, lbar, cm).map_err(CacheError::Tables)
 }
 
-/// A file written atomically: the bytes go to a temporary file in the destination's
-/// directory, and [`AtomicWriter::commit`] flushes it to disk and renames it over the
-/// destination. Dropping the writer without committing removes the temporary file and leaves
-/// the destination untouched.
-#[derive(Debug)]
-pub struct AtomicWriter {
-    tmp: tempfile::NamedTempFile,
-    path: PathBuf,
-}
-
-impl AtomicWriter {
-    /// Creates the temporary file next to `path` (its directory must exist).
-    pub fn new(path: &Path) -> io::Result<AtomicWriter> {
-        let dir = match path.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p,
-            _ => Path::new("."),
-        };
-        let tmp = tempfile::Builder::new()
-            .prefix(".medulla-")
-            .suffix(".partial")
-            .tempfile_in(dir)?;
-        Ok(AtomicWriter {
-            tmp,
-            path: path.to_path_buf(),
-        })
-    }
-
-    /// The temporary file, to write to.
-    pub fn file(&mut self) -> &mut File {
-        self.tmp.as_file_mut()
-    }
-
-    /// The destination.
-    pub fn path(&self) -> &Path {
-        &self.path
-    }
-
-    /// Flushes the temporary file to disk and renames it to the destination (replacing any
-    /// file there).
-    pub fn commit(mut self) -> io::Result<()> {
-        // A temporary file is private (0600); the result is an ordinary readable file.
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::PermissionsExt;
-            self.tmp
-                .as_file()
-                .set_permissions(std::fs::Permissions::from_mode(0o644))?;
-        }
-        self.tmp.as_file_mut().flush()?;
-        self.tmp.as_file().sync_all()?;
-        self.tmp.persist(&self.path).map_err(|e| e.error)?;
-        // Make the rename itself durable where the platform allows it (best effort).
-        #[cfg(unix)]
-        if let Some(dir) = self.path.parent() {
-            let dir = if dir.as_os_str().is_empty() {
-                Path::new(".")
-            } else {
-                dir
-            };
-            if let Ok(d) = File::open(dir) {
-                let _ = d.sync_all();
-            }
-        }
-        Ok(())
-    }
-}
-
-impl Write for AtomicWriter {
-    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
-        self.tmp.write(buf)
-    }
-
-    fn flush(&mut self) -> io::Result<()> {
-        self.tmp.flush()
-    }
-}
-
-/// Writes `bytes` to `path` atomically ([`AtomicWriter`]).
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    let mut w = AtomicWriter::new(path)?;
-    w.write_all(bytes)?;
-    w.commit()
-}
-
 /// What [`load_or_generate`] did with the cache.
 #[derive(Debug)]
 pub enum CacheOutcome {
@@ -702,133 +412,6 @@ pub fn default_cache_dir() -> Option<PathBuf> {
     var("HOME").map(|home| PathBuf::from(home).join(".cache").join("fur-bcsdf"))
 }
 
-/// `budget` with both photon counts multiplied by `scale` (rounded, at least 1, at most
-/// 2^24, the core's per-cell limit); `None` unless `scale` is finite and positive.
-pub fn scale_budget(budget: PhotonBudget, scale: f64) -> Option<PhotonBudget> {
-    if !(scale.is_finite() && scale > 0.0) {
-        return None;
-    }
-    let s = |n: u32| {
-        (f64::from(n) * scale)
-            .round()
-            .clamp(1.0, f64::from(1u32 << 24)) as u32
-    };
-    Some(PhotonBudget {
-        per_cn_cell: s(budget.per_cn_cell),
-        per_cm_row: s(budget.per_cm_row),
-    })
-}
-
-/// How [`build_model`] gets its profiles.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ProfileOptions {
-    /// Table resolution.
-    pub res: Resolution,
-    /// Photons per cell.
-    pub budget: PhotonBudget,
-    /// Seed of the random streams.
-    pub seed: u64,
-    /// Cache directory (`None`: always generate, write nothing).
-    pub cache_dir: Option<PathBuf>,
-    /// Generator threads (`None`: rayon's global pool).
-    pub threads: Option<usize>,
-}
-
-impl Default for ProfileOptions {
-    /// Default resolution and budget, [`DEFAULT_SEED`], no cache, rayon's global pool.
-    fn default() -> ProfileOptions {
-        ProfileOptions {
-            res: Resolution::DEFAULT,
-            budget: PhotonBudget::DEFAULT,
-            seed: DEFAULT_SEED,
-            cache_dir: None,
-            threads: None,
-        }
-    }
-}
-
-/// True when `params` scatter in the medulla (σ_ms > 0 and κ > 0), i.e. the full model
-/// needs profiles; otherwise the unscattered model is exact.
-pub fn needs_profiles(params: &FurParams) -> bool {
-    params.sigma_ms() > 0.0 && params.kappa() > 0.0
-}
-
-/// Parameters with the profiles their model needs (none when [`needs_profiles`] is false).
-#[derive(Clone, Debug, PartialEq)]
-pub struct OwnedModel {
-    params: FurParams,
-    profiles: Option<OwnedProfiles>,
-}
-
-impl OwnedModel {
-    /// Pairs `params` with `profiles`, which must have been made for them
-    /// ([`ProfileLayout::matches`]); `None` gives the unscattered model.
-    pub fn new(
-        params: FurParams,
-        profiles: Option<OwnedProfiles>,
-    ) -> Result<OwnedModel, ProfileError> {
-        if let Some(p) = &profiles {
-            if !p.layout().matches(&params) {
-                return Err(ProfileError::Mismatch);
-            }
-        }
-        Ok(OwnedModel { params, profiles })
-    }
-
-    /// The parameters.
-    pub fn params(&self) -> &FurParams {
-        &self.params
-    }
-
-    /// The profiles, when the parameters need them.
-    pub fn profiles(&self) -> Option<&OwnedProfiles> {
-        self.profiles.as_ref()
-    }
-
-    /// The model with the default `Libm` backend: the full model with profiles, the
-    /// unscattered one without.
-    pub fn model(&self) -> FurBcsdf<'_> {
-        self.model_with::<Libm>()
-    }
-
-    /// The model with math backend `M`.
-    pub fn model_with<M: Math>(&self) -> FurBcsdf<'_, M> {
-        match &self.profiles {
-            Some(p) => FurBcsdf::new(self.params, p.view())
-                .expect("OwnedModel checks that the profiles match the parameters"),
-            None => FurBcsdf::unscattered(self.params),
-        }
-    }
-}
-
-/// The model for `params`: profiles from [`load_or_generate`] with `opts` when
-/// [`needs_profiles`], none otherwise (the outcome is then `None` and nothing is generated
-/// or cached).
-pub fn build_model(
-    params: FurParams,
-    opts: &ProfileOptions,
-) -> Result<(OwnedModel, Option<CacheOutcome>), Error> {
-    if !needs_profiles(&params) {
-        return Ok((
-            OwnedModel {
-                params,
-                profiles: None,
-            },
-            None,
-        ));
-    }
-    let (profiles, outcome) = load_or_generate(
-        &params,
-        opts.res,
-        opts.budget,
-        opts.seed,
-        opts.cache_dir.as_deref(),
-        opts.threads,
-    )?;
-    let model = OwnedModel::new(params, Some(profiles))?;
-    Ok((model, Some(outcome)))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -900,25 +483,5 @@ mod tests {
         assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
         assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
         assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
-    }
-
-    #[test]
-    fn budget_scaling() {
-        let b = scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap();
-        assert_eq!(b.per_cn_cell, PhotonBudget::DEFAULT.per_cn_cell / 100);
-        assert_eq!(
-            scale_budget(PhotonBudget::DEFAULT, 1e-12)
-                .unwrap()
-                .per_cm_row,
-            1
-        );
-        assert_eq!(
-            scale_budget(PhotonBudget::DEFAULT, 1e12)
-                .unwrap()
-                .per_cm_row,
-            1 << 24
-        );
-        assert!(scale_budget(PhotonBudget::DEFAULT, 0.0).is_none());
-        assert!(scale_budget(PhotonBudget::DEFAULT, f64::NAN).is_none());
     }
 }

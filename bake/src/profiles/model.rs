@@ -1,0 +1,121 @@
+//! A model that owns its profiles: [`build_model`] gets them from the cache or the generator
+//! when the parameters scatter in the medulla, and [`OwnedModel`] lends the core's
+//! [`FurBcsdf`] over them.
+
+use super::cache::load_or_generate;
+use super::{Error, OwnedProfiles, DEFAULT_SEED};
+use bcsdf_core::medulla::{PhotonBudget, ProfileError, Resolution};
+use bcsdf_core::{FurBcsdf, FurParams, Libm, Math};
+use std::path::PathBuf;
+
+/// How [`build_model`] gets its profiles.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProfileOptions {
+    /// Table resolution.
+    pub res: Resolution,
+    /// Photons per cell.
+    pub budget: PhotonBudget,
+    /// Seed of the random streams.
+    pub seed: u64,
+    /// Cache directory (`None`: always generate, write nothing).
+    pub cache_dir: Option<PathBuf>,
+    /// Generator threads (`None`: rayon's global pool).
+    pub threads: Option<usize>,
+}
+
+impl Default for ProfileOptions {
+    /// Default resolution and budget, [`DEFAULT_SEED`], no cache, rayon's global pool.
+    fn default() -> ProfileOptions {
+        ProfileOptions {
+            res: Resolution::DEFAULT,
+            budget: PhotonBudget::DEFAULT,
+            seed: DEFAULT_SEED,
+            cache_dir: None,
+            threads: None,
+        }
+    }
+}
+
+/// True when `params` scatter in the medulla (σ_ms > 0 and κ > 0), i.e. the full model
+/// needs profiles; otherwise the unscattered model is exact.
+pub fn needs_profiles(params: &FurParams) -> bool {
+    params.sigma_ms() > 0.0 && params.kappa() > 0.0
+}
+
+/// Parameters with the profiles their model needs (none when [`needs_profiles`] is false).
+#[derive(Clone, Debug, PartialEq)]
+pub struct OwnedModel {
+    params: FurParams,
+    profiles: Option<OwnedProfiles>,
+}
+
+impl OwnedModel {
+    /// Pairs `params` with `profiles`, which must have been made for them
+    /// ([`ProfileLayout::matches`]); `None` gives the unscattered model.
+    ///
+    /// [`ProfileLayout::matches`]: bcsdf_core::medulla::ProfileLayout::matches
+    pub fn new(
+        params: FurParams,
+        profiles: Option<OwnedProfiles>,
+    ) -> Result<OwnedModel, ProfileError> {
+        if let Some(p) = &profiles {
+            if !p.layout().matches(&params) {
+                return Err(ProfileError::Mismatch);
+            }
+        }
+        Ok(OwnedModel { params, profiles })
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &FurParams {
+        &self.params
+    }
+
+    /// The profiles, when the parameters need them.
+    pub fn profiles(&self) -> Option<&OwnedProfiles> {
+        self.profiles.as_ref()
+    }
+
+    /// The model with the default `Libm` backend: the full model with profiles, the
+    /// unscattered one without.
+    pub fn model(&self) -> FurBcsdf<'_> {
+        self.model_with::<Libm>()
+    }
+
+    /// The model with math backend `M`.
+    pub fn model_with<M: Math>(&self) -> FurBcsdf<'_, M> {
+        match &self.profiles {
+            Some(p) => FurBcsdf::new(self.params, p.view())
+                .expect("OwnedModel checks that the profiles match the parameters"),
+            None => FurBcsdf::unscattered(self.params),
+        }
+    }
+}
+
+/// The model for `params`: profiles from [`load_or_generate`] with `opts` when
+/// [`needs_profiles`], none otherwise (the outcome is then `None` and nothing is generated
+/// or cached).
+pub fn build_model(
+    params: FurParams,
+    opts: &ProfileOptions,
+) -> Result<(OwnedModel, Option<super::CacheOutcome>), Error> {
+    if !needs_profiles(&params) {
+        return Ok((
+            OwnedModel {
+                params,
+                profiles: None,
+            },
+            None,
+        ));
+    }
+    let (profiles, outcome) = load_or_generate(
+        &params,
+        opts.res,
+        opts.budget,
+        opts.seed,
+        opts.cache_dir.as_deref(),
+        opts.threads,
+    )?;
+    let model = OwnedModel::new(params, Some(profiles))?;
+    Ok((model, Some(outcome)))
+}

@@ -10,7 +10,7 @@
 //!
 //! - E1 = Σ|S_b − S_a|·cos²θ_i / Σ S_a·cos²θ_i (energy-weighted relative L1);
 //! - E_albedo = max over θ_r of |ρ_b − ρ_a| / ρ_a, with ρ(θ_r) = ∫ S cos θ_i dω_i the
-//!   directional albedo of MODEL.md §8, integrated over |θ_i| ≤ 85°;
+//!   directional albedo of docs/model.md §8, integrated over |θ_i| ≤ 85°;
 //! - E_peak = max |S_b − S_a|·cos²θ_i / max S_a·cos²θ_i.
 //!
 //! Rows are evaluated in parallel and merged in row order, so the result has the same bits

@@ -1,4 +1,4 @@
-//! Far-field azimuthal lobes N_p(φ) = ½ ∫ A_p(h)·D_p(φ − Φ_p(h)) dh (MODEL.md §5).
+//! Far-field azimuthal lobes N_p(φ) = ½ ∫ A_p(h)·D_p(φ − Φ_p(h)) dh (docs/model.md §5).
 //!
 //! The same pass can integrate a second integrand with the same nodes: the sampling
 //! density of the analytic sampler (docs/model.md §10), Σ_p c_p·½ ∫ D_p(φ − Φ_p(h)) dh over

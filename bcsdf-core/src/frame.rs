@@ -1,4 +1,4 @@
-//! The fiber frame and the angles the model is written in (MODEL.md §1).
+//! The fiber frame and the angles the model is written in (docs/model.md §1).
 //!
 //! Directions point away from the fiber: ω_i toward the light, ω_r toward the viewer.
 //! θ = asin(ω·u) is measured from the normal plane, and φ = φ_r − φ_i is the azimuth

@@ -1,4 +1,4 @@
-//! Fresnel terms of the double cylinder (MODEL.md §4).
+//! Fresnel terms of the double cylinder (docs/model.md §4).
 
 use crate::math::{sqrt_pos, Math};
 
@@ -31,7 +31,7 @@ pub fn dielectric<M: Math>(cos_i: f32, eta: f32) -> f32 {
     0.5 * (rs + rp)
 }
 
-/// Cuticle reflectance `f` with `l` layers (Stokes pile of plates, MODEL.md §4).
+/// Cuticle reflectance `f` with `l` layers (Stokes pile of plates, docs/model.md §4).
 ///
 /// Per polarisation the single-interface reflectance `r` (2D angle `a`, index `η'_c`) becomes
 /// one plate's reflectance `2r/(1+r)`; their average `R1` gives `f = l·R1 / (1 + (l−1)·R1)`.

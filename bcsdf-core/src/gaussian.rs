@@ -1,5 +1,5 @@
 //! The normalised Gaussian G(x; β) = exp(−x²/2β²)/(√(2π)·β) (report eq. 3) and its wrapped
-//! version on the circle, the shapes of M_p and D_p (MODEL.md §5).
+//! version on the circle, the shapes of M_p and D_p (docs/model.md §5).
 
 use crate::math::{Math, PI, TAU};
 
@@ -49,7 +49,7 @@ impl Gaussian {
 }
 
 /// The Gaussian G(·; β) wrapped onto the circle: D(x) = Σ_k G(x + 2πk; β), summed over every
-/// period within [`CUTOFF_SIGMAS`]·β, so the truncation error is below 1e-6 (MODEL.md §5).
+/// period within [`CUTOFF_SIGMAS`]·β, so the truncation error is below 1e-6 (docs/model.md §5).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WrappedGaussian {
     gaussian: Gaussian,

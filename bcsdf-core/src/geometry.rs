@@ -1,4 +1,4 @@
-//! The 2D cross-section seen by the view ray (MODEL.md §1, §3).
+//! The 2D cross-section seen by the view ray (docs/model.md §1, §3).
 //!
 //! [`ViewSlice`] holds what depends only on θ_r (Bravais indices, refracted longitudinal
 //! cosines); [`Chord`] is one ray through the cross-section at offset h, with every angle the
@@ -110,7 +110,7 @@ pub enum Region {
     TotalReflection,
 }
 
-/// One ray of the cross-section at offset h (MODEL.md §3).
+/// One ray of the cross-section at offset h (docs/model.md §3).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Chord {
     /// Offset h ∈ [−1, 1].

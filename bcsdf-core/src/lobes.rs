@@ -2,11 +2,11 @@
 
 use crate::spectrum::Rgb;
 
-/// One light path of the model (MODEL.md §3, §6). Uppercase events happen at the cuticle,
+/// One light path of the model (docs/model.md §3, §6). Uppercase events happen at the cuticle,
 /// lowercase at the medulla boundary.
 ///
-/// The first eight are the unscattered paths (MODEL.md §3); the last three carry the light
-/// scattered inside the medulla (MODEL.md §6). Code matching on it should use `Lobe::ALL` and
+/// The first eight are the unscattered paths (docs/model.md §3); the last three carry the light
+/// scattered inside the medulla (docs/model.md §6). Code matching on it should use `Lobe::ALL` and
 /// [`Lobe::name`].
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -41,7 +41,7 @@ pub const LOBE_COUNT: usize = 11;
 /// Number of unscattered lobes (the first ones in [`Lobe::ALL`]).
 pub const UNSCATTERED_COUNT: usize = 8;
 
-/// The three cuticle groups that share tilt and roughness (MODEL.md §5).
+/// The three cuticle groups that share tilt and roughness (docs/model.md §5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum LobeGroup {
     /// R: touches the cuticle once from outside.
@@ -68,7 +68,7 @@ impl Lobe {
         Lobe::TttRttTs,
     ];
 
-    /// The path's name as written in MODEL.md (`"TttRttT"`).
+    /// The path's name as written in docs/model.md (`"TttRttT"`).
     #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
@@ -201,8 +201,8 @@ impl Lobes {
 pub const FAMILY_COUNT: usize = 4;
 
 /// The four families a baked table keeps apart: the three cuticle groups of the unscattered
-/// paths (each shares one M_p, MODEL.md §5) and the medulla-scattered lobes (which share M^s,
-/// MODEL.md §6).
+/// paths (each shares one M_p, docs/model.md §5) and the medulla-scattered lobes (which share M^s,
+/// docs/model.md §6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum LobeFamily {
     /// R.

@@ -1,4 +1,4 @@
-//! Longitudinal lobes M_p(θ_i, θ_r) = G(θ_r + θ_i − α_p; β_p) (report eq. 2–3, MODEL.md §5).
+//! Longitudinal lobes M_p(θ_i, θ_r) = G(θ_r + θ_i − α_p; β_p) (report eq. 2–3, docs/model.md §5).
 
 use crate::gaussian::{Gaussian, WrappedGaussian};
 use crate::lobes::LobeGroup;
@@ -6,7 +6,7 @@ use crate::math::Math;
 use crate::params::FurParams;
 
 /// Per cuticle group: the longitudinal Gaussian (shift α_p, width β_M) and the azimuthal
-/// roughness D_p (width β_N) of MODEL.md §5.
+/// roughness D_p (width β_N) of docs/model.md §5.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GroupLobes {
     /// α_p for R, TT, TRT: −2α, α, 3α.

@@ -1,4 +1,4 @@
-//! The analytic double-cylinder BCSDF (MODEL.md §8, report eq. 1):
+//! The analytic double-cylinder BCSDF (docs/model.md §8, report eq. 1):
 //! S = [Σ_p M_p·N_p + M^s·Σ_p N^s_p] / cos²θ_i, near field (at offset h) and far field
 //! (h integrated).
 
@@ -196,7 +196,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         (n, ns)
     }
 
-    /// Far-field azimuthal lobes N_p(φ) = ½ ∫ N_p(h, φ) dh (MODEL.md §5, §6), in
+    /// Far-field azimuthal lobes N_p(φ) = ½ ∫ N_p(h, φ) dh (docs/model.md §5, §6), in
     /// [`Lobe::ALL`] order.
     #[must_use]
     pub fn azimuthal_far(&self, theta_r: f32, phi: f32) -> [Rgb; LOBE_COUNT] {

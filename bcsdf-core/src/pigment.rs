@@ -1,4 +1,4 @@
-//! Colouring a fiber: the cortex absorption σ_ca (MODEL.md §2) from melanin or given directly.
+//! Colouring a fiber: the cortex absorption σ_ca (docs/model.md §2) from melanin or given directly.
 
 use crate::spectrum::Rgb;
 

@@ -1,4 +1,4 @@
-//! Built-in presets (MODEL.md §9) as constants, for no_std users.
+//! Built-in presets (docs/model.md §9) as constants, for no_std users.
 //!
 //! The human-editable source is `bcsdf-core/presets.toml`, which the std tools read (and
 //! which users copy to make their own); `tests/tests/presets.rs` checks that these constants
@@ -23,7 +23,7 @@ pub struct Preset {
 pub const PRESETS: [Preset; 5] = [
     Preset {
         name: "yan-row-a",
-        source: "MODEL.md §9 row A: default parameters of independent re-implementations of Yan et al. 2015 (species not recorded); single-channel sigma_ca used for all of RGB",
+        source: "docs/model.md §9 row A: default parameters of independent re-implementations of Yan et al. 2015 (species not recorded); single-channel sigma_ca used for all of RGB",
         input: FurParamsInput {
             eta_c: 1.55,
             pigment: Pigment::Absorption(Rgb::splat(0.64)),
@@ -40,7 +40,7 @@ pub const PRESETS: [Preset; 5] = [
     },
     Preset {
         name: "yan-row-b",
-        source: "MODEL.md §9 row B: default parameters of independent re-implementations of Yan et al. 2015 (species not recorded); single-channel sigma_ca used for all of RGB",
+        source: "docs/model.md §9 row B: default parameters of independent re-implementations of Yan et al. 2015 (species not recorded); single-channel sigma_ca used for all of RGB",
         input: FurParamsInput {
             eta_c: 1.49,
             pigment: Pigment::Absorption(Rgb::splat(0.39)),
@@ -57,7 +57,7 @@ pub const PRESETS: [Preset; 5] = [
     },
     Preset {
         name: "yan-row-c",
-        source: "MODEL.md §9 row C (species not recorded; the row gives no sigma_ca): colour is this project's choice, eumelanin 0.3 + pheomelanin 0.3 (d'Eon 2011 coefficients)",
+        source: "docs/model.md §9 row C (species not recorded; the row gives no sigma_ca): colour is this project's choice, eumelanin 0.3 + pheomelanin 0.3 (d'Eon 2011 coefficients)",
         input: FurParamsInput {
             eta_c: 1.19,
             pigment: Pigment::Melanin {

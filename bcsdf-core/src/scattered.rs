@@ -1,4 +1,4 @@
-//! The scattered component (MODEL.md §6, report eq. 6–12): light that scatters at least once
+//! The scattered component (docs/model.md §6, report eq. 6–12): light that scatters at least once
 //! inside the medulla, in three lobes TttT^s, TtrtT^s, TttRttT^s.
 //!
 //! The report's simplifications hold: the scattered distribution is not changed on its way
@@ -196,7 +196,7 @@ impl ScatteredLongitudinal {
         self.theta_in_max * (j as f32 - half as f32) / half as f32
     }
 
-    /// θ' inside the medulla for an outside angle θ (sin θ' = sin(θ − α)/η_m, MODEL.md §6)
+    /// θ' inside the medulla for an outside angle θ (sin θ' = sin(θ − α)/η_m, docs/model.md §6)
     /// and the Jacobian |dθ'/dθ| = |cos(θ − α)|/(η_m cos θ').
     #[inline]
     #[must_use]

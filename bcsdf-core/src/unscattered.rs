@@ -1,4 +1,4 @@
-//! The eight unscattered paths: exit azimuths Φ_p(h) and attenuations A_p(h) (MODEL.md §3).
+//! The eight unscattered paths: exit azimuths Φ_p(h) and attenuations A_p(h) (docs/model.md §3).
 
 use crate::fresnel;
 use crate::geometry::{Chord, MedullaEvent, ViewSlice};
@@ -24,7 +24,7 @@ pub struct Extinction {
     pub cortex: Rgb,
     /// (σ_ms + σ_ma) / cos θ_tm: unscattered light leaves the medulla at full extinction.
     pub medulla: f32,
-    /// σ_ms / cos θ_tm: the chance of scattering on a medulla chord (MODEL.md §6, P).
+    /// σ_ms / cos θ_tm: the chance of scattering on a medulla chord (docs/model.md §6, P).
     pub medulla_scattering: f32,
     /// σ_ma / cos θ_tm: absorption of the scattered light along its mean path ℓ̄.
     pub medulla_absorption: f32,
@@ -54,7 +54,7 @@ pub(crate) fn transmittance<M: Math>(sigma: Rgb, length: f32) -> Rgb {
     }
 }
 
-/// Exit azimuths Φ_p(h) of all eight paths at `chord` (MODEL.md §3 table), in
+/// Exit azimuths Φ_p(h) of all eight paths at `chord` (docs/model.md §3 table), in
 /// [`crate::Lobe::UNSCATTERED`] order; 0 for a path that does not exist at this chord.
 ///
 /// Each follows the event rule Φ = π + Σ events with outer refraction (c − a), internal
@@ -87,7 +87,7 @@ pub fn exit_azimuths(chord: &Chord) -> [f32; UNSCATTERED_COUNT] {
 }
 
 /// Attenuations A_p(h) of all eight paths at `chord` (report eq. 5): the Fresnel product of
-/// the MODEL.md §3 table times exp(−σ_ca·L_c/cos θ_tc)·exp(−(σ_ms+σ_ma)·L_m/cos θ_tm), in
+/// the docs/model.md §3 table times exp(−σ_ca·L_c/cos θ_tc)·exp(−(σ_ms+σ_ma)·L_m/cos θ_tm), in
 /// [`crate::Lobe::UNSCATTERED`] order; zero for a path that does not exist. `l` is the number of
 /// cuticle layers.
 #[inline]

@@ -1,24 +1,24 @@
 //! A brute-force Monte Carlo of photons through the explicit 2D cross-section of the double
-//! cylinder (MODEL.md §3, §4, §6), in f64, for checking the scattered component as a whole.
+//! cylinder (docs/model.md §3, §4, §6), in f64, for checking the scattered component as a whole.
 //!
-//! By reciprocity the photons are the traced **view ray** (MODEL.md §1): each enters the
+//! By reciprocity the photons are the traced **view ray** (docs/model.md §1): each enters the
 //! cross-section travelling along −x at height y = h, h uniform (stratified) in [−1, 1], at a
 //! fixed view angle θ_r. The cross-section is drawn explicitly — outer circle of radius 1
 //! (cuticle; Bravais index η'_c inside), concentric medulla circle of radius κ (index η'_m) —
 //! and every step is an explicit ray–circle intersection, a vector Snell refraction or a
 //! mirror reflection. Per unit 2D length the cortex absorbs σ_ca/cos θ_tc, the medulla
 //! scatters σ_ms/cos θ_tm and absorbs σ_ma/cos θ_tm (the 2D problem at fixed θ_r, as in
-//! MODEL.md §3 and §7: a scattering event turns the photon within the cross-section only).
+//! docs/model.md §3 and §7: a scattering event turns the photon within the cross-section only).
 //! Scattering is 2D Henyey–Greenstein (wrapped Cauchy), sampled here by wrapping a Cauchy
 //! variate of scale −ln|g| — a different construction from the core's inverse-CDF sampler.
 //!
 //! One tracer, with the report's simplifications as switches ([`Options`]):
 //! - [`Options::FULL`]: the physical flatland problem. Fresnel reflection/transmission is
-//!   chosen stochastically at every interface crossing (cuticle: layered f of MODEL.md §4 at
+//!   chosen stochastically at every interface crossing (cuticle: layered f of docs/model.md §4 at
 //!   the actual incidence; medulla: dielectric f_m at the actual incidence, total internal
 //!   reflection included), and the photon is followed through any sequence of events until
 //!   it leaves the fiber (or is absorbed; Russian roulette below weight 1e-3).
-//! - [`Options::SIMPLIFIED`]: MODEL.md §6 exactly, as a simulation: only the three structures
+//! - [`Options::SIMPLIFIED`]: docs/model.md §6 exactly, as a simulation: only the three structures
 //!   TttT^s, TtrtT^s, TttRttT^s are followed up to their scattering chord (a photon whose
 //!   events leave them is dropped); once scattered, the photon walks in the medulla with an
 //!   index-matched boundary (no Fresnel, no refraction: it leaves when it crosses the medulla
@@ -64,9 +64,9 @@ pub struct McParams {
     pub theta_r: f64,
 }
 
-/// Which of the report's simplifications (MODEL.md §6) the simulation makes. Each switch set
+/// Which of the report's simplifications (docs/model.md §6) the simulation makes. Each switch set
 /// to `true` removes one simplification; [`Options::FULL`] has them all `true` (the physical
-/// flatland problem), [`Options::SIMPLIFIED`] all `false` (MODEL.md §6 exactly).
+/// flatland problem), [`Options::SIMPLIFIED`] all `false` (docs/model.md §6 exactly).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Options {
     /// Before the first scattering, follow any event sequence (false: only the three
@@ -95,7 +95,7 @@ impl Options {
         cortex_exit: true,
         exit_refraction: true,
     };
-    /// MODEL.md §6 exactly: three paths, index-matched walk, radial exit.
+    /// docs/model.md §6 exactly: three paths, index-matched walk, radial exit.
     pub const SIMPLIFIED: Options = Options {
         all_paths: false,
         medulla_boundary: false,

@@ -1,8 +1,8 @@
-//! The white furnace of MODEL.md §8 in f64, and the lobe shapes of MODEL.md §5 it needs.
+//! The white furnace of docs/model.md §8 in f64, and the lobe shapes of docs/model.md §5 it needs.
 //!
 //! - [`furnace`] integrates ρ(ω_r) = ∫ S(ω_i, ω_r) cos θ_i dω_i numerically over the sphere of
 //!   light directions (dω = cos θ dθ dφ), calling the core's far field as a black box.
-//! - [`predicted_rho`] is what MODEL.md §8 says ρ must be: Σ_p ⟨A_p⟩_h · (mass of M_p inside
+//! - [`predicted_rho`] is what docs/model.md §8 says ρ must be: Σ_p ⟨A_p⟩_h · (mass of M_p inside
 //!   ±π/2), with ⟨A_p⟩_h = ½∫A_p(h)dh integrated over h from the brute-force ray tracer
 //!   ([`crate::tracer`]) and the M mass from erf (written here).
 //!
@@ -20,11 +20,11 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 /// furnace test asserts that the two agree).
 pub const MIN_COS2: f64 = 1e-4;
 
-/// Cuticle group of each path in `PATHS` order: 0 = R, 1 = TT, 2 = TRT (MODEL.md §5).
+/// Cuticle group of each path in `PATHS` order: 0 = R, 1 = TT, 2 = TRT (docs/model.md §5).
 pub const GROUP_OF_PATH: [usize; 8] = [0, 1, 2, 1, 1, 1, 2, 2];
 
 /// Longitudinal shift α_p, longitudinal width β_M and azimuthal width β_N of one cuticle
-/// group (MODEL.md §5), radians.
+/// group (docs/model.md §5), radians.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GroupShape {
     /// α_p.
@@ -227,7 +227,7 @@ pub fn average_over_h(cuts: &[f64], panels: usize, mut f: impl FnMut(f64, f64)) 
     }
 }
 
-/// What MODEL.md §8 predicts for the unscattered paths.
+/// What docs/model.md §8 predicts for the unscattered paths.
 #[derive(Clone, Copy, Debug)]
 pub struct Prediction {
     /// ρ per channel.
@@ -238,7 +238,7 @@ pub struct Prediction {
     pub mass: [f64; 3],
 }
 
-/// ρ(θ_r) = Σ_p ⟨A_p⟩_h · mass_p (MODEL.md §8, unscattered paths).
+/// ρ(θ_r) = Σ_p ⟨A_p⟩_h · mass_p (docs/model.md §8, unscattered paths).
 pub fn predicted_rho(p: &FurParams, theta_r: f64, panels: usize) -> Prediction {
     let fiber = Fiber::of(p);
     let shapes = group_shapes_of(p);

@@ -1,4 +1,4 @@
-//! Shared helpers for the cross-crate tests. Everything here is written from MODEL.md
+//! Shared helpers for the cross-crate tests. Everything here is written from docs/model.md
 //! directly and shares no code with the closed forms of `bcsdf-core` that it checks.
 
 pub mod chi2;

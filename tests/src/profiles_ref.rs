@@ -1,14 +1,14 @@
-//! Medulla profiles for the tests, and the scattered component of MODEL.md §6 written again in
+//! Medulla profiles for the tests, and the scattered component of docs/model.md §6 written again in
 //! f64 from the specification.
 //!
 //! - [`OwnedProfiles`]: tables generated with `bcsdf_core::medulla::generate` (sequential) into
 //!   owned buffers, and a borrowed [`MedullaProfiles`] view of them.
 //! - [`ScatterRef`]: A^s_p(h), Φ^s_p(h), h_m and σ_N of the three scattered lobes from the
-//!   angles a, c, m, μ of MODEL.md §3 in f64, with the Fresnel terms of [`crate::tracer`].
+//!   angles a, c, m, μ of docs/model.md §3 in f64, with the Fresnel terms of [`crate::tracer`].
 //! - [`exit_transmittance`], [`refract_into_medulla`], [`mean_exit_transmittance`]: F_t, the
-//!   refraction into the medulla and ⟨F_t⟩ = ∫ μ F_t C^M |dθ'/dθ| dθ_i (MODEL.md §6), with
+//!   refraction into the medulla and ⟨F_t⟩ = ∫ μ F_t C^M |dθ'/dθ| dθ_i (docs/model.md §6), with
 //!   quadrature panels broken at every kink of the tabulated C^M.
-//! - [`scattered_energy`]: the scattered part of the white-furnace prediction (MODEL.md §8).
+//! - [`scattered_energy`]: the scattered part of the white-furnace prediction (docs/model.md §8).
 //!
 //! The only things taken from the core are the generated tables and their lookup
 //! (`MedullaProfiles::cn`, `mean_length`, `cm`), which `tests/tests/profiles.rs` checks on its
@@ -70,7 +70,7 @@ impl OwnedProfiles {
     }
 }
 
-/// The three scattered lobes at one view ray (MODEL.md §6), in f64.
+/// The three scattered lobes at one view ray (docs/model.md §6), in f64.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ScatterRef {
     /// Φ^s_p for TttT^s, TtrtT^s, TttRttT^s (rotation of the travel direction before the
@@ -85,7 +85,7 @@ pub struct ScatterRef {
     /// σ_ma·κ/cos θ_tm: exp(−this·ℓ̄) is the medulla absorption of the scattered light (ℓ̄ in
     /// medulla radii).
     pub absorb: f64,
-    /// The unscattered TttT exit azimuth 2c − 2a − 2m + 2μ + π (MODEL.md §3 table).
+    /// The unscattered TttT exit azimuth 2c − 2a − 2m + 2μ + π (docs/model.md §3 table).
     pub phi_tttt: f64,
     /// (c − a) + (μ − m): the refractions before the scattering chord of TttT^s.
     pub refraction: f64,
@@ -100,7 +100,7 @@ pub fn enter_limit(p: &FurParams, theta_r: f64) -> f64 {
     (kappa * ec).min(kappa * em).min(1.0)
 }
 
-/// A^s_p, Φ^s_p, h_m, σ_N of MODEL.md §6 at view angle `theta_r` and offset `h`; `None` where
+/// A^s_p, Φ^s_p, h_m, σ_N of docs/model.md §6 at view angle `theta_r` and offset `h`; `None` where
 /// the ray misses the medulla or is totally reflected at it.
 ///
 /// With P = 1 − exp(−σ_ms·ℓ_m/cos θ_tm), E_c = exp(−σ_ca·ℓ_c/cos θ_tc),
@@ -160,7 +160,7 @@ pub fn scattered_ref(p: &FurParams, theta_r: f64, h: f64) -> Option<ScatterRef> 
     })
 }
 
-/// θ' inside the medulla for an outside longitudinal angle θ (MODEL.md §6:
+/// θ' inside the medulla for an outside longitudinal angle θ (docs/model.md §6:
 /// sin θ' = sin(θ − α)/η_m) and the Jacobian |dθ'/dθ| = |cos(θ − α)|/(η_m·cos θ').
 pub fn refract_into_medulla(p: &FurParams, theta: f64) -> (f64, f64) {
     let e = theta - p.alpha() as f64;
@@ -214,7 +214,7 @@ pub fn panel_nodes(breaks: &[f64], max_width: f64) -> Vec<(f64, f64)> {
 }
 
 /// ⟨F_t⟩ for one half of C^M at view angle `theta_r`: ∫ F_t·C^M·J·k dθ_i / ∫ C^M·J dθ_i over
-/// θ_i ∈ [−π/2, π/2], with C^M = C^M_half(θ'_i | −θ'_r) and J = |dθ'_i/dθ_i| (MODEL.md §6, the
+/// θ_i ∈ [−π/2, π/2], with C^M = C^M_half(θ'_i | −θ'_r) and J = |dθ'_i/dθ_i| (docs/model.md §6, the
 /// normalisation μ being 1/denominator). `clamp` = Some(c2min) weights the numerator by
 /// k = min(1, cos²θ_i/c2min), as the white furnace weights S (the model divides by
 /// max(cos²θ_i, c2min)); `None` gives k = 1.
@@ -242,7 +242,7 @@ pub fn mean_exit_transmittance(
     num / den
 }
 
-/// The scattered part of the white-furnace prediction at view angle `theta_r` (MODEL.md §8),
+/// The scattered part of the white-furnace prediction at view angle `theta_r` (docs/model.md §8),
 /// per RGB channel:
 ///
 /// Σ_p ½∫dh A^s_p(h) ∫dφ C^N(φ − π − Φ^s_p(h); h_m, σ_N)·exp(−σ_ma κ ℓ̄/cos θ_tm)·
@@ -306,7 +306,7 @@ pub fn scattered_energy(
     out
 }
 
-/// The white-furnace prediction of MODEL.md §8 for the full model at one view angle.
+/// The white-furnace prediction of docs/model.md §8 for the full model at one view angle.
 #[derive(Clone, Copy, Debug)]
 pub struct FullPrediction {
     /// ρ per channel: unscattered + scattered.

@@ -1,4 +1,4 @@
-//! A brute-force 2D ray tracer of the double cylinder's cross-section (MODEL.md §3), in f64.
+//! A brute-force 2D ray tracer of the double cylinder's cross-section (docs/model.md §3), in f64.
 //!
 //! The cross-section is drawn explicitly: an outer circle of radius 1 (the cuticle, index
 //! η'_c inside) and a concentric medulla circle of radius κ (index η'_m inside). A ray is
@@ -9,13 +9,13 @@
 //!
 //! The view ray comes in travelling along −x at height y = h, so its direction toward the
 //! viewer is +x (φ_r = 0); the exit azimuth of the traced path is Φ = −atan2(d_y, d_x) of the
-//! final travel direction d, which makes Φ_R = −2·asin h as in MODEL.md §1.
+//! final travel direction d, which makes Φ_R = −2·asin h as in docs/model.md §1.
 
 /// The eight unscattered paths in `bcsdf_core::Lobe::ALL` order, as event strings.
 pub const PATHS: [&str; 8] = ["R", "TT", "TRT", "TrT", "TttT", "TtrtT", "TrRrT", "TttRttT"];
 
 /// Bravais' effective index of a medium of index `eta` for the normal-plane projection of a
-/// ray at longitudinal angle `theta`: √(η² − sin²θ)/cos θ (MODEL.md §3).
+/// ray at longitudinal angle `theta`: √(η² − sin²θ)/cos θ (docs/model.md §3).
 pub fn bravais(eta: f64, theta: f64) -> f64 {
     (eta * eta - theta.sin().powi(2)).sqrt() / theta.cos()
 }
@@ -41,13 +41,13 @@ pub fn dielectric_sp(cos_i: f64, n1: f64, n2: f64) -> (f64, f64) {
     (rs * rs, rp * rp)
 }
 
-/// Unpolarised dielectric reflectance (r_s + r_p)/2 (the medulla boundary, MODEL.md §4).
+/// Unpolarised dielectric reflectance (r_s + r_p)/2 (the medulla boundary, docs/model.md §4).
 pub fn dielectric(cos_i: f64, n1: f64, n2: f64) -> f64 {
     let (rs, rp) = dielectric_sp(cos_i, n1, n2);
     0.5 * (rs + rp)
 }
 
-/// The cuticle's layered reflectance f (MODEL.md §4): per polarisation one plate reflects
+/// The cuticle's layered reflectance f (docs/model.md §4): per polarisation one plate reflects
 /// 2r/(1 + r); R1 is their average and f = l·R1/(1 + (l − 1)·R1).
 pub fn cuticle(cos_i: f64, n1: f64, n2: f64, layers: f64) -> f64 {
     let (rs, rp) = dielectric_sp(cos_i, n1, n2);

@@ -1,9 +1,9 @@
 //! The far field's fast quadrature against a much finer brute-force integral of the near field
-//! (MODEL.md §5: accurate to 1e-4 relative).
+//! (docs/model.md §5: accurate to 1e-4 relative).
 //!
 //! Metric, per lobe and RGB channel: |fast − reference| / max(|reference|, 1e-3 · peak), with
 //! peak the largest total N(φ) at that θ_r (docs/model.md). The reference integrates
-//! `azimuthal_near` over h in f64, split at ±κη'_c and ±κη'_m (computed here from MODEL.md),
+//! `azimuthal_near` over h in f64, split at ±κη'_c and ±κη'_m (computed here from docs/model.md),
 //! with a smoothstep substitution against the square-root ends and 400 panels of 6-point
 //! Gauss–Legendre per piece (~50× the fast rule's nodes); its own convergence is checked too.
 
@@ -15,13 +15,13 @@ use fur_tests::quadrature::integrate_smoothstep_into;
 
 const TOLERANCE: f64 = 1e-4;
 
-/// Budget for the scattered far field (MODEL.md gives none). Its rule is built for tabulated,
+/// Budget for the scattered far field (docs/model.md gives none). Its rule is built for tabulated,
 /// linearly interpolated profiles; measured ≤ 1.2e-3 with 100k-photon tables (noisier tables
 /// have sharper kinks and a larger error). The tables' own Monte Carlo noise is ~1 % RMS at
 /// the default budget (docs/profiles.md), well above this.
 const SCATTERED_TOLERANCE: f64 = 5e-3;
 
-/// Bravais index, written here from MODEL.md §3.
+/// Bravais index, written here from docs/model.md §3.
 fn bravais(eta: f64, theta: f64) -> f64 {
     (eta * eta - theta.sin().powi(2)).sqrt() / theta.cos()
 }

@@ -1,4 +1,4 @@
-//! Preset files (MODEL.md §9): the TOML built-ins agree bit for bit with the no_std constants,
+//! Preset files (docs/model.md §9): the TOML built-ins agree bit for bit with the no_std constants,
 //! and malformed files give one-line errors naming the file, the line and the field.
 
 use bake::presets::{self, NamedPreset, PresetError};
@@ -111,7 +111,7 @@ fn every_builtin_validates_and_spec_requirements_hold() {
         FurParams::new(&p.input).unwrap_or_else(|e| panic!("{}: {e}", p.name));
         assert!(!p.source.trim().is_empty(), "{}: no source", p.name);
     }
-    // MODEL.md §9: a kappa = 0 preset and one with eta_m != eta_c.
+    // docs/model.md §9: a kappa = 0 preset and one with eta_m != eta_c.
     assert!(list.iter().any(|p| p.input.kappa == 0.0));
     assert!(list
         .iter()

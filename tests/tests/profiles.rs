@@ -1,4 +1,4 @@
-//! Medulla scattering profiles (MODEL.md §7) against what is known exactly.
+//! Medulla scattering profiles (docs/model.md §7) against what is known exactly.
 //!
 //! Every tolerance is a Monte Carlo error bound stated where it is used (z-scores of binomial
 //! counts, χ² of mirrored histograms, standard errors from independent quadrature). The walks
@@ -93,7 +93,7 @@ fn binomial_two_sided_tail(n: u64, p: f64, k: u64) -> f64 {
     (2.0 * lower.min(upper)).min(1.0)
 }
 
-/// MODEL.md §7: the fraction of photons that scatter at least once in the disk is
+/// docs/model.md §7: the fraction of photons that scatter at least once in the disk is
 /// 1 − exp(−2σ√(1 − h_m²)). Each cell's count is binomial(N, p); the exact two-sided tail
 /// probability of the observed count must be ≥ 1e-5 in every cell of a grid of σ, h_m and g
 /// (50 cells: a correct generator fails with probability ≤ 5e-4; ≈ |z| ≤ 4.4 where the normal
@@ -360,7 +360,7 @@ fn single_scatter_lengths(sigma: f64, h: f64, g: f64, n_psi: usize) -> Vec<(f64,
     out
 }
 
-/// ℓ̄ as σ → 0 (MODEL.md §7: "ℓ̄ ≤ 2 when σ → 0"). At σ = 0.005 (multiple scattering
+/// ℓ̄ as σ → 0 (docs/model.md §7: "ℓ̄ ≤ 2 when σ → 0"). At σ = 0.005 (multiple scattering
 /// ≲ 1 % of the scattered photons) the ψ histogram follows the single-scattering masses
 /// (χ² ≤ the 1e-5 quantile: this checks the 2D Henyey–Greenstein sampling), and per ψ bin the
 /// simulated ℓ̄ matches the single-scattering
@@ -371,7 +371,7 @@ fn single_scatter_lengths(sigma: f64, h: f64, g: f64, n_psi: usize) -> Vec<(f64,
 ///
 /// Per ψ bin ℓ̄ is *not* bounded by 2 off-centre: at h_m = 0.9 the quadrature gives ≈ 2.30
 /// for photons turned toward the disk centre, and the walk reproduces it; this test asserts that
-/// too, so MODEL.md's "ℓ̄ ≤ 2" is read as the mean over ψ.
+/// too, so docs/model.md's "ℓ̄ ≤ 2" is read as the mean over ψ.
 #[test]
 fn mean_length_single_scattering_limit() {
     let t0 = Instant::now();
@@ -504,7 +504,7 @@ fn mean_path_length_invariance() {
     );
 }
 
-/// The diffuse limit (MODEL.md §7), g = 0, σ → ∞: a photon scatters within ~1/σ of where it
+/// The diffuse limit (docs/model.md §7), g = 0, σ → ∞: a photon scatters within ~1/σ of where it
 /// entered and, seen from there, the medium is a half-space. Three consequences, measured on
 /// C^N by the exit direction χ relative to the entry point's outward normal (exit direction
 /// angle = a + χ with a = asin h_m, so χ = π − a − ψ in the exit-azimuth sense of ψ):

@@ -1,4 +1,4 @@
-//! The closed forms of MODEL.md §3 (`bcsdf_core::unscattered`) against a brute-force 2D ray
+//! The closed forms of docs/model.md §3 (`bcsdf_core::unscattered`) against a brute-force 2D ray
 //! tracer of the explicit cross-section (`fur_tests::tracer`, f64, no shared code).
 //!
 //! For thousands of seeded random (h, κ, η_c, η_m, θ_r, l) the test checks, per path:
@@ -33,7 +33,7 @@ const VALUE_BAND: f64 = 1e-4;
 /// 1 − f → 0 anyway; beyond `H_MAX` attenuations are compared absolutely
 /// (`grazing_rays_stay_close`).
 const H_MAX: f64 = 0.999;
-/// Tolerances of the comparison (MODEL.md asks for ≤ 1e-4): exit azimuths to 1e-4 rad
+/// Tolerances of the comparison (docs/model.md asks for ≤ 1e-4): exit azimuths to 1e-4 rad
 /// everywhere outside `VALUE_BAND`; Fresnel products and lengths to 1e-4 relative wherever
 /// the ray is at least 1% (relative) away from an edge.
 const TOL_PHI: f64 = 1e-4;
@@ -358,7 +358,7 @@ fn grazing_rays_stay_close() {
     assert!(worst_phi < TOL_PHI, "grazing azimuth error {worst_phi:.3e}");
 }
 
-/// The tracer itself: Φ_R = −2 asin h (MODEL.md §1), and without a medulla and without
+/// The tracer itself: Φ_R = −2 asin h (docs/model.md §1), and without a medulla and without
 /// absorption the traced paths R, TT, TRT, TRRT, … carry all the energy (Fresnel factors at
 /// the actual incidence angles are consistent inside and outside).
 #[test]

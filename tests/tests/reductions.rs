@@ -1,9 +1,9 @@
-//! The reductions of MODEL.md §3.
+//! The reductions of docs/model.md §3.
 //!
 //! - κ = 0 (no medulla): the medulla paths TrT … TttRttT are exactly zero, near and far, and
 //!   R, TT, TRT are Marschner's three lobes. The near field is compared with an independent
 //!   f64 evaluation of M_p·A_p(h)·D_p(φ − Φ_p(h))/max(cos²θ_i, 1e-4) with A_p, Φ_p from the
-//!   brute-force tracer and M_p, D_p written from MODEL.md §5.
+//!   brute-force tracer and M_p, D_p written from docs/model.md §5.
 //! - η_m = η_c (index-matched medulla, the 2017 model): the medulla is just more cortex. With
 //!   σ_ca = σ_ms = σ_ma = 0 (so that the medulla and the cortex absorb alike), at an offset h
 //!   that meets the medulla TttT(h) equals TT(h) of the same fiber with κ = 0 and TttRttT equals
@@ -225,7 +225,7 @@ fn index_matched_medulla_is_cortex_near_field() {
     );
 }
 
-/// MODEL.md §3: with η_m = η_c, f_m = 0, so TrT, TtrtT and TrRrT vanish — exactly, as they do
+/// docs/model.md §3: with η_m = η_c, f_m = 0, so TrT, TtrtT and TrRrT vanish — exactly, as they do
 /// in the far field (and as the 2017 five-lobe model has no such lobes).
 #[test]
 fn index_matched_medulla_reflections_vanish_near_field() {
@@ -297,7 +297,7 @@ fn index_matched_medulla_is_cortex_far_field() {
             for (s1, s0) in v1.iter().zip(&v0) {
                 let sum: f64 = parts.iter().map(|&l| s1.get(l).0[0] as f64).sum();
                 let want = s0.get(twin).0[0] as f64;
-                // Each far-field value is good to 1e-4 relative (MODEL.md §5) against
+                // Each far-field value is good to 1e-4 relative (docs/model.md §5) against
                 // max(value, 1e-3·peak); two of them are added here.
                 let err = (sum - want).abs() / want.max(1e-3 * peak).max(1e-30);
                 worst = worst.max(err);

@@ -1,4 +1,4 @@
-//! Robustness (MODEL.md §2, §8): S ≥ 0 and finite for every input; invalid parameters are
+//! Robustness (docs/model.md §2, §8): S ≥ 0 and finite for every input; invalid parameters are
 //! rejected with an error that names the parameter and its value.
 //!
 //! Inputs are arbitrary f32 (NaN, ±inf, subnormals, huge values, zero or unnormalised
@@ -202,7 +202,7 @@ fn set_invalid(input: &mut FurParamsInput, name: ParamName, v: f32) {
     }
 }
 
-/// Invalid values per MODEL.md §2: non-finite anything; η ≤ 1; negative σ and melanin; κ ≥ 1
+/// Invalid values per docs/model.md §2: non-finite anything; η ≤ 1; negative σ and melanin; κ ≥ 1
 /// or negative; g ∉ (−1, 1); non-positive roughness; negative layers.
 fn invalid_value(name: ParamName) -> BoxedStrategy<f32> {
     let non_finite = prop::sample::select(vec![f32::NAN, f32::INFINITY, f32::NEG_INFINITY]);

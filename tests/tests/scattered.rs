@@ -1,10 +1,10 @@
-//! The scattered component of the full model (MODEL.md §6) against an independent f64
+//! The scattered component of the full model (docs/model.md §6) against an independent f64
 //! evaluation of its formulas (`fur_tests::profiles_ref`: own angles, own Fresnel, own
 //! quadrature; only the generated tables and their lookup are shared with the core).
 //!
 //! Profiles are generated in each test with `bcsdf_core::medulla::generate` at small photon
 //! budgets: nothing here depends on the profiles being converged, only on the model using
-//! them as MODEL.md says.
+//! them as docs/model.md says.
 
 // Lobe × channel tables read most clearly with index loops.
 #![allow(clippy::needless_range_loop)]
@@ -35,14 +35,14 @@ fn with_input(name: &str, edit: impl FnOnce(&mut FurParamsInput)) -> FurParams {
     FurParams::new(&input).unwrap()
 }
 
-/// MODEL.md §6: with g → 1 the TttT^s lobe peaks at Φ_TttT(h) − (c − a) − (μ − m), i.e. the
+/// docs/model.md §6: with g → 1 the TttT^s lobe peaks at Φ_TttT(h) − (c − a) − (μ − m), i.e. the
 /// scattered light keeps the direction it had inside the medulla (C^N peaks at ψ = 0) and
 /// N^s_p peaks at φ = π + Φ^s_p(h).
 ///
 /// g = 0.99 and 361 ψ bins (1°, odd so that one bin is centred on ψ = 0, where the walk puts
 /// most photons): the near-field lobe's argmax over φ (0.05° grid) must lie within one bin
 /// width (1°) of π + Φ^s_p. Φ_TttT comes from the brute-force ray tracer, (c − a) + (μ − m)
-/// and the other two Φ^s_p from MODEL.md §3/§6 in f64. η_m = 1.2 ≠ η_c = 1.55, so μ − m
+/// and the other two Φ^s_p from docs/model.md §3/§6 in f64. η_m = 1.2 ≠ η_c = 1.55, so μ − m
 /// (up to ~16° here) is exercised; the index-matched case checks the 2017 values (c − a) and
 /// 3c − a + π.
 #[test]
@@ -146,7 +146,7 @@ fn forward_scattering_peaks_where_model_says() {
 }
 
 /// ∫ N^s_p(h, φ) dφ = A^s_p(h) at fixed h with σ_ma = 0 (C^N is a pdf in ψ; the lookup's
-/// interpolation preserves its integral), per lobe and channel, against A^s_p from MODEL.md §6
+/// interpolation preserves its integral), per lobe and channel, against A^s_p from docs/model.md §6
 /// in f64 with own Fresnel: |∫ − A^s_p| ≤ 1e-3·A^s_p (f32 lookups: measured ~1e-6).
 ///
 /// With σ_ma > 0 at a table node (θ_r = 0 so σ_N is the first σ node, h so that h_m is an
@@ -384,7 +384,7 @@ fn n_phi(p: &FurParams) -> usize {
 
 /// ρ ≤ 1 for every preset with the full model: the numerical white furnace (the core's
 /// `eval_far` over the sphere of light directions) at two view angles per preset, and the
-/// independent prediction Σ_p ⟨A_p⟩·mass_p + scattered energy (MODEL.md §8, checked against the
+/// independent prediction Σ_p ⟨A_p⟩·mass_p + scattered energy (docs/model.md §8, checked against the
 /// furnace in `white_furnace.rs`) at 13 view angles per preset and for a lossless fiber
 /// (σ_ca = σ_ma = 0, strong medulla scattering, η_m ≠ η_c), where ρ comes closest to 1. The
 /// sets are split over two tests so that they run in parallel.

@@ -1,4 +1,4 @@
-//! The whole scattered component (MODEL.md §6–§7) against a brute-force Monte Carlo of
+//! The whole scattered component (docs/model.md §6–§7) against a brute-force Monte Carlo of
 //! photons through the explicit 2D cross-section (`fur_tests::cross_section_mc`, f64, no code
 //! shared with the core): cortex absorption, Fresnel at the cuticle and the medulla,
 //! scattering and absorption in the medulla, followed through any sequence of events.
@@ -14,10 +14,10 @@
 //!   into the medulla, (d) the C^N walk has an index-matched medulla boundary — so the
 //!   agreement is only as good as those: the tolerances are stated per parameter set from the
 //!   measured differences plus a margin. The model's own prediction of the energy that
-//!   leaves is N^s(φ)·T(φ) with T = ∫ M^s dθ_i (M^s carries the exit Fresnel F_t, MODEL.md
+//!   leaves is N^s(φ)·T(φ) with T = ∫ M^s dθ_i (M^s carries the exit Fresnel F_t, docs/model.md
 //!   §8); both N^s·T and bare N^s are compared.
 //! - **simplified** ([`Options::SIMPLIFIED`]): the same tracer making exactly the report's
-//!   simplifications (MODEL.md §6). The only difference left from the model is that σ_ma acts
+//!   simplifications (docs/model.md §6). The only difference left from the model is that σ_ma acts
 //!   on each photon's own medulla path, where the model uses exp(−σ_ma·κ·ℓ̄/cos θ_tm) with the
 //!   mean path ℓ̄ per ψ bin (Jensen: the model is low by ≈ ½(σ_ma κ)²·Var(ℓ), second order in
 //!   σ_ma). This comparison isolates bugs in the core from the model's simplifications.
@@ -49,7 +49,7 @@
 //! The simplified comparison is at the noise floor (MC ≈ 0.002 + tables ≈ 0.0017 in L1)
 //! except for yan-row-a's σ_ma = 0.17 term: its model/MC gap scales as σ_ma² (0.9999, 0.9928,
 //! 0.9721, 0.8972 at σ_ma = 0, 0.17, 0.34, 0.68, same tables), which is the ℓ̄ approximation
-//! of MODEL.md §6, not a bug; it makes the model ~1.5% low toward φ = 0 (long back-scattering
+//! of docs/model.md §6, not a bug; it makes the model ~1.5% low toward φ = 0 (long back-scattering
 //! paths) and right toward φ = ±π.
 //!
 //! Where the full–model difference comes from (`attribution`, switching the report's
@@ -308,7 +308,7 @@ impl ModelBins {
 }
 
 /// T(θ_r, φ) = ∫ M^s(θ_i, θ_r, φ) dθ_i: the part of N^s the model lets out of the fiber
-/// (MODEL.md §8: ρ = ∫∫ M N dθ_i dφ).
+/// (docs/model.md §8: ρ = ∫∫ M N dθ_i dφ).
 fn exit_fraction(model: &FurBcsdf, theta_r: f32, phi: f32) -> f64 {
     let h = PI / THETA_I_POINTS as f64;
     (0..THETA_I_POINTS)
@@ -544,7 +544,7 @@ fn scattered_far_field_vs_mc_small_medulla() {
 fn attribution() {
     let photons = 8_000_000;
     let steps: [(&str, Options); 5] = [
-        ("simplified (MODEL.md §6)", Options::SIMPLIFIED),
+        ("simplified (docs/model.md §6)", Options::SIMPLIFIED),
         (
             "+ all paths before scattering (a)",
             Options {

@@ -1,4 +1,4 @@
-//! Mirror symmetries of MODEL.md §8.
+//! Mirror symmetries of docs/model.md §8.
 //!
 //! - Far field: S(θ_i, θ_r, φ) = S(θ_i, θ_r, −φ). The core folds the h-integral onto h ≥ 0 and
 //!   evaluates D_p(φ − Φ) + D_p(−φ − Φ) (bcsdf-core `far_field` module docs), which makes the

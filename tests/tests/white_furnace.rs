@@ -1,15 +1,15 @@
-//! The white furnace of MODEL.md §8, for the core's far field.
+//! The white furnace of docs/model.md §8, for the core's far field.
 //!
 //! ρ(ω_r) = ∫ S(ω_i, ω_r) cos θ_i dω_i is integrated numerically over the sphere of light
 //! directions (`fur_tests::furnace::furnace`, the core's `eval_far` as a black box) and compared
 //! with the prediction Σ_p ⟨A_p⟩_h · (mass of M_p inside ±π/2), where ⟨A_p⟩_h comes from the
 //! brute-force ray tracer integrated over h and the M mass from erf — both f64, both written
-//! from MODEL.md and sharing no code with the core. The model's 1/cos²θ_i is clamped at
+//! from docs/model.md and sharing no code with the core. The model's 1/cos²θ_i is clamped at
 //! cos²θ_i ≥ 1e-4: the prediction's mass weights the poles by cos²θ_i/1e-4 accordingly.
 //!
 //! # Tolerance: 2e-4 relative
 //!
-//! The far field is specified to 1e-4 relative (MODEL.md §5; the core's accuracy test holds it
+//! The far field is specified to 1e-4 relative (docs/model.md §5; the core's accuracy test holds it
 //! pointwise against max(value, 1e-3 · peak)), so its φ-integral is good to 1e-4 of
 //! ∫ max(N, 1e-3 · peak) dφ ≤ 1e-4 · (ρ + 2π · 1e-3 · peak): for these lobes (peak ≲ 5ρ per radian) at
 //! most ~1.03e-4 of ρ. Everything else is far smaller: the φ trapezoid rule on a periodic
@@ -305,7 +305,7 @@ fn deficit_is_energy_beyond_trt() {
     eprintln!("deficit: worst mismatch relative to ⟨(1−f)f²⟩: {worst:.3e}");
 }
 
-/// The white furnace with the scattered terms (MODEL.md §8), for the full model with medulla
+/// The white furnace with the scattered terms (docs/model.md §8), for the full model with medulla
 /// profiles: ρ(θ_r) from the core's far field integrated over the sphere of light directions
 /// must equal
 ///

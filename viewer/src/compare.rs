@@ -214,16 +214,7 @@ fn default_out(lut: &Path) -> PathBuf {
 
 /// Creates `dir` if needed and checks a file can be written in it (before any work).
 pub fn prepare_out_dir(dir: &Path) -> Result<(), Error> {
-    fs::create_dir_all(dir).map_err(|e| out_error(dir, &e))?;
-    let probe = dir.join(format!(".viewer-write-check-{}", std::process::id()));
-    fs::OpenOptions::new()
-        .write(true)
-        .create(true)
-        .truncate(true)
-        .open(&probe)
-        .map_err(|e| out_error(dir, &e))?;
-    let _ = fs::remove_file(&probe);
-    Ok(())
+    bake::fsutil::prepare_dir(dir).map_err(|e| out_error(&e.dir, &e.source))
 }
 
 fn out_error(dir: &Path, e: &io::Error) -> Error {

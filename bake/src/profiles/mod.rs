@@ -1,4 +1,4 @@
-//! Medulla profiles for the std tools (MODEL.md §7): parallel generation, a cache file, and
+//! Medulla profiles for the std tools (docs/model.md §7): parallel generation, a cache file, and
 //! a model that owns its profiles.
 //!
 //! - [`generate`]: [`generate_parallel`] runs the core's per-cell generators

@@ -47,7 +47,7 @@ pub(super) fn sample_hg_3d_cos(g: f32, u: f32) -> f32 {
 /// Simulates one C^N cell: photons enter the unit disk at offset `h_m` travelling straight
 /// (along −x at y = h_m), scatter with coefficient `sigma` and 2D HG(`g`), and leave when they
 /// cross the circle. Only photons that scattered at least once are binned, by the signed
-/// rotation ψ of their travel direction (in the exit-azimuth sense of MODEL.md §3: ψ = −Δ of
+/// rotation ψ of their travel direction (in the exit-azimuth sense of docs/model.md §3: ψ = −Δ of
 /// the direction angle). Writes the pdf over ψ into `cn` and the mean path length per bin
 /// into `lbar` (both `n_psi` long); returns the counts.
 pub fn simulate_disk_cell(

@@ -1,4 +1,5 @@
 //! Far-field azimuthal lobes N_p(φ) = ½ ∫ A_p(h)·D_p(φ − Φ_p(h)) dh (docs/model.md §5).
+//! (About 600 lines: one quadrature, with its probes, windows and panel rules, kept in one file.)
 //!
 //! The same pass can integrate a second integrand with the same nodes: the sampling
 //! density of the analytic sampler (docs/model.md §10), Σ_p c_p·½ ∫ D_p(φ − Φ_p(h)) dh over

@@ -1,5 +1,7 @@
 //! A brute-force Monte Carlo of photons through the explicit 2D cross-section of the double
 //! cylinder (docs/model.md §3, §4, §6), in f64, for checking the scattered component as a whole.
+//! (Over 600 lines: geometry, Fresnel, the walks and the tallies form one independent reference,
+//! kept in one file that shares nothing with the core.)
 //!
 //! By reciprocity the photons are the traced **view ray** (docs/model.md §1): each enters the
 //! cross-section travelling along −x at height y = h, h uniform (stratified) in [−1, 1], at a

@@ -2,6 +2,8 @@
 //! photons through the explicit 2D cross-section (`fur_tests::cross_section_mc`, f64, no code
 //! shared with the core): cortex absorption, Fresnel at the cuticle and the medulla,
 //! scattering and absorption in the medulla, followed through any sequence of events.
+//! (Over 600 lines: the simulation settings, the reduction of the analytic lobes to the same
+//! tallies and the four comparisons share their fixtures; split up, one comparison would span files.)
 //!
 //! For each parameter set and view angle θ_r, the scattered energy leaving per unit φ, in
 //! `N_BINS` bins of (−π, π] and averaged over h ∈ [−1, 1] (the far field's ½∫dh), is compared

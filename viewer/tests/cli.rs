@@ -2,6 +2,7 @@
 //! `viewer presets`, one-line `error:` messages with exit code 2 for bad input, and the
 //! medulla profile cache (`--cache-dir`, `--no-cache`, `--seed`, `--photons-scale`, the
 //! default directory, stale and corrupt files).
+//! (Over 600 lines: fourteen end-to-end cases sharing one harness that runs the binary.)
 //!
 //! Cargo builds the binary for this test (`CARGO_BIN_EXE_viewer`), so it is never stale.
 //! Every probe runs with a small photon budget (`--photons-scale`, added by [`viewer`]) and

@@ -1,5 +1,6 @@
 //! `viewer probe --lut`, `viewer probe --pdf` and `viewer sample` end to end, against the
 //! library in-process:
+//! (Over 600 lines: twelve end-to-end cases sharing the in-process reference harness.)
 //!
 //! - `probe --lut` reads a `.furlut` and the `.exr` of the same LUT (told apart by content,
 //!   whatever the name) and prints the same lines, bit for bit `BakedBcsdf::eval`;

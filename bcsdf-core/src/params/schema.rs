@@ -82,7 +82,7 @@ pub enum ParamValue {
 /// One row of the parameter schema (docs/model.md §2): everything a serialisation needs to
 /// know about a parameter. Every format — the LUT header, the EXR attributes, preset files,
 /// `--set` overrides, the viewer's summary page — iterates [`SCHEMA`], so adding a parameter
-/// is a change here (and in [`FurParamsInput`]'s fields).
+/// is a change here (and in [`FurParamsInput`](super::FurParamsInput)'s fields).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ParamSpec {
     /// Which parameter.

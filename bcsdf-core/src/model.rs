@@ -23,7 +23,7 @@ pub const MIN_COS2_THETA_I: f32 = 1e-4;
 
 /// Version of the model's formulas: any change to what S evaluates to bumps it, so baked
 /// tables made by an older model are recognised (`lut` header).
-pub const MODEL_VERSION: u32 = 1;
+pub const MODEL_VERSION: u32 = 2;
 
 /// 1/cos²θ_i of eq. 1, with cos²θ_i kept at or above [`MIN_COS2_THETA_I`]. The analytic and
 /// the baked evaluators both divide by this.

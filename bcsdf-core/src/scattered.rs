@@ -145,7 +145,9 @@ const MU_SAMPLES: usize = 512;
 /// precomputed per θ'_in node.
 #[derive(Clone, Copy, Debug)]
 pub struct ScatteredLongitudinal {
-    alpha: f32,
+    /// The cuticle tilt per crossing, α/2 (docs/model.md §6): the scattered paths cross the
+    /// cuticle twice, like TT, whose lobe is shifted by α in all.
+    tilt: f32,
     eta_c: f32,
     eta_m: f32,
     layers: f32,
@@ -165,7 +167,7 @@ impl ScatteredLongitudinal {
         let layout = profiles.layout();
         let n_in = layout.res.n_in.min(MAX_N_IN);
         let mut s = ScatteredLongitudinal {
-            alpha: params.alpha(),
+            tilt: 0.5 * params.alpha(),
             eta_c: params.eta_c(),
             eta_m: params.eta_m(),
             layers: params.l(),
@@ -196,12 +198,12 @@ impl ScatteredLongitudinal {
         self.theta_in_max * (j as f32 - half as f32) / half as f32
     }
 
-    /// θ' inside the medulla for an outside angle θ (sin θ' = sin(θ − α)/η_m, docs/model.md §6)
-    /// and the Jacobian |dθ'/dθ| = |cos(θ − α)|/(η_m cos θ').
+    /// θ' inside the medulla for an outside angle θ (sin θ' = sin(θ − α/2)/η_m, docs/model.md
+    /// §6) and the Jacobian |dθ'/dθ| = |cos(θ − α/2)|/(η_m cos θ').
     #[inline]
     #[must_use]
     pub fn refract<M: Math>(&self, theta: f32) -> (f32, f32) {
-        let e = theta - self.alpha;
+        let e = theta - self.tilt;
         let (sin_e, cos_e) = M::sin_cos(e);
         let s = sin_e / self.eta_m;
         let cos_p = sqrt_pos::<M>((1.0 - s) * (1.0 + s)).max(1e-6);
@@ -215,14 +217,14 @@ impl ScatteredLongitudinal {
     }
 
     /// The θ' ranges that θ_i ∈ [−π/2, π/2] maps onto under [`ScatteredLongitudinal::refract`],
-    /// one per monotonic branch: with t = θ − α, the main branch is t ∈ [−π/2, π/2] ∩ range and
-    /// the fold is the part of the range beyond ±π/2 (|α| wide, where sin t turns back), which
+    /// one per monotonic branch: with t = θ − α/2, the main branch is t ∈ [−π/2, π/2] ∩ range
+    /// and the fold is the part of the range beyond ±π/2 (|α|/2 wide, where sin t turns back), which
     /// covers some θ' a second time. Each entry is (θ'_lo, θ'_hi) with θ'_lo < θ'_hi, or
     /// `None` when the branch is empty (the fold when α = 0).
     #[must_use]
     pub fn branches<M: Math>(&self) -> [Option<(f32, f32)>; 2] {
         let half = PI / 2.0;
-        let (t_lo, t_hi) = (-half - self.alpha, half - self.alpha);
+        let (t_lo, t_hi) = (-half - self.tilt, half - self.tilt);
         let out = |t: f32| asin_clamped::<M>(M::sin(t) / self.eta_m);
         let main = (out(t_lo.max(-half)), out(t_hi.min(half)));
         let fold = if t_lo < -half {
@@ -244,10 +246,10 @@ impl ScatteredLongitudinal {
         let t0 = asin_clamped::<M>(self.eta_m * M::sin(theta_p));
         let t = match branch {
             0 => t0,
-            _ if self.alpha > 0.0 => -PI - t0,
+            _ if self.tilt > 0.0 => -PI - t0,
             _ => PI - t0,
         };
-        (t + self.alpha).clamp(-PI / 2.0, PI / 2.0)
+        (t + self.tilt).clamp(-PI / 2.0, PI / 2.0)
     }
 
     /// μ_x at θ'_in: the inverse of the normalisation integral interpolated linearly between
@@ -268,12 +270,12 @@ impl ScatteredLongitudinal {
     }
 
     /// F_t(θ_i): Fresnel transmittance leaving the medulla (incidence θ'_i, index η_c/η_m)
-    /// times that of the cuticle (incidence θ_i − α from outside, index η_c, layers l), for
+    /// times that of the cuticle (incidence θ_i − α/2 from outside, index η_c, layers l), for
     /// the radial exit of the report's simplification, in full 3D.
     #[inline]
     #[must_use]
     pub fn fresnel_exit<M: Math>(&self, theta_i: f32) -> f32 {
-        let e = theta_i - self.alpha;
+        let e = theta_i - self.tilt;
         let (sin_e, cos_e) = M::sin_cos(e);
         let s = sin_e / self.eta_m;
         let cos_p = sqrt_pos::<M>((1.0 - s) * (1.0 + s));

@@ -160,20 +160,25 @@ pub fn scattered_ref(p: &FurParams, theta_r: f64, h: f64) -> Option<ScatterRef> 
     })
 }
 
+/// The cuticle tilt of the scattered longitudinal lobe, α/2 per crossing (docs/model.md §6).
+fn scattered_tilt(p: &FurParams) -> f64 {
+    0.5 * p.alpha() as f64
+}
+
 /// θ' inside the medulla for an outside longitudinal angle θ (docs/model.md §6:
-/// sin θ' = sin(θ − α)/η_m) and the Jacobian |dθ'/dθ| = |cos(θ − α)|/(η_m·cos θ').
+/// sin θ' = sin(θ − α/2)/η_m) and the Jacobian |dθ'/dθ| = |cos(θ − α/2)|/(η_m·cos θ').
 pub fn refract_into_medulla(p: &FurParams, theta: f64) -> (f64, f64) {
-    let e = theta - p.alpha() as f64;
+    let e = theta - scattered_tilt(p);
     let eta_m = p.eta_m() as f64;
     let s = e.sin() / eta_m;
     let tp = s.asin();
     (tp, e.cos().abs() / (eta_m * tp.cos()))
 }
 
-/// F_t(θ_i) = (1 − dielectric(cos θ'_i; η_m → η_c))·(1 − cuticle(cos(θ_i − α); 1 → η_c, l)).
+/// F_t(θ_i) = (1 − dielectric(cos θ'_i; η_m → η_c))·(1 − cuticle(cos(θ_i − α/2); 1 → η_c, l)).
 pub fn exit_transmittance(p: &FurParams, theta_i: f64) -> f64 {
     let (tp, _) = refract_into_medulla(p, theta_i);
-    let e = theta_i - p.alpha() as f64;
+    let e = theta_i - scattered_tilt(p);
     let medulla = 1.0 - dielectric(tp.cos(), p.eta_m() as f64, p.eta_c() as f64);
     let cut = 1.0 - cuticle(e.cos().abs(), 1.0, p.eta_c() as f64, p.l() as f64);
     medulla * cut
@@ -181,18 +186,18 @@ pub fn exit_transmittance(p: &FurParams, theta_i: f64) -> f64 {
 
 /// θ_i ∈ (−π/2, π/2) where the θ_i-integrand of M^s has a kink: every θ'_out bin centre of
 /// C^M (the lookup is piecewise linear between them) mapped back through both branches of
-/// sin(θ_i − α) = η_m sin θ', and the fold θ_i − α = ±π/2.
+/// sin(θ_i − α/2) = η_m sin θ', and the fold θ_i − α/2 = ±π/2.
 pub fn m_s_kinks(p: &FurParams, layout: &ProfileLayout) -> Vec<f64> {
-    let alpha = p.alpha() as f64;
+    let tilt = scattered_tilt(p);
     let eta_m = p.eta_m() as f64;
     let n_out = layout.res.n_out;
     let w = PI / n_out as f64;
-    let mut out = vec![alpha - FRAC_PI_2, alpha + FRAC_PI_2];
+    let mut out = vec![tilt - FRAC_PI_2, tilt + FRAC_PI_2];
     for b in 0..n_out {
         let s = eta_m * (-FRAC_PI_2 + (b as f64 + 0.5) * w).sin();
         if s.abs() < 1.0 {
             let e = s.asin();
-            out.extend([alpha + e, alpha + PI - e, alpha - PI - e]);
+            out.extend([tilt + e, tilt + PI - e, tilt - PI - e]);
         }
     }
     out.retain(|x| x.abs() < FRAC_PI_2);

@@ -466,3 +466,73 @@ fn rho_at_most_one_other_presets_and_lossless() {
     sets.push(("lossless".into(), lossless()));
     check_rho_at_most_one(&sets);
 }
+
+/// docs/model.md §6: the scattered paths cross the cuticle twice, like TT, so with a
+/// forward-scattering medulla (g = 0.99) the far-field TttT^s lobe times cos²θ_i (which
+/// leaves M^s times a factor constant in θ_i) peaks where TT's does, at θ_i + θ_r = α — not
+/// at 2α, where a tilt of α per crossing puts it. At θ_r = ±30° the Jacobian and F_t move the
+/// peak by about ±1° in opposite directions, so their mean is checked.
+///
+/// Fine C^M tables (θ'_in nodes 0.6° apart, 0.25° θ'_out bins) keep the tables' own
+/// quantisation of the peak well inside the 0.5° tolerance; the scan steps 0.05°.
+#[test]
+fn scattered_longitudinal_peak_follows_the_tt_tilt() {
+    let res = Resolution {
+        n_sigma: 2,
+        n_h: 8,
+        n_psi: 64,
+        n_in: 64,
+        n_out: 720,
+    };
+    let budget = PhotonBudget {
+        per_cn_cell: 2000,
+        per_cm_row: 40_000,
+    };
+    let alpha_deg = 6.0f64;
+    let input = FurParamsInput {
+        eta_c: 1.55,
+        pigment: Pigment::Absorption(Rgb::splat(0.3)),
+        alpha_deg: alpha_deg as f32,
+        beta_m_deg: 8.0,
+        beta_n_deg: Some(8.0),
+        l: 1.0,
+        kappa: 0.5,
+        eta_m: None,
+        sigma_ms: 2.0,
+        sigma_ma: 0.0,
+        g: 0.99,
+    };
+    let p = FurParams::new(&input).unwrap();
+    let prof = OwnedProfiles::for_params(&p, res, budget, 0x7117_0001);
+    let model: FurBcsdf = FurBcsdf::new(p, prof.view()).unwrap();
+    // θ_i + θ_r at the peak of TttT^s·cos²θ_i over θ_i (φ = π), in degrees.
+    let peak_sum = |theta_r: f64| {
+        let mut best = (f32::MIN, 0.0f64);
+        for k in 0..=1600 {
+            let theta_i = theta_r.mul_add(-1.0, -40.0) + 0.05 * k as f64;
+            let angles = Angles::from_degrees(theta_i as f32, theta_r as f32, 180.0).unwrap();
+            let cos = (theta_i.to_radians()).cos() as f32;
+            let v = model.eval_far_lobes(&angles).get(Lobe::TttTs).luminance() * cos * cos;
+            if v > best.0 {
+                best = (v, theta_i + theta_r);
+            }
+        }
+        assert!(best.0 > 0.0, "no TttT^s at θ_r = {theta_r}");
+        best.1
+    };
+    let at_0 = peak_sum(0.0);
+    let (up, down) = (peak_sum(30.0), peak_sum(-30.0));
+    let mean = 0.5 * (up + down);
+    eprintln!(
+        "TttT^s·cos²θ_i peaks at θ_i + θ_r = {at_0:.2}° (θ_r = 0), {up:.2}° (30°), {down:.2}° \
+         (−30°), mean {mean:.2}°; α = {alpha_deg}°"
+    );
+    assert!(
+        (at_0 - alpha_deg).abs() <= 0.5,
+        "θ_r = 0: peak at {at_0:.2}°, want α = {alpha_deg}°"
+    );
+    assert!(
+        (mean - alpha_deg).abs() <= 0.5,
+        "θ_r = ±30°: peaks at {up:.2}° and {down:.2}°, mean {mean:.2}°, want α = {alpha_deg}°"
+    );
+}

@@ -246,7 +246,7 @@ mod tests {
     use std::vec;
     use std::vec::Vec;
 
-    fn header(preset: &str) -> LutHeader {
+    pub(super) fn header(preset: &str) -> LutHeader {
         LutHeader {
             res: LutResolution {
                 n_sum: 3,
@@ -276,7 +276,7 @@ mod tests {
     }
 
     /// A whole blob around `h`: zero tables, sealed (sampling section and checksum).
-    fn blob(h: &LutHeader) -> Vec<u8> {
+    pub(super) fn blob(h: &LutHeader) -> Vec<u8> {
         let mut bytes = vec![0u8; h.res.blob_len()];
         bytes[..HEADER_LEN].copy_from_slice(&h.encode());
         seal(&mut bytes);
@@ -344,5 +344,39 @@ mod tests {
             LutHeader::decode(&bytes),
             Err(LutError::Params(e)) if e.name == ParamName::Kappa && e.value == 1.5
         ));
+    }
+}
+
+#[cfg(test)]
+mod version_tests {
+    extern crate std;
+    use crate::baked::BakedBcsdf;
+    use crate::lut::{seal, LutError};
+    use crate::MODEL_VERSION;
+    use std::string::ToString;
+
+    /// A LUT baked by the previous model version (its tables were computed with other
+    /// formulas) is refused, and the message names both versions and says to re-bake.
+    #[test]
+    fn a_lut_of_the_previous_model_version_is_refused_with_a_rebake_message() {
+        let h = super::tests::header("yan-row-a");
+        let mut bytes = super::tests::blob(&h);
+        bytes[12..16].copy_from_slice(&(MODEL_VERSION - 1).to_le_bytes());
+        seal(&mut bytes);
+        let err = BakedBcsdf::from_bytes(&bytes).unwrap_err();
+        assert_eq!(
+            err,
+            LutError::ModelVersion {
+                found: MODEL_VERSION - 1
+            }
+        );
+        let msg = err.to_string();
+        for needle in [
+            std::format!("model version {}", MODEL_VERSION - 1),
+            std::format!("model version {MODEL_VERSION}"),
+            "re-bake".to_string(),
+        ] {
+            assert!(msg.contains(&needle), "{msg:?} should name {needle:?}");
+        }
     }
 }

@@ -13,8 +13,8 @@
 //! files.
 
 use bcsdf_core::medulla::{
-    generate_cn_cell, simulate_cylinder_row, simulate_disk_cell, Half, PhotonBudget,
-    ProfileLayout, Resolution,
+    generate_cn_cell, simulate_cylinder_row, simulate_disk_cell, Half, PhotonBudget, ProfileLayout,
+    Resolution,
 };
 use bcsdf_core::{presets, FurParams};
 use fur_tests::profiles_ref::OwnedProfiles;
@@ -577,24 +577,23 @@ fn cn_diffuse_limit() {
     let n_psi = 72;
     let mut cn = vec![0f32; n_psi];
     let w = TAU / n_psi as f64;
-    let moments =
-        |h: f64, sigma: f32, photons: u32, stream: u64, cn: &mut [f32]| {
-            let st = simulate_disk_cell(sigma, h as f32, 0.0, 0.0, photons, stream, cn);
-            let c = counts(cn, st.scattered);
-            let a = h.asin();
-            let (mut cs, mut sn, mut behind) = (0.0, 0.0, 0.0);
-            for (b, &cb) in c.iter().enumerate() {
-                let psi = -PI + (b as f64 + 0.5) * w;
-                let chi = fur_tests::tracer::wrap(PI - a - psi);
-                cs += cb * chi.cos();
-                sn += cb * chi.sin();
-                if chi.abs() > FRAC_PI_2 {
-                    behind += cb;
-                }
+    let moments = |h: f64, sigma: f32, photons: u32, stream: u64, cn: &mut [f32]| {
+        let st = simulate_disk_cell(sigma, h as f32, 0.0, 0.0, photons, stream, cn);
+        let c = counts(cn, st.scattered);
+        let a = h.asin();
+        let (mut cs, mut sn, mut behind) = (0.0, 0.0, 0.0);
+        for (b, &cb) in c.iter().enumerate() {
+            let psi = -PI + (b as f64 + 0.5) * w;
+            let chi = fur_tests::tracer::wrap(PI - a - psi);
+            cs += cb * chi.cos();
+            sn += cb * chi.sin();
+            if chi.abs() > FRAC_PI_2 {
+                behind += cb;
             }
-            let n = st.scattered as f64;
-            (cs / n, sn / n, behind / n)
-        };
+        }
+        let n = st.scattered as f64;
+        (cs / n, sn / n, behind / n)
+    };
     let mut last_sin = f64::INFINITY;
     for (i, sigma) in [2.0f32, 8.0, 32.0, 128.0].into_iter().enumerate() {
         let h = 0.6;

@@ -33,11 +33,9 @@ pub fn generate_parallel(
                     })
             },
             || {
-                cn.par_chunks_mut(n_psi)
-                    .enumerate()
-                    .for_each(|(cell, c)| {
-                        generate_cn_cell(layout, cell, budget, seed, c);
-                    })
+                cn.par_chunks_mut(n_psi).enumerate().for_each(|(cell, c)| {
+                    generate_cn_cell(layout, cell, budget, seed, c);
+                })
             },
         );
     };

@@ -63,11 +63,7 @@ pub struct OwnedProfiles {
 
 impl OwnedProfiles {
     /// Wraps tables in the core's layouts; checks them like [`MedullaProfiles::new`].
-    pub fn new(
-        key: ProfileKey,
-        cn: Vec<f32>,
-        cm: Vec<f32>,
-    ) -> Result<OwnedProfiles, ProfileError> {
+    pub fn new(key: ProfileKey, cn: Vec<f32>, cm: Vec<f32>) -> Result<OwnedProfiles, ProfileError> {
         MedullaProfiles::new(key.layout, &cn, &cm)?;
         Ok(OwnedProfiles {
             layout: key.layout,

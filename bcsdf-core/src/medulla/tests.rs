@@ -67,7 +67,10 @@ fn disk_cells_are_normalised_and_deterministic() {
     );
     assert!(weighted.iter().zip(&cn).all(|(w, c)| w <= c && *w > 0.0));
     let survival: f32 = weighted.iter().sum::<f32>() * width;
-    assert!(survival < 0.95 && survival > libm::expf(-a * 4.0), "{survival}");
+    assert!(
+        survival < 0.95 && survival > libm::expf(-a * 4.0),
+        "{survival}"
+    );
     // No scattering medium: nothing is binned; the row is uniform, times the survival along
     // the straight chord (1.6 at h_m = 0.6).
     let stats = simulate_disk_cell(0.0, 0.6, 0.5, 0.0, 1_000, 11, &mut cn);
@@ -230,7 +233,10 @@ fn lookups_interpolate_clamp_and_keep_the_symmetries() {
         // segments run from the first bin centre, −π + w/2, once around the circle.
         let row = p.n_row(sigma, h);
         let mass = p.row_mass(&row);
-        assert!(mass < 1.0 && mass > libm::expf(-l.absorption * sigma * 4.0), "{mass}");
+        assert!(
+            mass < 1.0 && mass > libm::expf(-l.absorption * sigma * 4.0),
+            "{mass}"
+        );
         let first = -PI + 0.5 * TAU / l.res.n_psi as f32;
         let mut prev = first;
         for u in midpoints(50) {

@@ -42,7 +42,7 @@ fn main() {
         budget.per_cm_row,
         Resolution::DEFAULT
     );
-    println!("preset        1 thread   2 threads   noise C^N   noise lbar   noise C^M");
+    println!("preset        1 thread   2 threads   noise C^N   noise C^M");
     for preset in presets::PRESETS.iter() {
         if !filter.is_empty() && !filter.iter().any(|f| preset.name.contains(f.as_str())) {
             continue;
@@ -63,14 +63,13 @@ fn main() {
         }
         let a = first.expect("generated");
         let b = generate_parallel(&layout, &budget, 2, None).expect("generate");
-        let ((cn_a, lb_a, cm_a), (cn_b, lb_b, cm_b)) = (a.tables(), b.tables());
+        let ((cn_a, cm_a), (cn_b, cm_b)) = (a.tables(), b.tables());
         println!(
-            "{:<13} {:>7.2} s  {:>8.2} s   {:>8.2} %  {:>9.2} %  {:>9.2} %",
+            "{:<13} {:>7.2} s  {:>8.2} s   {:>8.2} %  {:>9.2} %",
             preset.name,
             times[0],
             times[1],
             100.0 * noise(cn_a, cn_b),
-            100.0 * noise(lb_a, lb_b),
             100.0 * noise(cm_a, cm_b)
         );
     }

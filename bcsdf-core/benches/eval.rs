@@ -59,13 +59,9 @@ fn bench_full(c: &mut Criterion) {
             per_cn_cell: 2_000,
             per_cm_row: 4_000,
         };
-        let (mut cn, mut lbar, mut cm) = (
-            vec![0.0; layout.cn_len()],
-            vec![0.0; layout.cn_len()],
-            vec![0.0; layout.cm_len()],
-        );
-        generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).unwrap();
-        let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+        let (mut cn, mut cm) = (vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
+        generate(&layout, &budget, 1, &mut cn, &mut cm).unwrap();
+        let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
         let model: FurBcsdf = FurBcsdf::new(params, profiles).unwrap();
         let mut i = 0usize;
         c.bench_function(&format!("near_field_full/{name}"), |b| {

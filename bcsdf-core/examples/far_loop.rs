@@ -30,14 +30,10 @@ fn main() {
         per_cn_cell: 2_000,
         per_cm_row: 4_000,
     };
-    let (mut cn, mut lbar, mut cm) = (
-        vec![0.0; layout.cn_len()],
-        vec![0.0; layout.cn_len()],
-        vec![0.0; layout.cm_len()],
-    );
+    let (mut cn, mut cm) = (vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
     let model: FurBcsdf = if full {
-        generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).unwrap();
-        let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+        generate(&layout, &budget, 1, &mut cn, &mut cm).unwrap();
+        let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
         FurBcsdf::new(params, profiles).unwrap()
     } else {
         FurBcsdf::unscattered(params)

@@ -328,9 +328,8 @@ impl FarFieldQuery<'_> {
                 };
                 let weight = 0.5 * k * chord.variable_cos(seg.var) * (half * w);
                 let row = profiles.n_row(sigma_n, paths.h_m);
-                let (slice, ext) = (self.slice, self.extinction);
-                let plus = azimuthal_on_row::<M>(profiles, &row, &paths, slice, ext, phi);
-                let minus = azimuthal_on_row::<M>(profiles, &row, &paths, slice, ext, -phi);
+                let plus = azimuthal_on_row(profiles, &row, &paths, phi);
+                let minus = azimuthal_on_row(profiles, &row, &paths, -phi);
                 for ((a, p), m) in acc.iter_mut().zip(plus).zip(minus) {
                     *a += (p + m) * weight;
                 }

@@ -15,11 +15,10 @@
 //! // Medulla scattering profiles for these parameters, into caller memory (a small photon
 //! // budget here; `PhotonBudget::DEFAULT` reaches 1 % noise).
 //! let layout = ProfileLayout::for_params(&params, Resolution::DEFAULT);
-//! let (mut cn, mut lbar, mut cm) =
-//!     (vec![0.0; layout.cn_len()], vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
+//! let (mut cn, mut cm) = (vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
 //! let budget = PhotonBudget { per_cn_cell: 500, per_cm_row: 500 };
-//! generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).unwrap();
-//! let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+//! generate(&layout, &budget, 1, &mut cn, &mut cm).unwrap();
+//! let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
 //! let model: FurBcsdf = FurBcsdf::new(params, profiles).unwrap();
 //!
 //! let angles = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();

@@ -190,7 +190,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         if let (Some(s), true) = (&self.scattering, enters) {
             let exit = exit_transmittance::<M>(&slice, &ext);
             if let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, self.params.l(), exit) {
-                ns = azimuthal_at::<M>(&s.profiles, &sp, &slice, &ext, self.sigma_n(&slice), phi);
+                ns = azimuthal_at(&s.profiles, &sp, self.sigma_n(&slice), phi);
             }
         }
         (n, ns)
@@ -400,17 +400,13 @@ mod tests {
             n_out: 4,
         };
         let layout = ProfileLayout::for_params(&p, res);
-        let (mut cn, mut lbar, mut cm) = (
-            vec![0.0; layout.cn_len()],
-            vec![0.0; layout.cn_len()],
-            vec![0.0; layout.cm_len()],
-        );
+        let (mut cn, mut cm) = (vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
         let budget = PhotonBudget {
             per_cn_cell: 200,
             per_cm_row: 200,
         };
-        generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).unwrap();
-        let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+        generate(&layout, &budget, 1, &mut cn, &mut cm).unwrap();
+        let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
         let other = FurBcsdf::<Libm>::new(params("yan-row-a"), profiles);
         assert_eq!(other.err(), Some(ProfileError::Mismatch));
         let model = FurBcsdf::<Libm>::new(p, profiles).unwrap();

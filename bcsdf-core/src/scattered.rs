@@ -22,7 +22,7 @@ pub const SCATTERED_COUNT: usize = 3;
 pub struct ScatteredPaths {
     /// Φ^s_p for TttT^s, TtrtT^s, TttRttT^s.
     pub rotation: [f32; SCATTERED_COUNT],
-    /// A^s_p (without the σ_ma·ℓ̄ factor, which depends on ψ).
+    /// A^s_p (the medulla absorption of the scattered light is in C^N).
     pub attenuation: [Rgb; SCATTERED_COUNT],
     /// Signed offset inside the medulla, h_m = h/(κη'_m) = sin μ.
     pub h_m: f32,
@@ -89,48 +89,36 @@ pub fn exit_transmittance<M: Math>(slice: &ViewSlice, ext: &Extinction) -> Rgb {
     transmittance::<M>(ext.cortex, 1.0 - slice.kappa)
 }
 
-/// N^s_p(h, φ) = A^s_p(h)·C^N(φ − π − Φ^s_p(h); h_m, σ_N, g)·exp(−σ_ma·κ·ℓ̄(ψ)/cos θ_tm)
-/// (report eq. 6, 10), for the three lobes. `sigma_n` = σ_ms·κ/cos θ_tm is the medulla's 2D
-/// optical radius; ℓ̄ is tabulated in medulla radii, hence the factor κ.
+/// N^s_p(h, φ) = A^s_p(h)·C^N(φ − π − Φ^s_p(h); h_m, σ_N, g) (report eq. 6, 10), for the
+/// three lobes. `sigma_n` = σ_ms·κ/cos θ_tm is the medulla's 2D optical radius; C^N carries
+/// the medulla absorption of the scattered light (docs/model.md §7).
 #[inline]
 #[must_use]
-pub fn azimuthal_at<M: Math>(
+pub fn azimuthal_at(
     profiles: &MedullaProfiles<'_>,
     paths: &ScatteredPaths,
-    slice: &ViewSlice,
-    ext: &Extinction,
     sigma_n: f32,
     phi: f32,
 ) -> [Rgb; SCATTERED_COUNT] {
     let row = profiles.n_row(sigma_n, paths.h_m);
-    azimuthal_on_row::<M>(profiles, &row, paths, slice, ext, phi)
+    azimuthal_on_row(profiles, &row, paths, phi)
 }
 
 /// [`azimuthal_at`] with the C^N row already prepared (shared by ±φ in the far field).
 #[inline]
 #[must_use]
-pub fn azimuthal_on_row<M: Math>(
+pub fn azimuthal_on_row(
     profiles: &MedullaProfiles<'_>,
     row: &NRow,
     paths: &ScatteredPaths,
-    slice: &ViewSlice,
-    ext: &Extinction,
     phi: f32,
 ) -> [Rgb; SCATTERED_COUNT] {
     let mut out = [Rgb::ZERO; SCATTERED_COUNT];
-    let absorb = ext.medulla_absorption * slice.kappa;
     for (k, o) in out.iter_mut().enumerate() {
         if paths.attenuation[k].max_channel() <= 0.0 {
             continue;
         }
-        let psi = phi - PI - paths.rotation[k];
-        let v = if absorb > 0.0 {
-            let (c, ell) = profiles.cn_and_mean_length_at(row, psi);
-            c * M::exp_neg(absorb * ell)
-        } else {
-            profiles.cn_at(row, psi)
-        };
-        *o = paths.attenuation[k] * v;
+        *o = paths.attenuation[k] * profiles.cn_at(row, phi - PI - paths.rotation[k]);
     }
     out
 }

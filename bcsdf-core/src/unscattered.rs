@@ -26,8 +26,6 @@ pub struct Extinction {
     pub medulla: f32,
     /// σ_ms / cos θ_tm: the chance of scattering on a medulla chord (docs/model.md §6, P).
     pub medulla_scattering: f32,
-    /// σ_ma / cos θ_tm: absorption of the scattered light along its mean path ℓ̄.
-    pub medulla_absorption: f32,
 }
 
 impl Extinction {
@@ -38,7 +36,6 @@ impl Extinction {
             cortex: params.sigma_ca() * slice.inv_cos_tc,
             medulla: (params.sigma_ms() + params.sigma_ma()) * slice.inv_cos_tm,
             medulla_scattering: params.sigma_ms() * slice.inv_cos_tm,
-            medulla_absorption: params.sigma_ma() * slice.inv_cos_tm,
         }
     }
 }

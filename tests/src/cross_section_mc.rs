@@ -27,7 +27,7 @@
 //!   circle), and its travel direction there is its exit direction, attenuated by the radial
 //!   cortex leg exp(−σ_ca·(1 − κ)/cos θ_tc), without any cuticle Fresnel (the model puts the
 //!   exit transmittance F_t into M^s, not into N^s). σ_ma acts on each photon's own path
-//!   (exp(−σ_ma·L/cos θ_tm)), where the model uses the mean path ℓ̄ per ψ bin.
+//!   (exp(−σ_ma·L/cos θ_tm)), as in the model's C^N walk.
 //! - anything in between, to attribute the difference between the two to single
 //!   simplifications.
 //!

@@ -11,7 +11,7 @@
 //! - [`scattered_energy`]: the scattered part of the white-furnace prediction (docs/model.md §8).
 //!
 //! The only things taken from the core are the generated tables and their lookup
-//! (`MedullaProfiles::cn`, `mean_length`, `cm`), which `tests/tests/profiles.rs` checks on its
+//! (`MedullaProfiles::cn`, `cm`), which `tests/tests/profiles.rs` checks on its
 //! own. Nothing here calls the core's geometry, Fresnel, scattered or far-field code.
 
 use crate::quadrature::{composite_gl_nodes, gauss_legendre};
@@ -25,10 +25,8 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 pub struct OwnedProfiles {
     /// Axes and resolution.
     pub layout: ProfileLayout,
-    /// C^N, `[σ][h_m][ψ]`.
+    /// C^N, `[σ][h_m][ψ]` (with the medulla absorption of the scattered light).
     pub cn: Vec<f32>,
-    /// ℓ̄, same layout.
-    pub lbar: Vec<f32>,
     /// C^M, `[half][θ'_in][θ'_out]`.
     pub cm: Vec<f32>,
 }
@@ -39,18 +37,10 @@ impl OwnedProfiles {
         let mut out = OwnedProfiles {
             layout,
             cn: vec![0.0; layout.cn_len()],
-            lbar: vec![0.0; layout.cn_len()],
             cm: vec![0.0; layout.cm_len()],
         };
-        generate(
-            &layout,
-            &budget,
-            seed,
-            &mut out.cn,
-            &mut out.lbar,
-            &mut out.cm,
-        )
-        .expect("valid layout and buffers");
+        generate(&layout, &budget, seed, &mut out.cn, &mut out.cm)
+            .expect("valid layout and buffers");
         out
     }
 
@@ -66,7 +56,7 @@ impl OwnedProfiles {
 
     /// A validated view for the core.
     pub fn view(&self) -> MedullaProfiles<'_> {
-        MedullaProfiles::new(self.layout, &self.cn, &self.lbar, &self.cm).expect("valid tables")
+        MedullaProfiles::new(self.layout, &self.cn, &self.cm).expect("valid tables")
     }
 }
 
@@ -76,15 +66,12 @@ pub struct ScatterRef {
     /// Φ^s_p for TttT^s, TtrtT^s, TttRttT^s (rotation of the travel direction before the
     /// scattering chord, exit-azimuth sense, not wrapped).
     pub rotation: [f64; 3],
-    /// A^s_p per RGB channel (without the σ_ma·ℓ̄ factor).
+    /// A^s_p per RGB channel (the medulla absorption of the scattered light is in C^N).
     pub attenuation: [[f64; 3]; 3],
     /// Signed offset inside the medulla, h/(κ·η'_m).
     pub h_m: f64,
     /// σ_N = σ_ms·κ/cos θ_tm.
     pub sigma_n: f64,
-    /// σ_ma·κ/cos θ_tm: exp(−this·ℓ̄) is the medulla absorption of the scattered light (ℓ̄ in
-    /// medulla radii).
-    pub absorb: f64,
     /// The unscattered TttT exit azimuth 2c − 2a − 2m + 2μ + π (docs/model.md §3 table).
     pub phi_tttt: f64,
     /// (c − a) + (μ − m): the refractions before the scattering chord of TttT^s.
@@ -154,7 +141,6 @@ pub fn scattered_ref(p: &FurParams, theta_r: f64, h: f64) -> Option<ScatterRef> 
         attenuation,
         h_m: sin_mu,
         sigma_n: sms * kappa / cos_tm,
-        absorb: sma * kappa / cos_tm,
         phi_tttt: 2.0 * c - 2.0 * a - 2.0 * m + 2.0 * mu + PI,
         refraction,
     })
@@ -250,7 +236,7 @@ pub fn mean_exit_transmittance(
 /// The scattered part of the white-furnace prediction at view angle `theta_r` (docs/model.md §8),
 /// per RGB channel:
 ///
-/// Σ_p ½∫dh A^s_p(h) ∫dφ C^N(φ − π − Φ^s_p(h); h_m, σ_N)·exp(−σ_ma κ ℓ̄/cos θ_tm)·
+/// Σ_p ½∫dh A^s_p(h) ∫dφ C^N(φ − π − Φ^s_p(h); h_m, σ_N)·
 /// [(1 − |φ|/π)·⟨F_t⟩_back + (|φ|/π)·⟨F_t⟩_front],
 ///
 /// which is what ∫ M^s·Σ_p N^s_p cos θ_i dω_i / cos²θ_i·cos²θ_i leaves once M^s is integrated
@@ -295,11 +281,7 @@ pub fn scattered_energy(
         for (k, att) in r.attenuation.iter().enumerate() {
             let mut acc = 0.0;
             for &(psi, w) in &psi_nodes {
-                let (sn, hm, ps) = (r.sigma_n as f32, r.h_m as f32, psi as f32);
-                let mut c = profiles.cn(sn, hm, ps) as f64;
-                if r.absorb > 0.0 {
-                    c *= (-r.absorb * profiles.mean_length(sn, hm, ps) as f64).exp();
-                }
+                let c = profiles.cn(r.sigma_n as f32, r.h_m as f32, psi as f32) as f64;
                 let phi = wrap(psi + PI + r.rotation[k]).abs() / PI;
                 acc += w * c * ((1.0 - phi) * f_back + phi * f_front);
             }

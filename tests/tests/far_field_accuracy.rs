@@ -196,13 +196,9 @@ fn scattered_far_field_matches_fine_reference() {
             per_cn_cell: 100_000,
             per_cm_row: 4_000,
         };
-        let (mut cn, mut lbar, mut cm) = (
-            vec![0.0; layout.cn_len()],
-            vec![0.0; layout.cn_len()],
-            vec![0.0; layout.cm_len()],
-        );
-        generate(&layout, &budget, 3, &mut cn, &mut lbar, &mut cm).unwrap();
-        let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+        let (mut cn, mut cm) = (vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
+        generate(&layout, &budget, 3, &mut cn, &mut cm).unwrap();
+        let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
         let model: FurBcsdf = FurBcsdf::new(params, profiles).unwrap();
         assert!(Lobe::ALL[UNSCATTERED_COUNT..]
             .iter()

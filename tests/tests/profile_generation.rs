@@ -38,8 +38,7 @@ fn assert_same_bits(a: &OwnedProfiles, b: &OwnedProfiles, what: &str) {
     let (ta, tb) = (a.tables(), b.tables());
     assert_eq!(a.key(), b.key(), "{what}: key");
     assert!(bits(ta.0) == bits(tb.0), "{what}: C^N differs");
-    assert!(bits(ta.1) == bits(tb.1), "{what}: lbar differs");
-    assert!(bits(ta.2) == bits(tb.2), "{what}: C^M differs");
+    assert!(bits(ta.1) == bits(tb.1), "{what}: C^M differs");
 }
 
 fn temp_dir() -> tempfile::TempDir {
@@ -61,7 +60,7 @@ fn files_in(dir: &Path) -> Vec<PathBuf> {
 /// Non-trivial tables: not every cell at the "no scattered photon" fallback, so the
 /// comparisons below compare real Monte Carlo output.
 fn assert_nontrivial(p: &OwnedProfiles) {
-    let (cn, lbar, cm) = p.tables();
+    let (cn, cm) = p.tables();
     let distinct = |t: &[f32]| {
         let mut b = bits(t);
         b.sort_unstable();
@@ -69,7 +68,6 @@ fn assert_nontrivial(p: &OwnedProfiles) {
         b.len()
     };
     assert!(distinct(cn) > cn.len() / 4, "C^N looks constant");
-    assert!(distinct(lbar) > lbar.len() / 4, "lbar looks constant");
     assert!(distinct(cm) > cm.len() / 4, "C^M looks constant");
 }
 
@@ -90,13 +88,9 @@ fn same_bits_for_any_thread_count_and_across_runs() {
         let global = generate_parallel(&l, &budget, 5, None).unwrap();
         assert_same_bits(&one, &global, &format!("{name}: global pool"));
         // And equal to the core's sequential generator.
-        let (mut cn, mut lbar, mut cm) = (
-            vec![0.0; l.cn_len()],
-            vec![0.0; l.cn_len()],
-            vec![0.0; l.cm_len()],
-        );
-        medulla::generate(&l, &budget, 5, &mut cn, &mut lbar, &mut cm).unwrap();
-        let seq = OwnedProfiles::new(one.key(), cn, lbar, cm).unwrap();
+        let (mut cn, mut cm) = (vec![0.0; l.cn_len()], vec![0.0; l.cm_len()]);
+        medulla::generate(&l, &budget, 5, &mut cn, &mut cm).unwrap();
+        let seq = OwnedProfiles::new(one.key(), cn, cm).unwrap();
         assert_same_bits(&one, &seq, &format!("{name}: core sequential"));
     }
 }
@@ -107,11 +101,7 @@ fn a_different_seed_gives_different_bits() {
     let a = generate_parallel(&l, &SMALL, 1, None).unwrap();
     let b = generate_parallel(&l, &SMALL, 2, None).unwrap();
     let (ta, tb) = (a.tables(), b.tables());
-    for (name, x, y) in [
-        ("C^N", ta.0, tb.0),
-        ("lbar", ta.1, tb.1),
-        ("C^M", ta.2, tb.2),
-    ] {
+    for (name, x, y) in [("C^N", ta.0, tb.0), ("C^M", ta.1, tb.1)] {
         let differing = x
             .iter()
             .zip(y)
@@ -265,7 +255,7 @@ fn damaged_stale_or_foreign_cache_files_are_detected_and_regenerated() {
             |e| matches!(e, CacheError::Checksum { .. }),
         );
     }
-    for at in [72, 85, 90] {
+    for at in [76, 85, 90] {
         let mut b = bytes.clone();
         b[at] ^= 0x01;
         check_rejected(
@@ -329,6 +319,18 @@ fn damaged_stale_or_foreign_cache_files_are_detected_and_regenerated() {
         "other budget",
         |e| matches!(e, CacheError::KeyMismatch("photon budget")),
     );
+    // Another medulla absorption ratio σ_ma/σ_ms (the same axes otherwise).
+    let mut absorbing = *good.layout();
+    absorbing.absorption *= 2.0;
+    let other_absorption = generate_parallel(&absorbing, &SMALL, 9, None).unwrap();
+    check_rejected(
+        dir.path(),
+        &p,
+        &good,
+        &encode(&other_absorption),
+        "other absorption",
+        |e| matches!(e, CacheError::KeyMismatch("absorption")),
+    );
     // Another resolution of the same parameters.
     let mut coarse_layout = *good.layout();
     coarse_layout.res.n_psi = 36;
@@ -344,7 +346,7 @@ fn damaged_stale_or_foreign_cache_files_are_detected_and_regenerated() {
 
     // A table value that is not a valid profile value, sealed with a valid checksum.
     let mut b = bytes.clone();
-    b[96..100].copy_from_slice(&(-1.0f32).to_bits().to_le_bytes());
+    b[92..96].copy_from_slice(&(-1.0f32).to_bits().to_le_bytes());
     reseal(&mut b);
     check_rejected(dir.path(), &p, &good, &b, "negative C^N value", |e| {
         matches!(
@@ -577,12 +579,7 @@ fn build_model_uses_profiles_only_when_the_medulla_scatters() {
     };
     let l = key.layout;
     assert!(matches!(
-        OwnedProfiles::new(
-            key,
-            vec![0.0; 3],
-            vec![0.0; l.cn_len()],
-            vec![0.0; l.cm_len()]
-        ),
+        OwnedProfiles::new(key, vec![0.0; 3], vec![0.0; l.cm_len()]),
         Err(ProfileError::WrongLength { table: "C^N", .. })
     ));
 }

@@ -117,7 +117,6 @@ fn core_sample(c: &Case) -> CoreSample {
             cortex: Rgb::splat(cortex),
             medulla,
             medulla_scattering: 0.0,
-            medulla_absorption: 0.0,
         };
         attenuations::<Libm>(&slice, &chord, &ext, c.l).map(|a| a.0[0] as f64)
     };

@@ -150,9 +150,10 @@ fn forward_scattering_peaks_where_model_says() {
 /// in f64 with own Fresnel: |∫ − A^s_p| ≤ 1e-3·A^s_p (f32 lookups: measured ~1e-6).
 ///
 /// With σ_ma > 0 at a table node (θ_r = 0 so σ_N is the first σ node, h so that h_m is an
-/// h node) the integral is A^s_p·∫ C^N(ψ)·exp(−σ_ma κ ℓ̄(ψ)/cos θ_tm) dψ, with C^N and ℓ̄
-/// interpolated here from the raw table (linear between bin centres, circular), to 1e-3:
-/// this pins the factor κ (ℓ̄ is in medulla radii) and the 1/cos θ_tm.
+/// h node) the integral is A^s_p·∫ C^N(ψ) dψ, C^N interpolated here from the raw table
+/// (linear between bin centres, circular), to 1e-3: C^N carries the medulla absorption
+/// (docs/model.md §7; its integral, the mean survival, is checked against an independent
+/// computation in `tests/tests/profiles.rs`), and the model applies no other σ_ma factor.
 #[test]
 fn phi_integral_of_scattered_lobes_is_attenuation() {
     let mut worst = 0.0f64;
@@ -228,9 +229,7 @@ fn phi_integral_of_scattered_lobes_is_attenuation() {
             for i in 0..n {
                 let phi = -PI + (i as f64 + 0.5) * TAU / n as f64;
                 let psi = wrap(phi - PI - r.rotation[0]);
-                mean += TAU / n as f64
-                    * interp(&prof.cn, psi)
-                    * (-r.absorb * interp(&prof.lbar, psi)).exp();
+                mean += TAU / n as f64 * interp(&prof.cn, psi);
                 let v = model.azimuthal_near(0.0, phi as f32, h as f32);
                 for (k, lobe) in Lobe::SCATTERED.iter().enumerate() {
                     integral[k] += v[lobe.index()].0[0] as f64 * TAU / n as f64;
@@ -244,7 +243,7 @@ fn phi_integral_of_scattered_lobes_is_attenuation() {
                 }
                 assert!(
                     err <= 1e-3 * want + 1e-9,
-                    "{name} h_m={h_m} {}: {} vs {want} (A^s {}, ⟨e^(−σ_ma κ ℓ̄)⟩ {mean})",
+                    "{name} h_m={h_m} {}: {} vs {want} (A^s {}, ∫ C^N dψ {mean})",
                     Lobe::SCATTERED[k].name(),
                     integral[k],
                     r.attenuation[k][0]

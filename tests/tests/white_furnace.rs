@@ -309,13 +309,13 @@ fn deficit_is_energy_beyond_trt() {
 /// profiles: ρ(θ_r) from the core's far field integrated over the sphere of light directions
 /// must equal
 ///
-/// Σ_p ⟨A_p⟩_h·mass_p + Σ_p ½∫dh A^s_p(h) ∫dφ C^N(φ − π − Φ^s_p(h))·e^{−σ_ma κ ℓ̄/cos θ_tm}·
+/// Σ_p ⟨A_p⟩_h·mass_p + Σ_p ½∫dh A^s_p(h) ∫dφ C^N(φ − π − Φ^s_p(h))·
 /// [(1 − |φ|/π)·⟨F_t⟩_back + (|φ|/π)·⟨F_t⟩_front],
 ///
 /// which is how the model assembles S: M^s·Σ_p N^s_p/cos²θ_i with M^s = μ F_t C^M |dθ'/dθ|
 /// interpolated back → front in |φ|, and μ normalising C^M·|dθ'/dθ| over θ_i. A^s_p, Φ^s_p, F_t,
 /// ⟨F_t⟩ (with the furnace's pole clamp) and the integrals are this crate's f64 versions
-/// (`fur_tests::profiles_ref`); only the C^N, ℓ̄, C^M tables and their lookup are shared.
+/// (`fur_tests::profiles_ref`); only the C^N, C^M tables and their lookup are shared (C^N carries the medulla absorption).
 ///
 /// Numerical side: θ_i panels as for the unscattered furnace (≤ 0.1 rad), also broken at every kink of the piecewise-linear
 /// C^M lookup (mapped to θ_i) and at the fold θ_i − α = ±π/2; φ by the periodic trapezoid rule

@@ -2,10 +2,10 @@
 //! reuses a valid file and (re)generates and atomically (re)writes a missing, stale or
 //! corrupt one, and the default cache directory.
 //!
-//! # Cache file format (`FORMAT_VERSION` 1)
+//! # Cache file format (`FORMAT_VERSION` 2)
 //!
 //! One file per [`ProfileKey`] (generator version, layout, budget, seed), named
-//! `medulla-<16 hex digits>.furprof` after the FNV-1a 64 hash of the key bytes (bytes 8..72
+//! `medulla-<16 hex digits>.furprof` after the FNV-1a 64 hash of the key bytes (bytes 8..76
 //! below), so different parameter sets never share a file. Little-endian throughout:
 //!
 //! | offset | type | content |
@@ -13,13 +13,16 @@
 //! | 0 | `[u8; 8]` | magic `b"FURPROF\0"` |
 //! | 8 | u32 | cache format version ([`FORMAT_VERSION`]) |
 //! | 12 | u32 | [`GENERATOR_VERSION`] of the generator that made the tables |
-//! | 16 | 5 × f32 (IEEE bits) | layout: `g`, `sigma_n_min`, `sigma_n_max`, `sigma_m`, `theta_in_max` |
-//! | 36 | 5 × u32 | resolution: `n_sigma`, `n_h`, `n_psi`, `n_in`, `n_out` |
-//! | 56 | 2 × u32 | photon budget: `per_cn_cell`, `per_cm_row` |
-//! | 64 | u64 | seed |
-//! | 72 | 3 × u64 | number of f32 entries of C^N, ℓ̄, C^M |
-//! | 96 | f32 × … | C^N, then ℓ̄, then C^M, in the core's layouts ([`bcsdf_core::medulla`]) |
+//! | 16 | 6 × f32 (IEEE bits) | layout: `g`, `sigma_n_min`, `sigma_n_max`, `sigma_m`, `theta_in_max`, `absorption` |
+//! | 40 | 5 × u32 | resolution: `n_sigma`, `n_h`, `n_psi`, `n_in`, `n_out` |
+//! | 60 | 2 × u32 | photon budget: `per_cn_cell`, `per_cm_row` |
+//! | 68 | u64 | seed |
+//! | 76 | 2 × u64 | number of f32 entries of C^N, C^M |
+//! | 92 | f32 × … | C^N, then C^M, in the core's layouts ([`bcsdf_core::medulla`]) |
 //! | end − 8 | u64 | FNV-1a 64 checksum of every byte before it |
+//!
+//! Version 1 (generator version 1) also held the mean-path table ℓ̄ and had no `absorption`;
+//! such files are stale ([`CacheError::FormatVersion`]) and are regenerated.
 //!
 //! Loading checks, in order: the magic, the format version, that the file length is the one
 //! the header announces (truncated or extended files), the checksum (any flipped bit), the
@@ -53,13 +56,16 @@ use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
 /// Version of the cache file format described in the module documentation.
-pub const FORMAT_VERSION: u32 = 1;
+pub const FORMAT_VERSION: u32 = 2;
 
 /// The first eight bytes of a cache file.
 pub const MAGIC: [u8; 8] = *b"FURPROF\0";
 
-/// Bytes before the tables.
-const HEADER_LEN: usize = 96;
+/// End of the key bytes (which start at 8, after the magic).
+const KEY_END: usize = 76;
+
+/// Bytes before the tables: the key, then two table lengths.
+const HEADER_LEN: usize = KEY_END + 16;
 
 /// Bytes of the trailing checksum.
 const CHECKSUM_LEN: usize = 8;
@@ -82,9 +88,9 @@ pub struct ProfileKey {
 }
 
 impl ProfileKey {
-    /// Bytes 8..72 of a cache file for this key (format and generator versions included).
-    fn to_bytes(self) -> [u8; 64] {
-        let mut b = [0u8; 64];
+    /// Bytes 8..76 of a cache file for this key (format and generator versions included).
+    fn to_bytes(self) -> [u8; KEY_END - 8] {
+        let mut b = [0u8; KEY_END - 8];
         let mut w = 0;
         let mut put = |bytes: &[u8]| {
             b[w..w + bytes.len()].copy_from_slice(bytes);
@@ -93,7 +99,15 @@ impl ProfileKey {
         put(&FORMAT_VERSION.to_le_bytes());
         put(&GENERATOR_VERSION.to_le_bytes());
         let l = &self.layout;
-        for v in [l.g, l.sigma_n_min, l.sigma_n_max, l.sigma_m, l.theta_in_max] {
+        let axes = [
+            l.g,
+            l.sigma_n_min,
+            l.sigma_n_max,
+            l.sigma_m,
+            l.theta_in_max,
+            l.absorption,
+        ];
+        for v in axes {
             put(&v.to_bits().to_le_bytes());
         }
         let r = l.res;
@@ -105,6 +119,7 @@ impl ProfileKey {
         put(&self.budget.per_cn_cell.to_le_bytes());
         put(&self.budget.per_cm_row.to_le_bytes());
         put(&self.seed.to_le_bytes());
+        debug_assert_eq!(w, b.len());
         b
     }
 
@@ -197,15 +212,15 @@ impl std::error::Error for CacheError {}
 
 /// Serialises `profiles` in the cache format (module documentation).
 pub fn encode(profiles: &OwnedProfiles) -> Vec<u8> {
-    let (cn, lbar, cm) = profiles.tables();
-    let total = HEADER_LEN + 4 * (cn.len() + lbar.len() + cm.len()) + CHECKSUM_LEN;
+    let (cn, cm) = profiles.tables();
+    let total = HEADER_LEN + 4 * (cn.len() + cm.len()) + CHECKSUM_LEN;
     let mut out = Vec::with_capacity(total);
     out.extend_from_slice(&MAGIC);
     out.extend_from_slice(&profiles.key().to_bytes());
-    for t in [cn, lbar, cm] {
+    for t in [cn, cm] {
         out.extend_from_slice(&(t.len() as u64).to_le_bytes());
     }
-    for t in [cn, lbar, cm] {
+    for t in [cn, cm] {
         for v in t {
             out.extend_from_slice(&v.to_bits().to_le_bytes());
         }
@@ -248,7 +263,7 @@ pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, Cach
             found,
         });
     }
-    let lens = [u64_at(bytes, 72), u64_at(bytes, 80), u64_at(bytes, 88)];
+    let lens = [u64_at(bytes, KEY_END), u64_at(bytes, KEY_END + 8)];
     let announced = lens
         .iter()
         .try_fold(min, |acc, n| {
@@ -272,16 +287,17 @@ pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, Cach
         return Err(CacheError::GeneratorVersion(generator));
     }
     let want = expected.to_bytes();
-    let got = &bytes[8..72];
-    const FIELDS: [(usize, &str); 8] = [
+    let got = &bytes[8..KEY_END];
+    const FIELDS: [(usize, &str); 9] = [
         (16, "g"),
         (20, "sigma_n_min"),
         (24, "sigma_n_max"),
         (28, "sigma_m"),
         (32, "theta_in_max"),
-        (36, "resolution"),
-        (56, "photon budget"),
-        (64, "seed"),
+        (36, "absorption"),
+        (40, "resolution"),
+        (60, "photon budget"),
+        (68, "seed"),
     ];
     if let Some(i) = (0..want.len()).find(|&i| want[i] != got[i]) {
         let field = FIELDS
@@ -298,11 +314,10 @@ pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, Cach
             .collect()
     };
     // The lengths fit in memory: they add up to the file's length.
-    let [n_cn, n_lbar, n_cm] = lens.map(|n| n as usize);
+    let [n_cn, n_cm] = lens.map(|n| n as usize);
     let cn = table(HEADER_LEN, n_cn);
-    let lbar = table(HEADER_LEN + 4 * n_cn, n_lbar);
-    let cm = table(HEADER_LEN + 4 * (n_cn + n_lbar), n_cm);
-    OwnedProfiles::new(*expected, cn, lbar, cm).map_err(CacheError::Tables)
+    let cm = table(HEADER_LEN + 4 * n_cn, n_cm);
+    OwnedProfiles::new(*expected, cn, cm).map_err(CacheError::Tables)
 }
 
 /// What [`load_or_generate`] did with the cache.
@@ -438,11 +453,18 @@ mod tests {
         assert_eq!(u32_at(&bytes, 8), FORMAT_VERSION);
         assert_eq!(u32_at(&bytes, 12), GENERATOR_VERSION);
         assert_eq!(u32_at(&bytes, 16), k.layout.g.to_bits());
-        assert_eq!(u32_at(&bytes, 36) as usize, k.layout.res.n_sigma);
-        assert_eq!(u32_at(&bytes, 56), 300);
-        assert_eq!(u64_at(&bytes, 64), 7);
-        assert_eq!(u64_at(&bytes, 72) as usize, k.layout.cn_len());
-        assert_eq!(u64_at(&bytes, 88) as usize, k.layout.cm_len());
+        assert_eq!(u32_at(&bytes, 32), k.layout.theta_in_max.to_bits());
+        assert!(k.layout.absorption > 0.0);
+        assert_eq!(u32_at(&bytes, 36), k.layout.absorption.to_bits());
+        assert_eq!(u32_at(&bytes, 40) as usize, k.layout.res.n_sigma);
+        assert_eq!(u32_at(&bytes, 60), 300);
+        assert_eq!(u64_at(&bytes, 68), 7);
+        assert_eq!(u64_at(&bytes, 76) as usize, k.layout.cn_len());
+        assert_eq!(u64_at(&bytes, 84) as usize, k.layout.cm_len());
+        assert_eq!(
+            bytes.len(),
+            92 + 4 * (k.layout.cn_len() + k.layout.cm_len()) + 8
+        );
         assert_eq!(decode(&bytes, &k).unwrap(), p);
         // Each key field is named when it differs.
         let mut other = k;
@@ -463,6 +485,13 @@ mod tests {
             decode(&bytes, &other),
             Err(CacheError::KeyMismatch("sigma_n_max"))
         ));
+        other = k;
+        other.layout.absorption *= 2.0;
+        assert!(matches!(
+            decode(&bytes, &other),
+            Err(CacheError::KeyMismatch("absorption"))
+        ));
+        assert_ne!(other.file_name(), k.file_name());
         other = k;
         other.layout.res.n_out += 1;
         assert!(matches!(

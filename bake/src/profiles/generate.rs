@@ -5,7 +5,7 @@ use super::{Error, OwnedProfiles, ProfileKey};
 use bcsdf_core::medulla::{generate_cm_row, generate_cn_cell, PhotonBudget, ProfileLayout};
 use rayon::prelude::*;
 
-/// Generates every table of `layout` with rayon: C^N / ℓ̄ cells and C^M rows in parallel,
+/// Generates every table of `layout` with rayon: C^N cells and C^M rows in parallel,
 /// each into its own chunk. `threads`: a local pool of that many threads (`Some(0)` means
 /// rayon's default count), or `None` for rayon's global pool. The result is the same bits for
 /// any thread count, and equal to [`bcsdf_core::medulla::generate`].
@@ -17,7 +17,6 @@ pub fn generate_parallel(
 ) -> Result<OwnedProfiles, Error> {
     layout.validate()?;
     let mut cn = vec![0.0f32; layout.cn_len()];
-    let mut lbar = vec![0.0f32; layout.cn_len()];
     let mut cm = vec![0.0f32; layout.cm_len()];
     let mut work = || {
         let n_psi = layout.res.n_psi;
@@ -34,12 +33,9 @@ pub fn generate_parallel(
                     })
             },
             || {
-                cn.par_chunks_mut(n_psi)
-                    .zip(lbar.par_chunks_mut(n_psi))
-                    .enumerate()
-                    .for_each(|(cell, (c, l))| {
-                        generate_cn_cell(layout, cell, budget, seed, c, l);
-                    })
+                cn.par_chunks_mut(n_psi).enumerate().for_each(|(cell, c)| {
+                    generate_cn_cell(layout, cell, budget, seed, c);
+                })
             },
         );
     };
@@ -56,7 +52,7 @@ pub fn generate_parallel(
         budget: *budget,
         seed,
     };
-    Ok(OwnedProfiles::new(key, cn, lbar, cm)?)
+    Ok(OwnedProfiles::new(key, cn, cm)?)
 }
 
 /// `budget` with both photon counts multiplied by `scale` (rounded, at least 1, at most

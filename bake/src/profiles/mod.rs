@@ -58,32 +58,25 @@ pub struct OwnedProfiles {
     budget: PhotonBudget,
     seed: u64,
     cn: Vec<f32>,
-    lbar: Vec<f32>,
     cm: Vec<f32>,
 }
 
 impl OwnedProfiles {
     /// Wraps tables in the core's layouts; checks them like [`MedullaProfiles::new`].
-    pub fn new(
-        key: ProfileKey,
-        cn: Vec<f32>,
-        lbar: Vec<f32>,
-        cm: Vec<f32>,
-    ) -> Result<OwnedProfiles, ProfileError> {
-        MedullaProfiles::new(key.layout, &cn, &lbar, &cm)?;
+    pub fn new(key: ProfileKey, cn: Vec<f32>, cm: Vec<f32>) -> Result<OwnedProfiles, ProfileError> {
+        MedullaProfiles::new(key.layout, &cn, &cm)?;
         Ok(OwnedProfiles {
             layout: key.layout,
             budget: key.budget,
             seed: key.seed,
             cn,
-            lbar,
             cm,
         })
     }
 
     /// The borrowed, validated view the model takes.
     pub fn view(&self) -> MedullaProfiles<'_> {
-        MedullaProfiles::new(self.layout, &self.cn, &self.lbar, &self.cm)
+        MedullaProfiles::new(self.layout, &self.cn, &self.cm)
             .expect("OwnedProfiles are validated at construction and immutable")
     }
 
@@ -111,9 +104,9 @@ impl OwnedProfiles {
         }
     }
 
-    /// The tables `(C^N, ℓ̄, C^M)`.
-    pub fn tables(&self) -> (&[f32], &[f32], &[f32]) {
-        (&self.cn, &self.lbar, &self.cm)
+    /// The tables `(C^N, C^M)`.
+    pub fn tables(&self) -> (&[f32], &[f32]) {
+        (&self.cn, &self.cm)
     }
 }
 

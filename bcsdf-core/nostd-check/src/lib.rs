@@ -61,16 +61,15 @@ fn eval_full<M: Math>(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 
     };
     let layout = ProfileLayout::for_params(&params, RES);
     let mut cn = [0.0f32; 2 * 4 * 16];
-    let mut lbar = [0.0f32; 2 * 4 * 16];
     let mut cm = [0.0f32; 2 * 2 * 8];
     let budget = PhotonBudget {
         per_cn_cell: 64,
         per_cm_row: 64,
     };
-    if generate(&layout, &budget, 1, &mut cn, &mut lbar, &mut cm).is_err() {
+    if generate(&layout, &budget, 1, &mut cn, &mut cm).is_err() {
         return -1.0;
     }
-    let Ok(profiles) = MedullaProfiles::new(layout, &cn, &lbar, &cm) else {
+    let Ok(profiles) = MedullaProfiles::new(layout, &cn, &cm) else {
         return -1.0;
     };
     let Ok(model) = FurBcsdf::<M>::new(params, profiles) else {

@@ -1,4 +1,4 @@
-//! The validated profile tables and their lookups: C^N and ℓ̄ interpolated in σ_N, h_m and
+//! The validated profile tables and their lookups: C^N interpolated in σ_N, h_m and
 //! (circularly) ψ, C^M in θ'_in and θ'_out, and the ψ sampler of the analytic model's
 //! scattered lobes.
 
@@ -14,7 +14,7 @@ pub enum Half {
     Front = 1,
 }
 
-/// A prepared C^N / ℓ̄ lookup at fixed σ_N and h_m ([`MedullaProfiles::n_row`]).
+/// A prepared C^N lookup at fixed σ_N and h_m ([`MedullaProfiles::n_row`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NRow {
     offsets: [usize; 4],
@@ -22,7 +22,7 @@ pub struct NRow {
     flip: bool,
 }
 
-/// Validated profiles over borrowed tables: C^N and ℓ̄ (`[σ][h_m][ψ]`) and C^M
+/// Validated profiles over borrowed tables: C^N (`[σ][h_m][ψ]`) and C^M
 /// (`[half][θ'_in][θ'_out]`), laid out as the [`medulla`](super) documentation says, usually
 /// filled by [`generate`](super::generate) for the [`ProfileLayout`] of a parameter set.
 ///
@@ -35,18 +35,21 @@ pub struct NRow {
 /// let params = FurParams::new(&presets::find("air-medulla").unwrap().input).unwrap();
 /// let res = Resolution { n_sigma: 2, n_h: 4, n_psi: 16, n_in: 3, n_out: 8 };
 /// let layout = ProfileLayout::for_params(&params, res);
-/// let (mut cn, mut lbar, mut cm) =
-///     (vec![0.0; layout.cn_len()], vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
+/// let (mut cn, mut cm) = (vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
 /// let budget = PhotonBudget { per_cn_cell: 2_000, per_cm_row: 2_000 };
-/// generate(&layout, &budget, 7, &mut cn, &mut lbar, &mut cm).unwrap();
-/// let profiles = MedullaProfiles::new(layout, &cn, &lbar, &cm).unwrap();
+/// generate(&layout, &budget, 7, &mut cn, &mut cm).unwrap();
+/// let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
 ///
-/// // Each C^N row is a density over ψ: its integral over the circle is 1.
+/// // Each C^N row is a density over ψ times the scattered photons' survival of the medulla
+/// // absorption (air-medulla has σ_ma > 0): its integral over the circle is their mean
+/// // survival, below 1 and, as their mean path is below 4 radii here, above exp(−k·σ_N·4).
 /// let row = profiles.n_row(layout.sigma_n_min, 0.3);
-/// assert!((profiles.row_mass(&row) - 1.0).abs() < 1e-4);
+/// let mass = profiles.row_mass(&row);
+/// let floor = (-layout.absorption * layout.sigma_n_min * 4.0).exp();
+/// assert!(mass < 1.0 && mass > floor, "{mass}");
 ///
 /// // Tables of the wrong size (or with negative or non-finite values) are refused.
-/// let short = MedullaProfiles::new(layout, &cn[1..], &lbar, &cm).unwrap_err();
+/// let short = MedullaProfiles::new(layout, &cn[1..], &cm).unwrap_err();
 /// assert_eq!(
 ///     short,
 ///     ProfileError::WrongLength { table: "C^N", expected: cn.len(), found: cn.len() - 1 }
@@ -56,7 +59,6 @@ pub struct NRow {
 pub struct MedullaProfiles<'a> {
     layout: ProfileLayout,
     cn: &'a [f32],
-    lbar: &'a [f32],
     cm: &'a [f32],
 }
 
@@ -78,24 +80,17 @@ impl<'a> MedullaProfiles<'a> {
     pub fn new(
         layout: ProfileLayout,
         cn: &'a [f32],
-        lbar: &'a [f32],
         cm: &'a [f32],
     ) -> Result<MedullaProfiles<'a>, ProfileError> {
         layout.validate()?;
         check_len("C^N", layout.cn_len(), cn.len())?;
-        check_len("lbar", layout.cn_len(), lbar.len())?;
         check_len("C^M", layout.cm_len(), cm.len())?;
-        for (table, data) in [("C^N", cn), ("lbar", lbar), ("C^M", cm)] {
+        for (table, data) in [("C^N", cn), ("C^M", cm)] {
             if let Some(index) = data.iter().position(|v| !(v.is_finite() && *v >= 0.0)) {
                 return Err(ProfileError::BadValue { table, index });
             }
         }
-        Ok(MedullaProfiles {
-            layout,
-            cn,
-            lbar,
-            cm,
-        })
+        Ok(MedullaProfiles { layout, cn, cm })
     }
 
     /// The layout.
@@ -104,13 +99,13 @@ impl<'a> MedullaProfiles<'a> {
         &self.layout
     }
 
-    /// The raw tables `(C^N, ℓ̄, C^M)`.
+    /// The raw tables `(C^N, C^M)`.
     #[must_use]
-    pub fn tables(&self) -> (&'a [f32], &'a [f32], &'a [f32]) {
-        (self.cn, self.lbar, self.cm)
+    pub fn tables(&self) -> (&'a [f32], &'a [f32]) {
+        (self.cn, self.cm)
     }
 
-    /// Prepares C^N / ℓ̄ lookups at fixed σ_N and h_m: the four (σ, h) corner rows and their
+    /// Prepares C^N lookups at fixed σ_N and h_m: the four (σ, h) corner rows and their
     /// bilinear weights, with the h → −h symmetry folded in.
     #[must_use]
     pub fn n_row(&self, sigma_n: f32, h_m: f32) -> NRow {
@@ -176,27 +171,9 @@ impl<'a> MedullaProfiles<'a> {
         Self::at_position(self.cn, row, self.psi_position(row, psi))
     }
 
-    /// ℓ̄(ψ) along a prepared row.
-    #[inline]
-    #[must_use]
-    pub fn mean_length_at(&self, row: &NRow, psi: f32) -> f32 {
-        Self::at_position(self.lbar, row, self.psi_position(row, psi))
-    }
-
-    /// (C^N(ψ), ℓ̄(ψ)) along a prepared row, sharing the interpolation position.
-    #[inline]
-    #[must_use]
-    pub fn cn_and_mean_length_at(&self, row: &NRow, psi: f32) -> (f32, f32) {
-        let pos = self.psi_position(row, psi);
-        (
-            Self::at_position(self.cn, row, pos),
-            Self::at_position(self.lbar, row, pos),
-        )
-    }
-
-    /// ∫ C^N(ψ) dψ over the circle along a prepared row: 1 for rows with scattered photons
-    /// (each tabulated row is a pdf, and linear interpolation between bin centres keeps the
-    /// integral), 0 for empty ones. Exact for the interpolant: bin width × Σ of the blended
+    /// ∫ C^N(ψ) dψ over the circle along a prepared row: the scattered photons' mean survival
+    /// of the medulla absorption (1 without it: each tabulated row is then a pdf), since linear
+    /// interpolation between bin centres keeps the integral; 0 for an all-zero row. Exact for the interpolant: bin width × Σ of the blended
     /// bin values.
     #[must_use]
     pub fn row_mass(&self, row: &NRow) -> f32 {
@@ -252,17 +229,12 @@ impl<'a> MedullaProfiles<'a> {
         Some(if row.flip { -psi } else { psi })
     }
 
-    /// C^N(ψ | h_m, σ_N, g): pdf over ψ of the rotation of scattered photons; trilinear,
-    /// circular in ψ, with C^N(ψ | −h_m) = C^N(−ψ | h_m).
+    /// C^N(ψ | h_m, σ_N, g): pdf over ψ of the rotation of scattered photons times their
+    /// survival of the medulla absorption; trilinear, circular in ψ, with
+    /// C^N(ψ | −h_m) = C^N(−ψ | h_m).
     #[must_use]
     pub fn cn(&self, sigma_n: f32, h_m: f32, psi: f32) -> f32 {
         self.cn_at(&self.n_row(sigma_n, h_m), psi)
-    }
-
-    /// ℓ̄(ψ | h_m, σ_N, g): mean path length (medulla radii) of the scattered photons.
-    #[must_use]
-    pub fn mean_length(&self, sigma_n: f32, h_m: f32, psi: f32) -> f32 {
-        self.mean_length_at(&self.n_row(sigma_n, h_m), psi)
     }
 
     /// C^M_half(θ'_out | θ'_in, σ_M, g) (travel-direction angles), bilinear, with the

@@ -40,8 +40,8 @@ fn henyey_greenstein_samplers_have_mean_cosine_g() {
 fn disk_cells_are_normalised_and_deterministic() {
     let n_psi = 36;
     let width = TAU / n_psi as f32;
-    let (mut cn, mut lbar) = (vec![0.0; n_psi], vec![0.0; n_psi]);
-    let stats = simulate_disk_cell(2.0, 0.4, 0.5, 20_000, 11, &mut cn, &mut lbar);
+    let mut cn = vec![0.0; n_psi];
+    let stats = simulate_disk_cell(2.0, 0.4, 0.5, 0.0, 20_000, 11, &mut cn);
     assert_eq!(stats.launched, 20_000);
     assert!(
         stats.scattered > 10_000 && stats.scattered < 20_000,
@@ -49,22 +49,39 @@ fn disk_cells_are_normalised_and_deterministic() {
     );
     let mass: f32 = cn.iter().sum::<f32>() * width;
     assert!((mass - 1.0).abs() < 1e-5, "{mass}");
-    // Photons that scattered travelled at least to the first event and at most far.
-    assert!(lbar.iter().all(|&l| l > 0.0 && l < 20.0), "{lbar:?}");
-    let (mut cn2, mut lbar2) = (vec![0.0; n_psi], vec![0.0; n_psi]);
+    let mut cn2 = vec![0.0; n_psi];
     assert_eq!(
-        simulate_disk_cell(2.0, 0.4, 0.5, 20_000, 11, &mut cn2, &mut lbar2),
+        simulate_disk_cell(2.0, 0.4, 0.5, 0.0, 20_000, 11, &mut cn2),
         stats
     );
-    assert_eq!((cn2, lbar2), (cn.clone(), lbar.clone()));
-    // No scattering medium: nothing is binned; the row is uniform and ℓ̄ the chord.
-    let stats = simulate_disk_cell(0.0, 0.6, 0.5, 1_000, 11, &mut cn, &mut lbar);
+    assert_eq!(cn2, cn);
+    // With absorption the same photons are binned, each weighted by its survival: no bin
+    // grows, and the row's integral, their mean survival, lies between e^(−a·ℓ) for the
+    // shortest possible scattered path (0) and a mean path of 4 radii (the unit disk's
+    // scattered paths average well below that at σ = 2).
+    let a = 0.3;
+    let mut weighted = vec![0.0; n_psi];
+    assert_eq!(
+        simulate_disk_cell(2.0, 0.4, 0.5, a, 20_000, 11, &mut weighted),
+        stats
+    );
+    assert!(weighted.iter().zip(&cn).all(|(w, c)| w <= c && *w > 0.0));
+    let survival: f32 = weighted.iter().sum::<f32>() * width;
+    assert!(
+        survival < 0.95 && survival > libm::expf(-a * 4.0),
+        "{survival}"
+    );
+    // No scattering medium: nothing is binned; the row is uniform, times the survival along
+    // the straight chord (1.6 at h_m = 0.6).
+    let stats = simulate_disk_cell(0.0, 0.6, 0.5, 0.0, 1_000, 11, &mut cn);
     assert_eq!((stats.launched, stats.scattered), (1_000, 0));
     assert!(cn.iter().all(|&c| c == 1.0 / TAU));
-    assert!(lbar.iter().all(|&l| (l - 1.6).abs() < 1e-6), "{lbar:?}");
+    simulate_disk_cell(0.0, 0.6, 0.5, a, 1_000, 11, &mut cn);
+    let want = libm::expf(-a * 1.6) / TAU;
+    assert!(cn.iter().all(|&c| (c - want).abs() < 1e-7), "{cn:?}");
     // Empty outputs: nothing to do.
     assert_eq!(
-        simulate_disk_cell(1.0, 0.0, 0.0, 10, 1, &mut [], &mut []),
+        simulate_disk_cell(1.0, 0.0, 0.0, 0.0, 10, 1, &mut []),
         CellStats::default()
     );
 }
@@ -106,6 +123,8 @@ fn layouts_follow_the_parameters_and_are_validated() {
     assert_eq!(l.g, params.g());
     assert!((l.sigma_m - params.sigma_ms() * params.kappa()).abs() < 1e-7);
     assert!((l.theta_in_max - libm::asinf(1.0 / params.eta_m())).abs() < 1e-7);
+    assert!(params.sigma_ma() > 0.0);
+    assert_eq!(l.absorption, params.sigma_ma() / params.sigma_ms());
     assert_eq!((l.cn_len(), l.cm_len()), (3 * 4 * 24, 2 * 4 * 16));
     assert_eq!(l.sigma_n_node(0), l.sigma_n_min);
     assert!((l.sigma_n_node(2) - l.sigma_n_max).abs() < 1e-6);
@@ -126,6 +145,11 @@ fn layouts_follow_the_parameters_and_are_validated() {
         Err(ProfileError::BadResolution)
     );
     assert_eq!(bad(|b| b.g = 1.0), Err(ProfileError::BadAxis));
+    assert_eq!(bad(|b| b.absorption = -0.1), Err(ProfileError::BadAxis));
+    assert_eq!(
+        bad(|b| b.absorption = f32::INFINITY),
+        Err(ProfileError::BadAxis)
+    );
     assert_eq!(bad(|b| b.sigma_n_max = -1.0), Err(ProfileError::BadAxis));
     assert_eq!(
         bad(|b| b.theta_in_max = f32::NAN),
@@ -134,33 +158,29 @@ fn layouts_follow_the_parameters_and_are_validated() {
 }
 
 /// Small profiles of [`layout`], generated.
-fn tables() -> (Vec<f32>, Vec<f32>, Vec<f32>) {
+fn tables() -> (Vec<f32>, Vec<f32>) {
     let l = layout();
-    let (mut cn, mut lbar, mut cm) = (
-        vec![0.0; l.cn_len()],
-        vec![0.0; l.cn_len()],
-        vec![0.0; l.cm_len()],
-    );
+    let (mut cn, mut cm) = (vec![0.0; l.cn_len()], vec![0.0; l.cm_len()]);
     let budget = PhotonBudget {
         per_cn_cell: 3_000,
         per_cm_row: 3_000,
     };
-    generate(&l, &budget, 3, &mut cn, &mut lbar, &mut cm).unwrap();
-    (cn, lbar, cm)
+    generate(&l, &budget, 3, &mut cn, &mut cm).unwrap();
+    (cn, cm)
 }
 
 #[test]
 fn cells_do_not_depend_on_the_order_they_are_made_in() {
     let l = layout();
-    let (cn, lbar, cm) = tables();
+    let (cn, cm) = tables();
     let budget = PhotonBudget {
         per_cn_cell: 3_000,
         per_cm_row: 3_000,
     };
     let n = l.res.n_psi;
-    let (mut c, mut b) = (vec![0.0; n], vec![0.0; n]);
-    generate_cn_cell(&l, 7, &budget, 3, &mut c, &mut b);
-    assert_eq!((&c[..], &b[..]), (&cn[7 * n..8 * n], &lbar[7 * n..8 * n]));
+    let mut c = vec![0.0; n];
+    generate_cn_cell(&l, 7, &budget, 3, &mut c);
+    assert_eq!(&c[..], &cn[7 * n..8 * n]);
     let m = l.res.n_out;
     let (mut back, mut front) = (vec![0.0; m], vec![0.0; m]);
     generate_cm_row(&l, 2, &budget, 3, &mut back, &mut front);
@@ -169,7 +189,7 @@ fn cells_do_not_depend_on_the_order_they_are_made_in() {
     assert_eq!(&front[..], &cm[half + 2 * m..half + 3 * m]);
     // Out-of-range cells and rows simulate nothing.
     assert_eq!(
-        generate_cn_cell(&l, 12, &budget, 3, &mut c, &mut b),
+        generate_cn_cell(&l, 12, &budget, 3, &mut c),
         CellStats::default()
     );
     assert_eq!(
@@ -178,9 +198,9 @@ fn cells_do_not_depend_on_the_order_they_are_made_in() {
     );
     // Wrong buffer sizes are refused before anything is simulated.
     let mut short = vec![0.0; l.cm_len() - 1];
-    let (mut cn2, mut lbar2) = (cn.clone(), lbar.clone());
+    let mut cn2 = cn.clone();
     assert!(matches!(
-        generate(&l, &budget, 3, &mut cn2, &mut lbar2, &mut short),
+        generate(&l, &budget, 3, &mut cn2, &mut short),
         Err(ProfileError::WrongLength { table: "C^M", .. })
     ));
 }
@@ -188,9 +208,9 @@ fn cells_do_not_depend_on_the_order_they_are_made_in() {
 #[test]
 fn lookups_interpolate_clamp_and_keep_the_symmetries() {
     let l = layout();
-    let (cn, lbar, cm) = tables();
-    let p = MedullaProfiles::new(l, &cn, &lbar, &cm).unwrap();
-    assert_eq!(p.tables(), (&cn[..], &lbar[..], &cm[..]));
+    let (cn, cm) = tables();
+    let p = MedullaProfiles::new(l, &cn, &cm).unwrap();
+    assert_eq!(p.tables(), (&cn[..], &cm[..]));
     assert_eq!(p.layout(), &l);
     let sigma = 0.5 * (l.sigma_n_min + l.sigma_n_max);
     for h in [0.0f32, 0.3, 0.74, 0.99] {
@@ -203,19 +223,20 @@ fn lookups_interpolate_clamp_and_keep_the_symmetries() {
                     "{h} {psi}"
                 );
             }
-            assert!(p.mean_length(sigma, h, psi) > 0.0);
             let row = p.n_row(sigma, h);
-            assert_eq!(
-                p.cn_and_mean_length_at(&row, psi),
-                (p.cn_at(&row, psi), p.mean_length_at(&row, psi))
-            );
+            assert_eq!(p.cn_at(&row, psi), p.cn(sigma, h, psi));
         }
         // Circular: ψ and ψ + 2π are the same bin.
         assert!((p.cn(sigma, h, 1.0) - p.cn(sigma, h, 1.0 - TAU)).abs() < 1e-5);
-        // Each row integrates to 1 and its samples stay on the circle, in CDF order: the
+        // Each row integrates to the scattered photons' mean survival (air-medulla absorbs:
+        // below 1, above e^(−k·σ_N·4)) and its samples stay on the circle, in CDF order: the
         // segments run from the first bin centre, −π + w/2, once around the circle.
         let row = p.n_row(sigma, h);
-        assert!((p.row_mass(&row) - 1.0).abs() < 1e-4);
+        let mass = p.row_mass(&row);
+        assert!(
+            mass < 1.0 && mass > libm::expf(-l.absorption * sigma * 4.0),
+            "{mass}"
+        );
         let first = -PI + 0.5 * TAU / l.res.n_psi as f32;
         let mut prev = first;
         for u in midpoints(50) {
@@ -271,10 +292,10 @@ fn profile_errors_explain_themselves() {
     );
     let _: &dyn core::error::Error = &e;
     let l = layout();
-    let (cn, lbar, mut cm) = tables();
+    let (cn, mut cm) = tables();
     cm[5] = -1.0;
     assert_eq!(
-        MedullaProfiles::new(l, &cn, &lbar, &cm).unwrap_err(),
+        MedullaProfiles::new(l, &cn, &cm).unwrap_err(),
         ProfileError::BadValue {
             table: "C^M",
             index: 5

@@ -1,6 +1,6 @@
 //! The deterministic Monte Carlo walks that fill the profile tables (docs/model.md §7):
-//! photons in the 2D disk for C^N and ℓ̄, in the infinite cylinder for C^M, each table cell
-//! from its own PCG32 stream.
+//! photons in the 2D disk for C^N (weighted by their survival of the medulla absorption), in
+//! the infinite cylinder for C^M, each table cell from its own PCG32 stream.
 
 use super::{check_len, PhotonBudget, ProfileError, ProfileLayout};
 use crate::math::{wrap_angle, PI, TAU};
@@ -48,26 +48,28 @@ pub(super) fn sample_hg_3d_cos(g: f32, u: f32) -> f32 {
 /// (along −x at y = h_m), scatter with coefficient `sigma` and 2D HG(`g`), and leave when they
 /// cross the circle. Only photons that scattered at least once are binned, by the signed
 /// rotation ψ of their travel direction (in the exit-azimuth sense of docs/model.md §3: ψ = −Δ of
-/// the direction angle). Writes the pdf over ψ into `cn` and the mean path length per bin
-/// into `lbar` (both `n_psi` long); returns the counts.
+/// the direction angle), each with weight exp(−`absorption`·ℓ), ℓ its whole path length
+/// (absorption coefficient and length per disk radius; weight 1 when `absorption` = 0).
+/// Writes into `cn` (`n_psi` long) the summed weights per bin divided by the number of
+/// scattered photons and the bin width: the pdf over ψ times the photons' survival, so its
+/// integral is their mean survival. Returns the counts.
 pub fn simulate_disk_cell(
     sigma: f32,
     h_m: f32,
     g: f32,
+    absorption: f32,
     photons: u32,
     stream: u64,
     cn: &mut [f32],
-    lbar: &mut [f32],
 ) -> CellStats {
-    // The output buffers accumulate counts and length sums first (exact in f32 up to 2^24
-    // photons per cell), so no scratch memory is needed.
-    let n_psi = cn.len().min(lbar.len());
+    // The output buffer accumulates the weights first (without absorption they are counts,
+    // exact in f32 up to 2^24 photons per cell), so no scratch memory is needed.
+    let n_psi = cn.len();
     if n_psi == 0 {
         return CellStats::default();
     }
     let photons = photons.min(MAX_PHOTONS_PER_CELL);
-    cn[..n_psi].fill(0.0);
-    lbar[..n_psi].fill(0.0);
+    cn.fill(0.0);
     let mut rng = Pcg32::new(stream, stream.rotate_left(17));
     let mut stats = CellStats::default();
     let h = h_m.clamp(-1.0, 1.0);
@@ -109,23 +111,21 @@ pub fn simulate_disk_cell(
         let psi = wrap_angle(PI - angle);
         let bin = (((psi + PI) / TAU) * n_psi as f32) as usize;
         let bin = bin.min(n_psi - 1);
-        cn[bin] += 1.0;
-        lbar[bin] += len;
+        cn[bin] += if absorption > 0.0 {
+            libm::expf(-absorption * len)
+        } else {
+            1.0
+        };
     }
     let width = TAU / n_psi as f32;
-    let total_len: f32 = lbar[..n_psi].iter().sum();
-    let mean_len = if stats.scattered > 0 {
-        total_len / stats.scattered as f32
-    } else {
-        2.0 * libm::sqrtf(1.0 - h * h)
-    };
-    for (c, l) in cn[..n_psi].iter_mut().zip(lbar[..n_psi].iter_mut()) {
-        let count = *c;
-        *l = if count > 0.0 { *l / count } else { mean_len };
+    // A cell where nothing scattered (σ → 0 or h_m → 1) gets the uniform pdf times the
+    // survival along the straight chord, the single-scattering limit.
+    let empty = libm::expf(-absorption * 2.0 * libm::sqrtf(1.0 - h * h)) / TAU;
+    for c in cn.iter_mut() {
         *c = if stats.scattered > 0 {
-            count / (stats.scattered as f32 * width)
+            *c / (stats.scattered as f32 * width)
         } else {
-            1.0 / TAU
+            empty
         };
     }
     stats
@@ -227,28 +227,30 @@ pub fn simulate_cylinder_row(
     stats
 }
 
-/// Simulates C^N / ℓ̄ cell `cell` (= k·n_h + j for σ node k and h node j) of `layout` into
-/// `cn` and `lbar` (each `n_psi` long). An invalid layout or cell simulates nothing.
+/// Simulates C^N cell `cell` (= k·n_h + j for σ node k and h node j) of `layout` into `cn`
+/// (`n_psi` long), with the absorption coefficient k·σ_N per disk radius, k =
+/// [`ProfileLayout::absorption`] (docs/model.md §7). An invalid layout or cell simulates
+/// nothing.
 pub fn generate_cn_cell(
     layout: &ProfileLayout,
     cell: usize,
     budget: &PhotonBudget,
     seed: u64,
     cn: &mut [f32],
-    lbar: &mut [f32],
 ) -> CellStats {
     if layout.validate().is_err() || cell >= layout.res.n_sigma * layout.res.n_h {
         return CellStats::default();
     }
     let (k, j) = (cell / layout.res.n_h, cell % layout.res.n_h);
+    let sigma = layout.sigma_n_node(k);
     simulate_disk_cell(
-        layout.sigma_n_node(k),
+        sigma,
         layout.h_node(j),
         layout.g,
+        layout.absorption * sigma,
         budget.per_cn_cell,
         cell_stream(seed, TABLE_CN, cell as u64),
         cn,
-        lbar,
     )
 }
 
@@ -276,7 +278,7 @@ pub fn generate_cm_row(
     )
 }
 
-/// Generates every table of `layout` sequentially into caller buffers (`cn` and `lbar` of
+/// Generates every table of `layout` sequentially into caller buffers (`cn` of
 /// [`ProfileLayout::cn_len`], `cm` of [`ProfileLayout::cm_len`]). The std tools run the same
 /// cells in parallel, with identical results.
 pub fn generate(
@@ -284,20 +286,14 @@ pub fn generate(
     budget: &PhotonBudget,
     seed: u64,
     cn: &mut [f32],
-    lbar: &mut [f32],
     cm: &mut [f32],
 ) -> Result<(), ProfileError> {
     layout.validate()?;
     check_len("C^N", layout.cn_len(), cn.len())?;
-    check_len("lbar", layout.cn_len(), lbar.len())?;
     check_len("C^M", layout.cm_len(), cm.len())?;
     let n_psi = layout.res.n_psi;
-    for (cell, (c, l)) in cn
-        .chunks_exact_mut(n_psi)
-        .zip(lbar.chunks_exact_mut(n_psi))
-        .enumerate()
-    {
-        generate_cn_cell(layout, cell, budget, seed, c, l);
+    for (cell, c) in cn.chunks_exact_mut(n_psi).enumerate() {
+        generate_cn_cell(layout, cell, budget, seed, c);
     }
     let n_out = layout.res.n_out;
     let (back, front) = cm.split_at_mut(layout.res.n_in * n_out);

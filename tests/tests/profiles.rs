@@ -1,5 +1,5 @@
 //! Medulla scattering profiles (docs/model.md §7) against what is known exactly.
-//! (Over 600 lines: eleven tests, each with its exact reference and the derivation of its
+//! (Over 600 lines: twelve tests, each with its exact reference and the derivation of its
 //! error bound beside it.)
 //!
 //! Every tolerance is a Monte Carlo error bound stated where it is used (z-scores of binomial

@@ -1,9 +1,8 @@
 //! Far-field azimuthal lobes N_p(φ) = ½ ∫ A_p(h)·D_p(φ − Φ_p(h)) dh (docs/model.md §5).
-//! (About 600 lines: one quadrature, with its probes, windows and panel rules, kept in one file.)
 //!
-//! The same pass can integrate a second integrand with the same nodes: the sampling
-//! density of the analytic sampler (docs/model.md §10), Σ_p c_p·½ ∫ D_p(φ − Φ_p(h)) dh over
-//! the h where path p exists, for per-path constants c_p ([`FarFieldQuery::azimuthal_with_density`]).
+//! The same pass can integrate the analytic sampler's density (docs/model.md §10),
+//! Σ_p c_p·½ ∫ D_p(φ − Φ_p(h)) dh over the h where path p exists, with the same nodes
+//! ([`FarFieldQuery::azimuthal_with_density`]).
 //!
 //! # Quadrature
 //!

@@ -171,13 +171,17 @@ fn select(cli: &Cli, shard: Option<Shard>) -> Result<Vec<NamedPreset>, Failure> 
     cli.preset
         .iter()
         .map(|name| {
-            presets::find(&all, name).cloned().ok_or_else(|| {
+            let (preset, alias) = presets::lookup(&all, name).ok_or_else(|| {
                 let known: Vec<&str> = all.iter().map(|p| p.name.as_str()).collect();
                 input(format!(
                     "unknown preset '{name}' (known: {})",
                     known.join(", ")
                 ))
-            })
+            })?;
+            if let Some(alias) = alias {
+                eprintln!("note: {alias}");
+            }
+            Ok(preset.clone())
         })
         .collect()
 }

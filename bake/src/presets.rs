@@ -15,6 +15,7 @@
 //! the file, the line, the preset and the field, e.g.
 //! `presets.toml:12: preset "foo": invalid kappa = 1.2: valid range is [0, 0.99]`.
 
+use bcsdf_core::presets::Alias;
 use bcsdf_core::{
     FurParams, FurParamsInput, InputError, ParamDefault, ParamName, ParamValue, Rgb, SCHEMA,
 };
@@ -96,6 +97,19 @@ pub fn load_file(path: impl AsRef<Path>) -> Result<Vec<NamedPreset>, PresetError
 /// The preset called `name` in `list`.
 pub fn find<'a>(list: &'a [NamedPreset], name: &str) -> Option<&'a NamedPreset> {
     list.iter().find(|p| p.name == name)
+}
+
+/// The preset called `name` in `list`, or, when `name` is a former name
+/// ([`bcsdf_core::presets::ALIASES`]) that `list` does not define, the preset it now
+/// selects together with the alias, whose `Display` is the one-line note the tools print.
+pub fn lookup<'a>(
+    list: &'a [NamedPreset],
+    name: &str,
+) -> Option<(&'a NamedPreset, Option<&'static Alias>)> {
+    find(list, name).map(|p| (p, None)).or_else(|| {
+        let alias = bcsdf_core::presets::alias(name)?;
+        find(list, alias.preset).map(|p| (p, Some(alias)))
+    })
 }
 
 /// Parses preset-file text; `file` is only used in error messages.

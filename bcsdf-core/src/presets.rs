@@ -20,12 +20,12 @@ pub struct Preset {
 }
 
 /// The built-in presets, in `presets.toml` order.
-pub const PRESETS: [Preset; 5] = [
+pub const PRESETS: [Preset; 12] = [
     Preset {
-        name: "yan-row-a",
-        source: "docs/model.md §9 row A: default parameters of independent re-implementations of Yan et al. 2015 (species not recorded); single-channel sigma_ca used for all of RGB",
+        name: "bobcat",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'bobcat'; l = 0.47 from a Mitsuba fur plugin (zibo-ye/mitsuba, src/bsdfs/yanfur.cpp); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
         input: FurParamsInput {
-            eta_c: 1.55,
+            eta_c: 1.69,
             pigment: Pigment::Absorption(Rgb::splat(0.64)),
             alpha_deg: 5.48,
             beta_m_deg: 11.64,
@@ -39,8 +39,110 @@ pub const PRESETS: [Preset; 5] = [
         },
     },
     Preset {
-        name: "yan-row-b",
-        source: "docs/model.md §9 row B: default parameters of independent re-implementations of Yan et al. 2015 (species not recorded); single-channel sigma_ca used for all of RGB",
+        name: "cat",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'cat'; l not published: 0.5, the plain dielectric interface (docs/model.md §4); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
+        input: FurParamsInput {
+            eta_c: 1.36,
+            pigment: Pigment::Absorption(Rgb::splat(0.06)),
+            alpha_deg: 3.65,
+            beta_m_deg: 5.66,
+            beta_n_deg: Some(1.34),
+            l: 0.5,
+            kappa: 0.87,
+            eta_m: None,
+            sigma_ms: 2.47,
+            sigma_ma: 0.12,
+            g: 0.60,
+        },
+    },
+    Preset {
+        name: "deer",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'deer'; l not published: 0.5, the plain dielectric interface (docs/model.md §4); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
+        input: FurParamsInput {
+            eta_c: 1.60,
+            pigment: Pigment::Absorption(Rgb::splat(1.39)),
+            alpha_deg: 3.52,
+            beta_m_deg: 7.00,
+            beta_n_deg: Some(4.53),
+            l: 0.5,
+            kappa: 0.91,
+            eta_m: None,
+            sigma_ms: 2.51,
+            sigma_ma: 0.09,
+            g: 0.46,
+        },
+    },
+    Preset {
+        name: "dog",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'dog'; l not published: 0.5, the plain dielectric interface (docs/model.md §4); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
+        input: FurParamsInput {
+            eta_c: 1.58,
+            pigment: Pigment::Absorption(Rgb::splat(0.01)),
+            alpha_deg: 2.94,
+            beta_m_deg: 5.77,
+            beta_n_deg: Some(18.94),
+            l: 0.5,
+            kappa: 0.68,
+            eta_m: None,
+            sigma_ms: 2.44,
+            sigma_ma: 0.00,
+            g: 0.26,
+        },
+    },
+    Preset {
+        name: "mouse",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'mouse'; l not published: 0.5, the plain dielectric interface (docs/model.md §4); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
+        input: FurParamsInput {
+            eta_c: 1.35,
+            pigment: Pigment::Absorption(Rgb::splat(0.04)),
+            alpha_deg: 0.55,
+            beta_m_deg: 8.39,
+            beta_n_deg: Some(2.80),
+            l: 0.5,
+            kappa: 0.66,
+            eta_m: None,
+            sigma_ms: 1.34,
+            sigma_ma: 0.06,
+            g: 0.36,
+        },
+    },
+    Preset {
+        name: "rabbit",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'rabbit'; l not published: 0.5, the plain dielectric interface (docs/model.md §4); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
+        input: FurParamsInput {
+            eta_c: 1.47,
+            pigment: Pigment::Absorption(Rgb::splat(0.24)),
+            alpha_deg: 3.14,
+            beta_m_deg: 11.91,
+            beta_n_deg: Some(10.52),
+            l: 0.5,
+            kappa: 0.79,
+            eta_m: None,
+            sigma_ms: 0.78,
+            sigma_ma: 0.10,
+            g: 0.12,
+        },
+    },
+    Preset {
+        name: "raccoon",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'raccoon'; l = 2 from a pbrt-v3 fur implementation (hcaseyal/pbrt-final-project, finalProject/fur.pbrt); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
+        input: FurParamsInput {
+            eta_c: 1.19,
+            pigment: Pigment::Absorption(Rgb::splat(0.25)),
+            alpha_deg: 1.81,
+            beta_m_deg: 7.44,
+            beta_n_deg: Some(6.88),
+            l: 2.0,
+            kappa: 0.65,
+            eta_m: None,
+            sigma_ms: 2.30,
+            sigma_ma: 0.14,
+            g: 0.08,
+        },
+    },
+    Preset {
+        name: "red-fox",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'red fox'; l = 0.68 from a pbrt-v3 fur implementation (hcaseyal/pbrt-final-project, finalProject/fur.pbrt); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
         input: FurParamsInput {
             eta_c: 1.49,
             pigment: Pigment::Absorption(Rgb::splat(0.39)),
@@ -56,23 +158,37 @@ pub const PRESETS: [Preset; 5] = [
         },
     },
     Preset {
-        name: "yan-row-c",
-        source: "docs/model.md §9 row C (species not recorded; the row gives no sigma_ca): colour is this project's choice, eumelanin 0.3 + pheomelanin 0.3 (d'Eon 2011 coefficients)",
+        name: "springbok",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'springbok'; l not published: 0.5, the plain dielectric interface (docs/model.md §4); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
         input: FurParamsInput {
-            eta_c: 1.19,
-            pigment: Pigment::Melanin {
-                eumelanin: 0.3,
-                pheomelanin: 0.3,
-            },
-            alpha_deg: 1.81,
-            beta_m_deg: 7.44,
-            beta_n_deg: Some(6.88),
-            l: 2.0,
-            kappa: 0.65,
+            eta_c: 1.48,
+            pigment: Pigment::Absorption(Rgb::splat(0.32)),
+            alpha_deg: 4.61,
+            beta_m_deg: 8.02,
+            beta_n_deg: Some(11.46),
+            l: 0.5,
+            kappa: 0.82,
             eta_m: None,
-            sigma_ms: 2.30,
-            sigma_ma: 0.14,
-            g: 0.08,
+            sigma_ms: 2.45,
+            sigma_ma: 0.31,
+            g: 0.19,
+        },
+    },
+    Preset {
+        name: "human-fur",
+        source: "Yan, Sun, Jensen and Ramamoorthi 2017 (A BSSRDF Model for Efficient Rendering of Fur with Global Illumination), Table 4, fitted to the 2015 paper's measurements (docs/model.md §9), row 'human'; l not published: 0.5, the plain dielectric interface (docs/model.md §4); sigma_ca: the single-channel fit used for R, G and B (grey); eta used for eta_c and eta_m",
+        input: FurParamsInput {
+            eta_c: 1.20,
+            pigment: Pigment::Absorption(Rgb::splat(0.41)),
+            alpha_deg: 0.70,
+            beta_m_deg: 2.05,
+            beta_n_deg: Some(3.75),
+            l: 0.5,
+            kappa: 0.36,
+            eta_m: None,
+            sigma_ms: 3.49,
+            sigma_ma: 0.00,
+            g: 0.28,
         },
     },
     Preset {
@@ -117,19 +233,68 @@ pub const PRESETS: [Preset; 5] = [
     },
 ];
 
-/// The built-in preset called `name`.
+/// A former preset name that still selects a built-in preset (docs/model.md §9).
+///
+/// The three parameter rows the project first shipped as `yan-row-a/b/c` turned out to be
+/// rows of the species table; their old names keep working, and the tools print
+/// [`Alias`]'s `Display` text, one line naming the new preset.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Alias {
+    /// The former name.
+    pub name: &'static str,
+    /// The name of the preset it now selects.
+    pub preset: &'static str,
+}
+
+impl core::fmt::Display for Alias {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "preset '{}' is now called '{}' (docs/model.md §9); using '{}'",
+            self.name, self.preset, self.preset
+        )
+    }
+}
+
+/// The former preset names (docs/model.md §9): `yan-row-a` is bobcat (with the table's
+/// η = 1.69 instead of the 1.55 it had), `yan-row-b` red fox, `yan-row-c` raccoon (with the
+/// table's grey σ_ca = 0.25 instead of the melanin colour it had).
+pub const ALIASES: [Alias; 3] = [
+    Alias {
+        name: "yan-row-a",
+        preset: "bobcat",
+    },
+    Alias {
+        name: "yan-row-b",
+        preset: "red-fox",
+    },
+    Alias {
+        name: "yan-row-c",
+        preset: "raccoon",
+    },
+];
+
+/// The alias called `name`, if `name` is a former preset name.
+#[must_use]
+pub fn alias(name: &str) -> Option<&'static Alias> {
+    ALIASES.iter().find(|a| a.name == name)
+}
+
+/// The built-in preset called `name`, or the one a former name ([`ALIASES`]) now selects.
 ///
 /// ```
 /// use bcsdf_core::{presets, FurParams};
 ///
-/// let preset = presets::find("yan-row-a").unwrap();
-/// assert_eq!(preset.input.eta_c, 1.55);
+/// let preset = presets::find("bobcat").unwrap();
+/// assert_eq!(preset.input.eta_c, 1.69);
 /// let params = FurParams::new(&preset.input).unwrap();
 /// assert!((params.beta_m().to_degrees() - 11.64).abs() < 1e-4);
+/// assert_eq!(presets::find("yan-row-a"), Some(preset));
 /// assert!(presets::find("no-such-fur").is_none());
 /// ```
 #[must_use]
 pub fn find(name: &str) -> Option<&'static Preset> {
+    let name = alias(name).map_or(name, |a| a.preset);
     PRESETS.iter().find(|p| p.name == name)
 }
 
@@ -146,6 +311,15 @@ mod tests {
             assert!(!p.source.is_empty());
             assert!(PRESETS[..i].iter().all(|q| q.name != p.name), "{}", p.name);
         }
-        assert_eq!(find("Yan-Row-A"), None, "names are case-sensitive");
+        assert_eq!(find("Bobcat"), None, "names are case-sensitive");
+        for a in &ALIASES {
+            let p = find(a.preset).expect("an alias names a preset");
+            assert_eq!(find(a.name), Some(p));
+            assert!(
+                PRESETS.iter().all(|q| q.name != a.name),
+                "{} is both",
+                a.name
+            );
+        }
     }
 }

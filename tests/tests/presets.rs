@@ -119,6 +119,123 @@ fn every_builtin_validates_and_spec_requirements_hold() {
 }
 
 // ---------------------------------------------------------------------------------------------
+// The species table of docs/model.md §9: one source of truth for the species presets.
+
+/// The rows between the `species-table` markers of docs/model.md §9: the preset name and the
+/// ten cells as written (`—` where the table has no value).
+fn species_table() -> Vec<(String, Vec<String>)> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/model.md");
+    let text = std::fs::read_to_string(path).unwrap();
+    let start = text
+        .find("<!-- species-table")
+        .expect("docs/model.md §9 has the species-table marker");
+    let end = text[start..]
+        .find("<!-- end species-table -->")
+        .expect("the species table is closed")
+        + start;
+    let rows: Vec<(String, Vec<String>)> = text[start..end]
+        .lines()
+        .filter(|l| l.starts_with('|') && !l.starts_with("|---") && !l.starts_with("| preset"))
+        .map(|l| {
+            let cells: Vec<String> = l
+                .trim_matches('|')
+                .split('|')
+                .map(|c| c.trim().to_string())
+                .collect();
+            assert_eq!(cells.len(), 11, "row {l:?}: a name and ten values");
+            (cells[0].clone(), cells[1..].to_vec())
+        })
+        .collect();
+    rows
+}
+
+fn number(cell: &str, what: &str) -> f32 {
+    cell.parse()
+        .unwrap_or_else(|e| panic!("{what}: {cell:?} is not a number: {e}"))
+}
+
+#[test]
+fn species_presets_are_the_table_of_docs_model_value_by_value() {
+    let table = species_table();
+    assert_eq!(table.len(), 10, "ten fitted species");
+    let toml = presets::builtin().unwrap();
+    for (name, cells) in &table {
+        let core = bcsdf_core::presets::PRESETS
+            .iter()
+            .find(|p| p.name == name)
+            .unwrap_or_else(|| panic!("species {name} has no built-in preset"));
+        // The TOML equals the constants (toml_builtins_equal_core_constants_bit_for_bit), so
+        // checking the constants checks both; the file is checked too, cheaply.
+        let file = presets::find(&toml, name).unwrap();
+        assert_eq!(file.input, core.input, "{name}: file and constants differ");
+        let p = core.input.resolved();
+        let col = |i: usize, key: &str| number(&cells[i], &format!("{name} {key}"));
+        let check = |got: f32, i: usize, key: &str| {
+            assert_eq!(
+                got.to_bits(),
+                col(i, key).to_bits(),
+                "{name}: {key} = {got}, table {}",
+                cells[i]
+            );
+        };
+        check(p.kappa, 0, "kappa");
+        check(p.eta_c, 1, "eta_c");
+        check(p.eta_m.unwrap(), 1, "eta_m (the table's one eta)");
+        check(p.alpha_deg, 2, "alpha_deg");
+        check(p.beta_m_deg, 3, "beta_m_deg");
+        check(p.beta_n_deg.unwrap(), 4, "beta_n_deg");
+        match p.pigment {
+            Pigment::Absorption(rgb) => {
+                for c in rgb.0 {
+                    check(c, 5, "sigma_ca (grey: every channel)");
+                }
+            }
+            other => panic!("{name}: colour {other:?}, the table gives sigma_ca"),
+        }
+        check(p.sigma_ms, 6, "sigma_ms");
+        check(p.sigma_ma, 7, "sigma_ma");
+        check(p.g, 8, "g");
+        if cells[9] == "—" {
+            assert_eq!(
+                p.l, 0.5,
+                "{name}: l not published takes the documented default 0.5"
+            );
+            assert!(
+                core.source.contains("l not published"),
+                "{name}: {}",
+                core.source
+            );
+        } else {
+            check(p.l, 9, "l");
+            assert!(!core.source.contains("l not published"), "{name}");
+        }
+        assert!(
+            core.source.contains("Table 4"),
+            "{name}: source names the table"
+        );
+    }
+}
+
+#[test]
+fn former_names_select_the_species_presets() {
+    let list = presets::builtin().unwrap();
+    for (old, new) in [
+        ("yan-row-a", "bobcat"),
+        ("yan-row-b", "red-fox"),
+        ("yan-row-c", "raccoon"),
+    ] {
+        let (p, alias) = presets::lookup(&list, old).unwrap();
+        assert_eq!(p.name, new);
+        let note = alias.unwrap().to_string();
+        assert!(note.contains(old) && note.contains(new), "{note}");
+        assert_eq!(bcsdf_core::presets::find(old).unwrap().name, new);
+        // A real name is found as itself, with no note.
+        assert!(presets::lookup(&list, new).unwrap().1.is_none());
+    }
+    assert!(presets::lookup(&list, "yan-row-d").is_none());
+}
+
+// ---------------------------------------------------------------------------------------------
 // User files and malformed files.
 
 /// A valid user file; the comments give the line numbers the tests below rely on.

@@ -68,11 +68,12 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// List the presets: one line each, the name, a tab, then where its numbers come from.
+    /// List the presets: a table of every parameter (docs/model.md §9), then where each
+    /// preset's numbers come from, then the former names that still select a preset.
     #[command(
-        after_help = "Examples:\n  viewer presets\n  viewer presets --presets my-presets.toml"
+        after_help = "Examples:\n  viewer presets\n  viewer presets --json\n  viewer presets --presets my-presets.toml"
     )]
-    Presets(PresetsArgs),
+    Presets(PresetsListArgs),
     /// Evaluate the BCSDF of a preset (far field, or near field at offset h with --h) or of a
     /// baked LUT (far field).
     #[command(after_help = PROBE_EXAMPLES)]
@@ -184,6 +185,16 @@ pub struct PresetsArgs {
     /// built-in ones.
     #[arg(long, value_name = "FILE")]
     pub presets: Option<PathBuf>,
+}
+
+/// `viewer presets` arguments.
+#[derive(Debug, Args)]
+pub struct PresetsListArgs {
+    #[command(flatten)]
+    pub presets: PresetsArgs,
+    /// Print the presets as one JSON document instead of the table.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `viewer probe` arguments.

@@ -83,7 +83,7 @@ fn run_one(lut: &Path, args: &CompareArgs, budget: &ErrorBudget) -> Result<(), E
         prepare_out_dir(dir)?;
     }
     let outcome = match compare_file(lut, &file, out.as_deref(), args, budget) {
-        Ok(o) => o,
+        Ok((o, _)) => o,
         Err(Failure::Input(m)) => return Err(Error::Input(m)),
         Err(Failure::Fatal(e)) => return Err(e),
     };
@@ -104,6 +104,7 @@ fn run_all(dir: &Path, args: &CompareArgs, budget: &ErrorBudget) -> Result<(), E
     let mut rows = Vec::new();
     let mut unreadable = Vec::new();
     let mut over = Vec::new();
+    let mut panels = Vec::new();
     for lut in &luts {
         let name = lut
             .file_name()
@@ -117,7 +118,10 @@ fn run_all(dir: &Path, args: &CompareArgs, budget: &ErrorBudget) -> Result<(), E
             compare_file(lut, &file, out.as_deref(), args, budget)
         });
         match result {
-            Ok(outcome) => {
+            Ok((outcome, thumbnail)) => {
+                if let Some(t) = thumbnail {
+                    panels.push((outcome.preset.clone(), t));
+                }
                 if !outcome.pass() {
                     eprintln_line(&format!(
                         "error: {}",
@@ -148,6 +152,16 @@ fn run_all(dir: &Path, args: &CompareArgs, budget: &ErrorBudget) -> Result<(), E
     if !args.no_images {
         let html = summary::index_page(dir, budget, &rows);
         write_file(&root.join("index.html"), html.as_bytes()).map_err(|e| out_error(&root, &e))?;
+        if !panels.is_empty() {
+            let gallery = root.join("gallery.png");
+            render::gallery(&panels)
+                .write_png(&gallery)
+                .map_err(|e| out_error(&root, &e))?;
+            print(&format!(
+                "gallery (every LUT's baked render, one light, one exposure): {}\n",
+                gallery.display()
+            ))?;
+        }
         print(&format!(
             "summary page: {}\n",
             root.join("index.html").display()
@@ -265,7 +279,7 @@ fn compare_file(
     out: Option<&Path>,
     args: &CompareArgs,
     budget: &ErrorBudget,
-) -> Result<Outcome, Failure> {
+) -> Result<(Outcome, Option<render::Thumbnail>), Failure> {
     let bad = |e: bcsdf_core::lut::LutError| Failure::Input(format!("{}: {e}", lut.display()));
     let baked: BakedBcsdf<'_> = file.baked().map_err(bad)?;
     let header = file.header().map_err(bad)?;
@@ -303,9 +317,10 @@ fn compare_file(
         page: None,
     };
     let mut image_seconds = 0.0;
+    let mut thumbnail = None;
     if let Some(dir) = out {
         let t = Instant::now();
-        write_images(
+        let thumb = write_images(
             lut,
             file,
             &header,
@@ -316,6 +331,7 @@ fn compare_file(
             &mut outcome,
         )
         .map_err(|e| Failure::Fatal(out_error(dir, &e)))?;
+        thumbnail = Some(thumb);
         image_seconds = t.elapsed().as_secs_f64();
     }
 
@@ -334,7 +350,7 @@ fn compare_file(
         let _ = writeln!(text, "  page: {}", page.display());
     }
     print(&text)?;
-    Ok(outcome)
+    Ok((outcome, thumbnail))
 }
 
 /// Draws and writes every image, `compare.json` and `index.html` into `dir`.
@@ -348,7 +364,7 @@ fn write_images(
     dir: &Path,
     budget: &ErrorBudget,
     outcome: &mut Outcome,
-) -> io::Result<()> {
+) -> io::Result<render::Thumbnail> {
     let preset = outcome.preset.clone();
     let heat = figures::heat_maps(
         analytic,
@@ -404,7 +420,7 @@ fn write_images(
         json::pretty(&Report::new(lut, outcome, budget)).as_bytes(),
     )?;
     outcome.page = Some(dir.join("index.html"));
-    Ok(())
+    Ok(renders.thumbnail())
 }
 
 /// The per-LUT table: one row per metric, R G B columns in percent, budget and result.

@@ -357,8 +357,7 @@ impl Renders {
         c
     }
 
-    /// Tone-maps radiance `value(pixel)` (1 − e^(−k·L) per channel, over the background, sRGB)
-    /// into a `w` × `h` canvas, each output pixel the mean of `step` × `step` input pixels.
+    /// Tone-maps radiance `value(pixel)` of the full-size pictures ([`tone_map`]).
     fn tone_map(
         &self,
         value: impl Fn(usize) -> Rgb,
@@ -367,32 +366,102 @@ impl Renders {
         h: usize,
         step: usize,
     ) -> Canvas {
-        let mut c = Canvas::new(w, h, [0, 0, 0]);
-        let n = (step * step) as f32;
+        tone_map(value, &self.alpha, RENDER_W, k, (w, h), step)
+    }
+
+    /// The baked picture at half size, linear, with its coverage and exposure: one panel of
+    /// the species gallery ([`gallery`]).
+    pub fn thumbnail(&self) -> Thumbnail {
+        let (w, h) = (RENDER_W / 2, RENDER_H / 2);
+        let mut radiance = vec![Rgb::ZERO; w * h];
+        let mut alpha = vec![0.0f32; w * h];
         for y in 0..h {
             for x in 0..w {
-                let mut acc = [0.0f32; 3];
-                let mut alpha = 0.0;
-                for dy in 0..step {
-                    for dx in 0..step {
-                        let i = (y * step + dy) * RENDER_W + x * step + dx;
-                        let v = value(i);
-                        for (a, c) in acc.iter_mut().zip(v.0) {
-                            *a += c;
-                        }
-                        alpha += self.alpha[i];
-                    }
+                for (dy, dx) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+                    let i = (2 * y + dy) * RENDER_W + 2 * x + dx;
+                    radiance[y * w + x] = radiance[y * w + x] + sum(&self.baked[i]) * 0.25;
+                    alpha[y * w + x] += 0.25 * self.alpha[i];
                 }
-                let alpha = alpha / n;
-                let px = std::array::from_fn(|ch| {
-                    let lin = 1.0 - (-k * acc[ch] / n).exp() + (1.0 - alpha) * BACKGROUND[ch];
-                    srgb(lin)
-                });
-                c.set(x as i64, y as i64, px);
             }
         }
-        c
+        Thumbnail {
+            radiance,
+            alpha,
+            exposure: self.exposure(),
+        }
     }
+}
+
+/// A half-size linear picture of one LUT's baked render ([`Renders::thumbnail`]).
+#[derive(Clone, Debug)]
+pub struct Thumbnail {
+    radiance: Vec<Rgb>,
+    alpha: Vec<f32>,
+    /// The exposure [`Renders::exposure`] chose for this LUT alone.
+    pub exposure: f32,
+}
+
+/// Panels per row of the gallery.
+const GALLERY_COLUMNS: usize = 4;
+
+/// The species gallery (`viewer compare --all`): one labelled half-size panel per LUT, all
+/// under the same light and the same exposure — the median of the LUTs' own exposures — so
+/// that the panels compare the furs themselves.
+pub fn gallery(panels: &[(String, Thumbnail)]) -> Canvas {
+    let (w, h) = (RENDER_W / 2, RENDER_H / 2);
+    let mut ks: Vec<f32> = panels.iter().map(|(_, t)| t.exposure).collect();
+    ks.sort_by(f32::total_cmp);
+    let k = ks.get(ks.len() / 2).copied().unwrap_or(1.0);
+    let cols = GALLERY_COLUMNS.min(panels.len().max(1));
+    let rows = panels.len().div_ceil(cols).max(1);
+    let mut c = Canvas::new(cols * w, rows * h, [0, 0, 0]);
+    for (n, (name, t)) in panels.iter().enumerate() {
+        let cell = tone_map(|i| t.radiance[i], &t.alpha, w, k, (w, h), 1);
+        let (x, y) = (((n % cols) * w) as i64, ((n / cols) * h) as i64);
+        c.paste(&cell, x, y);
+        c.fill_rect(x, y, 8 * name.chars().count() as i64 + 8, 14, [0, 0, 0]);
+        c.text(x + 4, y + 3, name, [255, 255, 255], 1);
+        c.outline(x, y, w as i64, h as i64, [60, 60, 60]);
+    }
+    c
+}
+
+/// Tone-maps radiance `value(pixel)` of a picture `src_w` pixels wide with coverage `alpha`
+/// (1 − e^(−k·L) per channel, over the background, sRGB) into a `w` × `h` canvas, each output
+/// pixel the mean of `step` × `step` input pixels.
+fn tone_map(
+    value: impl Fn(usize) -> Rgb,
+    alpha: &[f32],
+    src_w: usize,
+    k: f32,
+    (w, h): (usize, usize),
+    step: usize,
+) -> Canvas {
+    let mut c = Canvas::new(w, h, [0, 0, 0]);
+    let n = (step * step) as f32;
+    for y in 0..h {
+        for x in 0..w {
+            let mut acc = [0.0f32; 3];
+            let mut cover = 0.0;
+            for dy in 0..step {
+                for dx in 0..step {
+                    let i = (y * step + dy) * src_w + x * step + dx;
+                    let v = value(i);
+                    for (a, c) in acc.iter_mut().zip(v.0) {
+                        *a += c;
+                    }
+                    cover += alpha[i];
+                }
+            }
+            let cover = cover / n;
+            let px = std::array::from_fn(|ch| {
+                let lin = 1.0 - (-k * acc[ch] / n).exp() + (1.0 - cover) * BACKGROUND[ch];
+                srgb(lin)
+            });
+            c.set(x as i64, y as i64, px);
+        }
+    }
+    c
 }
 
 /// Linear [0, 1] → 8-bit sRGB.

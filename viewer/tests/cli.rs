@@ -482,15 +482,95 @@ fn bad_input_exits_2_with_one_error_line() {
 }
 
 #[test]
-fn presets_lists_every_builtin_as_name_tab_source() {
+fn presets_lists_every_builtin_with_its_parameters_and_source() {
     let out = ok(&["presets"], None);
     let lines: Vec<&str> = out.lines().collect();
-    let want: Vec<String> = presets::PRESETS
-        .iter()
-        .map(|p| format!("{}\t{}", p.name, p.source))
-        .collect();
-    assert_eq!(lines.len(), 5);
-    assert_eq!(lines, want);
+    let n = presets::PRESETS.len();
+    // The header walks the schema: one column per row but the melanin keys (they share
+    // σ_ca's column).
+    let header: Vec<&str> = lines[0].split_whitespace().collect();
+    assert_eq!(header[0], "name");
+    assert_eq!(header.len(), 1 + bcsdf_core::SCHEMA.len() - 2, "{header:?}");
+    for (p, line) in presets::PRESETS.iter().zip(&lines[1..=n]) {
+        let cells: Vec<&str> = line.split_whitespace().collect();
+        assert_eq!(cells[0], p.name, "{line}");
+        let kappa = header.iter().position(|h| *h == "κ").unwrap();
+        assert_eq!(
+            cells[kappa].parse::<f32>().unwrap(),
+            p.input.kappa,
+            "{line}"
+        );
+    }
+    assert!(out.contains("bobcat  "), "{out}");
+    assert_eq!(lines[n + 2], "sources:");
+    for (p, line) in presets::PRESETS.iter().zip(&lines[n + 3..]) {
+        assert_eq!(*line, format!("  {}: {}", p.name, p.source));
+    }
+    assert!(
+        out.contains("former names: yan-row-a → bobcat, yan-row-b → red-fox, yan-row-c → raccoon"),
+        "{out}"
+    );
+}
+
+#[test]
+fn presets_json_has_every_preset_and_parameter_as_resolved() {
+    let out = ok(&["presets", "--json"], None);
+    let v: serde_json::Value = serde_json::from_str(one_line(&out)).unwrap();
+    let list = v["presets"].as_array().unwrap();
+    assert_eq!(list.len(), presets::PRESETS.len());
+    for (p, j) in presets::PRESETS.iter().zip(list) {
+        assert_eq!(j["name"], p.name);
+        assert_eq!(j["source"], p.source);
+        let params = j["parameters"].as_object().unwrap();
+        let r = p.input.resolved();
+        assert_eq!(
+            params["kappa"].as_f64().unwrap() as f32,
+            r.kappa,
+            "{}",
+            p.name
+        );
+        assert_eq!(
+            params["eta_m"].as_f64().unwrap() as f32,
+            r.eta_m.unwrap(),
+            "{}",
+            p.name
+        );
+        assert_eq!(
+            params["beta_n_deg"].as_f64().unwrap() as f32,
+            r.beta_n_deg.unwrap()
+        );
+        match p.input.pigment {
+            Pigment::Absorption(c) => {
+                let got: Vec<f32> = params["sigma_ca"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.as_f64().unwrap() as f32)
+                    .collect();
+                assert_eq!(got, c.0, "{}", p.name);
+                assert!(!params.contains_key("eumelanin"));
+            }
+            Pigment::Melanin { eumelanin, .. } => {
+                assert_eq!(params["eumelanin"].as_f64().unwrap() as f32, eumelanin);
+                assert!(!params.contains_key("sigma_ca"));
+            }
+        }
+    }
+    assert_eq!(v["aliases"][0]["name"], "yan-row-a");
+    assert_eq!(v["aliases"][0]["preset"], "bobcat");
+}
+
+#[test]
+fn former_preset_names_print_a_note_and_evaluate_the_new_preset() {
+    let old = viewer(&probe_args("yan-row-b", &["30", "-20", "45"]), None);
+    assert_eq!(old.status.code(), Some(0), "{}", stderr(&old));
+    assert_eq!(
+        stderr(&old).trim_end(),
+        "note: preset 'yan-row-b' is now called 'red-fox' (docs/model.md §9); using 'red-fox'"
+    );
+    let new = viewer(&probe_args("red-fox", &["30", "-20", "45"]), None);
+    assert_eq!(stderr(&new), "");
+    assert_eq!(old.stdout, new.stdout);
 }
 
 #[test]
@@ -504,10 +584,12 @@ fn user_preset_file_is_listed_probed_and_checked() {
                 eumelanin = 0.4\nalpha_deg = 2\nbeta_m_deg = 9\nl = 0.5\nkappa = 0.6\n\
                 sigma_ms = 1\ng = 0.3\n";
     std::fs::write(&path, text).unwrap();
-    assert_eq!(
-        ok(&["presets", "--presets", &path], None),
-        "my-fur\ta test\n"
+    let listed = ok(&["presets", "--presets", &path], None);
+    assert!(
+        listed.lines().nth(1).unwrap().starts_with("my-fur  "),
+        "{listed}"
     );
+    assert!(listed.ends_with("sources:\n  my-fur: a test\n"), "{listed}");
     let mut args = probe_args("my-fur", &["30", "-20", "45"]);
     args.extend(["--presets", &path]);
     let got = parse_probe(one_line(&ok(&args, None)));

@@ -26,8 +26,10 @@ use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
 
-/// The text of the built-in preset file, `bcsdf-core/presets.toml`.
-pub const BUILTIN_TOML: &str = include_str!("../../bcsdf-core/presets.toml");
+/// The text of the built-in preset file, `bcsdf-core/presets.toml`
+/// ([`bcsdf_core::presets::PRESETS_TOML`]: the file ships in the core's crate, so this crate
+/// reads no file outside its own when packaged).
+pub const BUILTIN_TOML: &str = bcsdf_core::presets::PRESETS_TOML;
 
 /// The file name used in error messages about [`BUILTIN_TOML`].
 pub const BUILTIN_FILE: &str = "bcsdf-core/presets.toml";

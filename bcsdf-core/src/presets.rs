@@ -19,6 +19,11 @@ pub struct Preset {
     pub input: FurParamsInput,
 }
 
+/// The text of `presets.toml` (docs/model.md §9), the human-editable source of [`PRESETS`]:
+/// it ships inside this crate so that the std tools (`bake::presets`) parse the same file
+/// whether built in the repository or from a packaged crate.
+pub const PRESETS_TOML: &str = include_str!("../presets.toml");
+
 /// The built-in presets, in `presets.toml` order.
 pub const PRESETS: [Preset; 12] = [
     Preset {

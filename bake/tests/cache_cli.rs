@@ -210,7 +210,7 @@ fn a_holder_killed_mid_generation_leaves_a_cache_the_next_bake_repairs() {
         "a killed bake wrote a cache file: {prof:?}"
     );
     assert_eq!(lock.len(), 1);
-    assert_eq!(other, [partial.clone()], "the killed bake's temporary file");
+    assert_eq!(other, [partial], "the killed bake's temporary file");
 
     // The next bake takes the (released) lock, regenerates and cleans up.
     let spawn = || {

@@ -12,7 +12,8 @@
 //! ```
 //! use bcsdf_core::params::{check_name, NameError};
 //! assert!(check_name("yan-row-a").is_ok());
-//! assert_eq!(check_name("../x"), Err(NameError::BadStart('.')));
+//! assert_eq!(check_name("../x"), Err(NameError::BadChar { ch: '/', at: 2 }));
+//! assert_eq!(check_name(".x"), Err(NameError::BadStart('.')));
 //! assert_eq!(check_name("Nul.v2"), Err(NameError::DeviceName("NUL")));
 //! ```
 

@@ -8,6 +8,10 @@
 //!   the destination, `.<file name>.<random>.partial` (the file name cut to
 //!   [`TEMP_NAME_MAX`] bytes), so a stray one left by a crash says what it was for; no
 //!   reader ever opens a `.partial` file.
+//! - [`output_path`]: the one place a file name made from a preset name is joined to its
+//!   folder (`<out>/<name>.furlut`, `<out>/<name>.exr`, `<cache>/medulla-<hash>.furprof`): the
+//!   name must pass [`bcsdf_core::params::check_name`], and the result is checked to be a
+//!   file directly inside the folder, so no name can write outside `--out` or the cache.
 //! - [`prepare_dir`]: creates an output folder if needed and checks that a file can be
 //!   created in it, so that an unwritable folder is reported (naming it) before the work.
 //!
@@ -19,10 +23,12 @@
 //! assert_eq!(std::fs::read(out.join("a.txt")).unwrap(), b"whole");
 //! ```
 
+use bcsdf_core::params::{check_name, NameError};
+use std::ffi::OsStr;
 use std::fmt;
 use std::fs::File;
 use std::io::{self, Write};
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 /// Longest part of the destination's file name (in bytes) that goes into a temporary file's
 /// name, so that the temporary name stays well within file-name limits (255 bytes).
@@ -131,6 +137,63 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
     w.commit()
 }
 
+/// A file name [`output_path`] refused: the folder, the name, and why.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct OutputNameError {
+    /// The folder the file was to go in.
+    pub dir: PathBuf,
+    /// The name as given.
+    pub name: String,
+    /// Why it is refused: the name breaks the rule (`Some`), or (`None`) the joined path is
+    /// not directly inside the folder, which the rule excludes (a broken invariant).
+    pub reason: Option<NameError>,
+}
+
+impl fmt::Display for OutputNameError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "refusing to write in {}: name {:?} ",
+            self.dir.display(),
+            self.name
+        )?;
+        match &self.reason {
+            Some(reason) => write!(f, "{reason}"),
+            None => f.write_str("would not make a file directly inside the folder"),
+        }
+    }
+}
+
+impl std::error::Error for OutputNameError {}
+
+/// The path of the file `<name>.<extension>` directly inside `dir`: the name must pass
+/// [`check_name`] (docs/model.md §9), the extension is ASCII letters and digits, and the
+/// joined path must have `dir` as its parent and `<name>.<extension>` as its only new
+/// component. Every output file
+/// of bake (the LUTs and the profile cache) gets its path here.
+pub fn output_path(dir: &Path, name: &str, extension: &str) -> Result<PathBuf, OutputNameError> {
+    let err = |reason| OutputNameError {
+        dir: dir.to_path_buf(),
+        name: name.to_string(),
+        reason,
+    };
+    let file_name = format!("{name}.{extension}");
+    check_name(name).map_err(|e| err(Some(e)))?;
+    let path = dir.join(&file_name);
+    let inside = !extension.is_empty()
+        && extension.bytes().all(|b| b.is_ascii_alphanumeric())
+        && path.parent() == Some(dir)
+        && matches!(
+            path.strip_prefix(dir).map(|rest| rest.components().collect::<Vec<_>>()),
+            Ok(c) if c == [Component::Normal(OsStr::new(&file_name))]
+        );
+    if inside {
+        Ok(path)
+    } else {
+        Err(err(None))
+    }
+}
+
 /// A folder that cannot be created or written to. [`Display`](fmt::Display) gives one line,
 /// `<dir> is not writable: <reason>`, for the caller to prefix with what the folder is for.
 #[derive(Debug)]
@@ -181,6 +244,51 @@ mod tests {
             .collect();
         v.sort();
         v
+    }
+
+    #[test]
+    fn output_paths_stay_directly_inside_their_folder() {
+        let dir = Path::new("some/out");
+        assert_eq!(
+            output_path(dir, "yan-row-a", "furlut").unwrap(),
+            Path::new("some/out/yan-row-a.furlut")
+        );
+        assert_eq!(
+            output_path(Path::new("."), "x.v2", "exr").unwrap(),
+            Path::new("./x.v2.exr")
+        );
+        for bad in [
+            "../escaped",
+            "..",
+            "/etc/passwd",
+            "a/b",
+            "a\\b",
+            ".x",
+            "-x",
+            "",
+            "nul",
+            "a\nb",
+        ] {
+            let e = output_path(dir, bad, "exr").unwrap_err();
+            assert_eq!((e.dir.as_path(), e.name.as_str()), (dir, bad));
+            assert!(e.reason.is_some(), "{bad:?}");
+            let msg = e.to_string();
+            assert!(
+                msg.starts_with(&format!("refusing to write in some/out: name {bad:?} ")),
+                "{msg}"
+            );
+            assert_eq!(msg.lines().count(), 1, "{msg}");
+        }
+        // The longest name is fine; an extension that is not letters and digits is refused.
+        let long = "a".repeat(bcsdf_core::params::NAME_MAX_BYTES);
+        assert!(output_path(dir, &long, "furlut").is_ok());
+        for ext in ["", "x/y", "..", "e x"] {
+            let e = output_path(dir, "ok", ext).unwrap_err();
+            assert_eq!(e.reason, None, "{ext:?}");
+            assert!(e
+                .to_string()
+                .ends_with("would not make a file directly inside the folder"));
+        }
     }
 
     #[test]

@@ -42,8 +42,13 @@ once, and shard K always bakes the same presets for the same file (appending pre
 none of the existing ones). A shard with no presets (N above the preset count) succeeds and
 writes nothing. Shards may share --out and the profile cache: bake writes only
 <OUT>/<preset>.exr and <OUT>/<preset>.furlut (each via a uniquely named temporary file), and
-the summary goes to standard output, so concurrent shards never write the same file (cache
-files are written the same way; two shards making the same one write identical bytes).";
+the summary goes to standard output, so concurrent shards never write the same file. Shards
+sharing a profile cache generate each missing entry once: one takes the entry's lock file
+(medulla-<hash>.lock) and generates, the others wait and read it; a killed holder leaves no
+lock held, and the next bake repairs the entry.
+
+Preset names (files, --preset): 1 to 64 ASCII letters, digits, '-', '_', '.', not starting
+with '.' or '-', not a Windows device name (CON, NUL, COM1, ...); any other name exits 2.";
 
 /// Bake fur presets into half-float lookup tables of the full far-field BCSDF (unscattered
 /// and medulla-scattered lobes), and measure them against the analytic model.
@@ -171,6 +176,8 @@ fn select(cli: &Cli, shard: Option<Shard>) -> Result<Vec<NamedPreset>, Failure> 
     cli.preset
         .iter()
         .map(|name| {
+            bcsdf_core::params::check_name(name)
+                .map_err(|e| input(format!("--preset: name {name:?} {e}")))?;
             let (preset, alias) = presets::lookup(&all, name).ok_or_else(|| {
                 let known: Vec<&str> = all.iter().map(|p| p.name.as_str()).collect();
                 input(format!(
@@ -251,6 +258,10 @@ fn run(cli: Cli) -> Result<u8, Failure> {
                 message: format!("cannot start {n} threads: {e}"),
             })?;
     }
+    // Every output path is known (and inside --out) before anything is created.
+    for preset in &selected {
+        pipeline::output_paths(&opts.out_dir, &preset.name).map_err(bake_failure)?;
+    }
     pipeline::prepare_out_dir(&opts.out_dir).map_err(|e| Failure {
         code: 1,
         message: e.to_string(),
@@ -265,11 +276,12 @@ fn run(cli: Cli) -> Result<u8, Failure> {
         bar.finish_and_clear();
         let report = match result {
             Ok(r) => r,
-            // The default cache directory is a convenience: when it cannot be used, say so
-            // and bake without a cache. A directory the user named is an error.
-            Err(pipeline::BakeError::Profiles(e @ profiles::Error::CacheDir { .. }))
-                if cli.cache_dir.is_none() && opts.profiles.cache_dir.is_some() =>
-            {
+            // The default cache directory is a convenience: when it cannot be used (not
+            // writable, no advisory locks), say so and bake without a cache. A directory the
+            // user named is an error.
+            Err(pipeline::BakeError::Profiles(
+                e @ (profiles::Error::CacheDir { .. } | profiles::Error::CacheLock { .. }),
+            )) if cli.cache_dir.is_none() && opts.profiles.cache_dir.is_some() => {
                 eprintln!("note: {e}; continuing without a cache");
                 opts.profiles.cache_dir = None;
                 pipeline::bake_preset(preset, &opts, &|_| {}).map_err(bake_failure)?
@@ -297,7 +309,7 @@ fn run(cli: Cli) -> Result<u8, Failure> {
 
 fn bake_failure(e: pipeline::BakeError) -> Failure {
     let code = match e {
-        pipeline::BakeError::Params { .. } => 2,
+        pipeline::BakeError::Params { .. } | pipeline::BakeError::Name(_) => 2,
         _ => 1,
     };
     Failure {

@@ -19,6 +19,9 @@ use std::time::Instant;
 /// File extension of the raw blob.
 pub const BLOB_EXTENSION: &str = "furlut";
 
+/// File extension of the OpenEXR file.
+pub const EXR_EXTENSION: &str = "exr";
+
 /// What [`bake_preset`] does.
 #[derive(Clone, Debug)]
 pub struct BakeOptions {
@@ -114,6 +117,9 @@ pub enum BakeError {
     Write(LutFileError),
     /// The freshly baked blob did not validate (a bug; reported, never written).
     Invalid(bcsdf_core::lut::LutError),
+    /// The preset's name cannot be a file name in the output directory
+    /// ([`fsutil::output_path`]); checked before any work.
+    Name(fsutil::OutputNameError),
 }
 
 impl fmt::Display for BakeError {
@@ -128,6 +134,7 @@ impl fmt::Display for BakeError {
             ),
             BakeError::Write(e) => write!(f, "{e}"),
             BakeError::Invalid(e) => write!(f, "baked LUT failed validation: {e}"),
+            BakeError::Name(e) => write!(f, "{e}"),
         }
     }
 }
@@ -142,6 +149,13 @@ pub fn prepare_out_dir(dir: &Path) -> Result<(), BakeError> {
     })
 }
 
+/// The two files a bake of preset `name` writes in `out_dir`: `<name>.exr` and
+/// `<name>.furlut`, built by [`fsutil::output_path`] (never outside `out_dir`).
+pub fn output_paths(out_dir: &Path, name: &str) -> Result<(PathBuf, PathBuf), BakeError> {
+    let path = |ext| fsutil::output_path(out_dir, name, ext).map_err(BakeError::Name);
+    Ok((path(EXR_EXTENSION)?, path(BLOB_EXTENSION)?))
+}
+
 /// Bakes one preset into `opts.out_dir`; `on_step` hears each step as it starts.
 pub fn bake_preset(
     preset: &NamedPreset,
@@ -152,6 +166,7 @@ pub fn bake_preset(
         preset: preset.name.clone(),
         error,
     })?;
+    let (exr, blob_path) = output_paths(&opts.out_dir, &preset.name)?;
 
     on_step(Step::Profiles);
     let t = Instant::now();
@@ -172,10 +187,6 @@ pub fn bake_preset(
     let metric_seconds = t.elapsed().as_secs_f64();
 
     on_step(Step::Writing);
-    let exr = opts.out_dir.join(format!("{}.exr", preset.name));
-    let blob_path = opts
-        .out_dir
-        .join(format!("{}.{BLOB_EXTENSION}", preset.name));
     let file = LutFile {
         blob,
         meta: LutMeta {

@@ -67,7 +67,8 @@ impl fmt::Display for PresetError {
         }
         f.write_str(": ")?;
         if let Some(name) = &self.preset {
-            write!(f, "preset \"{name}\": ")?;
+            // Quoted with escapes: a name with a newline still gives one line.
+            write!(f, "preset {name:?}: ")?;
         }
         f.write_str(&self.message)
     }
@@ -116,8 +117,9 @@ pub fn lookup<'a>(
 
 /// Parses preset-file text; `file` is only used in error messages.
 ///
-/// Checks, in this order: TOML syntax, unknown keys and value types, the colour (exactly one
-/// form), the name, [`FurParams::new`] for every preset, and that names are unique.
+/// Checks, in this order: TOML syntax, unknown keys and value types, the name
+/// ([`bcsdf_core::params::check_name`]), the colour (exactly one form), [`FurParams::new`]
+/// for every preset, and that names are unique.
 pub fn parse(text: &str, file: &str) -> Result<Vec<NamedPreset>, PresetError> {
     let raw: RawFile = toml::from_str(text).map_err(|e| toml_error(text, file, &e))?;
     if raw.preset.is_empty() {
@@ -143,10 +145,16 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<NamedPreset>, PresetError> {
             preset: Some(preset.name.get_ref().clone()),
             message,
         };
+        // The name first: it is the file name of everything made from this preset.
+        check_name(preset.name.get_ref()).map_err(|message| PresetError {
+            file: file.to_string(),
+            line: Some(line_of(text, preset.name.span().start)),
+            preset: None,
+            message,
+        })?;
         let input = preset
             .to_input(entry.span())
             .map_err(|(span, m)| err(span, m))?;
-        check_name(preset.name.get_ref()).map_err(|m| err(preset.name.span(), m))?;
         FurParams::new(&input)
             .map_err(|e| err(preset.span_of(e.name, entry.span()), e.to_string()))?;
         let name = preset.name.get_ref().clone();
@@ -167,18 +175,11 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<NamedPreset>, PresetError> {
     Ok(out)
 }
 
-/// Names are typed on command lines and listed one per line: no empty names and no control
-/// characters (tabs, newlines).
+/// A preset name becomes a file name (`<out>/<name>.furlut`): it must follow
+/// [`bcsdf_core::params::check_name`] (docs/model.md §9). The message quotes the name
+/// escaped, so it stays one line.
 fn check_name(name: &str) -> Result<(), String> {
-    if name.trim().is_empty() {
-        Err("name must not be empty".to_string())
-    } else if name.chars().any(char::is_control) {
-        Err(format!(
-            "name {name:?} must not contain control characters (tabs, newlines)"
-        ))
-    } else {
-        Ok(())
-    }
+    bcsdf_core::params::check_name(name).map_err(|e| format!("name {name:?} {e}"))
 }
 
 /// 1-based line number of byte offset `pos` in `text`.

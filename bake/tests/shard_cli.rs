@@ -10,10 +10,12 @@
 //! Every bake is small (tiny tables, 0.5 % of the photon budget, no error check) and bypasses
 //! the profile cache, so the unsharded and sharded runs generate their profiles independently.
 
+mod cli_support;
+
+use cli_support::{bake, check_success, files, summary_presets, text, CHEAP};
 use std::collections::BTreeMap;
 use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::PathBuf;
 
 /// Six presets: four with medulla profiles (σ_ms > 0, κ > 0, different g), two without.
 const PRESETS: &str = r#"
@@ -106,69 +108,6 @@ const NAMES: [&str; 6] = [
     "p5-air-medulla",
 ];
 
-/// The cheapest bake the CLI offers: tiny tables, few photons, no cache, no error check.
-const CHEAP: [&str; 13] = [
-    "--res-sum",
-    "64",
-    "--res-theta-r",
-    "8",
-    "--res-phi",
-    "16",
-    "--res-ms",
-    "12",
-    "--photons-scale",
-    "0.005",
-    "--no-cache",
-    "--no-check",
-    "--threads=1",
-];
-
-fn bake(args: &[&str]) -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_bake"));
-    cmd.args(args);
-    cmd
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
-
-fn check_success(o: &Output, what: &str) {
-    assert!(
-        o.status.success(),
-        "{what}: {:?}\nstdout:\n{}\nstderr:\n{}",
-        o.status,
-        text(&o.stdout),
-        text(&o.stderr)
-    );
-}
-
-/// Every file in `dir` (no subfolders expected), by name.
-fn files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
-    fs::read_dir(dir)
-        .unwrap()
-        .map(|e| {
-            let e = e.unwrap();
-            assert!(e.file_type().unwrap().is_file(), "{:?}", e.path());
-            (
-                e.file_name().into_string().unwrap(),
-                fs::read(e.path()).unwrap(),
-            )
-        })
-        .collect()
-}
-
-/// The preset names of the summary table's rows (between the header and the "wrote" line).
-fn summary_presets(stdout: &str) -> Vec<String> {
-    stdout
-        .lines()
-        .skip_while(|l| !l.starts_with("preset "))
-        .skip(1)
-        .take_while(|l| !l.starts_with("wrote "))
-        .map(|l| l.split_whitespace().next().unwrap().to_string())
-        .collect()
-}
-
 struct Setup {
     _dir: tempfile::TempDir,
     root: PathBuf,
@@ -195,7 +134,14 @@ fn shards_reproduce_the_unsharded_bake_byte_for_byte() {
     let (a_str, b_str) = (a.to_str().unwrap(), b.to_str().unwrap());
 
     // One unsharded bake (all threads) into A.
-    let mut args = vec!["--presets", &s.presets, "--all", "--out", a_str];
+    let mut args = vec![
+        "--presets",
+        &s.presets,
+        "--all",
+        "--out",
+        a_str,
+        "--no-cache",
+    ];
     args.extend(&CHEAP[..CHEAP.len() - 1]);
     let o = bake(&args).output().unwrap();
     check_success(&o, "unsharded bake");
@@ -206,7 +152,15 @@ fn shards_reproduce_the_unsharded_bake_byte_for_byte() {
     let children: Vec<_> = (0..n)
         .map(|k| {
             let shard = format!("{k}/{n}");
-            let mut args = vec!["--presets", &s.presets, "--shard", &shard, "--out", b_str];
+            let mut args = vec![
+                "--presets",
+                &s.presets,
+                "--shard",
+                &shard,
+                "--out",
+                b_str,
+                "--no-cache",
+            ];
             args.extend(CHEAP);
             bake(&args)
                 .stdout(std::process::Stdio::piped())
@@ -270,6 +224,7 @@ fn empty_shard_succeeds_and_writes_nothing() {
         "6/7",
         "--out",
         out.to_str().unwrap(),
+        "--no-cache",
     ];
     args.extend(CHEAP);
     let o = bake(&args).output().unwrap();

@@ -6,12 +6,16 @@
 //!
 //! [`SCHEMA`] describes every parameter once (key, symbol, unit, domain, default); the LUT
 //! header, the EXR attributes, preset files, `--set` and the viewer's summary iterate it.
+//!
+//! [`check_name`] is the rule for preset names (docs/model.md §9), which become file names.
 
 use crate::pigment::Pigment;
 use crate::spectrum::Rgb;
 use core::fmt;
 
+mod name;
 mod schema;
+pub use name::{check_name, NameError, DEVICE_NAMES, NAME_MAX_BYTES};
 pub use schema::{Domain, ParamDefault, ParamSpec, ParamValue, SCHEMA};
 
 /// Name of one user-facing parameter (docs/model.md §2); its [`ParamSpec`] is

@@ -448,8 +448,55 @@ fn error_in_a_later_preset_names_that_preset() {
 
 #[test]
 fn empty_or_bad_names_and_empty_files_are_errors() {
-    expect_error(&edit(3, "name = \"\""), 3, &["name"]);
-    expect_error(&edit(3, "name = \"a\\tb\""), 3, &["name"]);
+    // Every form the name rule (docs/model.md §9) refuses: file, line 3 and the field named.
+    for (toml_name, shown, why) in [
+        (r#""""#, r#""""#, "is empty"),
+        (r#""a\tb""#, r#""a\tb""#, "contains '\\t' at byte 1"),
+        (r#""a\nb""#, r#""a\nb""#, "contains '\\n' at byte 1"),
+        (
+            r#""../escaped""#,
+            r#""../escaped""#,
+            "contains '/' at byte 2",
+        ),
+        (
+            r#""../../home/x/.bashrc""#,
+            r#""../../home/x/.bashrc""#,
+            "contains '/'",
+        ),
+        (r#""/abs""#, r#""/abs""#, "contains '/' at byte 0"),
+        (r#""a\\b""#, r#""a\\b""#, "contains '\\\\' at byte 1"),
+        (r#""c:x""#, r#""c:x""#, "contains ':'"),
+        (r#""my fur""#, r#""my fur""#, "contains ' '"),
+        (
+            r#""fourrure-é""#,
+            r#""fourrure-é""#,
+            "contains 'é' at byte 9",
+        ),
+        (r#"".hidden""#, r#"".hidden""#, "starts with '.'"),
+        (r#""..""#, r#""..""#, "starts with '.'"),
+        (r#""-rf""#, r#""-rf""#, "starts with '-'"),
+        (r#""NUL""#, r#""NUL""#, "Windows device name NUL"),
+        (r#""com1.fur""#, r#""com1.fur""#, "Windows device name COM1"),
+        (
+            r#""aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa""#,
+            "\"aaaa",
+            "is 65 bytes long; at most 64",
+        ),
+    ] {
+        let msg = expect_error(
+            &edit(3, &format!("name = {toml_name}")),
+            3,
+            &[&format!("name {shown}"), why],
+        );
+        assert!(msg.starts_with(&format!("{FILE}:3: name ")), "{msg}");
+    }
+    // A bad name in a later preset names that preset's line.
+    let second = GOOD.replace("\"cat\"", "\"../dog\"");
+    expect_error(
+        &format!("{GOOD}{second}"),
+        15,
+        &["name \"../dog\" contains '/'"],
+    );
     let err = parse("# nothing here\n").unwrap_err();
     assert!(err.to_string().contains("no presets"), "{err}");
 }

@@ -48,10 +48,13 @@ fn temp_dir() -> tempfile::TempDir {
         .unwrap()
 }
 
+/// The files in `dir`, but for the cache entries' lock files (`*.lock`, kept by design:
+/// `bake::profiles::cache`, "Concurrent bakes").
 fn files_in(dir: &Path) -> Vec<PathBuf> {
     let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_none_or(|e| e != "lock"))
         .collect();
     v.sort();
     v
@@ -503,7 +506,7 @@ fn writes_are_atomic() {
     // Concurrent writers of the same key: every reader sees a complete file.
     let cache = temp_dir();
     let p = params("yan-row-a");
-    let results: Vec<OwnedProfiles> = std::thread::scope(|s| {
+    let results: Vec<(OwnedProfiles, CacheOutcome)> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..3)
             .map(|_| {
                 s.spawn(|| {
@@ -516,18 +519,34 @@ fn writes_are_atomic() {
                         Some(1),
                     )
                     .unwrap()
-                    .0
                 })
             })
             .collect();
         handles.into_iter().map(|h| h.join().unwrap()).collect()
     });
-    for r in &results[1..] {
-        assert_same_bits(&results[0], r, "concurrent writers");
+    for (r, _) in &results[1..] {
+        assert_same_bits(&results[0].0, r, "concurrent writers");
     }
+    // The entry's lock: one thread generated, the two others waited and read its file.
+    let generated = results
+        .iter()
+        .filter(|(_, o)| matches!(o, CacheOutcome::Generated { .. }))
+        .count();
+    let hits = results
+        .iter()
+        .filter(|(_, o)| matches!(o, CacheOutcome::Hit { .. }))
+        .count();
+    assert_eq!(
+        (generated, hits),
+        (1, 2),
+        "{:?}",
+        results.iter().map(|(_, o)| o).collect::<Vec<_>>()
+    );
     let files = files_in(cache.path());
     assert_eq!(files.len(), 1, "{files:?}");
-    assert_eq!(std::fs::read(&files[0]).unwrap(), encode(&results[0]));
+    assert_eq!(std::fs::read(&files[0]).unwrap(), encode(&results[0].0));
+    let lock = files[0].with_extension("lock");
+    assert!(lock.is_file(), "the entry's lock file {}", lock.display());
 }
 
 #[test]

@@ -172,7 +172,7 @@ fn announce_generation(params: &FurParams, opts: &ProfileOptions) {
         seed: opts.seed,
     };
     let where_to = match &opts.cache_dir {
-        Some(dir) if dir.join(key.file_name()).is_file() => return,
+        Some(dir) if key.path_in(dir).is_ok_and(|p| p.is_file()) => return,
         Some(dir) => format!("cached in {}", dir.display()),
         None => "not cached".to_string(),
     };

@@ -642,10 +642,13 @@ fn help_shows_usage_and_examples() {
     }
 }
 
-/// The cache files in `dir` (sorted).
+/// The cache files in `dir` (sorted), but for the entries' lock files (`*.lock`).
 fn cache_files(dir: &Path) -> Vec<PathBuf> {
     let mut files: Vec<PathBuf> = match std::fs::read_dir(dir) {
-        Ok(rd) => rd.map(|e| e.unwrap().path()).collect(),
+        Ok(rd) => rd
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_none_or(|e| e != "lock"))
+            .collect(),
         Err(_) => Vec::new(),
     };
     files.sort();

@@ -6,7 +6,8 @@
 //!
 //! One file per [`ProfileKey`] (generator version, layout, budget, seed), named
 //! `medulla-<16 hex digits>.furprof` after the FNV-1a 64 hash of the key bytes (bytes 8..76
-//! below), so different parameter sets never share a file. Little-endian throughout:
+//! below), so different parameter sets never share a file. The path is built by
+//! [`output_path`] like every output file (a valid name, directly inside the directory). Little-endian throughout:
 //!
 //! | offset | type | content |
 //! |---|---|---|
@@ -36,6 +37,24 @@
 //! existing file untouched (a crash can at worst leave a stray `.medulla-*.partial` file
 //! ([`crate::fsutil`] names temporary files after their destination), which is never read).
 //!
+//! # Concurrent bakes
+//!
+//! Bakes that share a cache directory (the N shards of one job, two users, threads of one
+//! process) generate each missing entry once. Each entry has a lock file beside it,
+//! `medulla-<hash>.lock` (empty, created on first use and never removed: removing it would
+//! let two bakes lock two different files). A bake that finds no valid file takes the
+//! entry's advisory lock (`flock` on Unix, `LockFileEx` on Windows, through the `fs4` crate),
+//! reads the file again (another bake may have written it while this one waited: then it is
+//! a [`CacheOutcome::Hit`]), and otherwise removes any `.medulla-<hash>.furprof.*.partial`
+//! file a killed writer left, generates, writes the file atomically and releases the lock.
+//! A valid file is read without the lock, since it is only ever replaced whole.
+//!
+//! The system releases a lock when its holder exits, however it exits (`kill -9`, a crash,
+//! a node reboot for a local disk): a killed holder leaves no entry locked, and at worst a
+//! stray temporary file and no cache file, which the next bake of that entry regenerates
+//! (and cleans). A file system without advisory locks (some NFS set-ups) gives
+//! [`Error::CacheLock`], naming the lock file: use a local `--cache-dir` or `--no-cache`.
+//!
 //! **An unwritable cache directory is an error** ([`Error::CacheDir`], naming the directory),
 //! reported before any generation work: pass no cache directory to work without a cache.
 //! A read-only directory that already holds a valid file for the key is fine (a hit only
@@ -45,11 +64,12 @@
 
 use super::generate::generate_parallel;
 use super::{Error, OwnedProfiles};
-use crate::fsutil::AtomicWriter;
+use crate::fsutil::{output_path, AtomicWriter, OutputNameError, TEMP_SUFFIX};
 use bcsdf_core::medulla::{
     PhotonBudget, ProfileError, ProfileLayout, Resolution, GENERATOR_VERSION,
 };
 use bcsdf_core::FurParams;
+use fs4::FileExt;
 use std::fmt;
 use std::fs;
 use std::io::{self, Write};
@@ -57,6 +77,12 @@ use std::path::{Path, PathBuf};
 
 /// Version of the cache file format described in the module documentation.
 pub const FORMAT_VERSION: u32 = 2;
+
+/// Extension of a cache file.
+pub const CACHE_EXTENSION: &str = "furprof";
+
+/// Extension of a cache entry's lock file.
+pub const LOCK_EXTENSION: &str = "lock";
 
 /// The first eight bytes of a cache file.
 pub const MAGIC: [u8; 8] = *b"FURPROF\0";
@@ -123,9 +149,26 @@ impl ProfileKey {
         b
     }
 
+    /// The name of this key's cache entry: `medulla-<hash>` (16 hex digits), a valid name
+    /// ([`bcsdf_core::params::check_name`]); the cache file and its lock add an extension.
+    pub fn stem(&self) -> String {
+        format!("medulla-{:016x}", fnv1a64(&self.to_bytes()))
+    }
+
     /// The cache file name of this key: `medulla-<hash>.furprof`.
     pub fn file_name(&self) -> String {
-        format!("medulla-{:016x}.furprof", fnv1a64(&self.to_bytes()))
+        format!("{}.{CACHE_EXTENSION}", self.stem())
+    }
+
+    /// The cache file of this key in `dir`, built by [`output_path`] (always directly inside
+    /// `dir`).
+    pub fn path_in(&self, dir: &Path) -> Result<PathBuf, OutputNameError> {
+        output_path(dir, &self.stem(), CACHE_EXTENSION)
+    }
+
+    /// The lock file of this key's entry in `dir` (module documentation, "Concurrent bakes").
+    pub fn lock_path_in(&self, dir: &Path) -> Result<PathBuf, OutputNameError> {
+        output_path(dir, &self.stem(), LOCK_EXTENSION)
     }
 }
 
@@ -357,11 +400,46 @@ impl CacheOutcome {
     }
 }
 
+/// Reads the cache file at `path` for `key`: `Ok(Some)` for valid profiles, `Ok(None)` when
+/// there is no file, `Err` with the reason a file was rejected.
+fn read_entry(path: &Path, key: &ProfileKey) -> Result<Option<OwnedProfiles>, CacheError> {
+    match fs::read(path) {
+        Ok(bytes) => decode(&bytes, key).map(Some),
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
+        Err(e) => Err(CacheError::Read(e)),
+    }
+}
+
+/// Removes the temporary files a killed writer of the cache file `path` left behind
+/// (`.<file name>.*.partial`, [`AtomicWriter`]'s names). Call only with the entry's lock held:
+/// then no other bake is writing one. Best effort (a file that cannot be removed is left; it
+/// is never read).
+fn remove_stray_partials(dir: &Path, path: &Path) {
+    let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
+        return;
+    };
+    let prefix = format!(".{name}.");
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let file = entry.file_name();
+        let Some(file) = file.to_str() else { continue };
+        if file.starts_with(&prefix) && file.ends_with(TEMP_SUFFIX) {
+            let _ = fs::remove_file(entry.path());
+        }
+    }
+}
+
 /// Profiles for `params` at resolution `res`: read from `cache_dir` when it holds a valid
 /// file for this (generator version, layout, budget, seed), else generated with
 /// [`generate_parallel`] and written there atomically. Without a cache directory they are
 /// always generated. A directory that cannot be created or written is [`Error::CacheDir`],
 /// detected before generating.
+///
+/// Concurrent callers (threads or processes) that miss the same entry generate it once: the
+/// one holding the entry's lock generates and writes it, the others wait for the lock and
+/// then read the file (module documentation, "Concurrent bakes").
 pub fn load_or_generate(
     params: &FurParams,
     res: Resolution,
@@ -381,21 +459,38 @@ pub fn load_or_generate(
         budget,
         seed,
     };
-    let path = dir.join(key.file_name());
-    let rejected = match fs::read(&path) {
-        Ok(bytes) => match decode(&bytes, &key) {
-            Ok(p) => return Ok((p, CacheOutcome::Hit { path })),
-            Err(e) => Some(e),
-        },
-        Err(e) if e.kind() == io::ErrorKind::NotFound => None,
-        Err(e) => Some(CacheError::Read(e)),
-    };
-    // Open the temporary file first: an unwritable directory fails before the work.
+    let path = key.path_in(dir).map_err(Error::CacheName)?;
+    // A valid file needs no lock: it is only ever replaced whole (renamed over).
+    if let Ok(Some(p)) = read_entry(&path, &key) {
+        return Ok((p, CacheOutcome::Hit { path }));
+    }
+    // Creating the lock file also checks, before the work, that the directory is writable.
     let dir_error = |source| Error::CacheDir {
         dir: dir.to_path_buf(),
         source,
     };
     fs::create_dir_all(dir).map_err(dir_error)?;
+    let lock_path = key.lock_path_in(dir).map_err(Error::CacheName)?;
+    let lock = fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(&lock_path)
+        .map_err(dir_error)?;
+    // Blocks while another bake generates this entry; the system releases the lock when its
+    // holder exits, however it exits. Released when `lock` is dropped, on every path below.
+    FileExt::lock(&lock).map_err(|source| Error::CacheLock {
+        path: lock_path.clone(),
+        source,
+    })?;
+    // Another bake may have written the file while this one waited.
+    let rejected = match read_entry(&path, &key) {
+        Ok(Some(p)) => return Ok((p, CacheOutcome::Hit { path })),
+        Ok(None) => None,
+        Err(e) => Some(e),
+    };
+    remove_stray_partials(dir, &path);
     let mut writer = AtomicWriter::new(&path).map_err(dir_error)?;
     let profiles = generate_parallel(&layout, &budget, seed, threads)?;
     let write_error = |source| Error::CacheWrite {
@@ -404,6 +499,7 @@ pub fn load_or_generate(
     };
     writer.write_all(&encode(&profiles)).map_err(write_error)?;
     writer.commit().map_err(write_error)?;
+    drop(lock);
     let outcome = match rejected {
         Some(reason) => CacheOutcome::Regenerated { path, reason },
         None => CacheOutcome::Generated { path: Some(path) },

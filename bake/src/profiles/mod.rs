@@ -37,7 +37,7 @@ pub mod model;
 
 pub use cache::{
     decode, default_cache_dir, encode, fnv1a64, load_or_generate, CacheError, CacheOutcome,
-    ProfileKey, FORMAT_VERSION, MAGIC,
+    ProfileKey, CACHE_EXTENSION, FORMAT_VERSION, LOCK_EXTENSION, MAGIC,
 };
 pub use generate::{generate_parallel, scale_budget};
 pub use model::{build_model, needs_profiles, OwnedModel, ProfileOptions};
@@ -124,6 +124,17 @@ pub enum Error {
         /// What the system said.
         source: io::Error,
     },
+    /// The lock of a cache entry could not be taken (the file system does not support
+    /// advisory locks, or the lock file cannot be opened for locking).
+    CacheLock {
+        /// The entry's lock file.
+        path: PathBuf,
+        /// What the system said.
+        source: io::Error,
+    },
+    /// A cache file name that would not be directly inside the cache directory (never for
+    /// the names [`ProfileKey::stem`] makes).
+    CacheName(crate::fsutil::OutputNameError),
     /// Writing or renaming the cache file failed.
     CacheWrite {
         /// The cache file.
@@ -143,6 +154,13 @@ impl fmt::Display for Error {
                 "profile cache directory {} is not writable: {source}",
                 dir.display()
             ),
+            Error::CacheLock { path, source } => write!(
+                f,
+                "cannot lock profile cache entry {}: {source} (use a local --cache-dir or \
+                 --no-cache on file systems without advisory locks)",
+                path.display()
+            ),
+            Error::CacheName(e) => write!(f, "profile cache: {e}"),
             Error::CacheWrite { path, source } => {
                 write!(f, "cannot write profile cache {}: {source}", path.display())
             }
@@ -153,7 +171,10 @@ impl fmt::Display for Error {
 impl std::error::Error for Error {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
-            Error::CacheDir { source, .. } | Error::CacheWrite { source, .. } => Some(source),
+            Error::CacheDir { source, .. }
+            | Error::CacheLock { source, .. }
+            | Error::CacheWrite { source, .. } => Some(source),
+            Error::CacheName(e) => Some(e),
             _ => None,
         }
     }

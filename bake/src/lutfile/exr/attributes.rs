@@ -390,10 +390,11 @@ pub(super) fn parse_meta(a: &Attrs<'_>) -> Result<(LutMeta, u64), Kind> {
             )));
         }
     };
-    let meta = LutMeta {
-        preset: a.text(PRESET)?,
-        errors,
-    };
+    let preset = a.text(PRESET)?;
+    // The name a LUT was baked under follows the preset-name rule (docs/model.md §9).
+    bcsdf_core::params::check_name(&preset)
+        .map_err(|e| Kind::Format(format!("attribute {PRESET}: name {preset:?} {e}")))?;
+    let meta = LutMeta { preset, errors };
     Ok((meta, a.hex64(META_CHECKSUM)?))
 }
 

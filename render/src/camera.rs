@@ -17,7 +17,12 @@ impl Camera {
     /// A camera at `eye` looking at `target`, `up` roughly upward, vertical field of view
     /// `fov_deg` degrees.
     #[must_use]
-    pub fn look_at(eye: Vector3<f32>, target: Vector3<f32>, up: Vector3<f32>, fov_deg: f32) -> Camera {
+    pub fn look_at(
+        eye: Vector3<f32>,
+        target: Vector3<f32>,
+        up: Vector3<f32>,
+        fov_deg: f32,
+    ) -> Camera {
         let forward = (target - eye).normalize();
         let right = forward.cross(&up).normalize();
         let up = right.cross(&forward);

@@ -131,11 +131,19 @@ mod tests {
             .intersect(&Vector3::new(-5.0, 0.08, 1.0), &dir, 0.0, f32::INFINITY)
             .is_none());
         // Beyond t_max, behind the origin, past the tip cap, or parallel: no hit.
-        assert!(seg.intersect(&Vector3::new(-5.0, 0.0, 1.0), &dir, 0.0, 4.9).is_none());
-        assert!(seg.intersect(&Vector3::new(5.0, 0.0, 1.0), &dir, 0.0, 100.0).is_none());
-        assert!(seg.intersect(&Vector3::new(-5.0, 0.0, 2.06), &dir, 0.0, 100.0).is_none());
+        assert!(seg
+            .intersect(&Vector3::new(-5.0, 0.0, 1.0), &dir, 0.0, 4.9)
+            .is_none());
+        assert!(seg
+            .intersect(&Vector3::new(5.0, 0.0, 1.0), &dir, 0.0, 100.0)
+            .is_none());
+        assert!(seg
+            .intersect(&Vector3::new(-5.0, 0.0, 2.06), &dir, 0.0, 100.0)
+            .is_none());
         let along = Vector3::new(0.0, 0.0, 1.0);
-        assert!(seg.intersect(&Vector3::new(0.0, 0.0, -1.0), &along, 0.0, 100.0).is_none());
+        assert!(seg
+            .intersect(&Vector3::new(0.0, 0.0, -1.0), &along, 0.0, 100.0)
+            .is_none());
     }
 
     #[test]

@@ -158,7 +158,11 @@ struct Row {
 }
 
 /// Renders `scene` with scatterer `fiber` (see [`crate::scatter`]).
-pub fn render<S: Scatterer>(scene: &Scene, fiber: &S, settings: &Settings) -> Result<Render, SettingsError> {
+pub fn render<S: Scatterer>(
+    scene: &Scene,
+    fiber: &S,
+    settings: &Settings,
+) -> Result<Render, SettingsError> {
     settings.validate()?;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(settings.threads.unwrap_or(0))
@@ -166,7 +170,9 @@ pub fn render<S: Scatterer>(scene: &Scene, fiber: &S, settings: &Settings) -> Re
         .map_err(|_| SettingsError::Threads)?;
     let bar = if settings.progress && std::io::stderr().is_terminal() {
         let bar = ProgressBar::new(u64::from(settings.height));
-        if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {elapsed} (eta {eta})") {
+        if let Ok(style) =
+            ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {elapsed} (eta {eta})")
+        {
             bar.set_style(style);
         }
         bar
@@ -242,8 +248,9 @@ fn render_row<S: Scatterer>(scene: &Scene, fiber: &S, settings: &Settings, y: u3
             }
         }
         let mean = sum.map(|s| s / n);
-        let var_of_mean: [f64; 3] =
-            core::array::from_fn(|c| ((sum_sq[c] / n - mean[c] * mean[c]).max(0.0) * n / (n - 1.0).max(1.0)) / n);
+        let var_of_mean: [f64; 3] = core::array::from_fn(|c| {
+            ((sum_sq[c] / n - mean[c] * mean[c]).max(0.0) * n / (n - 1.0).max(1.0)) / n
+        });
         row.mean.push(mean.map(|v| v as f32));
         row.variance.push(var_of_mean.map(|v| v as f32));
     }
@@ -252,8 +259,16 @@ fn render_row<S: Scatterer>(scene: &Scene, fiber: &S, settings: &Settings, y: u3
 
 /// Adds `beta · value · weight` to the path's radiance and to bounce order `order`; a
 /// non-finite contribution is dropped.
-fn add(l: &mut [f64; 3], orders: &mut [[f64; 3]], order: usize, beta: &[f32; 3], value: &[f32; 3], weight: f32) {
-    let c: [f64; 3] = core::array::from_fn(|k| f64::from(beta[k]) * f64::from(value[k]) * f64::from(weight));
+fn add(
+    l: &mut [f64; 3],
+    orders: &mut [[f64; 3]],
+    order: usize,
+    beta: &[f32; 3],
+    value: &[f32; 3],
+    weight: f32,
+) {
+    let c: [f64; 3] =
+        core::array::from_fn(|k| f64::from(beta[k]) * f64::from(value[k]) * f64::from(weight));
     if c.iter().all(|v| v.is_finite()) {
         for k in 0..3 {
             l[k] += c[k];
@@ -346,7 +361,14 @@ fn trace<S: Scatterer>(
                             1.0
                         };
                         let value: [f32; 3] = core::array::from_fn(|c| f_cos[c] * le[c]);
-                        add(&mut l, &mut row.orders, order, &beta, &value, weight / p_light);
+                        add(
+                            &mut l,
+                            &mut row.orders,
+                            order,
+                            &beta,
+                            &value,
+                            weight / p_light,
+                        );
                     }
                 }
             }

@@ -100,7 +100,10 @@ impl Light for UniformEnvironment {
         let z = 1.0 - 2.0 * u[0];
         let r = (1.0 - z * z).max(0.0).sqrt();
         let phi = 2.0 * PI * u[1];
-        (Vector3::new(r * phi.cos(), r * phi.sin(), z), 1.0 / (4.0 * PI))
+        (
+            Vector3::new(r * phi.cos(), r * phi.sin(), z),
+            1.0 / (4.0 * PI),
+        )
     }
 }
 
@@ -184,7 +187,10 @@ mod tests {
     #[test]
     fn the_mixture_density_sums_the_picked_lights() {
         let lights = Lights::new(vec![
-            (Box::new(DistantDisc::with_irradiance(Vector3::y(), 10.0, [1.0; 3])), 3.0),
+            (
+                Box::new(DistantDisc::with_irradiance(Vector3::y(), 10.0, [1.0; 3])),
+                3.0,
+            ),
             (Box::new(UniformEnvironment { radiance: [0.5; 3] }), 1.0),
         ]);
         let up = Vector3::y();

@@ -109,12 +109,15 @@ mod tests {
         let bytes = exr_bytes(&tiny()).unwrap();
         let img = read_first_rgba_layer_from_file(
             {
-                let path = std::env::temp_dir().join(format!("render-exr-{}.exr", std::process::id()));
+                let path =
+                    std::env::temp_dir().join(format!("render-exr-{}.exr", std::process::id()));
                 std::fs::write(&path, &bytes).unwrap();
                 path
             },
             |res, _| vec![[0.0f32; 3]; res.width() * res.height()],
-            |px: &mut Vec<[f32; 3]>, Vec2(x, _y), (r, g, b, _a): (f32, f32, f32, f32)| px[x] = [r, g, b],
+            |px: &mut Vec<[f32; 3]>, Vec2(x, _y), (r, g, b, _a): (f32, f32, f32, f32)| {
+                px[x] = [r, g, b]
+            },
         )
         .unwrap();
         let px = &img.layer_data.channel_data.pixels;

@@ -25,7 +25,8 @@ pub struct Scattered {
 pub trait Scatterer: Sync {
     /// S(ω_i, ω_r)·cos θ_i (RGB) and the density with which [`Scatterer::sample`] draws
     /// `wi`; zeros for degenerate directions.
-    fn eval(&self, wi: &Vector3<f32>, wr: &Vector3<f32>, tangent: &Vector3<f32>) -> ([f32; 3], f32);
+    fn eval(&self, wi: &Vector3<f32>, wr: &Vector3<f32>, tangent: &Vector3<f32>)
+        -> ([f32; 3], f32);
 
     /// Draws ω_i given ω_r = `wr` from three uniform numbers; `None` when nothing can be
     /// sampled.
@@ -49,7 +50,12 @@ fn s_cos(s: bcsdf_core::Rgb, angles: &Angles) -> [f32; 3] {
 pub struct One<'a, B>(pub &'a B);
 
 impl<B: Bcsdf + Sync> Scatterer for One<'_, B> {
-    fn eval(&self, wi: &Vector3<f32>, wr: &Vector3<f32>, tangent: &Vector3<f32>) -> ([f32; 3], f32) {
+    fn eval(
+        &self,
+        wi: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+    ) -> ([f32; 3], f32) {
         match Angles::from_directions::<B::Math>((*wi).into(), (*wr).into(), (*tangent).into()) {
             Ok(a) => {
                 let (value, pdf) = self.0.eval_with_pdf(&a);
@@ -79,7 +85,12 @@ pub struct Guided<'a, E, G> {
 }
 
 impl<E: Bcsdf + Sync, G: Bcsdf + Sync> Scatterer for Guided<'_, E, G> {
-    fn eval(&self, wi: &Vector3<f32>, wr: &Vector3<f32>, tangent: &Vector3<f32>) -> ([f32; 3], f32) {
+    fn eval(
+        &self,
+        wi: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+    ) -> ([f32; 3], f32) {
         match Angles::from_directions::<G::Math>((*wi).into(), (*wr).into(), (*tangent).into()) {
             Ok(a) => (s_cos(self.eval.eval(&a).total(), &a), self.guide.pdf(&a)),
             Err(_) => ([0.0; 3], 0.0),

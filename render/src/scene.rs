@@ -63,7 +63,10 @@ impl Scene {
         lights: Lights,
         camera: Camera,
     ) -> Scene {
-        let r_max = segments.iter().map(|s| s.r0.max(s.r1)).fold(0.0f32, f32::max);
+        let r_max = segments
+            .iter()
+            .map(|s| s.r0.max(s.r1))
+            .fold(0.0f32, f32::max);
         Scene {
             fibers: FiberAccel::new(segments),
             surfaces,
@@ -82,7 +85,12 @@ impl Scene {
 
     /// The closest hit along the unit ray leaving `origin` (from fiber `from`, if any).
     #[must_use]
-    pub fn intersect(&self, origin: &Vector3<f32>, dir: &Vector3<f32>, from: Option<u32>) -> Option<Hit> {
+    pub fn intersect(
+        &self,
+        origin: &Vector3<f32>,
+        dir: &Vector3<f32>,
+        from: Option<u32>,
+    ) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut t_max = f32::INFINITY;
         for s in &self.surfaces {
@@ -98,7 +106,10 @@ impl Scene {
                 });
             }
         }
-        if let Some((seg, hit)) = self.fibers.closest(origin, dir, self.epsilon, t_max, self.skip(from)) {
+        if let Some((seg, hit)) =
+            self.fibers
+                .closest(origin, dir, self.epsilon, t_max, self.skip(from))
+        {
             best = Some(Hit {
                 t: hit.t,
                 point: origin + dir * hit.t,
@@ -114,13 +125,12 @@ impl Scene {
     /// Whether the unit ray leaving `origin` (from fiber `from`) escapes to infinity.
     #[must_use]
     pub fn escapes(&self, origin: &Vector3<f32>, dir: &Vector3<f32>, from: Option<u32>) -> bool {
-        !self
-            .surfaces
-            .iter()
-            .any(|s| s.intersect(origin, dir, self.epsilon, f32::INFINITY).is_some())
-            && !self
-                .fibers
-                .any(origin, dir, self.epsilon, f32::INFINITY, self.skip(from))
+        !self.surfaces.iter().any(|s| {
+            s.intersect(origin, dir, self.epsilon, f32::INFINITY)
+                .is_some()
+        }) && !self
+            .fibers
+            .any(origin, dir, self.epsilon, f32::INFINITY, self.skip(from))
     }
 
     fn skip(&self, from: Option<u32>) -> Skip {

@@ -164,7 +164,15 @@ pub fn build(opts: &SceneOptions) -> Scene {
                 // A uniform point in the ball of radius 0.8, a uniform direction.
                 let root = uniform_sphere(&mut rng) * (0.8 * rng.uniform().cbrt());
                 let dir = uniform_sphere(&mut rng);
-                grow(id as u32, root, dir, Vector3::zeros(), &g, &mut rng, &mut segments);
+                grow(
+                    id as u32,
+                    root,
+                    dir,
+                    Vector3::zeros(),
+                    &g,
+                    &mut rng,
+                    &mut segments,
+                );
             }
             let env: Box<dyn Light> = Box::new(UniformEnvironment { radiance: [1.0; 3] });
             let camera = Camera::look_at(
@@ -199,7 +207,7 @@ pub fn build(opts: &SceneOptions) -> Scene {
             };
             let rim: Box<dyn Light> = Box::new(DistantDisc::with_irradiance(
                 Vector3::new(-0.2, 0.45, -1.0),
-                5.0,
+                12.0,
                 [3.0; 3],
             ));
             let env: Box<dyn Light> = Box::new(UniformEnvironment { radiance: [0.1; 3] });
@@ -236,7 +244,15 @@ pub fn build(opts: &SceneOptions) -> Scene {
                 }
                 let comb = comb.normalize();
                 let dir = n + comb * 0.8 + uniform_sphere(&mut rng) * 0.2;
-                grow(id as u32, center + n, dir, comb, &g, &mut rng, &mut segments);
+                grow(
+                    id as u32,
+                    center + n,
+                    dir,
+                    comb,
+                    &g,
+                    &mut rng,
+                    &mut segments,
+                );
             }
             let skin = Surface {
                 shape: Shape::Sphere {
@@ -257,7 +273,9 @@ pub fn build(opts: &SceneOptions) -> Scene {
                 4.0,
                 [2.5; 3],
             ));
-            let env: Box<dyn Light> = Box::new(UniformEnvironment { radiance: [0.08; 3] });
+            let env: Box<dyn Light> = Box::new(UniformEnvironment {
+                radiance: [0.08; 3],
+            });
             let camera = Camera::look_at(
                 Vector3::new(0.0, 1.7, 5.2),
                 Vector3::new(0.0, 1.2, 0.0),

@@ -140,8 +140,12 @@ mod tests {
             albedo: [0.5; 3],
         };
         let down = Vector3::new(0.0, -1.0, 0.0);
-        assert!(g.intersect(&Vector3::new(0.5, 2.0, 0.5), &down, 0.0, 9.0).is_some());
-        assert!(g.intersect(&Vector3::new(1.5, 2.0, 0.5), &down, 0.0, 9.0).is_none());
+        assert!(g
+            .intersect(&Vector3::new(0.5, 2.0, 0.5), &down, 0.0, 9.0)
+            .is_some());
+        assert!(g
+            .intersect(&Vector3::new(1.5, 2.0, 0.5), &down, 0.0, 9.0)
+            .is_none());
     }
 
     #[test]

@@ -17,8 +17,13 @@ use render::{integrator, scenes, Render, SceneKind, SceneOptions, Settings};
 
 /// The ideal fiber: S = 1/π² everywhere, sampled with density p_ω = cos θ_i/π² (per
 /// (θ_i, φ): cos²θ_i/π², so θ_i has density (2/π)cos²θ_i and φ is uniform). Every sample's
-/// weight S·cos θ_i/p_ω is exactly 1.
-struct IdealFiber;
+/// weight S·cos θ_i/p_ω is exactly 1. `Uniform`: the same S sampled uniformly on the
+/// sphere (p_ω = 1/4π), whose weights 4cos θ_i/π vary, so Russian roulette is exercised.
+#[derive(Clone, Copy)]
+enum IdealFiber {
+    Exact,
+    Uniform,
+}
 
 impl Bcsdf for IdealFiber {
     type Math = Libm;
@@ -30,10 +35,25 @@ impl Bcsdf for IdealFiber {
     }
 
     fn pdf(&self, angles: &Angles) -> f32 {
-        angles.theta_i().cos().max(0.0) / (PI * PI)
+        match self {
+            IdealFiber::Exact => angles.theta_i().cos().max(0.0) / (PI * PI),
+            IdealFiber::Uniform => 1.0 / (4.0 * PI),
+        }
     }
 
     fn sample_direction(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
+        if let IdealFiber::Uniform = self {
+            // sin θ_i uniform in [−1, 1], φ uniform.
+            return Some(SampledDirection {
+                angles: Angles::new(
+                    (2.0 * u[0] - 1.0).clamp(-1.0, 1.0).asin(),
+                    theta_r,
+                    PI * (2.0 * u[1] - 1.0),
+                )
+                .ok()?,
+                family: LobeFamily::R,
+            });
+        }
         // Invert F(θ) = (θ + sin θ cos θ + π/2)/π = u by Newton's method (F' = (2/π)cos²θ).
         let target = f64::from(u[0]);
         let mut t = (2.0 * target - 1.0).asin() * 0.5;
@@ -82,6 +102,11 @@ fn assert_white(r: &Render, what: &str) {
             whole.std_error
         );
     }
+    assert_pixels_white(r, what);
+}
+
+/// Every pixel within 5 of its standard errors of 1.
+fn assert_pixels_white(r: &Render, what: &str) {
     let mut worst = 0.0f64;
     for (m, v) in r.image.mean.iter().zip(&r.image.variance) {
         for c in 0..3 {
@@ -123,7 +148,7 @@ fn print_orders(what: &str, r: &Render) {
 #[test]
 fn ideal_fibers_keep_the_furnace_white() {
     let scene = furnace(1500);
-    let r = integrator::render(&scene, &One(&IdealFiber), &settings()).unwrap();
+    let r = integrator::render(&scene, &One(&IdealFiber::Exact), &settings()).unwrap();
     print_orders("ideal fiber", &r);
     println!("ideal fiber: {:?}", r.image.whole());
     // The clump scatters: most light arrives after one or more bounces.
@@ -133,6 +158,22 @@ fn ideal_fibers_keep_the_furnace_white() {
         &r.orders[..4]
     );
     assert_white(&r, "ideal fiber");
+}
+
+/// The ideal fiber sampled uniformly: throughputs vary, Russian roulette kills and
+/// reweights paths, and the furnace must stay white within its noise (|mean − 1| below 4
+/// standard errors, every pixel within 5 of its own).
+#[test]
+fn ideal_fibers_with_roulette_keep_the_furnace_white() {
+    let scene = furnace(1500);
+    let r = integrator::render(&scene, &One(&IdealFiber::Uniform), &settings()).unwrap();
+    let whole = r.image.whole();
+    println!("ideal fiber, uniform sampling: {whole:?}");
+    assert!(
+        (whole.mean[0] - 1.0).abs() < 4.0 * whole.std_error[0],
+        "{whole:?}"
+    );
+    assert_pixels_white(&r, "ideal fiber, uniform sampling");
 }
 
 /// With BCSDF sampling alone every path carries weight 1 until it escapes into radiance 1:
@@ -146,7 +187,7 @@ fn ideal_fibers_with_bcsdf_sampling_give_exactly_one_per_pixel() {
         max_depth: 4096,
         ..Settings::new(12, 12, 8)
     };
-    let r = integrator::render(&scene, &One(&IdealFiber), &settings).unwrap();
+    let r = integrator::render(&scene, &One(&IdealFiber::Exact), &settings).unwrap();
     assert!(r.orders[1][0] > 0.1, "{:?}", &r.orders[..3]);
     let worst = r
         .image

@@ -26,7 +26,11 @@ mod nalgebra_free {
 
 fn bench(c: &mut Criterion) {
     let preset = presets::find("human-hair").unwrap();
-    let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &ProfileOptions::default()).unwrap();
+    let (model, _) = build_model(
+        FurParams::new(&preset.input).unwrap(),
+        &ProfileOptions::default(),
+    )
+    .unwrap();
     let blob = bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT);
     let baked = BakedBcsdf::from_bytes(&blob).unwrap();
     let scene = scenes::build(&SceneOptions {
@@ -90,7 +94,8 @@ fn bench(c: &mut Criterion) {
     let mut sampler = Sampler::for_pixel(1, 1);
     parts.bench_function("sampler_seven_numbers", |b| {
         b.iter(|| {
-            let x = sampler.next_1d() + sampler.next_2d()[0] + sampler.next_3d()[2] + sampler.next_1d();
+            let x =
+                sampler.next_1d() + sampler.next_2d()[0] + sampler.next_3d()[2] + sampler.next_1d();
             black_box(x)
         })
     });

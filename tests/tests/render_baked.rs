@@ -57,7 +57,12 @@ fn check(preset: &Preset) {
             }
         })
         .collect();
-    let share: Vec<String> = a.orders.iter().take(8).map(|x| format!("{:.3}", x[1] / ma[1])).collect();
+    let share: Vec<String> = a
+        .orders
+        .iter()
+        .take(8)
+        .map(|x| format!("{:.3}", x[1] / ma[1]))
+        .collect();
     println!(
         "{}: mean analytic {:?} baked {:?}, (baked-analytic)/analytic {:+.3?} %",
         preset.name,
@@ -65,10 +70,23 @@ fn check(preset: &Preset) {
         mb,
         rel.iter().map(|r| r * 100.0).collect::<Vec<_>>()
     );
-    println!("{}: G share of the image per bounce order 0..7: {}", preset.name, share.join(" "));
-    println!("{}: G (baked-analytic)/analytic per bounce order 0..7: {}", preset.name, per_order.join(" "));
+    println!(
+        "{}: G share of the image per bounce order 0..7: {}",
+        preset.name,
+        share.join(" ")
+    );
+    println!(
+        "{}: G (baked-analytic)/analytic per bounce order 0..7: {}",
+        preset.name,
+        per_order.join(" ")
+    );
     for c in 0..3 {
-        assert!(rel[c].abs() < 0.005, "{}: mean differs by {:.3} %", preset.name, 100.0 * rel[c]);
+        assert!(
+            rel[c].abs() < 0.005,
+            "{}: mean differs by {:.3} %",
+            preset.name,
+            100.0 * rel[c]
+        );
     }
     let floor = 0.01 * ma.iter().copied().fold(0.0, f64::max);
     let mut worst = 0.0f64;
@@ -77,8 +95,17 @@ fn check(preset: &Preset) {
             worst = worst.max((tb.mean[c] - ta.mean[c]).abs() / ta.mean[c].max(floor));
         }
     }
-    println!("{}: largest 16x16 tile difference {:.3} %", preset.name, 100.0 * worst);
-    assert!(worst < 0.02, "{}: a tile differs by {:.3} %", preset.name, 100.0 * worst);
+    println!(
+        "{}: largest 16x16 tile difference {:.3} %",
+        preset.name,
+        100.0 * worst
+    );
+    assert!(
+        worst < 0.02,
+        "{}: a tile differs by {:.3} %",
+        preset.name,
+        100.0 * worst
+    );
 }
 
 #[test]

@@ -14,9 +14,26 @@ fn viewer(args: &[&str]) -> Output {
 
 fn render(out: &Path, threads: &str) -> Output {
     viewer(&[
-        "render", "--scene", "patch", "--preset", "human-hair", "--fibers", "300", "--spp", "2",
-        "--width", "16", "--height", "12", "--max-depth", "6", "--threads", threads, "--no-cache",
-        "--out", out.to_str().unwrap(),
+        "render",
+        "--scene",
+        "patch",
+        "--preset",
+        "human-hair",
+        "--fibers",
+        "300",
+        "--spp",
+        "2",
+        "--width",
+        "16",
+        "--height",
+        "12",
+        "--max-depth",
+        "6",
+        "--threads",
+        threads,
+        "--no-cache",
+        "--out",
+        out.to_str().unwrap(),
     ])
 }
 
@@ -25,7 +42,11 @@ fn writes_exr_png_and_json_inside_out_and_nothing_else() {
     let dir = tempfile::tempdir().unwrap();
     let (a, b) = (dir.path().join("a"), dir.path().join("b"));
     let run = render(&a, "1");
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
     assert!(render(&b, "2").status.success());
     let mut names: Vec<String> = std::fs::read_dir(&a)
         .unwrap()
@@ -36,7 +57,10 @@ fn writes_exr_png_and_json_inside_out_and_nothing_else() {
     assert_eq!(names, ["render.exr", "render.json", "render.png"]);
     let exr = std::fs::read(a.join("render.exr")).unwrap();
     assert_eq!(&exr[..4], &[0x76, 0x2f, 0x31, 0x01]);
-    assert!(exr == std::fs::read(b.join("render.exr")).unwrap(), "1 and 2 threads differ");
+    assert!(
+        exr == std::fs::read(b.join("render.exr")).unwrap(),
+        "1 and 2 threads differ"
+    );
     let png = std::fs::read(a.join("render.png")).unwrap();
     assert_eq!(&png[1..4], b"PNG");
     let report: serde_json::Value =
@@ -50,7 +74,10 @@ fn writes_exr_png_and_json_inside_out_and_nothing_else() {
     assert_eq!(orders.len(), 7);
     let mean = report["mean_radiance"][0].as_f64().unwrap();
     let sum: f64 = orders.iter().map(|o| o[0].as_f64().unwrap()).sum();
-    assert!((sum - mean).abs() <= 1e-6 * mean.max(1e-6), "orders sum {sum} vs mean {mean}");
+    assert!(
+        (sum - mean).abs() <= 1e-6 * mean.max(1e-6),
+        "orders sum {sum} vs mean {mean}"
+    );
 }
 
 #[test]
@@ -60,13 +87,31 @@ fn bad_input_exits_2_with_one_error_line() {
     let out = out.to_str().unwrap();
     let base = ["render", "--preset", "human-hair", "--out", out];
     for (extra, needle) in [
-        (vec!["--scene", "cube", "--spp", "1"], "unknown scene `cube`"),
+        (
+            vec!["--scene", "cube", "--spp", "1"],
+            "unknown scene `cube`",
+        ),
         (vec!["--scene", "ball", "--spp", "0"], "--spp"),
-        (vec!["--scene", "ball", "--spp", "1", "--width", "0"], "--width"),
-        (vec!["--scene", "ball", "--spp", "1", "--max-depth", "0"], "--max-depth"),
-        (vec!["--scene", "ball", "--spp", "1", "--fibers", "0"], "--fibers 0"),
-        (vec!["--scene", "ball", "--spp", "1", "--exposure", "0"], "--exposure"),
-        (vec!["--scene", "ball", "--spp", "1", "--set", "kappa=7"], "kappa"),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--width", "0"],
+            "--width",
+        ),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--max-depth", "0"],
+            "--max-depth",
+        ),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--fibers", "0"],
+            "--fibers 0",
+        ),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--exposure", "0"],
+            "--exposure",
+        ),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--set", "kappa=7"],
+            "kappa",
+        ),
     ] {
         let mut args = base.to_vec();
         args.extend(extra.iter().copied());
@@ -74,20 +119,51 @@ fn bad_input_exits_2_with_one_error_line() {
         let stderr = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
         assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
-        assert!(stderr.starts_with("error: ") && stderr.contains(needle), "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("error: ") && stderr.contains(needle),
+            "{args:?}: {stderr}"
+        );
     }
     // --lut with the analytic evaluator, and a missing LUT.
     for (args, needle) in [
         (
-            vec!["render", "--scene", "ball", "--spp", "1", "--lut", "x.furlut", "--evaluator", "analytic", "--out", out],
+            vec![
+                "render",
+                "--scene",
+                "ball",
+                "--spp",
+                "1",
+                "--lut",
+                "x.furlut",
+                "--evaluator",
+                "analytic",
+                "--out",
+                out,
+            ],
             "--evaluator baked",
         ),
-        (vec!["render", "--scene", "ball", "--spp", "1", "--lut", "missing.furlut", "--out", out], "missing.furlut"),
+        (
+            vec![
+                "render",
+                "--scene",
+                "ball",
+                "--spp",
+                "1",
+                "--lut",
+                "missing.furlut",
+                "--out",
+                out,
+            ],
+            "missing.furlut",
+        ),
     ] {
         let o = viewer(&args);
         let stderr = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
-        assert!(stderr.starts_with("error: ") && stderr.contains(needle), "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("error: ") && stderr.contains(needle),
+            "{args:?}: {stderr}"
+        );
     }
     // Nothing was rendered into the folder.
     assert!(!Path::new(out).join("render.exr").exists());

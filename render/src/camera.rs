@@ -1,4 +1,4 @@
-//! A pinhole camera.
+//! A pinhole camera (docs/model.md §11).
 
 use nalgebra::Vector3;
 

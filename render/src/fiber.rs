@@ -1,4 +1,4 @@
-//! Fibers as chains of thin tapering cylinder segments, and the ray–segment test.
+//! Fibers as chains of thin tapering cylinder segments, and the ray–segment test (docs/model.md §11).
 //!
 //! A fiber is a far-field scatterer (docs/model.md §8, §11): the BCSDF S(ω_i, ω_r) already
 //! integrates over the offset h across the fiber, so a hit needs only the point where the

@@ -1,4 +1,4 @@
-//! The rendered image: per pixel the mean radiance and the variance of that mean (from the
+//! The rendered image (docs/model.md §11): per pixel the mean radiance and the variance of that mean (from the
 //! samples' spread), and the statistics a reference render reports.
 
 /// Mean radiance per pixel and its variance, RGB, row-major from the top-left.

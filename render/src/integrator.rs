@@ -1,5 +1,5 @@
 //! Unidirectional path tracing with next-event estimation and multiple importance sampling
-//! (power heuristic), Russian roulette, and per-pixel random streams (pbrt-v4's `PathIntegrator`
+//! (power heuristic), Russian roulette (docs/model.md §11), and per-pixel random streams (pbrt-v4's `PathIntegrator`
 //! is the model).
 //!
 //! At every scattering vertex (a fiber, far-field S·cos θ_i; or a Lambertian surface):

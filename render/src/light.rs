@@ -1,4 +1,4 @@
-//! Lights at infinity behind one trait: a distant disc (a sun-like key or rim light that
+//! Lights at infinity behind one trait (docs/model.md §11): a distant disc (a sun-like key or rim light that
 //! subtends a small cone) and a uniform environment.
 //!
 //! Both have finite densities, so every light can be reached by BCSDF sampling as well as by

@@ -1,4 +1,4 @@
-//! The image as file bytes: OpenEXR (linear RGB, f32) and PNG (tone-mapped sRGB, 8 bits).
+//! The image as file bytes: OpenEXR (linear RGB, f32) and PNG (tone-mapped sRGB, 8 bits) (docs/model.md §11).
 //! The bytes are returned, not written: callers write them with their own (atomic) writer.
 
 use crate::film::Image;

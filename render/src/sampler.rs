@@ -1,4 +1,4 @@
-//! Per-pixel random streams: the image is the same bits for any thread count.
+//! Per-pixel random streams: the image is the same bits for any thread count (docs/model.md §11).
 //!
 //! Every pixel owns one PCG32 stream, chosen by mixing the seed and the pixel index
 //! (`bcsdf_core::rng::cell_stream`), and draws all its samples from it in order. No number

@@ -1,6 +1,6 @@
-//! What the integrator asks of a fiber: S·cos θ_i with the sampling density for a given
-//! pair of directions, and an importance-sampled direction, through the [`Bcsdf`] trait in
-//! the fiber's frame (docs/model.md §1, §10).
+//! What the integrator asks of a fiber (docs/model.md §11): S·cos θ_i with the sampling
+//! density for a given pair of directions, and an importance-sampled direction, through the
+//! [`Bcsdf`] trait in the fiber's frame (docs/model.md §1, §10).
 //!
 //! Usually one BCSDF does both ([`One`]). [`Guided`] evaluates one BCSDF and samples with
 //! another: the baked-versus-analytic comparison renders both evaluators along the very same

@@ -1,4 +1,4 @@
-//! A scene: fiber segments (in a BVH), Lambertian surfaces, lights at infinity and a camera.
+//! A scene: fiber segments (in a BVH), Lambertian surfaces, lights at infinity and a camera (docs/model.md §11).
 
 use crate::accel::{FiberAccel, Skip};
 use crate::camera::Camera;

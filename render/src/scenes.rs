@@ -1,4 +1,4 @@
-//! The built-in scenes, deterministic from a seed: `ball` (a furry sphere on a grey ground
+//! The built-in scenes (docs/model.md §11), deterministic from a seed: `ball` (a furry sphere on a grey ground
 //! under a key light and a dim sky), `patch` (a square of skin with fur, rim-lit) and
 //! `furnace` (a clump of fibers in a uniform white environment of radiance 1, nothing else).
 //!

@@ -1,4 +1,4 @@
-//! Lambertian surfaces: the skin under the fur and the ground.
+//! Lambertian surfaces: the skin under the fur and the ground (docs/model.md §11).
 //!
 //! A Lambertian surface reflects f = ρ/π; its sampler draws cosine-weighted directions
 //! (pdf cos θ/π), so the sample weight f·cos θ/pdf is ρ.

@@ -69,7 +69,7 @@ impl FiberSegment {
         // |dir|² = 1: the closest points of the two lines solve a 2×2 system of determinant
         // c − b² (zero when they are parallel).
         let det = c - b * b;
-        if !(det > 1e-12 * c) {
+        if det.is_nan() || det <= 1e-12 * c {
             return None;
         }
         let s = ((f - b * d) / det).clamp(0.0, 1.0);

@@ -388,8 +388,8 @@ fn trace<S: Scatterer>(
             }
         };
         let Some(s) = scattered else { break };
-        for c in 0..3 {
-            beta[c] *= s.weight[c];
+        for (b, w) in beta.iter_mut().zip(s.weight) {
+            *b *= w;
         }
         if !beta.iter().any(|&b| b > 0.0) || !beta.iter().all(|b| b.is_finite()) {
             break;

@@ -80,12 +80,12 @@ fn check(preset: &Preset) {
         preset.name,
         per_order.join(" ")
     );
-    for c in 0..3 {
+    for r in &rel {
         assert!(
-            rel[c].abs() < 0.005,
+            r.abs() < 0.005,
             "{}: mean differs by {:.3} %",
             preset.name,
-            100.0 * rel[c]
+            100.0 * r
         );
     }
     let floor = 0.01 * ma.iter().copied().fold(0.0, f64::max);

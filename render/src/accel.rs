@@ -1,6 +1,6 @@
 //! Ray queries against the fiber segments through the `bvh` crate's SAH BVH (docs/model.md §11).
 //!
-//! The crate builds the tree and walks it; what it walks with is our [`SegmentQuery`]: a ray
+//! The crate builds the tree and walks it; what it walks with is our `SegmentQuery`: a ray
 //! with a t_max that shrinks as closer hits are found (a `Cell`), so subtrees beyond the
 //! closest hit so far are skipped.
 

@@ -10,6 +10,7 @@ mod json;
 mod plot;
 mod probe;
 mod render;
+mod render_cmd;
 mod report;
 mod sample;
 mod source;
@@ -29,6 +30,7 @@ fn main() -> ExitCode {
         cli::Command::Probe(args) => probe::run(&args),
         cli::Command::Sample(args) => sample::run(&args),
         cli::Command::Compare(args) => compare::run(&args),
+        cli::Command::Render(args) => render_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,53 @@
+//! # render
+//!
+//! A path-traced reference renderer of fur coats with the fur BCSDF (docs/model.md §11,
+//! "Rendering"): light followed through thousands of fibers, each fiber a far-field
+//! scatterer evaluated and importance-sampled through [`bcsdf_core::Bcsdf`] in its own frame.
+//!
+//! - [`scenes`]: the built-in scenes (`furnace`, `patch`, `ball`), deterministic from a seed;
+//!   fibers are chains of tapering cylinder segments ([`fiber`]) in a SAH BVH ([`accel`],
+//!   the `bvh` crate), on Lambertian skin and ground ([`surface`]), lit by lights at
+//!   infinity ([`light`]) and seen by a pinhole [`camera`].
+//! - [`integrator`]: unidirectional path tracing, next-event estimation with the power
+//!   heuristic, Russian roulette, per-pixel random streams ([`sampler`]): the same bits for
+//!   any thread count.
+//! - [`scatter`]: what the integrator asks of a fiber; [`scatter::One`] wraps any `Bcsdf`
+//!   (the analytic `FurBcsdf` or the baked `BakedBcsdf`), [`scatter::Guided`] evaluates one
+//!   and samples with another.
+//! - [`film`], [`output`]: the image with per-pixel standard errors, bounce-order energies,
+//!   and the EXR/PNG bytes.
+//!
+//! ```
+//! use bcsdf_core::{presets, FurBcsdf, FurParams};
+//! use render::{integrator, scatter::One, scenes};
+//!
+//! let params = FurParams::new(&presets::find("human-hair").unwrap().input).unwrap();
+//! let hair: FurBcsdf = FurBcsdf::unscattered(params);
+//! let scene = scenes::build(&scenes::SceneOptions {
+//!     kind: scenes::SceneKind::Patch,
+//!     fibers: Some(200),
+//!     seed: 1,
+//!     aspect: 1.0,
+//! });
+//! let settings = integrator::Settings::new(8, 8, 2);
+//! let r = integrator::render(&scene, &One(&hair), &settings).unwrap();
+//! assert!(r.image.whole().mean.iter().all(|m| m.is_finite() && *m >= 0.0));
+//! ```
+#![deny(missing_docs)]
+
+pub mod accel;
+pub mod camera;
+pub mod fiber;
+pub mod film;
+pub mod integrator;
+pub mod light;
+pub mod output;
+pub mod sampler;
+pub mod scatter;
+pub mod scene;
+pub mod scenes;
+pub mod surface;
+
+pub use film::{Estimate, Image, Render};
+pub use integrator::{render, Settings, SettingsError, Strategy};
+pub use scenes::{SceneKind, SceneOptions};

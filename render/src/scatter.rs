@@ -1,0 +1,121 @@
+//! What the integrator asks of a fiber (docs/model.md §11): S·cos θ_i with the sampling
+//! density for a given pair of directions, and an importance-sampled direction, through the
+//! [`Bcsdf`] trait in the fiber's frame (docs/model.md §1, §10).
+//!
+//! Usually one BCSDF does both ([`One`]). [`Guided`] evaluates one BCSDF and samples with
+//! another: the baked-versus-analytic comparison renders both evaluators along the very same
+//! paths (the guide's), so what differs between the two images is the evaluator, not the
+//! noise. Either is unbiased wherever the guide's density is positive where S is.
+
+use bcsdf_core::{Angles, Bcsdf, Frame};
+use nalgebra::Vector3;
+
+/// A scattering direction drawn at a fiber.
+#[derive(Clone, Copy, Debug)]
+pub struct Scattered {
+    /// ω_i, world space, unit.
+    pub wi: Vector3<f32>,
+    /// S(ω_i, ω_r)·cos θ_i / pdf, RGB.
+    pub weight: [f32; 3],
+    /// Density per unit solid angle.
+    pub pdf: f32,
+}
+
+/// A fiber's scattering as the integrator uses it.
+pub trait Scatterer: Sync {
+    /// S(ω_i, ω_r)·cos θ_i (RGB) and the density with which [`Scatterer::sample`] draws
+    /// `wi`; zeros for degenerate directions.
+    fn eval(&self, wi: &Vector3<f32>, wr: &Vector3<f32>, tangent: &Vector3<f32>)
+        -> ([f32; 3], f32);
+
+    /// Draws ω_i given ω_r = `wr` from three uniform numbers; `None` when nothing can be
+    /// sampled.
+    fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered>;
+}
+
+/// S·cos θ_i, RGB, with negative or non-finite channels as 0.
+fn s_cos(s: bcsdf_core::Rgb, angles: &Angles) -> [f32; 3] {
+    let cos_theta_i = angles.theta_i().cos().max(0.0);
+    s.0.map(|c| {
+        let v = c * cos_theta_i;
+        if v.is_finite() && v > 0.0 {
+            v
+        } else {
+            0.0
+        }
+    })
+}
+
+/// One BCSDF evaluates and samples.
+pub struct One<'a, B>(pub &'a B);
+
+impl<B: Bcsdf + Sync> Scatterer for One<'_, B> {
+    fn eval(
+        &self,
+        wi: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+    ) -> ([f32; 3], f32) {
+        match Angles::from_directions::<B::Math>((*wi).into(), (*wr).into(), (*tangent).into()) {
+            Ok(a) => {
+                let (value, pdf) = self.0.eval_with_pdf(&a);
+                (s_cos(value.total(), &a), pdf)
+            }
+            Err(_) => ([0.0; 3], 0.0),
+        }
+    }
+
+    fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered> {
+        let s = self.0.sample_dirs((*wr).into(), (*tangent).into(), u)?;
+        let wi = Vector3::from(s.wi?);
+        Some(Scattered {
+            wi,
+            weight: s.weight.0,
+            pdf: s.pdf,
+        })
+    }
+}
+
+/// `eval` gives S, `guide` samples and gives the density.
+pub struct Guided<'a, E, G> {
+    /// The BCSDF whose image is rendered.
+    pub eval: &'a E,
+    /// The BCSDF whose sampler draws the paths.
+    pub guide: &'a G,
+}
+
+impl<E: Bcsdf + Sync, G: Bcsdf + Sync> Scatterer for Guided<'_, E, G> {
+    fn eval(
+        &self,
+        wi: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+    ) -> ([f32; 3], f32) {
+        match Angles::from_directions::<G::Math>((*wi).into(), (*wr).into(), (*tangent).into()) {
+            Ok(a) => (s_cos(self.eval.eval(&a).total(), &a), self.guide.pdf(&a)),
+            Err(_) => ([0.0; 3], 0.0),
+        }
+    }
+
+    fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered> {
+        let frame = Frame::from_view::<G::Math>((*wr).into(), (*tangent).into())?;
+        let d = self.guide.sample_direction(frame.theta_r(), u)?;
+        let pdf = self.guide.pdf(&d.angles);
+        if !(pdf > 0.0 && pdf.is_finite()) {
+            return None;
+        }
+        let value = s_cos(self.eval.eval(&d.angles).total(), &d.angles);
+        Some(Scattered {
+            wi: Vector3::from(frame.to_world(&d.angles)),
+            weight: value.map(|v| {
+                let w = v / pdf;
+                if w.is_finite() {
+                    w
+                } else {
+                    0.0
+                }
+            }),
+            pdf,
+        })
+    }
+}

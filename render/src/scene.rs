@@ -1,0 +1,142 @@
+//! A scene: fiber segments (in a BVH), Lambertian surfaces, lights at infinity and a camera (docs/model.md §11).
+
+use crate::accel::{FiberAccel, Skip};
+use crate::camera::Camera;
+use crate::fiber::FiberSegment;
+use crate::light::Lights;
+use crate::surface::Surface;
+use nalgebra::Vector3;
+
+/// What a ray hit.
+#[derive(Clone, Copy, Debug)]
+pub enum HitKind {
+    /// A fiber segment, far-field scatterer: its tangent (root to tip, not unit) and fiber.
+    Fiber {
+        /// p1 − p0 of the segment.
+        tangent: Vector3<f32>,
+        /// The fiber's index.
+        fiber: u32,
+    },
+    /// A Lambertian surface: its outward unit normal and reflectance.
+    Surface {
+        /// Outward unit normal.
+        normal: Vector3<f32>,
+        /// Reflectance ρ.
+        albedo: [f32; 3],
+    },
+}
+
+/// A ray's closest hit.
+#[derive(Clone, Copy, Debug)]
+pub struct Hit {
+    /// Distance along the unit ray.
+    pub t: f32,
+    /// The hit point (on the fiber's axis for a fiber).
+    pub point: Vector3<f32>,
+    /// What was hit.
+    pub kind: HitKind,
+}
+
+/// Everything a render needs besides the BCSDF.
+pub struct Scene {
+    /// The fiber segments and their BVH.
+    pub fibers: FiberAccel,
+    /// Lambertian surfaces (skin, ground).
+    pub surfaces: Vec<Surface>,
+    /// Lights at infinity.
+    pub lights: Lights,
+    /// The camera.
+    pub camera: Camera,
+    /// Distance below which a ray leaving a point ignores hits: surfaces and other fibers
+    /// (scene units).
+    pub epsilon: f32,
+    /// Distance within which a ray leaving a fiber ignores that same fiber (a few radii).
+    pub self_distance: f32,
+}
+
+impl Scene {
+    /// Assembles a scene; the segments' BVH is built here.
+    #[must_use]
+    pub fn new(
+        segments: Vec<FiberSegment>,
+        surfaces: Vec<Surface>,
+        lights: Lights,
+        camera: Camera,
+    ) -> Scene {
+        let r_max = segments
+            .iter()
+            .map(|s| s.r0.max(s.r1))
+            .fold(0.0f32, f32::max);
+        Scene {
+            fibers: FiberAccel::new(segments),
+            surfaces,
+            lights,
+            camera,
+            epsilon: 1e-4,
+            self_distance: 4.0 * r_max,
+        }
+    }
+
+    /// Number of fiber segments.
+    #[must_use]
+    pub fn segment_count(&self) -> usize {
+        self.fibers.segments().len()
+    }
+
+    /// The closest hit along the unit ray leaving `origin` (from fiber `from`, if any).
+    #[must_use]
+    pub fn intersect(
+        &self,
+        origin: &Vector3<f32>,
+        dir: &Vector3<f32>,
+        from: Option<u32>,
+    ) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        let mut t_max = f32::INFINITY;
+        for s in &self.surfaces {
+            if let Some((t, normal)) = s.intersect(origin, dir, self.epsilon, t_max) {
+                t_max = t;
+                best = Some(Hit {
+                    t,
+                    point: origin + dir * t,
+                    kind: HitKind::Surface {
+                        normal,
+                        albedo: s.albedo,
+                    },
+                });
+            }
+        }
+        if let Some((seg, hit)) =
+            self.fibers
+                .closest(origin, dir, self.epsilon, t_max, self.skip(from))
+        {
+            best = Some(Hit {
+                t: hit.t,
+                point: origin + dir * hit.t,
+                kind: HitKind::Fiber {
+                    tangent: seg.tangent(),
+                    fiber: seg.fiber,
+                },
+            });
+        }
+        best
+    }
+
+    /// Whether the unit ray leaving `origin` (from fiber `from`) escapes to infinity.
+    #[must_use]
+    pub fn escapes(&self, origin: &Vector3<f32>, dir: &Vector3<f32>, from: Option<u32>) -> bool {
+        !self.surfaces.iter().any(|s| {
+            s.intersect(origin, dir, self.epsilon, f32::INFINITY)
+                .is_some()
+        }) && !self
+            .fibers
+            .any(origin, dir, self.epsilon, f32::INFINITY, self.skip(from))
+    }
+
+    fn skip(&self, from: Option<u32>) -> Skip {
+        Skip {
+            fiber: from,
+            dist: self.self_distance,
+        }
+    }
+}

@@ -1,0 +1,170 @@
+//! `viewer render` (issue 21): outputs written atomically inside --out, the JSON report,
+//! the same EXR bytes for 1 and 2 threads, and bad input → exit 2 with one `error:` line.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn viewer(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_viewer"))
+        .args(args)
+        .env_remove("FUR_BCSDF_CACHE")
+        .output()
+        .expect("viewer runs")
+}
+
+fn render(out: &Path, threads: &str) -> Output {
+    viewer(&[
+        "render",
+        "--scene",
+        "patch",
+        "--preset",
+        "human-hair",
+        "--fibers",
+        "300",
+        "--spp",
+        "2",
+        "--width",
+        "16",
+        "--height",
+        "12",
+        "--max-depth",
+        "6",
+        "--threads",
+        threads,
+        "--no-cache",
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
+#[test]
+fn writes_exr_png_and_json_inside_out_and_nothing_else() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+    let run = render(&a, "1");
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(render(&b, "2").status.success());
+    let mut names: Vec<String> = std::fs::read_dir(&a)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    // No temporary file is left behind: every file went through the atomic writer.
+    assert_eq!(names, ["render.exr", "render.json", "render.png"]);
+    let exr = std::fs::read(a.join("render.exr")).unwrap();
+    assert_eq!(&exr[..4], &[0x76, 0x2f, 0x31, 0x01]);
+    assert!(
+        exr == std::fs::read(b.join("render.exr")).unwrap(),
+        "1 and 2 threads differ"
+    );
+    let png = std::fs::read(a.join("render.png")).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+    let report: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(a.join("render.json")).unwrap()).unwrap();
+    assert_eq!(report["scene"], "patch");
+    assert_eq!(report["evaluator"], "analytic");
+    assert_eq!(report["spp"], 2);
+    assert_eq!(report["paths"], 16 * 12 * 2);
+    assert!(report["rays_per_second"].as_f64().unwrap() > 0.0);
+    let orders = report["energy_per_bounce_order"].as_array().unwrap();
+    assert_eq!(orders.len(), 7);
+    let mean = report["mean_radiance"][0].as_f64().unwrap();
+    let sum: f64 = orders.iter().map(|o| o[0].as_f64().unwrap()).sum();
+    assert!(
+        (sum - mean).abs() <= 1e-6 * mean.max(1e-6),
+        "orders sum {sum} vs mean {mean}"
+    );
+}
+
+#[test]
+fn bad_input_exits_2_with_one_error_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let out = out.to_str().unwrap();
+    let base = ["render", "--preset", "human-hair", "--out", out];
+    for (extra, needle) in [
+        (
+            vec!["--scene", "cube", "--spp", "1"],
+            "unknown scene `cube`",
+        ),
+        (vec!["--scene", "ball", "--spp", "0"], "--spp"),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--width", "0"],
+            "--width",
+        ),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--max-depth", "0"],
+            "--max-depth",
+        ),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--fibers", "0"],
+            "--fibers 0",
+        ),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--exposure", "0"],
+            "--exposure",
+        ),
+        (
+            vec!["--scene", "ball", "--spp", "1", "--set", "kappa=7"],
+            "kappa",
+        ),
+    ] {
+        let mut args = base.to_vec();
+        args.extend(extra.iter().copied());
+        let o = viewer(&args);
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("error: ") && stderr.contains(needle),
+            "{args:?}: {stderr}"
+        );
+    }
+    // --lut with the analytic evaluator, and a missing LUT.
+    for (args, needle) in [
+        (
+            vec![
+                "render",
+                "--scene",
+                "ball",
+                "--spp",
+                "1",
+                "--lut",
+                "x.furlut",
+                "--evaluator",
+                "analytic",
+                "--out",
+                out,
+            ],
+            "--evaluator baked",
+        ),
+        (
+            vec![
+                "render",
+                "--scene",
+                "ball",
+                "--spp",
+                "1",
+                "--lut",
+                "missing.furlut",
+                "--out",
+                out,
+            ],
+            "missing.furlut",
+        ),
+    ] {
+        let o = viewer(&args);
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("error: ") && stderr.contains(needle),
+            "{args:?}: {stderr}"
+        );
+    }
+    // Nothing was rendered into the folder.
+    assert!(!Path::new(out).join("render.exr").exists());
+}

@@ -5,6 +5,10 @@
  * Angles are radians, with the conventions of the Rust API (docs/model.md): theta in
  * [-pi/2, pi/2] from the fiber's normal plane, phi = phi_r - phi_i, omega_i toward the light,
  * omega_r toward the viewer. Every function checks its pointers; none allocates, none aborts.
+ *
+ * The contract (see fur_lut): initialise a fur_lut (FUR_LUT_INIT), open it before use, close
+ * it before you free the LUT bytes; never let an output buffer overlap another argument's
+ * buffer (FUR_RESTRICT); a fur_lut is only meaningful in the process and build that opened it.
  */
 
 #ifndef FUR_BCSDF_H

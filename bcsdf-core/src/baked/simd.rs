@@ -33,21 +33,24 @@ mod sse2 {
         #[inline(always)]
         pub(crate) fn splat(v: f32) -> F4 {
             // SAFETY: the target enables SSE2 (this module's `cfg`).
-            F4(unsafe { _mm_set1_ps(v) })
+            let lanes = unsafe { _mm_set1_ps(v) };
+            F4(lanes)
         }
 
         /// Lane-wise product.
         #[inline(always)]
         pub(crate) fn mul(self, a: F4) -> F4 {
             // SAFETY: the target enables SSE2 (this module's `cfg`).
-            F4(unsafe { _mm_mul_ps(self.0, a.0) })
+            let lanes = unsafe { _mm_mul_ps(self.0, a.0) };
+            F4(lanes)
         }
 
         /// Lane-wise sum.
         #[inline(always)]
         pub(crate) fn add(self, a: F4) -> F4 {
             // SAFETY: the target enables SSE2 (this module's `cfg`).
-            F4(unsafe { _mm_add_ps(self.0, a.0) })
+            let lanes = unsafe { _mm_add_ps(self.0, a.0) };
+            F4(lanes)
         }
 
         /// The lanes as an array.

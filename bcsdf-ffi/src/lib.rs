@@ -41,7 +41,7 @@ macro_rules! tri {
     };
 }
 
-// In this order in the header (cbindgen follows the declarations).
+// cbindgen writes the functions file by file in path order: eval, handle, info.
 mod args;
 mod eval;
 mod handle;

@@ -79,6 +79,7 @@
 //! a stable interface.
 #![no_std]
 #![deny(missing_docs)]
+#![deny(clippy::undocumented_unsafe_blocks)]
 
 pub mod baked;
 pub mod lut;

@@ -5,6 +5,10 @@
  * Angles are radians, with the conventions of the Rust API (docs/model.md): theta in
  * [-pi/2, pi/2] from the fiber's normal plane, phi = phi_r - phi_i, omega_i toward the light,
  * omega_r toward the viewer. Every function checks its pointers; none allocates, none aborts.
+ *
+ * The contract (see fur_lut): initialise a fur_lut (FUR_LUT_INIT), open it before use, close
+ * it before you free the LUT bytes; never let an output buffer overlap another argument's
+ * buffer (FUR_RESTRICT); a fur_lut is only meaningful in the process and build that opened it.
  */
 
 #ifndef FUR_BCSDF_H
@@ -12,6 +16,25 @@
 
 #include <stddef.h>
 #include <stdint.h>
+/**
+ * Marks the pointer arguments whose buffers must not overlap a buffer the call writes
+ * (C99 `restrict`; `__restrict` in C++; nothing before C99). Inputs may share memory with
+ * each other; an output that overlaps any other argument's buffer, the fur_lut or its LUT
+ * bytes is refused with FUR_ERR_OVERLAP.
+ */
+#if defined(__cplusplus)
+#define FUR_RESTRICT __restrict
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define FUR_RESTRICT restrict
+#else
+#define FUR_RESTRICT
+#endif
+
+/**
+ * Initialiser of a closed fur_lut (all zeroes): `fur_lut lut = FUR_LUT_INIT;`. Every
+ * fur_lut must be initialised (this, or fur_lut_open) before any other call reads it.
+ */
+#define FUR_LUT_INIT {{0}}
 
 /**
  * 64-bit words of storage in a `fur_lut`.
@@ -39,7 +62,7 @@ typedef enum fur_status {
    */
   FUR_ERR_LENGTH = 3,
   /**
-   * The fur_lut was never opened with fur_lut_open, was closed, or its open failed.
+   * The fur_lut is not open: zeroed (`FUR_LUT_INIT`), closed, or its open failed.
    */
   FUR_ERR_NOT_OPEN = 4,
   /**
@@ -74,6 +97,16 @@ typedef enum fur_status {
    * Nothing can be sampled at this view angle (the BCSDF is zero there).
    */
   FUR_ERR_NO_SAMPLE = 12,
+  /**
+   * The fur_lut was opened by another build of this library (another version, compiler
+   * or target): it is only meaningful in the process and build that opened it.
+   */
+  FUR_ERR_OTHER_BUILD = 13,
+  /**
+   * An output buffer overlaps an input buffer, the fur_lut or the LUT bytes; nothing
+   * was written.
+   */
+  FUR_ERR_OVERLAP = 14,
 } fur_status;
 
 /**
@@ -99,9 +132,23 @@ typedef enum fur_family {
 } fur_family;
 
 /**
- * An opened LUT: fixed-size, caller-owned storage (stack, arena, struct member), no heap.
- * Zero-initialise it or leave it uninitialised; only `fur_lut_open` makes it usable. It
- * may be copied by value once opened. Its contents are private.
+ * An opened LUT (docs/model.md §8): fixed-size, caller-owned storage (stack, arena, struct
+ * member), no heap. Its contents are private, and only meaningful in the process and the
+ * build of this library that opened it (another build's is refused with
+ * `FUR_ERR_OTHER_BUILD`).
+ *
+ * The contract, as for any C handle:
+ * 1. Initialise before use: `fur_lut l = FUR_LUT_INIT;` (zeroes), or open it at once.
+ *    `fur_lut_open` accepts uninitialised storage; every other function reads it, and
+ *    refuses a zeroed one with `FUR_ERR_NOT_OPEN`.
+ * 2. Open before use: `fur_lut_open(bytes, len, &l)` borrows the bytes.
+ * 3. Close before you free (or change) the bytes: `fur_lut_close(&l)` zeroes `l`, after which
+ *    every call with it returns `FUR_ERR_NOT_OPEN` without reading anything else. A copy
+ *    made by value is another open handle on the same bytes: close it too.
+ *
+ * A `fur_lut` whose bytes were freed without a close, or uninitialised storage, is the
+ * caller's error: no check can tell either from an open `fur_lut`, and using it reads freed
+ * or arbitrary memory.
  */
 typedef struct fur_lut {
   /**
@@ -141,112 +188,127 @@ extern "C" {
 #endif // __cplusplus
 
 /**
- * Validates `len` bytes at `bytes` as a baked LUT (header, versions, lengths, checksum,
- * every value, the sampling data: one pass over the bytes) and opens `*out` on them. The bytes are
- * borrowed: keep them alive and unchanged while `*out` is used. On failure `*out` is left
- * closed and the status names the problem.
- *
- * # Safety
- * `bytes` is NULL or points to `len` readable bytes; `out` is NULL or points to a writable
- * `fur_lut`.
- */
-enum fur_status fur_lut_open(const uint8_t *bytes, size_t len, struct fur_lut *out);
-
-/**
- * Closes `*lut` (it holds no resources; later calls with it return `FUR_ERR_NOT_OPEN`).
- *
- * # Safety
- * `lut` is NULL or points to a writable `fur_lut`.
- */
-enum fur_status fur_lut_close(struct fur_lut *lut);
-
-/**
  * Far-field S(omega_i, omega_r), RGB, into `out_rgb[3]` (0 and `FUR_ERR_ANGLE` for invalid
- * angles).
+ * angles). `out_rgb` must not overlap `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
  *
  * # Safety
- * `lut` is NULL or points to a `fur_lut`; `out_rgb` is NULL or points to 3 writable floats.
+ * `lut` is NULL or points to an initialised `fur_lut`; `out_rgb` is NULL or points to 3
+ * writable floats.
  */
-enum fur_status fur_eval_far(const struct fur_lut *lut,
+enum fur_status fur_eval_far(const struct fur_lut *FUR_RESTRICT lut,
                              float theta_i,
                              float theta_r,
                              float phi,
-                             float *out_rgb);
+                             float *FUR_RESTRICT out_rgb);
 
 /**
- * Far-field S per lobe family into `out[12]`: R, TT, TRT, scattered, RGB each.
+ * Far-field S per lobe family into `out[12]`: R, TT, TRT, scattered, RGB each. `out` must
+ * not overlap `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
  *
  * # Safety
- * `lut` is NULL or points to a `fur_lut`; `out` is NULL or points to 12 writable floats.
+ * `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to 12
+ * writable floats.
  */
-enum fur_status fur_eval_far_families(const struct fur_lut *lut,
+enum fur_status fur_eval_far_families(const struct fur_lut *FUR_RESTRICT lut,
                                       float theta_i,
                                       float theta_r,
                                       float phi,
-                                      float *out);
+                                      float *FUR_RESTRICT out);
 
 /**
  * Far-field S from world-space vectors: `wi` toward the light, `wr` toward the viewer,
- * `tangent` the fiber direction (none needs unit length), into `out_rgb[3]`.
+ * `tangent` the fiber direction (none needs unit length), into `out_rgb[3]`. `out_rgb`
+ * must not overlap the three vectors, `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
  *
  * # Safety
- * `lut` is NULL or points to a `fur_lut`; each vector is NULL or points to 3 readable
- * floats; `out_rgb` is NULL or points to 3 writable floats.
+ * `lut` is NULL or points to an initialised `fur_lut`; each vector is NULL or points to 3
+ * readable floats; `out_rgb` is NULL or points to 3 writable floats.
  */
-enum fur_status fur_eval_far_dirs(const struct fur_lut *lut,
-                                  const float *wi,
-                                  const float *wr,
-                                  const float *tangent,
-                                  float *out_rgb);
+enum fur_status fur_eval_far_dirs(const struct fur_lut *FUR_RESTRICT lut,
+                                  const float *FUR_RESTRICT wi,
+                                  const float *FUR_RESTRICT wr,
+                                  const float *FUR_RESTRICT tangent,
+                                  float *FUR_RESTRICT out_rgb);
 
 /**
  * `n` far-field evaluations, structure of arrays in (`theta_i[n]`, `theta_r[n]`, `phi[n]`),
  * `out_rgb[3n]` out. `n` = 0 does nothing (any pointers). An invalid angle gives 0 for its
- * entry and the call returns `FUR_ERR_ANGLE` after evaluating every other entry.
+ * entry and the call returns `FUR_ERR_ANGLE` after evaluating every other entry. The inputs
+ * may share memory with each other; `out_rgb` must not overlap them, `*lut` or the LUT bytes
+ * (`FUR_ERR_OVERLAP`, nothing written). `n` above `PTRDIFF_MAX / 12` gives `FUR_ERR_LENGTH`.
  *
  * # Safety
  * For n > 0: the three input pointers are NULL or point to `n` readable floats each, and
  * `out_rgb` is NULL or points to `3n` writable floats.
  */
-enum fur_status fur_eval_far_batch(const struct fur_lut *lut,
+enum fur_status fur_eval_far_batch(const struct fur_lut *FUR_RESTRICT lut,
                                    size_t n,
-                                   const float *theta_i,
-                                   const float *theta_r,
-                                   const float *phi,
-                                   float *out_rgb);
+                                   const float *FUR_RESTRICT theta_i,
+                                   const float *FUR_RESTRICT theta_r,
+                                   const float *FUR_RESTRICT phi,
+                                   float *FUR_RESTRICT out_rgb);
 
 /**
  * Importance-samples omega_i given theta_r from three uniform numbers in [0, 1) (values
- * outside are clamped) into `*out` (docs/model.md section 10).
+ * outside are clamped) into `*out` (docs/model.md section 10). `out` must not overlap
+ * `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
  *
  * # Safety
- * `lut` is NULL or points to a `fur_lut`; `out` is NULL or points to a writable
- * `fur_sample`.
+ * `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to a
+ * writable `fur_sample`.
  */
-enum fur_status fur_sample_far(const struct fur_lut *lut,
+enum fur_status fur_sample_far(const struct fur_lut *FUR_RESTRICT lut,
                                float theta_r,
                                float u0,
                                float u1,
                                float u2,
-                               struct fur_sample *out);
+                               struct fur_sample *FUR_RESTRICT out);
 
 /**
  * Density per unit solid angle with which `fur_sample_far` draws omega_i given omega_r; 0
- * for invalid arguments (NULL or unopened `lut`, invalid angles).
+ * for invalid arguments (NULL, unopened or other-build `lut`, invalid angles).
  *
  * # Safety
- * `lut` is NULL or points to a `fur_lut`.
+ * `lut` is NULL or points to an initialised `fur_lut`.
  */
-float fur_pdf_far(const struct fur_lut *lut, float theta_i, float theta_r, float phi);
+float fur_pdf_far(const struct fur_lut *FUR_RESTRICT lut, float theta_i, float theta_r, float phi);
+
+/**
+ * Validates `len` bytes at `bytes` as a baked LUT (header, versions, lengths, checksum,
+ * every value, the sampling data: one pass over the bytes) and opens `*out` on them
+ * (docs/model.md §8). The bytes are borrowed: keep them alive and unchanged until
+ * `fur_lut_close(out)`. `*out` may be uninitialised; on failure it is left closed (equal to
+ * `FUR_LUT_INIT`), except for `FUR_ERR_NULL`/`FUR_ERR_ALIGNMENT` on `out` itself and
+ * `FUR_ERR_OVERLAP` (`*out` lies inside the bytes), which leave it untouched.
+ *
+ * # Safety
+ * `bytes` is NULL or points to `len` readable bytes; `out` is NULL or points to a writable
+ * `fur_lut` no other thread is using.
+ */
+enum fur_status fur_lut_open(const uint8_t *FUR_RESTRICT bytes,
+                             size_t len,
+                             struct fur_lut *FUR_RESTRICT out);
+
+/**
+ * Closes `*lut`: zeroes it (it becomes equal to `FUR_LUT_INIT`), so that every later call
+ * with it returns `FUR_ERR_NOT_OPEN` and reads nothing else. Close every `fur_lut` (and every
+ * copy of one) before freeing or changing its LUT bytes. It holds no other resources.
+ *
+ * # Safety
+ * `lut` is NULL or points to a writable `fur_lut` no other thread is using.
+ */
+enum fur_status fur_lut_close(struct fur_lut *FUR_RESTRICT lut);
 
 /**
  * A static, NUL-terminated English description of a status (any value: unknown ones get
  * "unknown status"). Takes the status as an integer so that any value is safe to pass.
+ * Never NULL (a reference on the Rust side, so the header's pointer carries no
+ * `FUR_RESTRICT`).
  */
 const char *fur_status_str(int32_t status);
 
 /**
- * This library's version as a static NUL-terminated string, e.g. "0.1.0".
+ * This library's version as a static NUL-terminated string, e.g. "0.1.0". Never NULL.
  */
 const char *fur_version(void);
 

@@ -2,15 +2,22 @@
 //! compiler against `target/release/libbcsdf_ffi.a` (built here with `cargo build --release
 //! -p bcsdf-ffi`, i.e. with panic = "abort"), run on a baked LUT, and compared with
 //! `BakedBcsdf` bit for bit. eval.c also drives every function with bad input (NULL,
-//! zero lengths, misalignment, a never-opened fur_lut, 10⁵ mutated blobs): any crash or abort
-//! fails this test.
+//! zero lengths, misalignment, never-opened, closed and other-build fur_luts, a fur_lut
+//! used after its bytes were freed, overlapping buffers, 10⁵ mutated blobs): any crash or
+//! abort fails this test.
+//!
+//! The same clients also run under Valgrind memcheck and built with
+//! `-fsanitize=address,undefined`: any error report fails those tests. Where `valgrind` or
+//! the sanitizer runtimes are missing they print "skipped: …" and pass, unless
+//! `FUR_BCSDF_REQUIRE_TOOLS` is set (CI installs them and sets it).
 
 use bake::profiles::{build_model, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::{presets, Angles, Bcsdf, FurParams};
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Output};
+use std::sync::OnceLock;
 
 const TI: [f32; 6] = [0.5, -0.3, 1.2, 0.0, -1.5, 0.25];
 const TR: [f32; 6] = [-0.35, 0.1, -1.0, 0.0, 1.4, 0.6];
@@ -45,7 +52,17 @@ fn static_library() -> PathBuf {
 
 /// Compiles `source` with `compiler` and `flags` against the library.
 fn compile(compiler: &str, flags: &[&str], source: &Path, lib: &Path, out: &Path) {
-    let output = Command::new(compiler)
+    let output = try_compile(compiler, flags, source, lib, out);
+    assert!(
+        output.status.success(),
+        "{compiler} failed:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+/// [`compile`], returning the compiler's output whatever its status.
+fn try_compile(compiler: &str, flags: &[&str], source: &Path, lib: &Path, out: &Path) -> Output {
+    Command::new(compiler)
         .args(flags)
         .arg("-I")
         .arg(manifest().join("include"))
@@ -65,12 +82,7 @@ fn compile(compiler: &str, flags: &[&str], source: &Path, lib: &Path, out: &Path
         .arg("-o")
         .arg(out)
         .output()
-        .unwrap_or_else(|e| panic!("cannot run {compiler}: {e}"));
-    assert!(
-        output.status.success(),
-        "{compiler} failed:\n{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+        .unwrap_or_else(|e| panic!("cannot run {compiler}: {e}"))
 }
 
 fn lut(res: LutResolution) -> Vec<u8> {
@@ -132,42 +144,54 @@ fn expected(blob: &[u8]) -> Vec<String> {
     out
 }
 
-#[test]
-fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
-    let lib = static_library();
-    let dir = tempfile::tempdir().unwrap();
-    let blob = lut(LutResolution::DEFAULT);
-    let small = lut(LutResolution {
-        n_sum: 64,
-        n_theta_r: 6,
-        n_phi: 16,
-        n_ms_i: 8,
-        n_ms_r: 8,
-    });
-    let (lut_path, small_path) = (dir.path().join("a.furlut"), dir.path().join("small.furlut"));
-    std::fs::write(&lut_path, &blob).unwrap();
-    std::fs::write(&small_path, &small).unwrap();
+/// The static library and the two LUT files, made once per test process.
+struct Fixture {
+    lib: PathBuf,
+    dir: tempfile::TempDir,
+    blob: Vec<u8>,
+}
 
-    let c_exe = dir.path().join("eval");
-    compile(
-        "cc",
-        &[
-            "-std=c99",
-            "-Wall",
-            "-Wextra",
-            "-Werror",
-            "-pedantic",
-            "-O1",
-        ],
-        &manifest().join("tests/c/eval.c"),
-        &lib,
-        &c_exe,
-    );
-    let run = Command::new(&c_exe)
-        .arg(&lut_path)
-        .arg(&small_path)
-        .output()
-        .unwrap();
+impl Fixture {
+    fn lut_path(&self) -> PathBuf {
+        self.dir.path().join("a.furlut")
+    }
+
+    fn small_path(&self) -> PathBuf {
+        self.dir.path().join("small.furlut")
+    }
+}
+
+fn fixture() -> &'static Fixture {
+    static FIXTURE: OnceLock<Fixture> = OnceLock::new();
+    FIXTURE.get_or_init(|| {
+        let lib = static_library();
+        let dir = tempfile::tempdir().unwrap();
+        let blob = lut(LutResolution::DEFAULT);
+        let small = lut(LutResolution {
+            n_sum: 64,
+            n_theta_r: 6,
+            n_phi: 16,
+            n_ms_i: 8,
+            n_ms_r: 8,
+        });
+        std::fs::write(dir.path().join("a.furlut"), &blob).unwrap();
+        std::fs::write(dir.path().join("small.furlut"), &small).unwrap();
+        Fixture { lib, dir, blob }
+    })
+}
+
+const C_FLAGS: [&str; 6] = [
+    "-std=c99",
+    "-Wall",
+    "-Wextra",
+    "-Werror",
+    "-pedantic",
+    "-O1",
+];
+const CPP_FLAGS: [&str; 5] = ["-std=c++17", "-Wall", "-Wextra", "-Werror", "-O1"];
+
+/// eval.c's output: the evaluations equal Rust's bit for bit, and every bad input was refused.
+fn check_c_output(run: &Output, blob: &[u8]) {
     let stdout = String::from_utf8_lossy(&run.stdout);
     assert!(
         run.status.success(),
@@ -176,21 +200,66 @@ fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
         String::from_utf8_lossy(&run.stderr)
     );
     let lines: Vec<&str> = stdout.lines().collect();
-    let want = expected(&blob);
+    let want = expected(blob);
     assert_eq!(&lines[..want.len()], &want[..]);
     assert!(
         lines.contains(&"mutated refused 100000 of 100000"),
         "{stdout}"
     );
     assert_eq!(lines.last(), Some(&"bad-input ok"));
+}
+
+/// eval.cpp's output: its evaluations and sample equal Rust's bit for bit.
+fn check_cpp_output(run: &Output, blob: &[u8]) {
+    assert!(run.status.success(), "eval.cpp failed: {run:?}");
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    let want = expected(blob);
+    let evals: Vec<&String> = want.iter().filter(|l| l.starts_with("eval ")).collect();
+    let got: Vec<&str> = stdout.lines().filter(|l| l.starts_with("eval ")).collect();
+    assert_eq!(got, evals);
+    let l = BakedBcsdf::from_bytes(blob).unwrap();
+    let s = l.sample(0.3, [0.2, 0.4, 0.6]).unwrap();
+    let line = format!(
+        "sample {} {} {} {}",
+        hex(s.angles.theta_i()),
+        hex(s.angles.phi()),
+        hex(s.pdf),
+        s.family as i32
+    );
+    assert!(stdout.lines().any(|x| x == line), "{stdout}\nwanted {line}");
+}
+
+/// Whether a missing tool fails the test (CI) rather than skipping it.
+fn tools_required() -> bool {
+    std::env::var_os("FUR_BCSDF_REQUIRE_TOOLS").is_some()
+}
+
+#[test]
+fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
+    let f = fixture();
+    let dir = tempfile::tempdir().unwrap();
+    let c_exe = dir.path().join("eval");
+    compile(
+        "cc",
+        &C_FLAGS,
+        &manifest().join("tests/c/eval.c"),
+        &f.lib,
+        &c_exe,
+    );
+    let run = Command::new(&c_exe)
+        .arg(f.lut_path())
+        .arg(f.small_path())
+        .output()
+        .unwrap();
+    check_c_output(&run, &f.blob);
 
     // The README's example compiles as C99 and refuses a non-LUT with a status message.
     let example = dir.path().join("shade");
     compile(
         "cc",
-        &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"],
+        &C_FLAGS[..5],
         &manifest().join("examples/c/shade.c"),
-        &lib,
+        &f.lib,
         &example,
     );
     let run = Command::new(&example).output().unwrap();
@@ -202,25 +271,114 @@ fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
     let cpp_exe = dir.path().join("eval_cpp");
     compile(
         "c++",
-        &["-std=c++17", "-Wall", "-Wextra", "-Werror", "-O1"],
+        &CPP_FLAGS,
         &manifest().join("tests/c/eval.cpp"),
-        &lib,
+        &f.lib,
         &cpp_exe,
     );
-    let run = Command::new(&cpp_exe).arg(&lut_path).output().unwrap();
-    assert!(run.status.success(), "eval.cpp failed: {run:?}");
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    let evals: Vec<&String> = want.iter().filter(|l| l.starts_with("eval ")).collect();
-    let got: Vec<&str> = stdout.lines().filter(|l| l.starts_with("eval ")).collect();
-    assert_eq!(got, evals);
-    let l = BakedBcsdf::from_bytes(&blob).unwrap();
-    let s = l.sample(0.3, [0.2, 0.4, 0.6]).unwrap();
-    let line = format!(
-        "sample {} {} {} {}",
-        hex(s.angles.theta_i()),
-        hex(s.angles.phi()),
-        hex(s.pdf),
-        s.family as i32
+    let run = Command::new(&cpp_exe).arg(f.lut_path()).output().unwrap();
+    check_cpp_output(&run, &f.blob);
+}
+
+#[test]
+fn c_and_cpp_clients_are_clean_under_valgrind_memcheck() {
+    let probe = Command::new("valgrind").arg("--version").output();
+    if !probe.is_ok_and(|o| o.status.success()) {
+        assert!(
+            !tools_required(),
+            "valgrind is missing (FUR_BCSDF_REQUIRE_TOOLS is set)"
+        );
+        eprintln!("skipped: valgrind is not installed");
+        return;
+    }
+    let f = fixture();
+    let dir = tempfile::tempdir().unwrap();
+    let (c_exe, cpp_exe) = (dir.path().join("eval"), dir.path().join("eval_cpp"));
+    let c_flags: Vec<&str> = C_FLAGS.iter().copied().chain(["-g"]).collect();
+    let cpp_flags: Vec<&str> = CPP_FLAGS.iter().copied().chain(["-g"]).collect();
+    compile(
+        "cc",
+        &c_flags,
+        &manifest().join("tests/c/eval.c"),
+        &f.lib,
+        &c_exe,
     );
-    assert!(stdout.lines().any(|x| x == line), "{stdout}\nwanted {line}");
+    compile(
+        "c++",
+        &cpp_flags,
+        &manifest().join("tests/c/eval.cpp"),
+        &f.lib,
+        &cpp_exe,
+    );
+    // Any memcheck error (invalid read or write, uninitialised value used, bad free,
+    // a definite or indirect leak) exits with 99.
+    let memcheck = |exe: &Path, args: &[PathBuf]| {
+        Command::new("valgrind")
+            .args([
+                "--tool=memcheck",
+                "--error-exitcode=99",
+                "--leak-check=full",
+                "--errors-for-leak-kinds=definite,indirect",
+                "--track-origins=yes",
+            ])
+            .arg(exe)
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    check_c_output(&memcheck(&c_exe, &[f.lut_path(), f.small_path()]), &f.blob);
+    check_cpp_output(&memcheck(&cpp_exe, &[f.lut_path()]), &f.blob);
+}
+
+#[test]
+fn c_and_cpp_clients_are_clean_under_address_and_undefined_sanitizers() {
+    let f = fixture();
+    let dir = tempfile::tempdir().unwrap();
+    let (c_exe, cpp_exe) = (dir.path().join("eval"), dir.path().join("eval_cpp"));
+    let sanitize = [
+        "-g",
+        "-fsanitize=address,undefined",
+        "-fno-sanitize-recover=all",
+        "-fno-omit-frame-pointer",
+    ];
+    let c_flags: Vec<&str> = C_FLAGS.iter().chain(&sanitize).copied().collect();
+    let out = try_compile(
+        "cc",
+        &c_flags,
+        &manifest().join("tests/c/eval.c"),
+        &f.lib,
+        &c_exe,
+    );
+    if !out.status.success() {
+        let err = String::from_utf8_lossy(&out.stderr);
+        let missing = err.contains("lasan") || err.contains("lubsan");
+        assert!(
+            missing && !tools_required(),
+            "cc -fsanitize=address,undefined failed:\n{err}"
+        );
+        eprintln!("skipped: the compiler's libasan/libubsan are not installed");
+        return;
+    }
+    let cpp_flags: Vec<&str> = CPP_FLAGS.iter().chain(&sanitize).copied().collect();
+    compile(
+        "c++",
+        &cpp_flags,
+        &manifest().join("tests/c/eval.cpp"),
+        &f.lib,
+        &cpp_exe,
+    );
+    // Any report stops the program with a failing status.
+    let run = |exe: &Path, args: &[PathBuf]| {
+        Command::new(exe)
+            .args(args)
+            .env("ASAN_OPTIONS", "detect_leaks=1:halt_on_error=1:exitcode=98")
+            .env(
+                "UBSAN_OPTIONS",
+                "halt_on_error=1:print_stacktrace=1:exitcode=97",
+            )
+            .output()
+            .unwrap()
+    };
+    check_c_output(&run(&c_exe, &[f.lut_path(), f.small_path()]), &f.blob);
+    check_cpp_output(&run(&cpp_exe, &[f.lut_path()]), &f.blob);
 }

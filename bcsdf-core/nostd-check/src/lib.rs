@@ -1,16 +1,17 @@
 //! Exercises the core from a `#![no_std]` staticlib: every public evaluation path with both
 //! math backends, so that the linker sees all of it.
 #![no_std]
+#![deny(clippy::undocumented_unsafe_blocks)]
+
+/// The panic handler (a trap instruction, never a spin loop) and the unwinding personality
+/// stub, shared with bcsdf-ffi's no_std build.
+#[path = "../../../bcsdf-ffi/src/nostd.rs"]
+mod nostd;
 
 use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::{self, LutHeader, LutResolution};
 use bcsdf_core::{presets, Angles, Bcsdf, FastMath, FurBcsdf, FurParams, Libm, Math};
-
-#[panic_handler]
-fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
-    loop {}
-}
 
 fn eval<M: Math>(preset: usize, ti: f32, tr: f32, phi: f32, h: f32) -> f32 {
     let Some(p) = presets::PRESETS.get(preset) else {

@@ -15,6 +15,8 @@
 //! [`Families::total`], so the results equal the scalar path's bit for bit
 //! (`tests/tests/baked_batch.rs` checks 10⁵ queries, NaN, ∞ and edge angles included).
 
+#[cfg(target_arch = "x86_64")]
+use super::texels::Avx2F16c;
 use super::texels::{Baseline, NKernel};
 use super::{BakedBcsdf, Place};
 use crate::math::{wrap_angle, Math, PI};
@@ -30,10 +32,10 @@ const HALF_PI: f32 = PI / 2.0;
 
 /// The instruction set the baked evaluator runs on ([`BakedBcsdf::eval_far`],
 /// [`BakedBcsdf::eval_far_dirs`], [`BakedBcsdf::eval_far_batch`]), chosen once per LUT from
-/// the CPU in `from_bytes`. Every kernel gives the same bits.
+/// the CPU in `from_bytes` (docs/model.md §8). Every kernel gives the same bits.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kernel {
-    /// Four lanes: SSE2 on x86-64 (its baseline), portable arrays elsewhere.
+    /// Four lanes: SSE2 where the target enables it, portable arrays elsewhere.
     Baseline,
     /// AVX2 and F16C (x86-64 CPUs since about 2013), detected at run time.
     #[cfg(target_arch = "x86_64")]
@@ -44,11 +46,47 @@ impl Kernel {
     /// The fastest kernel this CPU supports.
     #[must_use]
     pub fn best() -> Kernel {
+        Isa::best().kernel()
+    }
+}
+
+/// The kernel a [`BakedBcsdf`] evaluates with, holding the proof of its CPU features: a
+/// feature-gated kernel can only be chosen through its detecting constructor.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Isa {
+    /// [`Kernel::Baseline`].
+    Baseline,
+    /// [`Kernel::Avx2F16c`], with the token [`Avx2F16c::detect`] returned.
+    #[cfg(target_arch = "x86_64")]
+    Avx2F16c(Avx2F16c),
+}
+
+impl Isa {
+    /// The fastest kernel this CPU supports.
+    pub(crate) fn best() -> Isa {
         #[cfg(target_arch = "x86_64")]
-        if super::simd::avx2_f16c() {
-            return Kernel::Avx2F16c;
+        if let Some(token) = Avx2F16c::detect() {
+            return Isa::Avx2F16c(token);
         }
-        Kernel::Baseline
+        Isa::Baseline
+    }
+
+    /// `kernel` with its proof, or `None` if this CPU lacks it.
+    fn of(kernel: Kernel) -> Option<Isa> {
+        match kernel {
+            Kernel::Baseline => Some(Isa::Baseline),
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx2F16c => Avx2F16c::detect().map(Isa::Avx2F16c),
+        }
+    }
+
+    /// The public name of this kernel.
+    pub(crate) fn kernel(self) -> Kernel {
+        match self {
+            Isa::Baseline => Kernel::Baseline,
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2F16c(_) => Kernel::Avx2F16c,
+        }
     }
 }
 
@@ -108,52 +146,52 @@ impl<M: Math> BakedBcsdf<'_, M> {
             });
         }
         Ok(match self.kernel {
-            Kernel::Baseline => self.eval_chunks::<Baseline>(theta_i, theta_r, phi, out),
+            Isa::Baseline => self.eval_chunks(Baseline, theta_i, theta_r, phi, out),
             #[cfg(target_arch = "x86_64")]
-            // SAFETY: `Kernel::Avx2F16c` is only ever set after `avx2_f16c()` confirmed
-            // the CPU and OS support AVX, AVX2 and F16C.
-            Kernel::Avx2F16c => unsafe { self.eval_chunks_avx2(theta_i, theta_r, phi, out) },
+            // SAFETY: `token` exists, so `Avx2F16c::detect` found AVX, AVX2 and F16C on this
+            // CPU and OS: the target features `eval_chunks_avx2` is compiled with.
+            Isa::Avx2F16c(token) => unsafe {
+                self.eval_chunks_avx2(token, theta_i, theta_r, phi, out)
+            },
         })
     }
 
     /// The kernel the evaluator uses on this CPU.
     #[must_use]
     pub fn kernel(&self) -> Kernel {
-        self.kernel
+        self.kernel.kernel()
     }
 
     /// The same LUT evaluated with `kernel`, or `None` if this CPU lacks it. The kernels give
     /// the same bits; this is for tests and benchmarks.
     #[must_use]
     pub fn with_kernel(mut self, kernel: Kernel) -> Option<Self> {
-        if kernel != Kernel::Baseline && Kernel::best() != kernel {
-            return None;
-        }
-        self.kernel = kernel;
+        self.kernel = Isa::of(kernel)?;
         Some(self)
     }
 
     /// [`BakedBcsdf::eval_chunks`] compiled for AVX2 and F16C (the compiler vectorises pass 2
-    /// eight queries wide; table `N` is read with `vcvtph2ps`).
-    ///
-    /// # Safety
-    /// The CPU must support AVX, AVX2 and F16C.
+    /// eight queries wide; table `N` is read with `vcvtph2ps`). Calling it takes the token
+    /// that proves the CPU has those features.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx,avx2,f16c")]
-    unsafe fn eval_chunks_avx2(
+    fn eval_chunks_avx2(
         &self,
+        token: Avx2F16c,
         theta_i: &[f32],
         theta_r: &[f32],
         phi: &[f32],
         out: &mut [Rgb],
     ) -> usize {
-        self.eval_chunks::<super::texels::Avx2F16c>(theta_i, theta_r, phi, out)
+        self.eval_chunks(token, theta_i, theta_r, phi, out)
     }
 
-    /// Every chunk of equally long slices; returns the rejected count.
+    /// Every chunk of equally long slices, table `N` read by `kernel`; returns the rejected
+    /// count.
     #[inline(always)]
     fn eval_chunks<K: NKernel>(
         &self,
+        kernel: K,
         theta_i: &[f32],
         theta_r: &[f32],
         phi: &[f32],
@@ -166,14 +204,21 @@ impl<M: Math> BakedBcsdf<'_, M> {
             .zip(phi.chunks(CHUNK))
             .zip(out.chunks_mut(CHUNK));
         for (((ti, tr), ph), out) in chunks {
-            rejected += self.eval_chunk::<K>(ti, tr, ph, out);
+            rejected += self.eval_chunk(kernel, ti, tr, ph, out);
         }
         rejected
     }
 
     /// One chunk (all slices of one length ≤ [`CHUNK`]); returns the rejected count.
     #[inline(always)]
-    fn eval_chunk<K: NKernel>(&self, ti: &[f32], tr: &[f32], ph: &[f32], out: &mut [Rgb]) -> usize {
+    fn eval_chunk<K: NKernel>(
+        &self,
+        kernel: K,
+        ti: &[f32],
+        tr: &[f32],
+        ph: &[f32],
+        out: &mut [Rgb],
+    ) -> usize {
         // Pass 1: validation, as `Angles::new` but branch-free over the chunk; φ outside
         // (−π, π] (rare) is wrapped by `wrap_angle` in a second loop. Rejected lanes get
         // angles 0 (placed, never read).
@@ -213,7 +258,7 @@ impl<M: Math> BakedBcsdf<'_, M> {
         // Pass 3: texel reads and the family sum.
         for (k, (o, ok)) in out.iter_mut().zip(valid).enumerate() {
             *o = if ok {
-                Self::total(&self.gather_with::<K>(&places.get(k)))
+                Self::total(&self.gather_with(kernel, &places.get(k)))
             } else {
                 Rgb::ZERO
             };

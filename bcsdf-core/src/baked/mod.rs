@@ -21,6 +21,7 @@ use crate::math::{cos_within_half_pi, Libm, Math, PI};
 use crate::model::inv_cos2_theta_i;
 use crate::params::FurParams;
 use crate::spectrum::Rgb;
+use batch::Isa;
 pub use batch::{BatchLengthError, Kernel};
 use core::marker::PhantomData;
 
@@ -58,9 +59,11 @@ impl Axis {
     pub(crate) fn locate(&self, x: f32) -> (usize, f32) {
         // `max` first: NaN becomes 0 (the callers pass finite angles anyway).
         let u = (x * self.inv_step + self.offset).max(0.0).min(self.last);
-        // SAFETY: u ∈ [0, nodes − 1] ⊂ [0, 8191] and never NaN (`max` maps NaN to 0), so the
-        // truncation is in range; unchecked, it is one instruction instead of a saturating
-        // sequence with two compares.
+        debug_assert!((2..=lut::MAX_NODES as usize).contains(&self.nodes) && u <= self.last);
+        // SAFETY: u ∈ [0, nodes − 1] and never NaN (`max` maps NaN to 0), and every axis has
+        // 2 ..= MAX_NODES = 8192 nodes (`lut::validate` refuses others before an `Axis` is
+        // built), so u ≤ 8191 and the truncation to i32 is in range; unchecked, it is one
+        // instruction instead of a saturating sequence with two compares.
         let i = unsafe { u.to_int_unchecked::<i32>() }.min(self.nodes as i32 - 2);
         (i as u32 as usize, u - i as f32)
     }
@@ -122,8 +125,8 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) blob: &'a [u8],
     /// Byte offset of table `M` in the blob.
     m_start: usize,
-    /// The instruction set of the evaluation ([`Kernel`]).
-    kernel: Kernel,
+    /// The instruction set of the evaluation ([`Kernel`]), with the proof of its features.
+    kernel: Isa,
     /// Where each sampled density lives ([`Density::index`] order).
     pub(crate) densities: [DensityLayout; 9],
     pub(crate) sum: Axis,
@@ -236,7 +239,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             nodes: Nodes::new(bytes, res, header.scales),
             blob: bytes,
             m_start: res.byte_range(Table::M).start,
-            kernel: Kernel::best(),
+            kernel: Isa::best(),
             densities: Density::ALL.map(|d| res.density_layout(d)),
             sum: Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
             theta_r: Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
@@ -308,12 +311,12 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// The table reads of one query at `p`.
     #[inline(always)]
     pub(crate) fn gather(&self, p: &Place) -> Lookups {
-        self.gather_with::<Baseline>(p)
+        self.gather_with(Baseline, p)
     }
 
-    /// [`BakedBcsdf::gather`] with table `N` read by kernel `K` (same bits).
+    /// [`BakedBcsdf::gather`] with table `N` read by `kernel` (same bits).
     #[inline(always)]
-    pub(crate) fn gather_with<K: NKernel>(&self, p: &Place) -> Lookups {
+    pub(crate) fn gather_with<K: NKernel>(&self, kernel: K, p: &Place) -> Lookups {
         let res = &self.header.res;
         Lookups {
             // Read from the blob: a pair is read as eight halves (table N follows M).
@@ -324,7 +327,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
                 p.ms,
                 p.ms_w,
             ),
-            n: K::n_bilinear(
+            n: kernel.n_bilinear(
                 self.tables[Table::N as usize],
                 res.n_phi as usize,
                 p.n,
@@ -385,39 +388,35 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     #[inline]
     fn eval_at(&self, ti: f32, tr: f32, abs_phi: f32) -> Families {
         #[cfg(target_arch = "x86_64")]
-        if self.kernel == Kernel::Avx2F16c {
-            // SAFETY: the kernel is only set after the CPU check.
-            return unsafe { self.eval_at_avx2(ti, tr, abs_phi) };
+        if let Isa::Avx2F16c(token) = self.kernel {
+            // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
+            return unsafe { self.eval_at_avx2(token, ti, tr, abs_phi) };
         }
         Self::assemble(&self.gather(&self.place(ti, tr, abs_phi)))
     }
 
-    /// [`BakedBcsdf::try_eval_far_dirs`] compiled for AVX2 and F16C.
-    ///
-    /// # Safety
-    /// The CPU must support AVX, AVX2 and F16C.
+    /// [`BakedBcsdf::try_eval_far_dirs`] compiled for AVX2 and F16C (`token` proves the CPU
+    /// has them).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx,avx2,f16c")]
-    unsafe fn eval_dirs_avx2(
+    fn eval_dirs_avx2(
         &self,
+        token: texels::Avx2F16c,
         wi: Vec3,
         wr: Vec3,
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
         let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
         let p = self.place(ti, tr, abs_phi);
-        Ok(Self::assemble(&self.gather_with::<texels::Avx2F16c>(&p)))
+        Ok(Self::assemble(&self.gather_with(token, &p)))
     }
 
-    /// [`BakedBcsdf::eval_at`] compiled for AVX2 and F16C.
-    ///
-    /// # Safety
-    /// The CPU must support AVX, AVX2 and F16C.
+    /// [`BakedBcsdf::eval_at`] compiled for AVX2 and F16C (`token` proves the CPU has them).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx,avx2,f16c")]
-    unsafe fn eval_at_avx2(&self, ti: f32, tr: f32, abs_phi: f32) -> Families {
+    fn eval_at_avx2(&self, token: texels::Avx2F16c, ti: f32, tr: f32, abs_phi: f32) -> Families {
         let p = self.place(ti, tr, abs_phi);
-        Self::assemble(&self.gather_with::<texels::Avx2F16c>(&p))
+        Self::assemble(&self.gather_with(token, &p))
     }
 
     /// Far-field S from world-space directions: `wi` toward the light, `wr` toward the viewer,
@@ -442,9 +441,9 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
         #[cfg(target_arch = "x86_64")]
-        if self.kernel == Kernel::Avx2F16c {
-            // SAFETY: the kernel is only set after the CPU check.
-            return unsafe { self.eval_dirs_avx2(wi, wr, tangent) };
+        if let Isa::Avx2F16c(token) = self.kernel {
+            // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
+            return unsafe { self.eval_dirs_avx2(token, wi, wr, tangent) };
         }
         let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
         Ok(Self::assemble(&self.gather(&self.place(ti, tr, abs_phi))))

@@ -1,19 +1,22 @@
-//! Four f32 lanes for the texel kernels ([`super::texels`]): SSE2 on x86-64 (part of the
-//! architecture's baseline, so no runtime detection and no `target-cpu` flag), plain arrays
-//! elsewhere. docs/benchmarks.md says why this is written out rather than left to the
+//! Four f32 lanes for the texel kernels ([`super::texels`]): SSE2 where the target enables
+//! it at compile time (every x86-64 target with a floating-point unit; not the soft-float
+//! ones such as `x86_64-unknown-none`), so no runtime detection and no `target-cpu` flag;
+//! plain arrays elsewhere. docs/benchmarks.md says why this is written out rather than left to the
 //! auto-vectoriser (it spread the pair-wise texel reads across scalar registers).
 //!
 //! Every operation is a lane-wise IEEE-754 operation (add, multiply, and the exact
 //! half-to-float shift of [`crate::lut::f16_biased`]), so both implementations give the same
 //! bits; `tests::matches_portable` checks the SSE2 one against the portable one.
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 pub(crate) use sse2::F4;
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
 pub(crate) use portable::F4;
 
-#[cfg(target_arch = "x86_64")]
+/// Compiled only where the target enables SSE2 (the `cfg` below): every SAFETY comment in
+/// this module rests on that, since the intrinsics require the feature.
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 mod sse2 {
     use core::arch::x86_64::{
         __m128, _mm_add_ps, _mm_castsi128_ps, _mm_loadl_epi64, _mm_loadu_si128, _mm_mul_ps,
@@ -29,28 +32,33 @@ mod sse2 {
         /// `v` in every lane.
         #[inline(always)]
         pub(crate) fn splat(v: f32) -> F4 {
-            // SAFETY (every intrinsic call in this module): SSE2 is part of the x86-64
-            // baseline, so the target feature is always present.
-            F4(unsafe { _mm_set1_ps(v) })
+            // SAFETY: the target enables SSE2 (this module's `cfg`).
+            let lanes = unsafe { _mm_set1_ps(v) };
+            F4(lanes)
         }
 
         /// Lane-wise product.
         #[inline(always)]
         pub(crate) fn mul(self, a: F4) -> F4 {
-            F4(unsafe { _mm_mul_ps(self.0, a.0) })
+            // SAFETY: the target enables SSE2 (this module's `cfg`).
+            let lanes = unsafe { _mm_mul_ps(self.0, a.0) };
+            F4(lanes)
         }
 
         /// Lane-wise sum.
         #[inline(always)]
         pub(crate) fn add(self, a: F4) -> F4 {
-            F4(unsafe { _mm_add_ps(self.0, a.0) })
+            // SAFETY: the target enables SSE2 (this module's `cfg`).
+            let lanes = unsafe { _mm_add_ps(self.0, a.0) };
+            F4(lanes)
         }
 
         /// The lanes as an array.
         #[inline(always)]
         pub(crate) fn to_array(self) -> [f32; 4] {
             let mut out = [0.0; 4];
-            // SAFETY: `out` is 16 writable bytes; `storeu` has no alignment requirement.
+            // SAFETY: the target enables SSE2 (this module's `cfg`); `out` is 16 writable
+            // bytes and `storeu` has no alignment requirement.
             unsafe { _mm_storeu_ps(out.as_mut_ptr(), self.0) };
             out
         }
@@ -59,7 +67,8 @@ mod sse2 {
         /// bits and shifted into an f32's exponent and mantissa.
         #[inline(always)]
         pub(crate) fn halves4(b: &[u8; 8]) -> F4 {
-            // SAFETY: `b` is 8 readable bytes; `loadl_epi64` reads 8 bytes, unaligned.
+            // SAFETY: the target enables SSE2 (this module's `cfg`); `b` is 8 readable
+            // bytes and `loadl_epi64` reads 8 bytes, unaligned.
             unsafe {
                 let v = _mm_loadl_epi64(b.as_ptr().cast());
                 let wide = _mm_unpacklo_epi16(v, _mm_setzero_si128());
@@ -70,7 +79,8 @@ mod sse2 {
         /// Eight halves (sixteen bytes) decoded as [`F4::halves4`], low four first.
         #[inline(always)]
         pub(crate) fn halves8(b: &[u8; 16]) -> [F4; 2] {
-            // SAFETY: `b` is 16 readable bytes; `loadu_si128` has no alignment requirement.
+            // SAFETY: the target enables SSE2 (this module's `cfg`); `b` is 16 readable
+            // bytes and `loadu_si128` has no alignment requirement.
             unsafe {
                 let v = _mm_loadu_si128(b.as_ptr().cast());
                 let z = _mm_setzero_si128();
@@ -82,7 +92,7 @@ mod sse2 {
     }
 }
 
-#[cfg_attr(target_arch = "x86_64", allow(dead_code))]
+#[cfg_attr(all(target_arch = "x86_64", target_feature = "sse2"), allow(dead_code))]
 mod portable {
     /// Four f32 lanes in an array.
     #[derive(Clone, Copy, Debug)]
@@ -142,7 +152,7 @@ mod portable {
     }
 }
 
-#[cfg(all(test, target_arch = "x86_64"))]
+#[cfg(all(test, target_arch = "x86_64", target_feature = "sse2"))]
 mod tests {
     use super::{portable, sse2};
 
@@ -172,9 +182,18 @@ mod tests {
 
 /// Whether this x86-64 CPU and its OS support AVX2 and F16C (CPUID, and XGETBV for the
 /// AVX register state). No std: read from CPUID directly, once per [`super::BakedBcsdf`].
+/// Under Miri, which cannot execute CPUID, the answer is what the build enables statically
+/// (`-C target-feature`): the interpreted CPU has exactly those features.
 #[cfg(target_arch = "x86_64")]
 pub(crate) fn avx2_f16c() -> bool {
     use core::arch::x86_64::{__cpuid, __cpuid_count, _xgetbv};
+    if cfg!(miri) {
+        return cfg!(all(
+            target_feature = "avx",
+            target_feature = "avx2",
+            target_feature = "f16c"
+        ));
+    }
     // SAFETY: CPUID exists on every x86-64 CPU; leaf 7 is read only when leaf 0 says it
     // exists; XGETBV is executed only when CPUID reports OSXSAVE (the OS enabled it).
     unsafe {

@@ -14,18 +14,21 @@
 
 use super::simd::F4;
 
-/// How a batch reads table `N` (`BakedBcsdf::kernel`).
-pub(crate) trait NKernel {
+/// How an evaluation reads table `N` (`BakedBcsdf::kernel`). A kernel is a value: a kernel
+/// that needs CPU features is a token that only their detection constructs, so holding one
+/// is the proof that its instructions may run.
+pub(crate) trait NKernel: Copy {
     /// Table `N` bilinearly, as [`n_bilinear`].
-    fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12];
+    fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12];
 }
 
-/// [`n_bilinear`]: four lanes (SSE2 on x86-64, portable arrays elsewhere).
+/// [`n_bilinear`]: four lanes (SSE2 where the target has it, portable arrays elsewhere).
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct Baseline;
 
 impl NKernel for Baseline {
     #[inline(always)]
-    fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
+    fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
         n_bilinear(data, width, index, w)
     }
 }
@@ -35,13 +38,10 @@ impl NKernel for Baseline {
 /// the read safe whatever the index, at one compare per read.
 #[inline(always)]
 fn bytes<const B: usize>(data: &[u8], start: usize) -> &[u8; B] {
-    let Some(limit) = data.len().checked_sub(B) else {
-        return &[0; B];
-    };
-    let start = start.min(limit);
-    // SAFETY: start + B ≤ limit + B = data.len(), so the B bytes at `start` are in `data`;
-    // `[u8; B]` has alignment 1.
-    unsafe { &*data.as_ptr().add(start).cast::<[u8; B]>() }
+    let start = start.min(data.len().saturating_sub(B));
+    data.get(start..)
+        .and_then(<[u8]>::first_chunk)
+        .unwrap_or(&[0; B])
 }
 
 /// The 24 halves of a 12-channel texel pair: texel `i` in groups 0–2, texel `i + 1` in 3–5.
@@ -111,15 +111,31 @@ pub(crate) fn ms_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) 
 /// values, so the weights carry 2^−112 instead of the decode, which keeps every product and
 /// sum bit for bit those of [`n_bilinear`]: the weights are powers-of-two rescalings, exact
 /// in the normal range they stay in), eight channels in a 256-bit register and four in a
-/// 128-bit one. Only for functions compiled with those features
-/// (`BakedBcsdf::eval_far_batch` checks the CPU once, in `from_bytes`).
+/// 128-bit one.
+///
+/// A value of this type is the proof that the CPU and its OS support AVX, AVX2 and F16C:
+/// its field is private to this module and [`Avx2F16c::detect`] is its only constructor.
+/// The kernel runs correctly anywhere it is called; it is fast where it is inlined into a
+/// function compiled with those features (`BakedBcsdf`'s `*_avx2` functions, which take
+/// the token too).
 #[cfg(target_arch = "x86_64")]
-pub(crate) struct Avx2F16c;
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Avx2F16c {
+    _proof: (),
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Avx2F16c {
+    /// The token, if this CPU and its OS support AVX, AVX2 and F16C (CPUID and XGETBV).
+    pub(crate) fn detect() -> Option<Avx2F16c> {
+        super::simd::avx2_f16c().then_some(Avx2F16c { _proof: () })
+    }
+}
 
 #[cfg(target_arch = "x86_64")]
 impl NKernel for Avx2F16c {
     #[inline(always)]
-    fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
+    fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
         use core::arch::x86_64::{
             __m128, __m256, _mm256_add_ps, _mm256_cvtph_ps, _mm256_mul_ps, _mm256_set1_ps,
             _mm256_storeu_ps, _mm_add_ps, _mm_cvtph_ps, _mm_loadl_epi64, _mm_loadu_si128,
@@ -131,9 +147,10 @@ impl NKernel for Avx2F16c {
         let bottom = bytes::<48>(data, 24 * (index + width));
         let w = w.map(|x| x * UNBIASED);
         let mut out = [0.0; 12];
-        // SAFETY: only reached from functions compiled with AVX, AVX2 and F16C, after the
-        // CPU check; every load reads inside a 48-byte texel pair (offsets 0 and 24: 16
-        // bytes; 16 and 40: 8 bytes); the stores write inside `out`.
+        // SAFETY: `self` exists, so `detect` found AVX, AVX2 and F16C on this CPU and OS
+        // (the intrinsics' target features); every load reads inside a 48-byte texel pair
+        // (offsets 0 and 24: 16 bytes; 16 and 40: 8 bytes); the stores write inside `out`
+        // (8 floats at 0, 4 at 8 of 12).
         unsafe {
             // Channels 0–7 of texels i and i + 1 (halves 0–7 and 12–19), channels 8–11
             // (halves 8–11 and 20–23).

@@ -3,7 +3,7 @@
 #include <stdio.h>
 
 int shade(const unsigned char *bytes, size_t len) {   /* bytes: a .furlut, kept alive */
-    fur_lut lut;                                     /* fixed size: stack, arena or member */
+    fur_lut lut = FUR_LUT_INIT;                      /* fixed size: stack, arena or member */
     fur_sample s;
     float rgb[3];
     fur_status st = fur_lut_open(bytes, len, &lut);  /* validates; borrows the bytes */
@@ -16,6 +16,7 @@ int shade(const unsigned char *bytes, size_t len) {   /* bytes: a .furlut, kept 
         printf("omega_i (%g, %g), pdf %g, weight %g\n", s.theta_i, s.phi, s.pdf, s.weight[0]);
     printf("S = %g %g %g, pdf %g\n", rgb[0], rgb[1], rgb[2],
            fur_pdf_far(&lut, 0.5f, -0.35f, 0.785f));
+    fur_lut_close(&lut);                             /* before the bytes are freed */
     return 0;
 }
 

@@ -6,9 +6,11 @@
  * Opens LUT_FILE, evaluates a fixed set of directions through every evaluation entry point
  * and prints the float bits (hex) for the Rust test to compare with BakedBcsdf bit for bit;
  * then checks bad input: NULL and zero-length arguments for every function, misaligned
- * pointers, a fur_lut that was never opened, and 100 000 mutated copies of SMALL_LUT_FILE
- * (bit flips, truncations, appends), each of which must be refused. Prints "bad-input ok" and
- * exits 0 when every check holds.
+ * pointers, zeroed and FUR_LUT_INIT-initialised fur_luts that were never opened, a fur_lut
+ * used after close and after its bytes were freed, a fur_lut of another build, overlapping
+ * buffers, and 100 000 mutated copies of SMALL_LUT_FILE (bit flips, truncations, appends),
+ * each of which must be refused. Prints "bad-input ok" and exits 0 when every check holds.
+ * Run plain, under Valgrind memcheck and built with -fsanitize=address,undefined.
  */
 #include "fur_bcsdf.h"
 
@@ -58,6 +60,34 @@ static const float TI[N_DIRS] = {0.5f, -0.3f, 1.2f, 0.0f, -1.5f, 0.25f};
 static const float TR[N_DIRS] = {-0.35f, 0.1f, -1.0f, 0.0f, 1.4f, 0.6f};
 static const float PH[N_DIRS] = {0.785f, 3.0f, -2.0f, 0.0f, 1.0f, -0.1f};
 
+#if defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
+
+/*
+ * The use-after-free sequence of issue 25, following the contract: open_then_close opens a
+ * fur_lut on heap bytes and closes it before returning (the caller then frees the bytes);
+ * eval_fresh's fur_lut, in the same stack slot, is initialised with FUR_LUT_INIT and refused.
+ * Without the close and the initialiser this read freed memory (SIGSEGV at -O0).
+ */
+static NOINLINE fur_status open_then_close(const unsigned char *bytes, size_t len) {
+    fur_lut l = FUR_LUT_INIT;
+    fur_status st = fur_lut_open(bytes, len, &l);
+    if (fur_lut_close(&l) != FUR_OK) return FUR_ERR_NULL;
+    return st;
+}
+
+static NOINLINE fur_status eval_fresh(float *rgb) {
+    fur_lut l = FUR_LUT_INIT;
+    return fur_eval_far(&l, 0.1f, 0.2f, 0.3f, rgb);
+}
+
+/* The same address, through a call the compiler does not look into: the overlapping calls
+ * below are deliberate, and gcc's -Wrestrict rightly flags the obvious ones. */
+static NOINLINE void *opaque(void *p) { return p; }
+
 static unsigned long long rng_state = 0x853c49e6748fea9bULL;
 static unsigned rng(void) {
     rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -67,7 +97,7 @@ static unsigned rng(void) {
 int main(int argc, char **argv) {
     size_t len = 0, small_len = 0, i;
     unsigned char *bytes, *small, *copy;
-    fur_lut lut, never;
+    fur_lut lut = FUR_LUT_INIT, never = FUR_LUT_INIT, foreign;
     fur_sample s;
     float rgb[3], fam[12], batch[3 * N_DIRS];
     const float wi[3] = {0.3f, 0.8f, 0.2f}, wr[3] = {-0.6f, 0.7f, -0.1f}, t[3] = {0.0f, 0.2f, 1.0f};
@@ -155,13 +185,91 @@ int main(int argc, char **argv) {
         EXPECT(fur_eval_far_dirs(&lut, zero, wr, t, rgb) == FUR_ERR_DIRECTION);
     }
 
-    /* A fur_lut that was never opened: zeroed, then garbage; then a closed one. */
+    /* Overlapping buffers: every output against the inputs, the fur_lut and the LUT bytes.
+     * Refused before anything is written; adjacent buffers are fine. */
+    {
+        float ov[4 * N_DIRS + 4], v[4] = {0.3f, 0.8f, 0.2f, 0.0f};
+        const unsigned char saved = bytes[40];
+        memcpy(ov, TI, sizeof TI);
+        EXPECT(fur_eval_far_batch(&lut, N_DIRS, ov, TR, PH, ov + 1) == FUR_ERR_OVERLAP);
+        EXPECT(fur_eval_far_batch(&lut, N_DIRS, TR, PH, ov, ov + N_DIRS - 1) == FUR_ERR_OVERLAP);
+        EXPECT(memcmp(ov, TI, sizeof TI) == 0);
+        EXPECT(fur_eval_far_batch(&lut, N_DIRS, ov, TR, PH, ov + N_DIRS) == FUR_OK);
+        EXPECT(memcmp(ov + N_DIRS, batch, sizeof batch) == 0);
+        EXPECT(fur_eval_far_batch(&lut, 1, TI, TR, PH, (float *)opaque(&lut)) == FUR_ERR_OVERLAP);
+        EXPECT(fur_eval_far_batch(&lut, 1, TI, TR, PH, (float *)(void *)(bytes + 64)) ==
+               FUR_ERR_OVERLAP);
+        EXPECT(fur_eval_far(&lut, 0.1f, 0.2f, 0.3f, (float *)(void *)&lut._opaque[100]) ==
+               FUR_ERR_OVERLAP);
+        EXPECT(fur_eval_far(&lut, 0.1f, 0.2f, 0.3f, (float *)(void *)(bytes + 32)) ==
+               FUR_ERR_OVERLAP);
+        EXPECT(fur_eval_far_families(&lut, 0.1f, 0.2f, 0.3f, (float *)(void *)(bytes + 48)) ==
+               FUR_ERR_OVERLAP);
+        EXPECT(fur_eval_far_dirs(&lut, v, wr, t, v + 1) == FUR_ERR_OVERLAP);
+        EXPECT(fur_eval_far_dirs(&lut, wi, wr, v, v + 2) == FUR_ERR_OVERLAP);
+        EXPECT(fur_sample_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, (fur_sample *)(void *)(bytes + 16)) ==
+               FUR_ERR_OVERLAP);
+        EXPECT(fur_lut_open(bytes, len, (fur_lut *)(void *)(bytes + 8)) == FUR_ERR_OVERLAP);
+        EXPECT(bytes[40] == saved);
+        /* Nothing was written into the bytes or the fur_lut: both still open and validate. */
+        EXPECT(fur_eval_far(&lut, TI[0], TR[0], PH[0], rgb) == FUR_OK);
+        EXPECT(fur_lut_open(bytes, len, &never) == FUR_OK);
+        EXPECT(fur_lut_close(&never) == FUR_OK);
+    }
+
+    /* Never opened: zeroed with memset, initialised with FUR_LUT_INIT, filled with 0xa5. */
     memset(&never, 0, sizeof never);
     EXPECT(fur_eval_far(&never, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
+    {
+        fur_lut init = FUR_LUT_INIT;
+        EXPECT(fur_eval_far(&init, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_eval_far_batch(&init, 1, TI, TR, PH, batch) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_sample_far(&init, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_pdf_far(&init, 0.1f, 0.2f, 0.3f) == 0.0f);
+    }
     memset(&never, 0xa5, sizeof never);
     EXPECT(fur_eval_far(&never, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
     EXPECT(fur_sample_far(&never, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NOT_OPEN);
     EXPECT(fur_pdf_far(&never, 0.1f, 0.2f, 0.3f) == 0.0f);
+
+    /* Another build's fur_lut: word 1 holds the build tag (a hash of the library version,
+     * compiler, target and stored layout); another build writes another one. */
+    memcpy(&foreign, &lut, sizeof lut);
+    EXPECT(fur_eval_far(&foreign, 0.1f, 0.2f, 0.3f, rgb) == FUR_OK);
+    foreign._opaque[1] ^= 1u;
+    EXPECT(fur_eval_far(&foreign, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_OTHER_BUILD);
+    EXPECT(fur_eval_far_batch(&foreign, 1, TI, TR, PH, batch) == FUR_ERR_OTHER_BUILD);
+    EXPECT(fur_sample_far(&foreign, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_OTHER_BUILD);
+    EXPECT(fur_pdf_far(&foreign, 0.1f, 0.2f, 0.3f) == 0.0f);
+    EXPECT(fur_lut_close(&foreign) == FUR_OK);
+    {
+        const fur_lut zero = FUR_LUT_INIT;
+        EXPECT(memcmp(&foreign, &zero, sizeof zero) == 0); /* close zeroes the storage */
+    }
+
+    /* Close, then free the bytes: the closed fur_lut is refused and reads nothing (Valgrind
+     * sees any read of the freed copy). Then the two-function sequence of issue 25. */
+    {
+        unsigned char *heap = (unsigned char *)malloc(small_len);
+        fur_lut h = FUR_LUT_INIT;
+        if (!heap) return 2;
+        memcpy(heap, small, small_len);
+        EXPECT(fur_lut_open(heap, small_len, &h) == FUR_OK);
+        EXPECT(fur_eval_far(&h, 0.1f, 0.2f, 0.3f, rgb) == FUR_OK);
+        EXPECT(fur_lut_close(&h) == FUR_OK);
+        free(heap);
+        EXPECT(fur_eval_far(&h, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_eval_far_batch(&h, 1, TI, TR, PH, batch) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_sample_far(&h, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_pdf_far(&h, 0.1f, 0.2f, 0.3f) == 0.0f);
+
+        heap = (unsigned char *)malloc(small_len);
+        if (!heap) return 2;
+        memcpy(heap, small, small_len);
+        EXPECT(open_then_close(heap, small_len) == FUR_OK);
+        free(heap);
+        EXPECT(eval_fresh(rgb) == FUR_ERR_NOT_OPEN);
+    }
     EXPECT(fur_lut_close(&lut) == FUR_OK);
     EXPECT(fur_eval_far(&lut, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
 
@@ -193,6 +301,7 @@ int main(int argc, char **argv) {
     EXPECT(refused == 100000);
     printf("mutated refused %d of 100000\n", refused);
     EXPECT(strcmp(fur_status_str(12345), "unknown status") == 0);
+    EXPECT(fur_lut_close(&lut) == FUR_OK); /* before its bytes are freed */
     free(copy);
     free(bytes);
     free(small);

@@ -20,12 +20,14 @@ std::uint32_t bits(float f) {
     return u;
 }
 
-// A LUT opened on bytes this object owns (the fur_lut borrows them).
+// A LUT opened on bytes this object owns (the fur_lut borrows them): closed in the
+// destructor, before the members (the bytes) are destroyed, as the header's contract asks.
 class Lut {
 public:
     explicit Lut(std::vector<unsigned char> bytes) : bytes_(std::move(bytes)) {
         status_ = fur_lut_open(bytes_.data(), bytes_.size(), &lut_);
     }
+    ~Lut() { fur_lut_close(&lut_); }
     Lut(const Lut &) = delete;
     Lut &operator=(const Lut &) = delete;
     fur_status status() const { return status_; }
@@ -33,7 +35,7 @@ public:
 
 private:
     std::vector<unsigned char> bytes_;
-    fur_lut lut_{};
+    fur_lut lut_ = FUR_LUT_INIT;
     fur_status status_;
 };
 

@@ -9,7 +9,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 fn main() {
-    let preset = presets::find("yan-row-a").unwrap();
+    let preset = presets::find("bobcat").unwrap();
     let opts = ProfileOptions {
         budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
         ..ProfileOptions::default()

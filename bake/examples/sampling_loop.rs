@@ -9,11 +9,11 @@ use std::hint::black_box;
 use std::time::Instant;
 
 fn main() {
-    // A baked .furlut from the environment (FUR_LUT=path), else yan-row-a baked here.
+    // A baked .furlut from the environment (FUR_LUT=path), else bobcat baked here.
     let blob = match std::env::var_os("FUR_LUT") {
         Some(path) => std::fs::read(path).expect("FUR_LUT names a readable file"),
         None => {
-            let preset = presets::find("yan-row-a").unwrap();
+            let preset = presets::find("bobcat").unwrap();
             let opts = ProfileOptions {
                 budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
                 ..ProfileOptions::default()

@@ -250,8 +250,8 @@ mod tests {
     fn output_paths_stay_directly_inside_their_folder() {
         let dir = Path::new("some/out");
         assert_eq!(
-            output_path(dir, "yan-row-a", "furlut").unwrap(),
-            Path::new("some/out/yan-row-a.furlut")
+            output_path(dir, "bobcat", "furlut").unwrap(),
+            Path::new("some/out/bobcat.furlut")
         );
         assert_eq!(
             output_path(Path::new("."), "x.v2", "exr").unwrap(),

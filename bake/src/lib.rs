@@ -11,7 +11,7 @@
 //!
 //! ```
 //! let presets = bake::presets::builtin().unwrap();
-//! let row_a = bake::presets::find(&presets, "yan-row-a").unwrap();
+//! let row_a = bake::presets::find(&presets, "bobcat").unwrap();
 //! let mut input = row_a.input;
 //! bake::apply_overrides(&mut input, ["kappa=0.5", "sigma_ca=0.2,0.3,0.6"]).unwrap();
 //! assert!(bcsdf_core::FurParams::new(&input).is_ok());

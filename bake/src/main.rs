@@ -18,7 +18,7 @@ use std::time::Duration;
 const EXAMPLES: &str = "\
 Examples:
   bake --all --out luts
-  bake --preset yan-row-a --preset human-hair --out luts
+  bake --preset bobcat --preset human-hair --out luts
   bake --presets my-presets.toml --preset my-fur --out luts
   bake --all --out luts --res-phi 181 --res-theta-r 64 --threads 2
   bake --all --out luts --no-cache          (regenerate the medulla profiles)

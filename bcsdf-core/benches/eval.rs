@@ -19,13 +19,7 @@ fn queries() -> Vec<(Angles, f32)> {
 
 fn bench(c: &mut Criterion) {
     let qs = queries();
-    for name in [
-        "yan-row-a",
-        "yan-row-b",
-        "yan-row-c",
-        "human-hair",
-        "air-medulla",
-    ] {
+    for name in ["bobcat", "red-fox", "raccoon", "human-hair", "air-medulla"] {
         let preset = presets::find(name).unwrap();
         let model: FurBcsdf = FurBcsdf::unscattered(FurParams::new(&preset.input).unwrap());
         let mut i = 0usize;
@@ -52,7 +46,7 @@ fn bench(c: &mut Criterion) {
 fn bench_full(c: &mut Criterion) {
     use bcsdf_core::medulla::{generate, MedullaProfiles, PhotonBudget, ProfileLayout, Resolution};
     let qs = queries();
-    for name in ["yan-row-a", "yan-row-b", "yan-row-c", "air-medulla"] {
+    for name in ["bobcat", "red-fox", "raccoon", "air-medulla"] {
         let params = FurParams::new(&presets::find(name).unwrap().input).unwrap();
         let layout = ProfileLayout::for_params(&params, Resolution::DEFAULT);
         let budget = PhotonBudget {
@@ -87,7 +81,7 @@ fn bench_full(c: &mut Criterion) {
 fn bench_fast(c: &mut Criterion) {
     use bcsdf_core::FastMath;
     let qs = queries();
-    for name in ["yan-row-a", "human-hair"] {
+    for name in ["bobcat", "human-hair"] {
         let preset = presets::find(name).unwrap();
         let model = FurBcsdf::<FastMath>::unscattered(FurParams::new(&preset.input).unwrap());
         let mut i = 0usize;

@@ -21,7 +21,7 @@ fn queries() -> Vec<Angles> {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let name = args.get(1).map_or("yan-row-a", String::as_str);
+    let name = args.get(1).map_or("bobcat", String::as_str);
     let full = args.get(2).is_some_and(|m| m == "full");
     let n: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(20_000);
     let params = FurParams::new(&presets::find(name).expect("unknown preset").input).unwrap();

@@ -11,7 +11,7 @@
 //!     Resolution,
 //! };
 //!
-//! let params = FurParams::new(&presets::find("yan-row-a").unwrap().input).unwrap();
+//! let params = FurParams::new(&presets::find("bobcat").unwrap().input).unwrap();
 //! // Medulla scattering profiles for these parameters, into caller memory (a small photon
 //! // budget here; `PhotonBudget::DEFAULT` reaches 1 % noise).
 //! let layout = ProfileLayout::for_params(&params, Resolution::DEFAULT);

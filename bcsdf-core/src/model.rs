@@ -407,7 +407,7 @@ mod tests {
         };
         generate(&layout, &budget, 1, &mut cn, &mut cm).unwrap();
         let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
-        let other = FurBcsdf::<Libm>::new(params("yan-row-a"), profiles);
+        let other = FurBcsdf::<Libm>::new(params("bobcat"), profiles);
         assert_eq!(other.err(), Some(ProfileError::Mismatch));
         let model = FurBcsdf::<Libm>::new(p, profiles).unwrap();
         assert_eq!(model.params(), &p);

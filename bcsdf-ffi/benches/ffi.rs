@@ -13,7 +13,7 @@ use bcsdf_ffi::{fur_eval_far, fur_lut_close, fur_lut_open, fur_status, FUR_LUT_I
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 
 fn bench(c: &mut Criterion) {
-    let preset = presets::find("yan-row-a").unwrap();
+    let preset = presets::find("bobcat").unwrap();
     let opts = ProfileOptions {
         budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
         ..ProfileOptions::default()

@@ -86,7 +86,7 @@ fn try_compile(compiler: &str, flags: &[&str], source: &Path, lib: &Path, out: &
 }
 
 fn lut(res: LutResolution) -> Vec<u8> {
-    let preset = presets::find("yan-row-a").unwrap();
+    let preset = presets::find("bobcat").unwrap();
     let params = FurParams::new(&preset.input).unwrap();
     let opts = ProfileOptions {
         budget: bake::profiles::scale_budget(bcsdf_core::PhotonBudget::DEFAULT, 0.02).unwrap(),

@@ -49,18 +49,18 @@ fn check_preset(name: &str) {
 }
 
 #[test]
-fn budget_yan_row_a() {
-    check_preset("yan-row-a");
+fn budget_bobcat() {
+    check_preset("bobcat");
 }
 
 #[test]
-fn budget_yan_row_b() {
-    check_preset("yan-row-b");
+fn budget_red_fox() {
+    check_preset("red-fox");
 }
 
 #[test]
-fn budget_yan_row_c() {
-    check_preset("yan-row-c");
+fn budget_raccoon() {
+    check_preset("raccoon");
 }
 
 #[test]

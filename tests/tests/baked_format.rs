@@ -28,7 +28,7 @@ const RES: LutResolution = LutResolution {
 };
 
 fn input() -> bcsdf_core::FurParamsInput {
-    presets::find("yan-row-a").unwrap().input
+    presets::find("bobcat").unwrap().input
 }
 
 /// Test functions, each linear in every table axis (so bilinear interpolation is exact):

@@ -189,7 +189,7 @@ fn worst_scattered_error(model: &FurBcsdf, thetas_deg: &[f32], n_phi: usize) -> 
 
 #[test]
 fn scattered_far_field_matches_fine_reference() {
-    for name in ["yan-row-a", "yan-row-b", "yan-row-c", "air-medulla"] {
+    for name in ["bobcat", "red-fox", "raccoon", "air-medulla"] {
         let params = FurParams::new(&presets::find(name).unwrap().input).unwrap();
         let layout = ProfileLayout::for_params(&params, Resolution::DEFAULT);
         let budget = PhotonBudget {

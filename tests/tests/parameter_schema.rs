@@ -15,13 +15,13 @@ fn quarter(name: ParamName) -> f32 {
     d.lo + 0.25 * (d.hi - d.lo)
 }
 
-/// For every schema row: a valid input (yan-row-a, or human-hair for the melanin rows) with
+/// For every schema row: a valid input (bobcat, or human-hair for the melanin rows) with
 /// that row set to a distinctive value, and the value.
 fn one_per_row() -> Vec<(ParamName, FurParamsInput, ParamValue)> {
     SCHEMA
         .iter()
         .map(|spec| {
-            let mut input = bcsdf_core::presets::find("yan-row-a").unwrap().input;
+            let mut input = bcsdf_core::presets::find("bobcat").unwrap().input;
             let value = match spec.name {
                 ParamName::SigmaCa => {
                     let q = quarter(spec.name);

@@ -80,7 +80,7 @@ fn same_bits_for_any_thread_count_and_across_runs() {
         per_cn_cell: 10_000,
         per_cm_row: 20_000,
     };
-    for name in ["yan-row-b", "air-medulla"] {
+    for name in ["red-fox", "air-medulla"] {
         let l = layout(name);
         let one = generate_parallel(&l, &budget, 5, Some(1)).unwrap();
         assert_nontrivial(&one);
@@ -100,7 +100,7 @@ fn same_bits_for_any_thread_count_and_across_runs() {
 
 #[test]
 fn a_different_seed_gives_different_bits() {
-    let l = layout("yan-row-a");
+    let l = layout("bobcat");
     let a = generate_parallel(&l, &SMALL, 1, None).unwrap();
     let b = generate_parallel(&l, &SMALL, 2, None).unwrap();
     let (ta, tb) = (a.tables(), b.tables());
@@ -120,7 +120,7 @@ fn a_different_seed_gives_different_bits() {
 
 #[test]
 fn an_invalid_layout_is_an_error() {
-    let mut l = layout("yan-row-a");
+    let mut l = layout("bobcat");
     l.res.n_h = 0;
     assert!(matches!(
         generate_parallel(&l, &SMALL, 1, Some(1)),
@@ -131,7 +131,7 @@ fn an_invalid_layout_is_an_error() {
 #[test]
 fn cache_round_trip_is_bit_exact() {
     let dir = temp_dir();
-    let p = params("yan-row-c");
+    let p = params("raccoon");
     let (made, outcome) =
         load_or_generate(&p, Resolution::DEFAULT, SMALL, 3, Some(dir.path()), None).unwrap();
     let CacheOutcome::Generated { path: Some(path) } = outcome else {
@@ -162,7 +162,7 @@ fn cache_round_trip_is_bit_exact() {
     other.budget.per_cn_cell += 1;
     assert_ne!(key.file_name(), other.file_name());
     other.budget = key.budget;
-    other.layout = layout("yan-row-a");
+    other.layout = layout("bobcat");
     assert_ne!(key.file_name(), other.file_name());
 }
 
@@ -291,7 +291,7 @@ fn damaged_stale_or_foreign_cache_files_are_detected_and_regenerated() {
     });
 
     // A valid file for other parameters, seed or budget under this key's name: stale.
-    let foreign = generate_parallel(&layout("yan-row-b"), &SMALL, 9, None).unwrap();
+    let foreign = generate_parallel(&layout("red-fox"), &SMALL, 9, None).unwrap();
     check_rejected(
         dir.path(),
         &p,
@@ -400,7 +400,7 @@ fn an_unwritable_cache_directory_is_an_error_naming_it_before_any_work() {
     let dir = temp_dir();
     let blocker = dir.path().join("a-file");
     std::fs::write(&blocker, b"not a directory").unwrap();
-    let p = params("yan-row-a");
+    let p = params("bobcat");
     for bad in [blocker.join("cache"), blocker.clone()] {
         // The full budget on one thread would take seconds: the error must come first.
         let start = std::time::Instant::now();
@@ -505,7 +505,7 @@ fn writes_are_atomic() {
 
     // Concurrent writers of the same key: every reader sees a complete file.
     let cache = temp_dir();
-    let p = params("yan-row-a");
+    let p = params("bobcat");
     let results: Vec<(OwnedProfiles, CacheOutcome)> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..3)
             .map(|_| {
@@ -559,7 +559,7 @@ fn build_model_uses_profiles_only_when_the_medulla_scatters() {
 
     // kappa = 0, or sigma_ms = 0: no profiles, no cache, the unscattered model exactly.
     let hair = params("human-hair");
-    let mut input = presets::find("yan-row-a").unwrap().input;
+    let mut input = presets::find("bobcat").unwrap().input;
     input.sigma_ms = 0.0;
     let clear = FurParams::new(&input).unwrap();
     for p in [hair, clear] {
@@ -570,8 +570,8 @@ fn build_model_uses_profiles_only_when_the_medulla_scatters() {
         assert_eq!(m.model().eval_far_lobes(&a), direct.eval_far_lobes(&a));
     }
 
-    // yan-row-a scatters: profiles for its layout, and the same model as FurBcsdf::new.
-    let p = params("yan-row-a");
+    // bobcat scatters: profiles for its layout, and the same model as FurBcsdf::new.
+    let p = params("bobcat");
     let (m, outcome) = build_model(p, &opts).unwrap();
     assert!(matches!(
         outcome,
@@ -585,14 +585,14 @@ fn build_model_uses_profiles_only_when_the_medulla_scatters() {
     assert!(got.get(bcsdf_core::Lobe::TttTs).max_channel() > 0.0);
 
     // Profiles for other parameters are refused.
-    let other = generate_parallel(&layout("yan-row-b"), &SMALL, 1, None).unwrap();
+    let other = generate_parallel(&layout("red-fox"), &SMALL, 1, None).unwrap();
     assert_eq!(
         OwnedModel::new(p, Some(other)).unwrap_err(),
         ProfileError::Mismatch
     );
     // An OwnedProfiles is validated when built.
     let key = ProfileKey {
-        layout: layout("yan-row-a"),
+        layout: layout("bobcat"),
         budget: SMALL,
         seed: 1,
     };

@@ -453,7 +453,7 @@ fn absorption_single_scattering_limit() {
 /// same counts), each cell's integral, the mean survival, below 1.
 #[test]
 fn zero_medulla_absorption_is_the_unweighted_walk() {
-    let mut input = presets::find("yan-row-a").unwrap().input;
+    let mut input = presets::find("bobcat").unwrap().input;
     let res = Resolution {
         n_sigma: 2,
         n_h: 4,
@@ -715,12 +715,12 @@ fn poisson_rel_rms_diff(layout: &ProfileLayout, per_cell: u32, a: &[f32], b: &[f
     (var / norm).sqrt()
 }
 
-fn yan_row_a_layout() -> ProfileLayout {
-    let params = FurParams::new(&presets::find("yan-row-a").unwrap().input).unwrap();
+fn bobcat_layout() -> ProfileLayout {
+    let params = FurParams::new(&presets::find("bobcat").unwrap().input).unwrap();
     ProfileLayout::for_params(&params, Resolution::DEFAULT)
 }
 
-/// Convergence (the test list), on the yan-row-a slice at the default resolution:
+/// Convergence (the test list), on the bobcat slice at the default resolution:
 ///
 /// - two independent seeds differ, as RMS(difference)/RMS(profile) over the whole table, by
 ///   no more than 0.25 (C^N, C^M) at 4 000 photons per C^N cell / 8 000 per C^M row
@@ -732,7 +732,7 @@ fn yan_row_a_layout() -> ProfileLayout {
 ///   ratio of two RMS over 6 912 entries) and 2 ± 0.25 for C^M (1 536 entries).
 ///
 /// The layout's absorption is set to 0 here, so that C^N holds counts and the counting-noise
-/// prediction is exact (the weights e^{−k·σ·ℓ} add ≈ 1 % to the noise of yan-row-a's C^N).
+/// prediction is exact (the weights e^{−k·σ·ℓ} add ≈ 1 % to the noise of bobcat's C^N).
 ///
 /// It prints the noise extrapolated to `PhotonBudget::DEFAULT` by 1/√N;
 /// `default_budget_noise` measures it.
@@ -741,7 +741,7 @@ fn convergence_between_seeds() {
     let t0 = Instant::now();
     let layout = ProfileLayout {
         absorption: 0.0,
-        ..yan_row_a_layout()
+        ..bobcat_layout()
     };
     let budget = |k: u32| PhotonBudget {
         per_cn_cell: 4000 * k,
@@ -789,14 +789,14 @@ fn convergence_between_seeds() {
     );
 }
 
-/// The noise at `PhotonBudget::DEFAULT` for the yan-row-a slice, measured with two seeds
+/// The noise at `PhotonBudget::DEFAULT` for the bobcat slice, measured with two seeds
 /// (≈ 9 s sequential; ignored in CI, run with `--ignored`), with the preset's medulla
 /// absorption in C^N. Asserts only that C^N's agrees with multinomial counting noise to 10 %
 /// (the survival weights add ≈ 1 %).
 #[test]
 #[ignore]
 fn default_budget_noise() {
-    let layout = yan_row_a_layout();
+    let layout = bobcat_layout();
     let t0 = Instant::now();
     let a = OwnedProfiles::generate(layout, PhotonBudget::DEFAULT, 0x5eed_0001);
     let gen = t0.elapsed().as_secs_f64();
@@ -804,7 +804,7 @@ fn default_budget_noise() {
     let d = [rel_rms_diff(&a.cn, &b.cn), rel_rms_diff(&a.cm, &b.cm)];
     let poisson = poisson_rel_rms_diff(&layout, PhotonBudget::DEFAULT.per_cn_cell, &a.cn, &b.cn);
     eprintln!(
-        "PhotonBudget::DEFAULT, yan-row-a: one sequential generation {gen:.2} s; RMS(seed difference)/RMS(profile): C^N {:.4} (counting noise {poisson:.4}), C^M {:.4}; per-seed noise = these/√2: {:.4}, {:.4}",
+        "PhotonBudget::DEFAULT, bobcat: one sequential generation {gen:.2} s; RMS(seed difference)/RMS(profile): C^N {:.4} (counting noise {poisson:.4}), C^M {:.4}; per-seed noise = these/√2: {:.4}, {:.4}",
         d[0],
         d[1],
         d[0] / 2f64.sqrt(),

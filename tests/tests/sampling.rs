@@ -24,13 +24,7 @@ use std::f32::consts::{FRAC_PI_2, PI};
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
-const PRESETS: [&str; 5] = [
-    "yan-row-a",
-    "yan-row-b",
-    "yan-row-c",
-    "human-hair",
-    "air-medulla",
-];
+const PRESETS: [&str; 5] = ["bobcat", "red-fox", "raccoon", "human-hair", "air-medulla"];
 
 fn model_for(input: &FurParamsInput) -> OwnedModel {
     let params = FurParams::new(input).unwrap();
@@ -279,7 +273,7 @@ fn furnace_with_importance_sampling() {
                     (m_is - rho).abs() <= 0.01 * rho,
                     "{name} {kind} theta_r {tr_deg}: IS {m_is} vs rho {rho}"
                 );
-                // Every preset, the glossiest (yan-row-c, β_n = 6.88°) included.
+                // Every preset, the glossiest (raccoon, β_n = 6.88°) included.
                 assert!(s_u >= 10.0 * s_is, "{name} {kind}: sd ratio {}", s_u / s_is);
             }
         }

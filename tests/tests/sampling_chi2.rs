@@ -91,33 +91,33 @@ fn baked(name: &str) {
 }
 
 #[test]
-fn chi2_analytic_yan_row_a() {
-    analytic("yan-row-a");
+fn chi2_analytic_bobcat() {
+    analytic("bobcat");
 }
 
 #[test]
-fn chi2_baked_yan_row_a() {
-    baked("yan-row-a");
+fn chi2_baked_bobcat() {
+    baked("bobcat");
 }
 
 #[test]
-fn chi2_analytic_yan_row_b() {
-    analytic("yan-row-b");
+fn chi2_analytic_red_fox() {
+    analytic("red-fox");
 }
 
 #[test]
-fn chi2_baked_yan_row_b() {
-    baked("yan-row-b");
+fn chi2_baked_red_fox() {
+    baked("red-fox");
 }
 
 #[test]
-fn chi2_analytic_yan_row_c() {
-    analytic("yan-row-c");
+fn chi2_analytic_raccoon() {
+    analytic("raccoon");
 }
 
 #[test]
-fn chi2_baked_yan_row_c() {
-    baked("yan-row-c");
+fn chi2_baked_raccoon() {
+    baked("raccoon");
 }
 
 #[test]
@@ -170,8 +170,8 @@ fn tilt_is_rejected<B: Bcsdf + Sync>(model: &B, theta_r_deg: f32) {
 
 #[test]
 fn chi2_rejects_a_two_percent_tilt() {
-    let m = model("yan-row-a");
-    let input = presets::find("yan-row-a").unwrap().input;
+    let m = model("bobcat");
+    let input = presets::find("bobcat").unwrap().input;
     let blob = tables::bake(&m, &input, LutResolution::DEFAULT);
     let lut = BakedBcsdf::from_bytes(&blob).unwrap();
     tilt_is_rejected(&lut, -20.0);

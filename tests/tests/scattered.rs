@@ -158,7 +158,7 @@ fn forward_scattering_peaks_where_model_says() {
 fn phi_integral_of_scattered_lobes_is_attenuation() {
     let mut worst = 0.0f64;
     let mut count = 0;
-    for name in ["air-medulla", "yan-row-a", "yan-row-c"] {
+    for name in ["air-medulla", "bobcat", "raccoon"] {
         let p = with_input(name, |i| i.sigma_ma = 0.0);
         let prof = OwnedProfiles::for_params(&p, Resolution::DEFAULT, SMALL_BUDGET, 0xa5);
         let model: FurBcsdf = FurBcsdf::new(p, prof.view()).unwrap();
@@ -202,7 +202,7 @@ fn phi_integral_of_scattered_lobes_is_attenuation() {
 
     // σ_ma > 0 at table nodes.
     let mut worst_ma = 0.0f64;
-    for name in ["yan-row-a", "air-medulla"] {
+    for name in ["bobcat", "air-medulla"] {
         let p = with_input(name, |i| i.sigma_ma = 0.8);
         let prof = OwnedProfiles::for_params(&p, Resolution::DEFAULT, SMALL_BUDGET, 0xa6);
         let model: FurBcsdf = FurBcsdf::new(p, prof.view()).unwrap();
@@ -266,7 +266,7 @@ fn phi_integral_of_scattered_lobes_is_attenuation() {
 #[test]
 fn m_s_integrates_to_mean_exit_transmittance() {
     let mut worst = 0.0f64;
-    for name in ["yan-row-a", "yan-row-b", "air-medulla"] {
+    for name in ["bobcat", "red-fox", "air-medulla"] {
         let p = params_of(name);
         let prof = OwnedProfiles::for_params(&p, Resolution::DEFAULT, SMALL_BUDGET, 0xb7);
         let view = prof.view();
@@ -325,7 +325,7 @@ fn index_matched_model_has_the_five_2017_lobes() {
         &[Lobe::TttRttTs],
     ];
     let mut rng = SplitMix64(0x2017_0005);
-    for name in ["yan-row-a", "yan-row-b", "yan-row-c", "air-medulla"] {
+    for name in ["bobcat", "red-fox", "raccoon", "air-medulla"] {
         let p = params_of(name);
         let matched = p.eta_m() == p.eta_c();
         let prof = OwnedProfiles::for_params(&p, Resolution::DEFAULT, SMALL_BUDGET, 0xc8);
@@ -447,7 +447,7 @@ fn lossless() -> FurParams {
 
 #[test]
 fn rho_at_most_one_index_matched_presets() {
-    let sets: Vec<(String, FurParams)> = ["yan-row-a", "yan-row-b", "yan-row-c"]
+    let sets: Vec<(String, FurParams)> = ["bobcat", "red-fox", "raccoon"]
         .iter()
         .map(|n| (n.to_string(), params_of(n)))
         .collect();

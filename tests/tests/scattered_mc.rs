@@ -23,7 +23,7 @@
 //!   (the model's C^N walk weights each photon by its survival, docs/model.md §7), so nothing
 //!   is left but the noise: this comparison isolates bugs in the core from the model's
 //!   simplifications. (With the former mean-path rule exp(−σ_ma·κ·ℓ̄/cos θ_tm), the
-//!   exponential of the mean path instead of the mean of the exponential, yan-row-a sat
+//!   exponential of the mean path instead of the mean of the exponential, bobcat sat
 //!   0.7–0.9 % low, outside the band asserted now.)
 //!
 //! Metrics: `ratio` = model energy / MC energy (∫ over φ); `L1` = ∫ |n_mc/E_mc − n_model/E_model| dφ,
@@ -36,7 +36,7 @@
 //!
 //! Noise: the MC's standard errors are printed and asserted to be well below the
 //! tolerances. The model's own noise (profiles at 200k photons per C^N cell) was measured by regenerating the C^N tables with another seed: shape L1 between
-//! the two models 0.0022–0.0026 (yan-row-a, θ_r = 0°, 30°), total within 1e-5; the simplified
+//! the two models 0.0022–0.0026 (bobcat, θ_r = 0°, 30°), total within 1e-5; the simplified
 //! comparison sits at that floor. C^M only enters T (through ⟨F_t⟩), so it uses a smaller
 //! budget.
 //!
@@ -44,20 +44,20 @@
 //!
 //! | set, θ_r | simplified vs N^s | full vs N^s·T | full vs N^s |
 //! |---|---|---|---|
-//! | yan-row-a, 0° | 1.0003, L1 0.0022 | 1.077, L1 0.015 | 1.151, L1 0.014 |
-//! | yan-row-a, 30° | 1.0001, L1 0.0027 | 1.130, L1 0.014 | 1.209, L1 0.013 |
+//! | bobcat, 0° | 1.0003, L1 0.0022 | 1.077, L1 0.015 | 1.151, L1 0.014 |
+//! | bobcat, 30° | 1.0001, L1 0.0027 | 1.130, L1 0.014 | 1.209, L1 0.013 |
 //! | air-medulla, 0° | 0.9997, L1 0.0033 | 0.907, L1 0.056 | 1.043, L1 0.052 |
 //! | air-medulla, 30° | 0.9994, L1 0.0031 | 0.917, L1 0.063 | 1.060, L1 0.060 |
 //! | small-medulla, 0° | 1.0002, L1 0.0030 | 0.951, L1 0.014 | 1.021, L1 0.014 |
 //!
 //! The simplified comparison is at the noise floor (MC ≈ 0.002 + tables ≈ 0.0017 in L1) for
-//! every set, yan-row-a's σ_ma = 0.17 included. With the former mean-path rule
-//! exp(−σ_ma·κ·ℓ̄/cos θ_tm) yan-row-a gave 0.9929 and 0.9914 (L1 0.0037, 0.0051), a gap growing
+//! every set, bobcat's σ_ma = 0.17 included. With the former mean-path rule
+//! exp(−σ_ma·κ·ℓ̄/cos θ_tm) bobcat gave 0.9929 and 0.9914 (L1 0.0037, 0.0051), a gap growing
 //! as σ_ma² (0.9999, 0.9928, 0.9721, 0.8972 at σ_ma = 0, 0.17, 0.34, 0.68), ~1.5 % low toward
 //! φ = 0 (long back-scattering paths): the tolerance 0.005 on the ratio fails that rule.
 //!
 //! Where the full–model difference comes from (`attribution`, switching the report's
-//! simplifications off one at a time): yan-row-a (κ = 0.88) loses 12–17% of the energy on
+//! simplifications off one at a time): bobcat (κ = 0.88) loses 12–17% of the energy on
 //! the actual, oblique cortex chords and to cuticle reflections (12–16% of the leaving energy
 //! was reflected at the cuticle at least once — every exit with impact parameter above
 //! 1/η'_c ≈ 0.65 < κ is totally reflected — and went
@@ -127,14 +127,14 @@ struct Case {
 }
 
 fn cases() -> [Case; 3] {
-    let row_a = presets::find("yan-row-a").unwrap().input;
+    let row_a = presets::find("bobcat").unwrap().input;
     let mut air = presets::find("air-medulla").unwrap().input;
     // One grey channel (the MC tracks one); 0.35 ≈ the preset's green channel.
     air.pigment = Pigment::Absorption(Rgb::splat(0.35));
     [
         Case {
             // κ = 0.88, index-matched, σ_ma = 0.17.
-            name: "yan-row-a",
+            name: "bobcat",
             input: row_a,
             thetas_deg: &[0.0, 30.0],
             tol: Tolerances {
@@ -507,7 +507,7 @@ fn check_case(case: &Case) {
 }
 
 #[test]
-fn scattered_far_field_vs_mc_yan_row_a() {
+fn scattered_far_field_vs_mc_bobcat() {
     check_case(&cases()[0]);
 }
 

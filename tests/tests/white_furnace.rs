@@ -338,7 +338,7 @@ fn furnace_with_scattering_matches_prediction() {
         per_cm_row: 6000,
     };
     let mut worst = 0.0f64;
-    for name in ["yan-row-a", "air-medulla"] {
+    for name in ["bobcat", "air-medulla"] {
         let p = FurParams::new(&presets::find(name).unwrap().input).unwrap();
         let prof = OwnedProfiles::for_params(&p, Resolution::DEFAULT, budget, 0x77);
         let view = prof.view();

@@ -6,18 +6,18 @@ use std::path::PathBuf;
 const EXAMPLES: &str = "\
 Examples:
   viewer presets
-  viewer probe --preset yan-row-a --theta-i 30 --theta-r -20 --phi 45
-  viewer probe --preset yan-row-a --theta-i 30 --theta-r -20 --phi 45 --h 0.3
+  viewer probe --preset bobcat --theta-i 30 --theta-r -20 --phi 45
+  viewer probe --preset bobcat --theta-i 30 --theta-r -20 --phi 45 --h 0.3
   viewer probe --preset human-hair --set sigma_ca=0.2,0.3,0.6 --set kappa=0.4 \\
       --theta-i 10 --theta-r -10 --phi 180
-  printf '30 -20 45\\n30 -20 45 0.3\\n' | viewer probe --preset yan-row-a --stdin
+  printf '30 -20 45\\n30 -20 45 0.3\\n' | viewer probe --preset bobcat --stdin
   viewer probe --presets my-presets.toml --preset my-fur --theta-i 0 --theta-r 0 --phi 0
-  viewer probe --preset yan-row-b --no-cache --photons-scale 0.1 --theta-i 30 --theta-r -20 --phi 45
-  viewer probe --preset yan-row-a --theta-i 30 --theta-r -20 --phi 45 --pdf
-  viewer probe --lut luts/yan-row-a.exr --theta-i 30 --theta-r -20 --phi 45 --pdf
-  viewer sample --preset yan-row-a --theta-r -20 -n 1000 --seed 7
-  viewer sample --lut luts/yan-row-a.furlut --theta-r -20 -n 1000
-  viewer compare luts/yan-row-a.exr
+  viewer probe --preset red-fox --no-cache --photons-scale 0.1 --theta-i 30 --theta-r -20 --phi 45
+  viewer probe --preset bobcat --theta-i 30 --theta-r -20 --phi 45 --pdf
+  viewer probe --lut luts/bobcat.exr --theta-i 30 --theta-r -20 --phi 45 --pdf
+  viewer sample --preset bobcat --theta-r -20 -n 1000 --seed 7
+  viewer sample --lut luts/bobcat.furlut --theta-r -20 -n 1000
+  viewer compare luts/bobcat.exr
   viewer compare --all luts --budget 1%,0.5%,2%
 
 Bad input (unknown preset or key, out-of-range value, malformed angle or stdin line, missing
@@ -37,18 +37,18 @@ The scattered lobes need medulla profiles, generated once per parameter set (7-1
 cores) and cached (see --cache-dir); presets with sigma_ms = 0 or kappa = 0 need none.
 
 Examples:
-  viewer probe --preset yan-row-a --theta-i 30 --theta-r -20 --phi 45          (far field)
-  viewer probe --preset yan-row-a --theta-i 30 --theta-r -20 --phi 45 --h 0.3  (near field)
-  viewer probe --preset yan-row-b --set sigma_ca=0 --set eta_m=1.3 \\
+  viewer probe --preset bobcat --theta-i 30 --theta-r -20 --phi 45          (far field)
+  viewer probe --preset bobcat --theta-i 30 --theta-r -20 --phi 45 --h 0.3  (near field)
+  viewer probe --preset red-fox --set sigma_ca=0 --set eta_m=1.3 \\
       --theta-i 20 --theta-r -15 --phi 170
   printf '# theta_i theta_r phi [h]\\n30 -20 45\\n30 -20 45 0.3\\n' \\
-      | viewer probe --preset yan-row-a --stdin
-  viewer probe --preset yan-row-a --cache-dir /tmp/fur-cache --seed 2 \\
+      | viewer probe --preset bobcat --stdin
+  viewer probe --preset bobcat --cache-dir /tmp/fur-cache --seed 2 \\
       --theta-i 30 --theta-r -20 --phi 45
   viewer probe --preset human-hair --theta-i 30 --theta-r -20 --phi 45 --pdf
-  viewer probe --lut luts/yan-row-a.exr --theta-i 30 --theta-r -20 --phi 45
-  printf '30 -20 45\\n0 0 180\\n' | viewer probe --lut luts/yan-row-a.furlut --pdf --stdin
-  viewer probe --lut luts/yan-row-a.furlut --gpu --theta-i 30 --theta-r -20 --phi 45 --pdf
+  viewer probe --lut luts/bobcat.exr --theta-i 30 --theta-r -20 --phi 45
+  printf '30 -20 45\\n0 0 180\\n' | viewer probe --lut luts/bobcat.furlut --pdf --stdin
+  viewer probe --lut luts/bobcat.furlut --gpu --theta-i 30 --theta-r -20 --phi 45 --pdf
 
 A LUT (.exr or .furlut, told apart by content) holds the far field only, and --pdf is a
 far-field density: with --lut or --pdf, --h and stdin lines with h are errors.
@@ -112,9 +112,9 @@ The image is the same bits for any --threads.
 
 Examples:
   viewer render --scene ball --preset human-hair --spp 64 --out ball-hair
-  viewer render --scene ball --preset yan-row-c --evaluator baked --spp 64 --max-depth 32 \\
+  viewer render --scene ball --preset raccoon --evaluator baked --spp 64 --max-depth 32 \\
       --width 320 --height 240 --out ball-row-c
-  viewer render --scene ball --lut luts/yan-row-a.furlut --spp 16 --out ball-row-a
+  viewer render --scene ball --lut luts/bobcat.furlut --spp 16 --out ball-row-a
   viewer render --scene furnace --preset human-hair --set sigma_ca=0 --spp 32 --out furnace
   viewer render --scene patch --preset air-medulla --fibers 2000 --spp 8 --threads 2 --out patch
 
@@ -245,8 +245,8 @@ or the profiles cannot be made. --all reports every LUT first, then exits 2 if a
 be read, else 3 if any exceeded the budget.
 
 Examples:
-  viewer compare luts/yan-row-a.exr
-  viewer compare luts/yan-row-a.exr --out /tmp/row-a --budget 0.5%,0.5%,1%
+  viewer compare luts/bobcat.exr
+  viewer compare luts/bobcat.exr --out /tmp/row-a --budget 0.5%,0.5%,1%
   viewer compare luts/human-hair.exr --no-images
   viewer compare --all luts --cache-dir /tmp/fur-cache --threads 2";
 
@@ -432,9 +432,9 @@ the end says how many.
 
 Examples:
   viewer sample --preset human-hair --theta-r -20 -n 1000
-  viewer sample --preset yan-row-a --theta-r 30 -n 100000 --seed 7 > row-a-samples.txt
-  viewer sample --preset yan-row-b --set kappa=0.4 --profile-seed 2 --theta-r 0 -n 10
-  viewer sample --lut luts/yan-row-a.exr --theta-r 30 -n 100000
+  viewer sample --preset bobcat --theta-r 30 -n 100000 --seed 7 > row-a-samples.txt
+  viewer sample --preset red-fox --set kappa=0.4 --profile-seed 2 --theta-r 0 -n 10
+  viewer sample --lut luts/bobcat.exr --theta-r 30 -n 100000
 
 Bad input (N = 0, theta_r not finite or not inside (-90, 90), unknown preset or key, missing
 or corrupt LUT) prints one line starting with `error:` on stderr and exits with code 2.";

@@ -264,7 +264,7 @@ fn probe_prints_json_with_every_lobe_and_total_is_their_sum() {
     );
     // Every preset that scatters in the medulla shows it in at least one query; the one that
     // does not (human-hair: kappa = 0) never does.
-    for preset in ["yan-row-a", "yan-row-b", "yan-row-c", "air-medulla"] {
+    for preset in ["bobcat", "red-fox", "raccoon", "air-medulla"] {
         assert!(
             lit_scattered.contains(&preset),
             "{preset}: {lit_scattered:?}"
@@ -401,8 +401,8 @@ fn stdin_answers_each_line_in_order_like_single_probes() {
 
 #[test]
 fn malformed_stdin_line_is_reported_by_number_after_the_earlier_output() {
-    let args = ["probe", "--preset", "yan-row-a", "--stdin"];
-    let first = one_line(&ok(&probe_args("yan-row-a", &["30", "-20", "45"]), None)).to_string();
+    let args = ["probe", "--preset", "bobcat", "--stdin"];
+    let first = one_line(&ok(&probe_args("bobcat", &["30", "-20", "45"]), None)).to_string();
     let o = bad_input(
         &args,
         Some("30 -20 45\n30 oops 45\n10 10 10\n"),
@@ -434,10 +434,10 @@ fn bad_input_exits_2_with_one_error_line() {
     bad_input(
         &args,
         None,
-        &["no-such-fur", "yan-row-a", "human-hair", "air-medulla"],
+        &["no-such-fur", "bobcat", "human-hair", "air-medulla"],
     );
 
-    args = probe_args("yan-row-a", &["30", "-20", "45"]);
+    args = probe_args("bobcat", &["30", "-20", "45"]);
     let with = |extra: &[&'static str]| {
         let mut a = args.clone();
         a.extend_from_slice(extra);
@@ -456,22 +456,22 @@ fn bad_input_exits_2_with_one_error_line() {
     bad_input(&with(&["--set", "kappa=abc"]), None, &["kappa", "abc"]);
     bad_input(&with(&["--set", "sigma_ca=1,2"]), None, &["sigma_ca"]);
     bad_input(
-        &probe_args("yan-row-a", &["91", "0", "0"]),
+        &probe_args("bobcat", &["91", "0", "0"]),
         None,
         &["theta_i = 91"],
     );
     bad_input(
-        &probe_args("yan-row-a", &["0", "-90.5", "0"]),
+        &probe_args("bobcat", &["0", "-90.5", "0"]),
         None,
         &["theta_r = -90.5"],
     );
-    bad_input(&probe_args("yan-row-a", &["0", "0", "nan"]), None, &["phi"]);
+    bad_input(&probe_args("bobcat", &["0", "0", "nan"]), None, &["phi"]);
 
     // Usage errors found by clap keep clap's format but still fail with code 2.
     for argv in [
-        probe_args("yan-row-a", &["abc", "0", "0"]),
-        vec!["probe", "--preset", "yan-row-a", "--theta-i", "0"],
-        vec!["probe", "--preset", "yan-row-a", "--stdin", "--h", "0.5"],
+        probe_args("bobcat", &["abc", "0", "0"]),
+        vec!["probe", "--preset", "bobcat", "--theta-i", "0"],
+        vec!["probe", "--preset", "bobcat", "--stdin", "--h", "0.5"],
         vec!["probe", "--theta-i", "0", "--theta-r", "0", "--phi", "0"],
         vec!["frobnicate"],
     ] {
@@ -598,9 +598,9 @@ fn user_preset_file_is_listed_probed_and_checked() {
     let a = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
     assert_eq!(got, expected(&m.model().eval_far_lobes(&a)));
     // The built-ins are not in a user file.
-    let mut args = probe_args("yan-row-a", &["30", "-20", "45"]);
+    let mut args = probe_args("bobcat", &["30", "-20", "45"]);
     args.extend(["--presets", &path]);
-    bad_input(&args, None, &["yan-row-a", "my-fur"]);
+    bad_input(&args, None, &["bobcat", "my-fur"]);
 
     std::fs::write(&path, text.replace("kappa = 0.6", "kappa = 1.6")).unwrap();
     let line9 = format!("{path}:9: preset \"my-fur\": invalid kappa = 1.6");
@@ -664,7 +664,7 @@ fn profiles_are_cached_per_parameter_set_and_reused() {
     let dir = temp_dir();
     let d = dir.path().to_str().unwrap();
     let angles = ["30", "-20", "45"];
-    let mut args = probe_args("yan-row-a", &angles);
+    let mut args = probe_args("bobcat", &angles);
     args.extend(["--cache-dir", d]);
     let first = ok(&args, None);
     let p = parse_probe(one_line(&first));
@@ -750,7 +750,7 @@ fn stale_or_corrupt_cache_is_noted_regenerated_and_rewritten() {
 
 #[test]
 fn no_cache_env_var_and_default_directories() {
-    let args = probe_args("yan-row-c", &["20", "-25", "180"]);
+    let args = probe_args("raccoon", &["20", "-25", "180"]);
     let reference = ok(&args, None);
 
     // --no-cache: same bits, nothing written anywhere.
@@ -813,7 +813,7 @@ fn no_cache_env_var_and_default_directories() {
 #[test]
 fn seed_threads_and_photon_scale() {
     let angles = ["30", "-20", "45"];
-    let args = probe_args("yan-row-b", &angles);
+    let args = probe_args("red-fox", &angles);
     let base = parse_probe(one_line(&ok(&args, None)));
     let mut seeded = args.clone();
     seeded.extend(["--seed", "2", "--threads", "1"]);
@@ -824,7 +824,7 @@ fn seed_threads_and_photon_scale() {
         two.lobes[..bcsdf_core::UNSCATTERED_COUNT]
     );
     assert_ne!(lobe(&base, "TttT_s"), lobe(&two, "TttT_s"));
-    let params = FurParams::new(&presets::find("yan-row-b").unwrap().input).unwrap();
+    let params = FurParams::new(&presets::find("red-fox").unwrap().input).unwrap();
     let a = Angles::from_degrees(30.0, -20.0, 45.0).unwrap();
     assert_eq!(two, expected(&build(params, 2).model().eval_far_lobes(&a)));
     // The thread count does not change the bits.
@@ -854,7 +854,7 @@ fn unwritable_cache_directory_is_an_error_naming_it() {
     let blocker = dir.path().join("a-file");
     std::fs::write(&blocker, "not a directory").unwrap();
     let bad = blocker.join("cache");
-    let mut args = probe_args("yan-row-a", &["30", "-20", "45"]);
+    let mut args = probe_args("bobcat", &["30", "-20", "45"]);
     args.extend(["--cache-dir", bad.to_str().unwrap()]);
     let o = viewer(&args, None);
     let err = stderr(&o);

@@ -355,7 +355,7 @@ fn all_compares_a_folder_with_one_summary() {
     let luts = tmp.path().join("luts");
     std::fs::create_dir(&luts).unwrap();
     write_lut(&luts, "human-hair", "human-hair", human_hair());
-    write_lut(&luts, "yan-row-a", "yan-row-a", &baked_blob("yan-row-a"));
+    write_lut(&luts, "bobcat", "bobcat", &baked_blob("bobcat"));
     // Not a LUT: ignored.
     std::fs::write(luts.join("notes.txt"), "not a LUT").unwrap();
 
@@ -363,18 +363,34 @@ fn all_compares_a_folder_with_one_summary() {
     assert!(err.is_empty(), "{err}");
     assert_eq!(out.matches("summary of 2 LUTs").count(), 1, "{out}");
     let summary = &out[out.find("summary of").unwrap()..];
-    for name in ["human-hair.exr", "yan-row-a.exr"] {
+    for name in ["human-hair.exr", "bobcat.exr"] {
         let row = summary
             .lines()
             .find(|l| l.trim_start().starts_with(name))
             .unwrap_or_else(|| panic!("no row for {name} in\n{summary}"));
         assert!(row.ends_with("PASS"), "{row}");
     }
-    // Sorted by name: human-hair's table comes first.
-    assert!(out.find("human-hair (").unwrap() < out.find("yan-row-a (").unwrap());
+    // Sorted by name: bobcat's table comes first.
+    assert!(out.find("bobcat (").unwrap() < out.find("human-hair (").unwrap());
+    // The gallery: one panel per LUT (half-size renders, 4 per row), one light, one exposure.
+    let gallery = luts.join("gallery.png");
+    assert!(
+        out.contains(&format!(
+            "gallery (every LUT's baked render, one light, one exposure): {}",
+            gallery.display()
+        )),
+        "{out}"
+    );
+    let decoder = png::Decoder::new(std::fs::File::open(&gallery).unwrap());
+    let info = decoder.read_info().unwrap();
+    assert_eq!(
+        (info.info().width, info.info().height),
+        (2 * 256, 192),
+        "two panels side by side"
+    );
 
     let index = std::fs::read_to_string(luts.join("index.html")).unwrap();
-    for stem in ["human-hair", "yan-row-a"] {
+    for stem in ["human-hair", "bobcat"] {
         assert!(index.contains(&format!("href=\"{stem}-compare/index.html\"")));
         let dir = luts.join(format!("{stem}-compare"));
         check_outputs(&dir);

@@ -529,7 +529,7 @@ mod tests {
     use bcsdf_core::presets;
 
     fn key(seed: u64) -> ProfileKey {
-        let params = FurParams::new(&presets::find("yan-row-a").unwrap().input).unwrap();
+        let params = FurParams::new(&presets::find("bobcat").unwrap().input).unwrap();
         ProfileKey {
             layout: ProfileLayout::for_params(&params, Resolution::DEFAULT),
             budget: PhotonBudget {

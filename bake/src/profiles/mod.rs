@@ -20,7 +20,7 @@
 //! use bake::profiles::{build_model, ProfileOptions};
 //! use bcsdf_core::{presets, Angles, FurParams};
 //!
-//! let params = FurParams::new(&presets::find("yan-row-a").unwrap().input).unwrap();
+//! let params = FurParams::new(&presets::find("bobcat").unwrap().input).unwrap();
 //! let opts = ProfileOptions {
 //!     cache_dir: bake::profiles::default_cache_dir(),
 //!     ..ProfileOptions::default()

@@ -285,7 +285,7 @@ mod tests {
 
     #[test]
     fn header_round_trips_through_a_sealed_blob() {
-        for preset in ["human-hair", "yan-row-a", "air-medulla"] {
+        for preset in ["human-hair", "bobcat", "air-medulla"] {
             let mut h = header(preset);
             let back = validate(&blob(&h)).unwrap();
             // Decoding writes the SameAs defaults out, as the encoder stores them.
@@ -300,7 +300,7 @@ mod tests {
 
     #[test]
     fn every_parameter_has_its_own_bytes_in_the_header() {
-        let base = header("yan-row-a");
+        let base = header("bobcat");
         let reference = base.encode();
         for spec in &SCHEMA {
             let mut h = base;
@@ -359,7 +359,7 @@ mod version_tests {
     /// formulas) is refused, and the message names both versions and says to re-bake.
     #[test]
     fn a_lut_of_the_previous_model_version_is_refused_with_a_rebake_message() {
-        let h = super::tests::header("yan-row-a");
+        let h = super::tests::header("bobcat");
         let mut bytes = super::tests::blob(&h);
         bytes[12..16].copy_from_slice(&(MODEL_VERSION - 1).to_le_bytes());
         seal(&mut bytes);

@@ -131,7 +131,7 @@ fn layouts_follow_the_parameters_and_are_validated() {
     assert_eq!((l.h_node(0), l.h_node(3)), (0.0, 0.75));
     assert!((l.theta_in_node(3) - l.theta_in_max).abs() < 1e-7);
     assert_eq!(l.validate(), Ok(()));
-    let other = FurParams::new(&presets::find("yan-row-a").unwrap().input).unwrap();
+    let other = FurParams::new(&presets::find("bobcat").unwrap().input).unwrap();
     assert!(!l.matches(&other));
     let bad = |f: fn(&mut ProfileLayout)| {
         let mut b = l;

@@ -11,7 +11,7 @@
 //!
 //! ```
 //! use bcsdf_core::params::{check_name, NameError};
-//! assert!(check_name("yan-row-a").is_ok());
+//! assert!(check_name("bobcat").is_ok());
 //! assert_eq!(check_name("../x"), Err(NameError::BadChar { ch: '/', at: 2 }));
 //! assert_eq!(check_name(".x"), Err(NameError::BadStart('.')));
 //! assert_eq!(check_name("Nul.v2"), Err(NameError::DeviceName("NUL")));
@@ -125,7 +125,7 @@ mod tests {
     fn accepts_the_allowed_alphabet() {
         for ok in [
             "a",
-            "yan-row-a",
+            "bobcat",
             "human_hair.v2",
             "0",
             "_x",

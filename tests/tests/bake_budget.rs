@@ -1,8 +1,8 @@
 //! The bake issue's error budget and determinism:
 //!
-//! - every built-in preset, baked at the default resolution from its full-budget profiles,
-//!   is within E1 ≤ 1 %, E_albedo ≤ 0.5 %, E_peak ≤ 2 % of the analytic model on the shared
-//!   metric set (`bake::metrics`);
+//! - every built-in preset (one test each; a test checks none is missing), baked at the
+//!   default resolution from its full-budget profiles, is within E1 ≤ 1 %, E_albedo ≤ 0.5 %,
+//!   E_peak ≤ 2 % of the analytic model on the shared metric set (`bake::metrics`);
 //! - the same metrics flag a LUT whose azimuthal table is off by 3 % (so the budget test can
 //!   fail);
 //! - the baked blob and the metrics are the same bits across runs and thread counts.
@@ -48,29 +48,40 @@ fn check_preset(name: &str) {
     assert!(exceeded.is_empty(), "{name}: {exceeded:?}");
 }
 
-#[test]
-fn budget_bobcat() {
-    check_preset("bobcat");
+/// One `#[test]` per built-in preset (so the harness runs them in parallel), and a check that
+/// the list below names every preset of `presets::PRESETS`.
+macro_rules! budget_tests {
+    ($($test:ident: $name:literal),* $(,)?) => {
+        $(
+            #[test]
+            fn $test() {
+                check_preset($name);
+            }
+        )*
+
+        #[test]
+        fn every_builtin_preset_has_a_budget_test() {
+            let tested = [$($name),*];
+            for p in presets::PRESETS.iter() {
+                assert!(tested.contains(&p.name), "{} has no budget test", p.name);
+            }
+        }
+    };
 }
 
-#[test]
-fn budget_red_fox() {
-    check_preset("red-fox");
-}
-
-#[test]
-fn budget_raccoon() {
-    check_preset("raccoon");
-}
-
-#[test]
-fn budget_human_hair() {
-    check_preset("human-hair");
-}
-
-#[test]
-fn budget_air_medulla() {
-    check_preset("air-medulla");
+budget_tests! {
+    budget_bobcat: "bobcat",
+    budget_cat: "cat",
+    budget_deer: "deer",
+    budget_dog: "dog",
+    budget_mouse: "mouse",
+    budget_rabbit: "rabbit",
+    budget_raccoon: "raccoon",
+    budget_red_fox: "red-fox",
+    budget_springbok: "springbok",
+    budget_human_fur: "human-fur",
+    budget_human_hair: "human-hair",
+    budget_air_medulla: "air-medulla",
 }
 
 fn small_budget() -> PhotonBudget {

@@ -7,29 +7,18 @@
 //!
 //! The bakes are the cheapest the CLI offers (tiny tables, few photons, no cache, no check).
 
+mod cli_support;
+
+use cli_support::{bake as command, text, CHEAP};
 use std::fs;
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::Output;
 
-const CHEAP: [&str; 12] = [
-    "--res-sum",
-    "64",
-    "--res-theta-r",
-    "8",
-    "--res-phi",
-    "16",
-    "--res-ms",
-    "12",
-    "--photons-scale",
-    "0.005",
-    "--no-cache",
-    "--no-check",
-];
-
+/// The cheapest bake of `args` into `out`, without the profile cache.
 fn bake(args: &[&str], out: &PathBuf) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_bake"))
-        .args(args)
+    command(args)
         .args(CHEAP)
+        .arg("--no-cache")
         .arg("--out")
         .arg(out)
         .output()
@@ -44,7 +33,7 @@ fn fresh_dir(tag: &str) -> PathBuf {
 }
 
 fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
+    text(&o.stderr)
 }
 
 #[test]

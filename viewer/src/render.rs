@@ -379,7 +379,7 @@ impl Renders {
             for x in 0..w {
                 for (dy, dx) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
                     let i = (2 * y + dy) * RENDER_W + 2 * x + dx;
-                    radiance[y * w + x] = radiance[y * w + x] + sum(&self.baked[i]) * 0.25;
+                    radiance[y * w + x] += sum(&self.baked[i]) * 0.25;
                     alpha[y * w + x] += 0.25 * self.alpha[i];
                 }
             }

@@ -4,6 +4,7 @@
 pub mod chi2;
 pub mod cross_section_mc;
 pub mod furnace;
+pub mod per_preset;
 pub mod profiles_ref;
 pub mod quadrature;
 pub mod tracer;

@@ -48,28 +48,8 @@ fn check_preset(name: &str) {
     assert!(exceeded.is_empty(), "{name}: {exceeded:?}");
 }
 
-/// One `#[test]` per built-in preset (so the harness runs them in parallel), and a check that
-/// the list below names every preset of `presets::PRESETS`.
-macro_rules! budget_tests {
-    ($($test:ident: $name:literal),* $(,)?) => {
-        $(
-            #[test]
-            fn $test() {
-                check_preset($name);
-            }
-        )*
-
-        #[test]
-        fn every_builtin_preset_has_a_budget_test() {
-            let tested = [$($name),*];
-            for p in presets::PRESETS.iter() {
-                assert!(tested.contains(&p.name), "{} has no budget test", p.name);
-            }
-        }
-    };
-}
-
-budget_tests! {
+fur_tests::per_preset_tests! {
+    check_preset, every_builtin_preset_has_a_budget_test;
     budget_bobcat: "bobcat",
     budget_cat: "cat",
     budget_deer: "deer",

@@ -1,21 +1,25 @@
-//! Baked versus analytic under multiple scattering (issue 21): the `ball` rendered with the
-//! analytic far field and with its baked LUT along the very same paths (both sampled by the
-//! baked sampler, `render::scatter::Guided`; same seed), so the two images differ by the
-//! evaluator only. Mean radiance within 0.5 %, every 16×16 tile within 2 %; the difference
-//! per bounce order is printed.
+//! Baked versus analytic under multiple scattering (issue 21): for every built-in preset, the
+//! `ball` rendered with the analytic far field and with its baked LUT along the very same paths
+//! (both sampled by the baked sampler, `render::scatter::Guided`; same seed), so the two images
+//! differ by the evaluator only. Mean radiance within 0.5 %, every 16×16 tile within 2 %; the
+//! difference per bounce order is printed.
+//!
+//! The profiles are the shipped full-budget ones, from the profile cache `bake_budget` fills
+//! (the same folder; the cache's per-entry lock makes sharing it safe), so in a whole test run
+//! they are generated once.
 
-use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bake::profiles::{build_model, ProfileOptions};
 use bcsdf_core::lut::LutResolution;
-use bcsdf_core::presets::{self, Preset, PRESETS};
-use bcsdf_core::{BakedBcsdf, FurParams, PhotonBudget};
+use bcsdf_core::presets;
+use bcsdf_core::{BakedBcsdf, FurParams};
 use render::scatter::{Guided, One};
 use render::{integrator, scenes, SceneKind, SceneOptions, Settings};
+use std::path::PathBuf;
 
-fn check(preset: &Preset) {
+fn check(name: &str) {
+    let preset = presets::find(name).unwrap();
     let opts = ProfileOptions {
-        // A tenth of the photons: the two evaluators share the profiles, so their noise
-        // does not enter the difference.
-        budget: scale_budget(PhotonBudget::DEFAULT, 0.1).unwrap(),
+        cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
         ..ProfileOptions::default()
     };
     let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
@@ -108,17 +112,18 @@ fn check(preset: &Preset) {
     );
 }
 
-#[test]
-fn baked_matches_analytic_on_the_ball_plain_hair() {
-    check(presets::find("human-hair").unwrap());
-}
-
-#[test]
-fn baked_matches_analytic_on_the_ball_medullated() {
-    check(
-        PRESETS
-            .iter()
-            .find(|p| p.input.kappa > 0.0 && p.input.sigma_ms > 0.0)
-            .unwrap(),
-    );
+fur_tests::per_preset_tests! {
+    check, every_builtin_preset_is_rendered_baked_and_analytic;
+    ball_bobcat: "bobcat",
+    ball_cat: "cat",
+    ball_deer: "deer",
+    ball_dog: "dog",
+    ball_mouse: "mouse",
+    ball_rabbit: "rabbit",
+    ball_raccoon: "raccoon",
+    ball_red_fox: "red-fox",
+    ball_springbok: "springbok",
+    ball_human_fur: "human-fur",
+    ball_human_hair: "human-hair",
+    ball_air_medulla: "air-medulla",
 }

@@ -1,25 +1,38 @@
 //! Ray queries against the fiber segments through the `bvh` crate's SAH BVH (docs/model.md §11).
 //!
-//! The crate builds the tree and walks it; what it walks with is our `SegmentQuery`: a ray
-//! with a t_max that shrinks as closer hits are found (a `Cell`), so subtrees beyond the
-//! closest hit so far are skipped.
+//! The crate builds the tree; the queries walk its node array (`Bvh::nodes`) front to back:
+//! at an inner node both children's boxes are clipped against the ray's current interval,
+//! the nearer child is visited first and a child whose box starts beyond the closest hit so
+//! far is never opened. A closest hit in a dense coat then opens a few dozen nodes instead of
+//! every node the ray's whole length crosses (the crate's own iterator has no order and no
+//! shrinking interval: 12 500 instructions per closest hit in `ball`, 80 % of a render).
 
 use crate::fiber::{FiberSegment, SegmentHit};
 use bvh::aabb::{Aabb, IntersectsAabb};
-use bvh::bvh::Bvh;
+use bvh::bvh::{Bvh, BvhNode};
 use core::cell::Cell;
 use nalgebra::Vector3;
 
 /// A ray segment (origin, unit direction, t in [0, t_max]) as a BVH query.
 struct SegmentQuery {
-    origin: Vector3<f32>,
-    inv_dir: Vector3<f32>,
+    origin: [f32; 3],
+    inv_dir: [f32; 3],
     t_max: Cell<f32>,
 }
 
-impl IntersectsAabb<f32, 3> for SegmentQuery {
-    /// The slab test: the ray's t-interval inside each axis' slab, intersected.
-    fn intersects_aabb(&self, aabb: &Aabb<f32, 3>) -> bool {
+impl SegmentQuery {
+    fn new(origin: &Vector3<f32>, dir: &Vector3<f32>, t_max: f32) -> SegmentQuery {
+        SegmentQuery {
+            origin: [origin.x, origin.y, origin.z],
+            inv_dir: [1.0 / dir.x, 1.0 / dir.y, 1.0 / dir.z],
+            t_max: Cell::new(t_max),
+        }
+    }
+
+    /// The slab test: the ray's t-interval inside each axis' slab, intersected with
+    /// [0, t_max]; the interval's start if it is not empty.
+    #[inline]
+    fn entry(&self, aabb: &Aabb<f32, 3>) -> Option<f32> {
         let mut lo = 0.0f32;
         let mut hi = self.t_max.get();
         for k in 0..3 {
@@ -34,14 +47,35 @@ impl IntersectsAabb<f32, 3> for SegmentQuery {
                 hi = far;
             }
         }
-        lo <= hi
+        (lo <= hi).then_some(lo)
     }
+}
+
+impl IntersectsAabb<f32, 3> for SegmentQuery {
+    fn intersects_aabb(&self, aabb: &Aabb<f32, 3>) -> bool {
+        self.entry(aabb).is_some()
+    }
+}
+
+/// Nodes a front-to-back walk keeps pending at most: one per level of the tree. Deeper trees
+/// (never seen: a SAH tree over 10⁵ segments is about 40 levels deep) are walked with the
+/// crate's unordered iterator instead.
+const STACK: usize = 96;
+
+/// What a walk does at a leaf.
+enum Visit {
+    /// Go on (with the query's t_max possibly shrunk).
+    Continue,
+    /// Stop the walk.
+    Stop,
 }
 
 /// The fiber segments and their BVH.
 pub struct FiberAccel {
     segments: Vec<FiberSegment>,
     bvh: Bvh<f32, 3>,
+    /// Whether every root-to-leaf path fits the walk's fixed stack ([`STACK`]).
+    shallow: bool,
 }
 
 /// Which nearby hits to ignore: those on fiber `fiber` closer than `dist` (a ray leaving a
@@ -59,7 +93,12 @@ impl FiberAccel {
     #[must_use]
     pub fn new(mut segments: Vec<FiberSegment>) -> FiberAccel {
         let bvh = Bvh::build(&mut segments);
-        FiberAccel { segments, bvh }
+        let shallow = depth(&bvh) < STACK;
+        FiberAccel {
+            segments,
+            bvh,
+            shallow,
+        }
     }
 
     /// The segments (in build order).
@@ -82,21 +121,17 @@ impl FiberAccel {
         if self.segments.is_empty() {
             return None;
         }
-        let query = SegmentQuery {
-            origin: *origin,
-            inv_dir: dir.map(|x| 1.0 / x),
-            t_max: Cell::new(t_max),
-        };
+        let query = SegmentQuery::new(origin, dir, t_max);
         let mut best = None;
-        for seg in self.bvh.traverse_iterator(&query, &self.segments) {
+        self.walk(&query, |seg| {
             if let Some(hit) = seg.intersect(origin, dir, t_min, query.t_max.get()) {
-                if skip.fiber == Some(seg.fiber) && hit.t < skip.dist {
-                    continue;
+                if !(skip.fiber == Some(seg.fiber) && hit.t < skip.dist) {
+                    best = Some((seg, hit));
+                    query.t_max.set(hit.t);
                 }
-                best = Some((seg, hit));
-                query.t_max.set(hit.t);
             }
-        }
+            Visit::Continue
+        });
         best
     }
 
@@ -113,16 +148,169 @@ impl FiberAccel {
         if self.segments.is_empty() {
             return false;
         }
-        let query = SegmentQuery {
-            origin: *origin,
-            inv_dir: dir.map(|x| 1.0 / x),
-            t_max: Cell::new(t_max),
-        };
-        self.bvh
-            .traverse_iterator(&query, &self.segments)
-            .any(|seg| match seg.intersect(origin, dir, t_min, t_max) {
-                Some(hit) => !(skip.fiber == Some(seg.fiber) && hit.t < skip.dist),
-                None => false,
-            })
+        let query = SegmentQuery::new(origin, dir, t_max);
+        let mut found = false;
+        self.walk(&query, |seg| {
+            match seg.intersect(origin, dir, t_min, t_max) {
+                Some(hit) if !(skip.fiber == Some(seg.fiber) && hit.t < skip.dist) => {
+                    found = true;
+                    Visit::Stop
+                }
+                _ => Visit::Continue,
+            }
+        });
+        found
+    }
+
+    /// Calls `leaf` for the segments whose leaves the ray reaches within the query's
+    /// (shrinking) t_max, nearer subtrees first; the order is fixed by the tree and the ray.
+    fn walk<'a>(&'a self, query: &SegmentQuery, mut leaf: impl FnMut(&'a FiberSegment) -> Visit) {
+        if !self.shallow {
+            for seg in self.bvh.traverse_iterator(query, &self.segments) {
+                if let Visit::Stop = leaf(seg) {
+                    return;
+                }
+            }
+            return;
+        }
+        let nodes = &self.bvh.nodes;
+        // Pending nodes and where the ray enters their box.
+        let mut stack = [(0usize, 0.0f32); STACK];
+        let mut len = 1;
+        while len > 0 {
+            len -= 1;
+            let (index, enter) = stack[len];
+            if enter > query.t_max.get() {
+                continue;
+            }
+            match &nodes[index] {
+                BvhNode::Leaf { shape_index, .. } => {
+                    if let Visit::Stop = leaf(&self.segments[*shape_index]) {
+                        return;
+                    }
+                }
+                BvhNode::Node {
+                    child_l_index,
+                    child_l_aabb,
+                    child_r_index,
+                    child_r_aabb,
+                    ..
+                } => {
+                    let l = query.entry(child_l_aabb).map(|t| (*child_l_index, t));
+                    let r = query.entry(child_r_aabb).map(|t| (*child_r_index, t));
+                    // Pushed far first, so the near child is popped next.
+                    let (first, second) = match (l, r) {
+                        (Some(a), Some(b)) if a.1 > b.1 => (Some(a), Some(b)),
+                        (a, b) => (b, a),
+                    };
+                    for child in [first, second].into_iter().flatten() {
+                        stack[len] = child;
+                        len += 1;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The number of nodes on the tree's longest root-to-leaf path.
+fn depth(bvh: &Bvh<f32, 3>) -> usize {
+    let mut deepest = 0;
+    let mut pending = vec![(0usize, 1usize)];
+    while let Some((index, d)) = pending.pop() {
+        deepest = deepest.max(d);
+        if let Some(BvhNode::Node {
+            child_l_index,
+            child_r_index,
+            ..
+        }) = bvh.nodes.get(index)
+        {
+            pending.push((*child_l_index, d + 1));
+            pending.push((*child_r_index, d + 1));
+        }
+    }
+    deepest
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use bcsdf_core::rng::Pcg32;
+
+    /// A random unit vector from two uniforms.
+    fn direction(rng: &mut Pcg32) -> Vector3<f32> {
+        let z = 2.0 * rng.uniform() - 1.0;
+        let phi = 2.0 * core::f32::consts::PI * rng.uniform();
+        let r = (1.0 - z * z).max(0.0).sqrt();
+        Vector3::new(r * phi.cos(), r * phi.sin(), z)
+    }
+
+    /// 3000 short segments in 200 fibers, scattered in a unit box: a small coat.
+    fn coat(rng: &mut Pcg32) -> Vec<FiberSegment> {
+        let mut segments = Vec::new();
+        for fiber in 0..200u32 {
+            let mut p = Vector3::new(rng.uniform(), rng.uniform(), rng.uniform());
+            for _ in 0..15 {
+                let q = p + direction(rng) * 0.05;
+                segments.push(FiberSegment {
+                    p0: p,
+                    p1: q,
+                    r0: 0.01,
+                    r1: 0.008,
+                    fiber,
+                    node: 0,
+                });
+                p = q;
+            }
+        }
+        segments
+    }
+
+    /// The front-to-back walk finds what testing every segment finds: the same closest t
+    /// (a different segment only on an exact tie) and the same answer to "any hit".
+    #[test]
+    fn ordered_walk_agrees_with_testing_every_segment() {
+        let mut rng = Pcg32::new(7, 11);
+        let segments = coat(&mut rng);
+        let accel = FiberAccel::new(segments.clone());
+        assert!(accel.shallow, "a 3000-segment tree fits the walk's stack");
+        let (mut hits, mut misses) = (0, 0);
+        for i in 0..4000 {
+            let origin = Vector3::new(
+                1.4 * rng.uniform() - 0.2,
+                1.4 * rng.uniform() - 0.2,
+                1.4 * rng.uniform() - 0.2,
+            );
+            let dir = direction(&mut rng);
+            let t_max = if i % 2 == 0 { f32::INFINITY } else { 0.3 };
+            let skip = Skip {
+                fiber: (i % 3 == 0).then_some(i % 200),
+                dist: 0.05,
+            };
+            let brute = segments
+                .iter()
+                .filter_map(|s| {
+                    let hit = s.intersect(&origin, &dir, 1e-4, t_max)?;
+                    (!(skip.fiber == Some(s.fiber) && hit.t < skip.dist)).then_some(hit.t)
+                })
+                .fold(f32::INFINITY, f32::min);
+            let found = accel.closest(&origin, &dir, 1e-4, t_max, skip);
+            match found {
+                Some((_, hit)) => {
+                    hits += 1;
+                    assert_eq!(hit.t, brute, "ray {i}: closest t");
+                }
+                None => {
+                    misses += 1;
+                    assert!(brute.is_infinite(), "ray {i}: missed a hit at {brute}");
+                }
+            }
+            assert_eq!(
+                accel.any(&origin, &dir, 1e-4, t_max, skip),
+                brute.is_finite(),
+                "ray {i}: any"
+            );
+        }
+        assert!(hits > 500 && misses > 500, "{hits} hits, {misses} misses");
     }
 }

@@ -347,7 +347,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
 
     /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and
     /// M^s·N^s with M^s = (1 − |φ|/π)·back + (|φ|/π)·front, each over cos²θ_i.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn assemble(l: &Lookups) -> Families {
         let [back, front] = l.ms;
         let ms = back + l.front * (front - back);
@@ -360,21 +360,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         Families::from_array(out)
     }
 
-    /// [`Self::assemble`] followed by [`Families::total`], without forming the families:
-    /// the same products, summed in the same order (from zero, R, TT, TRT, then the
-    /// scattered family), so the same bits.
+    /// S, all families summed: [`Self::assemble`] followed by [`Families::total`] (inlined,
+    /// so the families are not stored; the batch path's per-query sum).
     #[inline(always)]
     pub(crate) fn total(l: &Lookups) -> Rgb {
-        let [back, front] = l.ms;
-        let ms = back + l.front * (front - back);
-        let weight = [l.m[0], l.m[1], l.m[2], ms].map(|m| m * l.inv_cos2);
-        let mut total = [0.0f32; 3];
-        for (f, w) in weight.iter().enumerate() {
-            for (c, t) in total.iter_mut().enumerate() {
-                *t += l.n[3 * f + c] * w;
-            }
-        }
-        Rgb(total)
+        Self::assemble(l).total()
     }
 
     /// Far-field S(ω_i, ω_r) per lobe family, from the tables (docs/model.md §8).
@@ -406,8 +396,8 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         wr: Vec3,
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
-        let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
-        let p = self.place(ti, tr, abs_phi);
+        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        let p = self.place(ti, tr, phi.abs());
         Ok(Self::assemble(&self.gather_with(token, &p)))
     }
 
@@ -425,7 +415,8 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     ///
     /// The angles come from a branch-free polynomial conversion (within about 3e-7 rad of
     /// [`Angles::from_directions`], docs/lut.md), so the result can differ from
-    /// `eval_far(&Angles::from_directions(..)?)` in the last bits.
+    /// `eval_far(&Angles::from_directions(..)?)` in the last bits; it equals
+    /// `eval_far(&self.angles_from_dirs(..)?)` bit for bit.
     #[inline]
     pub fn eval_far_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
         self.try_eval_far_dirs(wi, wr, tangent)
@@ -445,8 +436,24 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
             return unsafe { self.eval_dirs_avx2(token, wi, wr, tangent) };
         }
-        let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
-        Ok(Self::assemble(&self.gather(&self.place(ti, tr, abs_phi))))
+        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        Ok(Self::assemble(&self.gather(&self.place(ti, tr, phi.abs()))))
+    }
+
+    /// The baked evaluator's one direction-to-angle conversion (docs/model.md §1), behind
+    /// [`Bcsdf::angles_from_dirs`](crate::Bcsdf::angles_from_dirs) and so behind every
+    /// `*_dirs` method: the branch-free polynomials of [`BakedBcsdf::eval_far_dirs`] (within
+    /// about 3e-7 rad of [`Angles::from_directions`]), which the WGSL evaluator shares.
+    /// `eval_far_dirs` evaluates exactly these angles.
+    #[inline]
+    pub fn angles_from_dirs(
+        &self,
+        wi: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+    ) -> Result<Angles, AngleError> {
+        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        Angles::new(ti, tr, phi)
     }
 }
 

@@ -21,7 +21,7 @@
 use super::{choose, invert_linear, linear_mass, unit};
 use crate::baked::{Axis, BakedBcsdf, Lookups};
 use crate::bcsdf::{finish, solid_angle_pdf, Bcsdf, Sample, SampledDirection};
-use crate::frame::{Angles, Vec3};
+use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
 use crate::lut::cdf::Density;
 use crate::math::{cos_within_half_pi, Math, PI};
@@ -300,8 +300,15 @@ impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
         self.eval_far(angles)
     }
 
-    /// [`BakedBcsdf::eval_far_dirs`]: the polynomial direction conversion (within about
+    /// [`BakedBcsdf::angles_from_dirs`]: the polynomial direction conversion (within about
     /// 3e-7 rad of [`Angles::from_directions`]), which the WGSL evaluator shares.
+    #[inline]
+    fn angles_from_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Result<Angles, AngleError> {
+        BakedBcsdf::angles_from_dirs(self, wi, wr, tangent)
+    }
+
+    /// [`BakedBcsdf::eval_far_dirs`]: the same angles as [`BakedBcsdf::angles_from_dirs`],
+    /// on the AVX2 + F16C kernel where the CPU has it.
     #[inline]
     fn eval_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
         self.eval_far_dirs(wi, wr, tangent)

@@ -142,4 +142,5 @@ pub use params::{
 };
 pub use pigment::{Pigment, EUMELANIN_SIGMA_A, PHEOMELANIN_SIGMA_A};
 pub use presets::Preset;
+pub use sampling::baked::BakedView;
 pub use spectrum::Rgb;

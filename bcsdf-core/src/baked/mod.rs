@@ -338,11 +338,25 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// The table lookups of one query.
+    /// The table lookups of one query (the samplers' pdf): with the AVX2 + F16C table-`N`
+    /// kernel where the CPU has it (the same bits either way).
     #[inline]
     pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
-        let p = self.place(angles.theta_i(), angles.theta_r(), angles.phi().abs());
-        self.gather(&p)
+        let (ti, tr, abs_phi) = (angles.theta_i(), angles.theta_r(), angles.phi().abs());
+        #[cfg(target_arch = "x86_64")]
+        if let Isa::Avx2F16c(token) = self.kernel {
+            // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
+            return unsafe { self.lookups_avx2(token, ti, tr, abs_phi) };
+        }
+        self.gather(&self.place(ti, tr, abs_phi))
+    }
+
+    /// [`BakedBcsdf::lookups`] compiled for AVX2 and F16C (`token` proves the CPU has them).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx,avx2,f16c")]
+    fn lookups_avx2(&self, token: texels::Avx2F16c, ti: f32, tr: f32, abs_phi: f32) -> Lookups {
+        let p = self.place(ti, tr, abs_phi);
+        self.gather_with(token, &p)
     }
 
     /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and

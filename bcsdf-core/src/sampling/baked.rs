@@ -20,11 +20,14 @@
 
 use super::{choose, invert_linear, linear_mass, unit};
 use crate::baked::{Axis, BakedBcsdf, Lookups};
-use crate::bcsdf::{finish, solid_angle_pdf, Bcsdf, Sample, SampledDirection};
+use crate::bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection};
 use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
 use crate::lut::cdf::Density;
-use crate::math::{cos_within_half_pi, Math, PI};
+use crate::math::{Math, PI};
+pub use view::BakedView;
+
+mod view;
 
 /// Two adjacent rows of one density blended with weights (1 − w, w): itself a piecewise-
 /// linear function on the rows' nodes, with prefix sums blended the same way.
@@ -253,21 +256,15 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    #[inline(always)]
-    fn weights_total(&self, theta_r: f32) -> f32 {
-        let a = self.parts(theta_r).0;
-        a[0] + a[1] + a[2] + a[3] + a[4]
-    }
-
-    /// Draws (θ_i, φ) given θ_r from three uniform numbers (docs/model.md §10); also returns
-    /// the mixture's total weight W.
-    fn draw(&self, theta_r: f32, u: [f32; 3]) -> Option<(SampledDirection, f32)> {
-        if !(theta_r.is_finite() && theta_r.abs() <= PI / 2.0) {
-            return None;
-        }
-        let (a, m) = self.parts(theta_r);
+    /// Draws (θ_i, φ) given a valid θ_r and its [`BakedBcsdf::parts`] `(a, m)` from three
+    /// uniform numbers (docs/model.md §10).
+    fn draw(
+        &self,
+        theta_r: f32,
+        (a, m): ([f32; 5], [(f32, f32); 3]),
+        u: [f32; 3],
+    ) -> Option<SampledDirection> {
         let (c, u0) = choose(&a, u[0])?;
-        let total_weight = a[0] + a[1] + a[2] + a[3] + a[4];
         let negative = u0 < 0.5;
         let theta_i = if c < 3 {
             let rows = self.m_rows(c);
@@ -284,11 +281,10 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let abs_phi = rows.invert_between(0.0, rows.total(), u[2]).clamp(0.0, PI);
         let phi = if negative { -abs_phi } else { abs_phi };
         let angles = Angles::new(theta_i, theta_r, phi).ok()?;
-        let d = SampledDirection {
+        Some(SampledDirection {
             angles,
             family: LobeFamily::ALL[family],
-        };
-        Some((d, total_weight))
+        })
     }
 }
 
@@ -314,29 +310,25 @@ impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
         self.eval_far_dirs(wi, wr, tangent)
     }
 
+    /// [`BakedView::pdf`] at a view made for this call; [`BakedBcsdf::view`] keeps it for
+    /// several calls at one θ_r.
     fn pdf(&self, angles: &Angles) -> f32 {
-        let l = self.lookups(angles);
-        let w = self.weights_total(angles.theta_r());
-        Self::density(&l, w, cos_within_half_pi(angles.theta_i()))
+        self.view(angles.theta_r())
+            .map_or(0.0, |v| v.pdf_at(angles))
     }
 
     fn eval_with_pdf(&self, angles: &Angles) -> (Families, f32) {
-        let l = self.lookups(angles);
-        let w = self.weights_total(angles.theta_r());
-        let pdf = Self::density(&l, w, cos_within_half_pi(angles.theta_i()));
-        (Self::assemble(&l), pdf)
+        self.view(angles.theta_r())
+            .map_or((Families::ZERO, 0.0), |v| v.eval_with_pdf_at(angles))
     }
 
     fn sample_direction(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
-        self.draw(theta_r, u).map(|(d, _)| d)
+        self.view(theta_r)?.sample_direction(u)
     }
 
+    /// [`BakedView::sample`]: the mixture weights of the draw serve the density too.
     fn sample(&self, theta_r: f32, u: [f32; 3]) -> Option<Sample> {
-        // The mixture weights of the draw serve the density too.
-        let (d, total_weight) = self.draw(theta_r, u)?;
-        let l = self.lookups(&d.angles);
-        let pdf = Self::density(&l, total_weight, cos_within_half_pi(d.angles.theta_i()));
-        finish(d, Self::assemble(&l), pdf, None)
+        self.view(theta_r)?.sample(u)
     }
 }
 

@@ -83,7 +83,6 @@ impl<M: Math> BakedView<'_, '_, M> {
 
     /// S and the density of ω_i = (θ_i, φ) at this view, sharing the table lookups; the same
     /// bits as [`Bcsdf::eval_with_pdf`](crate::Bcsdf::eval_with_pdf). Zero for invalid angles.
-    #[must_use]
     pub fn eval_with_pdf(&self, theta_i: f32, phi: f32) -> (Families, f32) {
         match Angles::new(theta_i, self.theta_r, phi) {
             Ok(a) => self.eval_with_pdf_at(&a),

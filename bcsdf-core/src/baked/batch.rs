@@ -15,10 +15,12 @@
 //! [`Families::total`], so the results equal the scalar path's bit for bit
 //! (`tests/tests/baked_batch.rs` checks 10⁵ queries, NaN, ∞ and edge angles included).
 
+use super::dispatch::KernelOp;
 #[cfg(target_arch = "x86_64")]
 use super::texels::Avx2F16c;
-use super::texels::{Baseline, NKernel};
+use super::texels::NKernel;
 use super::{BakedBcsdf, Place};
+use crate::lut::Table;
 use crate::math::{wrap_angle, Math, PI};
 use crate::spectrum::Rgb;
 use core::fmt;
@@ -77,6 +79,18 @@ impl Isa {
             Kernel::Baseline => Some(Isa::Baseline),
             #[cfg(target_arch = "x86_64")]
             Kernel::Avx2F16c => Avx2F16c::detect().map(Isa::Avx2F16c),
+        }
+    }
+
+    /// The factor folded into table `N`'s weights for this kernel, from the table's
+    /// `unbias` (scale × 2^112): the baseline decodes halves × 2^−112 (`lut::f16_biased`)
+    /// and keeps it; F16C decodes true values, so 2^−112 comes off once here, at load,
+    /// instead of per query (a power-of-two rescaling: the same products bit for bit).
+    pub(crate) fn n_scale(self, unbias: f32) -> f32 {
+        match self {
+            Isa::Baseline => unbias,
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2F16c(_) => unbias * f32::from_bits((127 - 112) << 23),
         }
     }
 
@@ -145,15 +159,12 @@ impl<M: Math> BakedBcsdf<'_, M> {
                 output: n,
             });
         }
-        Ok(match self.kernel {
-            Isa::Baseline => self.eval_chunks(Baseline, theta_i, theta_r, phi, out),
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: `token` exists, so `Avx2F16c::detect` found AVX, AVX2 and F16C on this
-            // CPU and OS: the target features `eval_chunks_avx2` is compiled with.
-            Isa::Avx2F16c(token) => unsafe {
-                self.eval_chunks_avx2(token, theta_i, theta_r, phi, out)
-            },
-        })
+        Ok(self.dispatch(Batch {
+            theta_i,
+            theta_r,
+            phi,
+            out,
+        }))
     }
 
     /// The kernel the evaluator uses on this CPU.
@@ -166,24 +177,10 @@ impl<M: Math> BakedBcsdf<'_, M> {
     /// the same bits; this is for tests and benchmarks.
     #[must_use]
     pub fn with_kernel(mut self, kernel: Kernel) -> Option<Self> {
-        self.kernel = Isa::of(kernel)?;
+        let isa = Isa::of(kernel)?;
+        self.n_scale = isa.n_scale(self.unbias[Table::N as usize]);
+        self.kernel = isa;
         Some(self)
-    }
-
-    /// [`BakedBcsdf::eval_chunks`] compiled for AVX2 and F16C (the compiler vectorises pass 2
-    /// eight queries wide; table `N` is read with `vcvtph2ps`). Calling it takes the token
-    /// that proves the CPU has those features.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx,avx2,f16c")]
-    fn eval_chunks_avx2(
-        &self,
-        token: Avx2F16c,
-        theta_i: &[f32],
-        theta_r: &[f32],
-        phi: &[f32],
-        out: &mut [Rgb],
-    ) -> usize {
-        self.eval_chunks(token, theta_i, theta_r, phi, out)
     }
 
     /// Every chunk of equally long slices, table `N` read by `kernel`; returns the rejected
@@ -264,6 +261,22 @@ impl<M: Math> BakedBcsdf<'_, M> {
             };
         }
         rejected
+    }
+}
+
+/// [`BakedBcsdf::eval_far_batch`]'s work: equally long slices.
+struct Batch<'s> {
+    theta_i: &'s [f32],
+    theta_r: &'s [f32],
+    phi: &'s [f32],
+    out: &'s mut [Rgb],
+}
+
+impl<M: Math> KernelOp<M> for Batch<'_> {
+    type Output = usize;
+    #[inline(always)]
+    fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> usize {
+        lut.eval_chunks(kernel, self.theta_i, self.theta_r, self.phi, self.out)
     }
 }
 

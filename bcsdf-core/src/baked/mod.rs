@@ -11,9 +11,11 @@ use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
 use crate::lut::cdf::{Density, DensityLayout, Nodes};
 use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
-use texels::{corner_weights, m_linear, ms_bilinear, Baseline, NKernel};
+use dispatch::KernelOp;
+use texels::{corner_weights, m_linear, ms_bilinear, NKernel};
 
 mod batch;
+mod dispatch;
 mod simd;
 mod texels;
 
@@ -127,6 +129,10 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     m_start: usize,
     /// The instruction set of the evaluation ([`Kernel`]), with the proof of its features.
     kernel: Isa,
+    /// The factor [`BakedBcsdf::place`] folds into table `N`'s corner weights for `kernel`,
+    /// set with it (`Isa::n_scale`): the table scale × 2^112 for the baseline's biased
+    /// decode, the scale itself for F16C's true half values.
+    n_scale: f32,
     /// Where each sampled density lives ([`Density::index`] order).
     pub(crate) densities: [DensityLayout; 9],
     pub(crate) sum: Axis,
@@ -240,6 +246,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             blob: bytes,
             m_start: res.byte_range(Table::M).start,
             kernel: Isa::best(),
+            n_scale: Isa::best().n_scale(unbias[Table::N as usize]),
             densities: Density::ALL.map(|d| res.density_layout(d)),
             sum: Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
             theta_r: Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
@@ -295,7 +302,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let (row, wy) = self.theta_r.locate(tr.abs());
         let (col, wx) = self.phi.locate(abs_phi);
         let n = row * res.n_phi as usize + col;
-        let n_w = corner_weights(wy, wx, self.unbias[Table::N as usize]);
+        let n_w = corner_weights(wy, wx, self.n_scale);
         Place {
             m,
             m_w: [(1.0 - w) * km, w * km],
@@ -308,13 +315,8 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// The table reads of one query at `p`.
-    #[inline(always)]
-    pub(crate) fn gather(&self, p: &Place) -> Lookups {
-        self.gather_with(Baseline, p)
-    }
-
-    /// [`BakedBcsdf::gather`] with table `N` read by `kernel` (same bits).
+    /// The table reads of one query at `p` ([`BakedBcsdf::place`] for the same kernel),
+    /// table `N` read by `kernel`.
     #[inline(always)]
     pub(crate) fn gather_with<K: NKernel>(&self, kernel: K, p: &Place) -> Lookups {
         let res = &self.header.res;
@@ -338,25 +340,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// The table lookups of one query (the samplers' pdf): with the AVX2 + F16C table-`N`
-    /// kernel where the CPU has it (the same bits either way).
+    /// The table lookups of one query (the samplers' pdf), with the kernel chosen at load.
     #[inline]
     pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
         let (ti, tr, abs_phi) = (angles.theta_i(), angles.theta_r(), angles.phi().abs());
-        #[cfg(target_arch = "x86_64")]
-        if let Isa::Avx2F16c(token) = self.kernel {
-            // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
-            return unsafe { self.lookups_avx2(token, ti, tr, abs_phi) };
-        }
-        self.gather(&self.place(ti, tr, abs_phi))
-    }
-
-    /// [`BakedBcsdf::lookups`] compiled for AVX2 and F16C (`token` proves the CPU has them).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx,avx2,f16c")]
-    fn lookups_avx2(&self, token: texels::Avx2F16c, ti: f32, tr: f32, abs_phi: f32) -> Lookups {
-        let p = self.place(ti, tr, abs_phi);
-        self.gather_with(token, &p)
+        self.dispatch(LookupsAt(ti, tr, abs_phi))
     }
 
     /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and
@@ -387,40 +375,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         self.eval_at(angles.theta_i(), angles.theta_r(), angles.phi().abs())
     }
 
-    /// The families at validated θ_i, θ_r and |φ|: with the AVX2 + F16C table-`N` kernel
-    /// where the CPU has it (checked once, in `from_bytes`; the same bits either way).
+    /// The families at validated θ_i, θ_r and |φ|, with the kernel chosen at load (the
+    /// same bits with either).
     #[inline]
     fn eval_at(&self, ti: f32, tr: f32, abs_phi: f32) -> Families {
-        #[cfg(target_arch = "x86_64")]
-        if let Isa::Avx2F16c(token) = self.kernel {
-            // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
-            return unsafe { self.eval_at_avx2(token, ti, tr, abs_phi) };
-        }
-        Self::assemble(&self.gather(&self.place(ti, tr, abs_phi)))
-    }
-
-    /// [`BakedBcsdf::try_eval_far_dirs`] compiled for AVX2 and F16C (`token` proves the CPU
-    /// has them).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx,avx2,f16c")]
-    fn eval_dirs_avx2(
-        &self,
-        token: texels::Avx2F16c,
-        wi: Vec3,
-        wr: Vec3,
-        tangent: Vec3,
-    ) -> Result<Families, AngleError> {
-        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
-        let p = self.place(ti, tr, phi.abs());
-        Ok(Self::assemble(&self.gather_with(token, &p)))
-    }
-
-    /// [`BakedBcsdf::eval_at`] compiled for AVX2 and F16C (`token` proves the CPU has them).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx,avx2,f16c")]
-    fn eval_at_avx2(&self, token: texels::Avx2F16c, ti: f32, tr: f32, abs_phi: f32) -> Families {
-        let p = self.place(ti, tr, abs_phi);
-        Self::assemble(&self.gather_with(token, &p))
+        self.dispatch(EvalAt(ti, tr, abs_phi))
     }
 
     /// Far-field S from world-space directions: `wi` toward the light, `wr` toward the viewer,
@@ -445,13 +404,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         wr: Vec3,
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
-        #[cfg(target_arch = "x86_64")]
-        if let Isa::Avx2F16c(token) = self.kernel {
-            // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
-            return unsafe { self.eval_dirs_avx2(token, wi, wr, tangent) };
-        }
-        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
-        Ok(Self::assemble(&self.gather(&self.place(ti, tr, phi.abs()))))
+        self.dispatch(EvalDirs(wi, wr, tangent))
     }
 
     /// The baked evaluator's one direction-to-angle conversion (docs/model.md §1), behind
@@ -468,6 +421,43 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     ) -> Result<Angles, AngleError> {
         let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
         Angles::new(ti, tr, phi)
+    }
+}
+
+/// [`BakedBcsdf::eval_at`]'s work: θ_i, θ_r, |φ|.
+struct EvalAt(f32, f32, f32);
+
+impl<M: Math> KernelOp<M> for EvalAt {
+    type Output = Families;
+    #[inline(always)]
+    fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Families {
+        let EvalAt(ti, tr, abs_phi) = self;
+        BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &lut.place(ti, tr, abs_phi)))
+    }
+}
+
+/// [`BakedBcsdf::try_eval_far_dirs`]'s work: ω_i, ω_r, tangent.
+struct EvalDirs(Vec3, Vec3, Vec3);
+
+impl<M: Math> KernelOp<M> for EvalDirs {
+    type Output = Result<Families, AngleError>;
+    #[inline(always)]
+    fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Self::Output {
+        let EvalDirs(wi, wr, tangent) = self;
+        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        Ok(EvalAt(ti, tr, phi.abs()).run(lut, kernel))
+    }
+}
+
+/// [`BakedBcsdf::lookups`]' work: θ_i, θ_r, |φ|.
+struct LookupsAt(f32, f32, f32);
+
+impl<M: Math> KernelOp<M> for LookupsAt {
+    type Output = Lookups;
+    #[inline(always)]
+    fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Lookups {
+        let LookupsAt(ti, tr, abs_phi) = self;
+        lut.gather_with(kernel, &lut.place(ti, tr, abs_phi))
     }
 }
 

@@ -343,8 +343,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// The table lookups of one query (the samplers' pdf), with the kernel chosen at load.
     #[inline]
     pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
-        let (ti, tr, abs_phi) = (angles.theta_i(), angles.theta_r(), angles.phi().abs());
-        self.dispatch(LookupsAt(ti, tr, abs_phi))
+        self.dispatch(LookupsAt(angles))
     }
 
     /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and
@@ -369,17 +368,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         Self::assemble(l).total()
     }
 
-    /// Far-field S(ω_i, ω_r) per lobe family, from the tables (docs/model.md §8).
+    /// Far-field S(ω_i, ω_r) per lobe family, from the tables (docs/model.md §8), with the
+    /// kernel chosen at load (the same bits with either).
     #[inline]
     pub fn eval_far(&self, angles: &Angles) -> Families {
-        self.eval_at(angles.theta_i(), angles.theta_r(), angles.phi().abs())
-    }
-
-    /// The families at validated θ_i, θ_r and |φ|, with the kernel chosen at load (the
-    /// same bits with either).
-    #[inline]
-    fn eval_at(&self, ti: f32, tr: f32, abs_phi: f32) -> Families {
-        self.dispatch(EvalAt(ti, tr, abs_phi))
+        self.dispatch(EvalAt(angles))
     }
 
     /// Far-field S from world-space directions: `wi` toward the light, `wr` toward the viewer,
@@ -424,16 +417,31 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     }
 }
 
-/// [`BakedBcsdf::eval_at`]'s work: θ_i, θ_r, |φ|.
-struct EvalAt(f32, f32, f32);
+/// [`BakedBcsdf::eval_far`]'s work. It carries a reference to the angles, not θ_i, θ_r,
+/// |φ| by value: the dispatcher's AVX2 side is a separate function, the op reaches it in
+/// memory, and the caller's three 4-byte stores read back as one 8-byte load stalled store
+/// forwarding (it nearly doubled `eval_far`'s time, at the same instruction count).
+struct EvalAt<'s>(&'s Angles);
 
-impl<M: Math> KernelOp<M> for EvalAt {
+impl<M: Math> KernelOp<M> for EvalAt<'_> {
     type Output = Families;
     #[inline(always)]
     fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Families {
-        let EvalAt(ti, tr, abs_phi) = self;
-        BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &lut.place(ti, tr, abs_phi)))
+        let a = self.0;
+        families_at(lut, kernel, a.theta_i(), a.theta_r(), a.phi().abs())
     }
+}
+
+/// The families at validated θ_i, θ_r and |φ|, table `N` read by `kernel`.
+#[inline(always)]
+fn families_at<M: Math, K: NKernel>(
+    lut: &BakedBcsdf<'_, M>,
+    kernel: K,
+    ti: f32,
+    tr: f32,
+    abs_phi: f32,
+) -> Families {
+    BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &lut.place(ti, tr, abs_phi)))
 }
 
 /// [`BakedBcsdf::try_eval_far_dirs`]'s work: ω_i, ω_r, tangent.
@@ -445,19 +453,19 @@ impl<M: Math> KernelOp<M> for EvalDirs {
     fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Self::Output {
         let EvalDirs(wi, wr, tangent) = self;
         let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
-        Ok(EvalAt(ti, tr, phi.abs()).run(lut, kernel))
+        Ok(families_at(lut, kernel, ti, tr, phi.abs()))
     }
 }
 
-/// [`BakedBcsdf::lookups`]' work: θ_i, θ_r, |φ|.
-struct LookupsAt(f32, f32, f32);
+/// [`BakedBcsdf::lookups`]' work.
+struct LookupsAt<'s>(&'s Angles);
 
-impl<M: Math> KernelOp<M> for LookupsAt {
+impl<M: Math> KernelOp<M> for LookupsAt<'_> {
     type Output = Lookups;
     #[inline(always)]
     fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Lookups {
-        let LookupsAt(ti, tr, abs_phi) = self;
-        lut.gather_with(kernel, &lut.place(ti, tr, abs_phi))
+        let a = self.0;
+        lut.gather_with(kernel, &lut.place(a.theta_i(), a.theta_r(), a.phi().abs()))
     }
 }
 

@@ -20,7 +20,6 @@ use super::dispatch::KernelOp;
 use super::texels::Avx2F16c;
 use super::texels::NKernel;
 use super::{BakedBcsdf, Place};
-use crate::lut::Table;
 use crate::math::{wrap_angle, Math, PI};
 use crate::spectrum::Rgb;
 use core::fmt;
@@ -79,18 +78,6 @@ impl Isa {
             Kernel::Baseline => Some(Isa::Baseline),
             #[cfg(target_arch = "x86_64")]
             Kernel::Avx2F16c => Avx2F16c::detect().map(Isa::Avx2F16c),
-        }
-    }
-
-    /// The factor folded into table `N`'s weights for this kernel, from the table's
-    /// `unbias` (scale × 2^112): the baseline decodes halves × 2^−112 (`lut::f16_biased`)
-    /// and keeps it; F16C decodes true values, so 2^−112 comes off once here, at load,
-    /// instead of per query (a power-of-two rescaling: the same products bit for bit).
-    pub(crate) fn n_scale(self, unbias: f32) -> f32 {
-        match self {
-            Isa::Baseline => unbias,
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2F16c(_) => unbias * f32::from_bits((127 - 112) << 23),
         }
     }
 
@@ -177,9 +164,7 @@ impl<M: Math> BakedBcsdf<'_, M> {
     /// the same bits; this is for tests and benchmarks.
     #[must_use]
     pub fn with_kernel(mut self, kernel: Kernel) -> Option<Self> {
-        let isa = Isa::of(kernel)?;
-        self.n_scale = isa.n_scale(self.unbias[Table::N as usize]);
-        self.kernel = isa;
+        self.kernel = Isa::of(kernel)?;
         Some(self)
     }
 
@@ -250,7 +235,7 @@ impl<M: Math> BakedBcsdf<'_, M> {
         let mut places = Places::default();
         let [a, b, c] = &angles;
         for (k, ((&a, &b), &c)) in a.iter().zip(b).zip(c).enumerate() {
-            places.set(k, self.place(a, b, c));
+            places.set(k, self.place(kernel, a, b, c));
         }
         // Pass 3: texel reads and the family sum.
         for (k, (o, ok)) in out.iter_mut().zip(valid).enumerate() {

@@ -12,7 +12,7 @@ use crate::lobes::{Families, FAMILY_COUNT};
 use crate::lut::cdf::{Density, DensityLayout, Nodes};
 use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
 use dispatch::KernelOp;
-use texels::{corner_weights, m_linear, ms_bilinear, NKernel};
+use texels::{corner_weights, m_linear, ms_bilinear, Baseline, NKernel};
 
 mod batch;
 mod dispatch;
@@ -129,10 +129,11 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     m_start: usize,
     /// The instruction set of the evaluation ([`Kernel`]), with the proof of its features.
     kernel: Isa,
-    /// The factor [`BakedBcsdf::place`] folds into table `N`'s corner weights for `kernel`,
-    /// set with it (`Isa::n_scale`): the table scale × 2^112 for the baseline's biased
-    /// decode, the scale itself for F16C's true half values.
-    n_scale: f32,
+    /// Table `N`'s scale for a kernel that decodes true half values (F16C), computed at
+    /// load: the baseline decodes halves × 2^−112 and folds `unbias` (scale × 2^112) into the
+    /// weights; F16C's `vcvtph2ps` gives true values, so its weights carry the scale itself
+    /// ([`NKernel::TRUE_HALVES`]), a power-of-two rescaling: the same products bit for bit.
+    n_scale_true: f32,
     /// Where each sampled density lives ([`Density::index`] order).
     pub(crate) densities: [DensityLayout; 9],
     pub(crate) sum: Axis,
@@ -246,7 +247,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             blob: bytes,
             m_start: res.byte_range(Table::M).start,
             kernel: Isa::best(),
-            n_scale: Isa::best().n_scale(unbias[Table::N as usize]),
+            n_scale_true: unbias[Table::N as usize] * f32::from_bits((127 - 112) << 23),
             densities: Density::ALL.map(|d| res.density_layout(d)),
             sum: Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
             theta_r: Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
@@ -288,7 +289,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// arithmetic, no memory reads besides `self`: the batch evaluator runs it over many
     /// queries in one loop, which the compiler vectorises.
     #[inline(always)]
-    pub(crate) fn place(&self, ti: f32, tr: f32, abs_phi: f32) -> Place {
+    pub(crate) fn place<K: NKernel>(&self, _kernel: K, ti: f32, tr: f32, abs_phi: f32) -> Place {
         let res = &self.header.res;
         // M_g(θ_i + θ_r): linear.
         let (m, w) = self.sum.locate(ti + tr);
@@ -302,7 +303,12 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let (row, wy) = self.theta_r.locate(tr.abs());
         let (col, wx) = self.phi.locate(abs_phi);
         let n = row * res.n_phi as usize + col;
-        let n_w = corner_weights(wy, wx, self.n_scale);
+        let n_scale = if K::TRUE_HALVES {
+            self.n_scale_true
+        } else {
+            self.unbias[Table::N as usize]
+        };
+        let n_w = corner_weights(wy, wx, n_scale);
         Place {
             m,
             m_w: [(1.0 - w) * km, w * km],
@@ -340,10 +346,13 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// The table lookups of one query (the samplers' pdf), with the kernel chosen at load.
+    /// The table lookups of one query (the samplers' pdf), with the baseline kernel, inlined
+    /// into the sampler: through the AVX2 function (a call, the lookups returned in memory)
+    /// the pdf measured 10–20 % slower (docs/benchmarks.md, issue 22).
     #[inline]
     pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
-        self.dispatch(LookupsAt(angles))
+        let (ti, tr, abs_phi) = (angles.theta_i(), angles.theta_r(), angles.phi().abs());
+        self.gather_with(Baseline, &self.place(Baseline, ti, tr, abs_phi))
     }
 
     /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and
@@ -441,7 +450,7 @@ fn families_at<M: Math, K: NKernel>(
     tr: f32,
     abs_phi: f32,
 ) -> Families {
-    BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &lut.place(ti, tr, abs_phi)))
+    BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &lut.place(kernel, ti, tr, abs_phi)))
 }
 
 /// [`BakedBcsdf::try_eval_far_dirs`]'s work: ω_i, ω_r, tangent.
@@ -454,18 +463,6 @@ impl<M: Math> KernelOp<M> for EvalDirs {
         let EvalDirs(wi, wr, tangent) = self;
         let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
         Ok(families_at(lut, kernel, ti, tr, phi.abs()))
-    }
-}
-
-/// [`BakedBcsdf::lookups`]' work.
-struct LookupsAt<'s>(&'s Angles);
-
-impl<M: Math> KernelOp<M> for LookupsAt<'_> {
-    type Output = Lookups;
-    #[inline(always)]
-    fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Lookups {
-        let a = self.0;
-        lut.gather_with(kernel, &lut.place(a.theta_i(), a.theta_r(), a.phi().abs()))
     }
 }
 

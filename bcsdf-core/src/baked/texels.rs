@@ -18,6 +18,10 @@ use super::simd::F4;
 /// that needs CPU features is a token that only their detection constructs, so holding one
 /// is the proof that its instructions may run.
 pub(crate) trait NKernel: Copy {
+    /// Whether the kernel decodes true half values (F16C), so that the weights carry the
+    /// table scale itself, not scale × 2^112 (`BakedBcsdf::place`).
+    const TRUE_HALVES: bool;
+
     /// Table `N` bilinearly, as [`n_bilinear`].
     fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12];
 }
@@ -27,6 +31,7 @@ pub(crate) trait NKernel: Copy {
 pub(crate) struct Baseline;
 
 impl NKernel for Baseline {
+    const TRUE_HALVES: bool = false;
     #[inline(always)]
     fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
         n_bilinear(data, width, index, w)
@@ -109,7 +114,7 @@ pub(crate) fn ms_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) 
 
 /// Table `N` with AVX and F16C: `vcvtph2ps` converts eight halves per instruction (true
 /// values, so the weights `w` must not carry the 2^112 of the biased decode: the evaluator
-/// takes it off the table scale once, at load (`Isa::n_scale`), which keeps every product
+/// takes it off the table scale once, at load ([`NKernel::TRUE_HALVES`]), which keeps every product
 /// and sum bit for bit those of [`n_bilinear`]: a power-of-two rescaling, exact in the normal
 /// range the weights stay in), eight channels in a 256-bit register and four in a 128-bit
 /// one.
@@ -135,6 +140,7 @@ impl Avx2F16c {
 
 #[cfg(target_arch = "x86_64")]
 impl NKernel for Avx2F16c {
+    const TRUE_HALVES: bool = true;
     #[inline(always)]
     fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
         use core::arch::x86_64::{

@@ -47,6 +47,7 @@ pub struct BakedView<'l, 'a, M: Math> {
 impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// The sampler at view direction θ_r (radians), its θ_r-only work done once
     /// (docs/model.md §10); `None` unless θ_r is finite and within [−π/2, π/2].
+    #[inline]
     #[must_use]
     pub fn view(&self, theta_r: f32) -> Option<BakedView<'_, 'a, M>> {
         if !(theta_r.is_finite() && theta_r.abs() <= PI / 2.0) {
@@ -107,7 +108,7 @@ impl<M: Math> BakedView<'_, '_, M> {
     }
 
     /// [`BakedView::pdf`] of validated angles whose θ_r is the view's.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn pdf_at(&self, a: &Angles) -> f32 {
         let l = self.lut.lookups(a);
         BakedBcsdf::<M>::density(&l, self.total_weight, cos_within_half_pi(a.theta_i()))

@@ -348,7 +348,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
 
     /// The table lookups of one query (the samplers' pdf), with the baseline kernel, inlined
     /// into the sampler: through the AVX2 function (a call, the lookups returned in memory)
-    /// the pdf measured 10–20 % slower (docs/benchmarks.md, issue 22).
+    /// the pdf measured slower (docs/benchmarks.md, "Sampling and evaluation speed").
     #[inline]
     pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
         let (ti, tr, abs_phi) = (angles.theta_i(), angles.theta_r(), angles.phi().abs());

@@ -24,7 +24,8 @@ pub struct ResolvedParams {
     pub(super) g: f32,
 }
 
-/// One field of the LUT header's parameter block ([`ResolvedParams::fields`]).
+/// One field of the LUT header's parameter block ([`ResolvedParams::fields`]; docs/model.md
+/// §2, docs/lut.md "Header").
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum HeaderField {
     /// The colour, one record at σ_ca's position (it stands for σ_ca, eumelanin and
@@ -34,7 +35,8 @@ pub enum HeaderField {
     Scalar(ParamName, f32),
 }
 
-/// Number of fields of the parameter block: the 13 parameters, the three colour ones as one.
+/// Number of fields of the LUT header's parameter block ([`ResolvedParams::fields`], docs/model.md
+/// §2): the 13 parameters, the three colour ones as one.
 pub const HEADER_FIELDS: usize = 11;
 
 impl FurParamsInput {

@@ -7,6 +7,10 @@
 //! - `sample_pdf_baked/<preset>`: `sample` followed by `pdf` of the sampled direction (what a
 //!   path tracer with MIS calls, pbrt's Sample_f + Pdf);
 //! - `pdf_baked/<preset>`: `BakedBcsdf::pdf` alone;
+//! - `view_sample_pdf_baked/<preset>`: `BakedBcsdf::view(θ_r)`, then `sample` and the `pdf`
+//!   of another direction (a light's) at that view: one bounce of a path tracer with MIS;
+//! - `view_sample_baked/<preset>`: `view(θ_r)` then `sample`;
+//! - `view_pdf_baked/<preset>`: `pdf` of a view built once (the θ_r-only work excluded);
 //! - `sample_analytic/<preset>`: `FurBcsdf::sample` (the h integrals of eval and pdf in one
 //!   pass); `sample_direction_analytic/<preset>`: the direction alone, without eval or pdf.
 //!
@@ -61,6 +65,46 @@ fn bench(c: &mut Criterion) {
                 i += 1;
                 let s = baked.sample(black_box(tr), black_box(u));
                 black_box(s.map(|s| baked.pdf(&s.angles)))
+            })
+        });
+        // Through a per-view context (docs/model.md §10): built in every iteration, as a path
+        // tracer builds one per bounce, then a sample and the density of another direction
+        // at the same θ_r (a light's, for MIS).
+        let lights: Vec<(f32, f32)> = {
+            let mut stream = QueryStream::new();
+            (0..QUERY_COUNT)
+                .map(|_| {
+                    let a = stream.angles();
+                    (a.theta_i(), a.phi())
+                })
+                .collect()
+        };
+        let mut i = 0usize;
+        c.bench_function(&format!("view_sample_pdf_baked/{name}"), |b| {
+            b.iter(|| {
+                let (tr, u) = xs[i & 255];
+                let (ti, phi) = lights[i & 255];
+                i += 1;
+                let view = baked.view(black_box(tr)).unwrap();
+                black_box((view.sample(black_box(u)), view.pdf(ti, phi)))
+            })
+        });
+        let mut i = 0usize;
+        c.bench_function(&format!("view_sample_baked/{name}"), |b| {
+            b.iter(|| {
+                let (tr, u) = xs[i & 255];
+                i += 1;
+                let view = baked.view(black_box(tr)).unwrap();
+                black_box(view.sample(black_box(u)))
+            })
+        });
+        let view = baked.view(xs[0].0).unwrap();
+        let mut i = 0usize;
+        c.bench_function(&format!("view_pdf_baked/{name}"), |b| {
+            b.iter(|| {
+                let (ti, phi) = lights[i & 255];
+                i += 1;
+                black_box(view.pdf(black_box(ti), black_box(phi)))
             })
         });
         let mut i = 0usize;

@@ -30,6 +30,54 @@ fn main() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(2_000_000);
     let only = std::env::args().nth(2).unwrap_or_default();
+    // One kind of call only, for instruction counts (callgrind: the difference between two
+    // call counts): `sample`, `samplepdf` (sample, then the pdf of another direction at the
+    // same θ_r, as a path tracer with MIS asks), through the `Bcsdf` trait.
+    let lights: Vec<(f32, f32)> = (0..QUERY_COUNT)
+        .map(|_| {
+            let a = stream.angles();
+            (a.theta_i(), a.phi())
+        })
+        .collect();
+    if only == "sample" || only == "samplepdf" {
+        let mut acc = 0.0f32;
+        for i in 0..n {
+            let (tr, u) = xs[i & 255];
+            let (ti, phi) = lights[i & 255];
+            if let Some(s) = black_box(&lut).sample(black_box(tr), black_box(u)) {
+                acc += s.pdf;
+            }
+            if only == "samplepdf" {
+                if let Ok(a) = bcsdf_core::Angles::new(ti, tr, phi) {
+                    acc += black_box(&lut).pdf(black_box(&a));
+                }
+            }
+        }
+        println!("{only}: checksum {acc}");
+        return;
+    }
+    if only == "view-samplepdf" || only == "view-pdf" {
+        // The same through one `BakedBcsdf::view` per θ_r (built in the loop for
+        // `view-samplepdf`, as a path tracer does per bounce; built once for `view-pdf`).
+        let mut acc = 0.0f32;
+        let fixed = lut.view(xs[0].0).unwrap();
+        for i in 0..n {
+            let (tr, u) = xs[i & 255];
+            let (ti, phi) = lights[i & 255];
+            if only == "view-pdf" {
+                acc += black_box(&fixed).pdf(black_box(ti), black_box(phi));
+                continue;
+            }
+            if let Some(view) = black_box(&lut).view(black_box(tr)) {
+                if let Some(s) = view.sample(black_box(u)) {
+                    acc += s.pdf;
+                }
+                acc += view.pdf(black_box(ti), black_box(phi));
+            }
+        }
+        println!("{only}: checksum {acc}");
+        return;
+    }
     if only == "pdf" {
         let dirs: Vec<_> = xs
             .iter()

@@ -11,7 +11,7 @@
 //!   family it was drawn from and the weight S·cos θ_i / p_ω, the Monte Carlo estimate of
 //!   the reflected radiance for unit incident radiance from ω_i.
 
-use crate::frame::{Angles, Frame, Vec3};
+use crate::frame::{AngleError, Angles, Frame, Vec3};
 use crate::lobes::{Families, LobeFamily};
 use crate::math::Math;
 use crate::spectrum::Rgb;
@@ -124,33 +124,52 @@ pub trait Bcsdf {
         finish(d, value, pdf, None)
     }
 
+    /// The one direction-to-angle conversion of this evaluator (docs/model.md §1): θ_i, θ_r
+    /// and φ of world-space directions `wi` (toward the light), `wr` (toward the viewer) and
+    /// the fiber tangent (none needs to be unit length). [`Bcsdf::eval_dirs`],
+    /// [`Bcsdf::pdf_dirs`] and [`Bcsdf::sample_dirs`] all see the angles it gives, so the
+    /// value, the density and the sampler of the same vectors agree bit for bit on them.
+    ///
+    /// By default [`Angles::from_directions`] with [`Bcsdf::Math`]; the baked evaluator
+    /// uses its branch-free polynomials ([`crate::baked::BakedBcsdf::angles_from_dirs`]).
+    /// θ_r depends on `wr` and the tangent only.
+    fn angles_from_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Result<Angles, AngleError> {
+        Angles::from_directions::<Self::Math>(wi, wr, tangent)
+    }
+
     /// [`Bcsdf::eval`] from world-space directions `wi` (toward the light), `wr` (toward
-    /// the viewer) and the fiber tangent (none needs to be unit length); zero for invalid
-    /// directions.
+    /// the viewer) and the fiber tangent (none needs to be unit length), at the angles of
+    /// [`Bcsdf::angles_from_dirs`]; zero for invalid directions.
     fn eval_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
-        match Angles::from_directions::<Self::Math>(wi, wr, tangent) {
+        match self.angles_from_dirs(wi, wr, tangent) {
             Ok(a) => self.eval(&a),
             Err(_) => Families::ZERO,
         }
     }
 
-    /// [`Bcsdf::pdf`] from world-space directions; zero for invalid directions.
+    /// [`Bcsdf::pdf`] from world-space directions, at the angles of
+    /// [`Bcsdf::angles_from_dirs`]; zero for invalid directions.
     #[must_use]
     fn pdf_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> f32 {
-        match Angles::from_directions::<Self::Math>(wi, wr, tangent) {
+        match self.angles_from_dirs(wi, wr, tangent) {
             Ok(a) => self.pdf(&a),
             Err(_) => 0.0,
         }
     }
 
-    /// [`Bcsdf::sample`] from the world-space view direction `wr` and fiber tangent; the
-    /// sample's `wi` is a world-space unit vector. `None` for invalid directions.
+    /// [`Bcsdf::sample`] from the world-space view direction `wr` and fiber tangent, at the
+    /// θ_r of [`Bcsdf::angles_from_dirs`]; the sample's `wi` is a world-space unit vector
+    /// ([`Frame::to_world`]). `None` for invalid directions.
     #[must_use]
     fn sample_dirs(&self, wr: Vec3, tangent: Vec3, u: [f32; 3]) -> Option<Sample> {
+        // θ_r depends on ω_r and the tangent only: ω_r itself stands in for ω_i.
+        let theta_r = self.angles_from_dirs(wr, wr, tangent).ok()?.theta_r();
         let frame = Frame::from_view::<Self::Math>(wr, tangent)?;
-        let d = self.sample_direction(frame.theta_r(), u)?;
-        let (value, pdf) = self.eval_with_pdf(&d.angles);
-        finish(d, value, pdf, Some(frame.to_world(&d.angles)))
+        let s = self.sample(theta_r, u)?;
+        Some(Sample {
+            wi: Some(frame.to_world(&s.angles)),
+            ..s
+        })
     }
 }
 
@@ -187,6 +206,112 @@ pub(crate) fn finish(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::baked::BakedBcsdf;
+    use crate::math::Libm;
+    use crate::rng::Pcg32;
+    use crate::{presets, FurBcsdf, FurParams};
+    use core::cell::Cell;
+
+    /// A [`Bcsdf`] that forwards to `inner` and records the angles each entry point saw,
+    /// so that the trait's own `*_dirs` methods can be checked, not only an override.
+    struct Recorder<'b, B: Bcsdf> {
+        inner: &'b B,
+        eval: Cell<Option<Angles>>,
+        pdf: Cell<Option<Angles>>,
+        theta_r: Cell<Option<f32>>,
+    }
+
+    impl<B: Bcsdf> Bcsdf for Recorder<'_, B> {
+        type Math = B::Math;
+        fn angles_from_dirs(&self, wi: Vec3, wr: Vec3, t: Vec3) -> Result<Angles, AngleError> {
+            self.inner.angles_from_dirs(wi, wr, t)
+        }
+        fn eval(&self, angles: &Angles) -> Families {
+            self.eval.set(Some(*angles));
+            self.inner.eval(angles)
+        }
+        fn pdf(&self, angles: &Angles) -> f32 {
+            self.pdf.set(Some(*angles));
+            self.inner.pdf(angles)
+        }
+        fn sample_direction(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
+            self.theta_r.set(Some(theta_r));
+            self.inner.sample_direction(theta_r, u)
+        }
+    }
+
+    fn bits(a: &Angles) -> [u32; 3] {
+        [a.theta_i(), a.theta_r(), a.phi()].map(f32::to_bits)
+    }
+
+    fn family_bits(f: &Families) -> [[u32; 3]; 4] {
+        f.as_array().map(|c| c.0.map(f32::to_bits))
+    }
+
+    /// A direction with components in [−1, 1], scaled by up to 10³ (lengths do not matter).
+    fn random_vector(rng: &mut Pcg32) -> Vec3 {
+        let s = 1e-3 + 1e3 * rng.uniform() * rng.uniform();
+        [0, 1, 2].map(|_| s * (2.0 * rng.uniform() - 1.0))
+    }
+
+    /// `eval_dirs`, `pdf_dirs` and `sample_dirs` of `bcsdf` see the angles of its
+    /// `angles_from_dirs`, bit for bit: through the trait's own methods (recorded) and
+    /// through whatever `bcsdf` overrides (compared with the angle entry points).
+    fn check_one_conversion(bcsdf: &impl Bcsdf, queries: usize) {
+        let mut rng = Pcg32::new(22, 5);
+        let mut checked = 0;
+        for _ in 0..queries {
+            let (wi, wr, t) = (
+                random_vector(&mut rng),
+                random_vector(&mut rng),
+                random_vector(&mut rng),
+            );
+            let u = [rng.uniform(), rng.uniform(), rng.uniform()];
+            let Ok(a) = bcsdf.angles_from_dirs(wi, wr, t) else {
+                continue;
+            };
+            checked += 1;
+            let rec = Recorder {
+                inner: bcsdf,
+                eval: Cell::new(None),
+                pdf: Cell::new(None),
+                theta_r: Cell::new(None),
+            };
+            // Each call checked before the next (sampling evaluates too).
+            let _ = rec.eval_dirs(wi, wr, t);
+            assert_eq!(rec.eval.get().map(|e| bits(&e)), Some(bits(&a)));
+            let _ = rec.pdf_dirs(wi, wr, t);
+            assert_eq!(rec.pdf.get().map(|e| bits(&e)), Some(bits(&a)));
+            let _ = rec.sample_dirs(wr, t, u);
+            assert_eq!(
+                rec.theta_r.get().map(f32::to_bits),
+                Some(a.theta_r().to_bits())
+            );
+            // The implementation's own (possibly overridden) `*_dirs` methods.
+            let value = bcsdf.eval_dirs(wi, wr, t);
+            assert_eq!(family_bits(&value), family_bits(&bcsdf.eval(&a)), "{a:?}");
+            let pdf = bcsdf.pdf_dirs(wi, wr, t);
+            assert_eq!(pdf.to_bits(), bcsdf.pdf(&a).to_bits(), "{a:?}");
+            let s = bcsdf.sample_dirs(wr, t, u);
+            let plain = bcsdf.sample(a.theta_r(), u);
+            assert_eq!(s.map(|s| Sample { wi: None, ..s }), plain, "{a:?}");
+        }
+        assert!(checked * 10 >= queries * 9, "{checked} of {queries}");
+    }
+
+    #[test]
+    fn dirs_methods_share_one_conversion_baked() {
+        let b = crate::baked::tests::random();
+        let lut = BakedBcsdf::from_bytes(&b).unwrap();
+        check_one_conversion(&lut, 2000);
+    }
+
+    #[test]
+    fn dirs_methods_share_one_conversion_analytic() {
+        let params = FurParams::new(&presets::find("human-hair").unwrap().input).unwrap();
+        let hair: FurBcsdf<'static, Libm> = FurBcsdf::unscattered(params);
+        check_one_conversion(&hair, 40);
+    }
 
     fn direction(theta_i: f32) -> SampledDirection {
         SampledDirection {

@@ -165,7 +165,7 @@ impl Angles {
     }
 }
 
-/// θ_i, θ_r and |φ| of world-space directions, as [`Angles::from_directions`] defines them
+/// θ_i, θ_r and φ of world-space directions, as [`Angles::from_directions`] defines them
 /// (same validation and errors), computed for speed: with
 /// reciprocals of the three lengths, the branch-free polynomials [`asin_polynomial`] and
 /// [`atan2_polynomial`] instead of libm's asin and atan2, and φ from unnormalised vectors
@@ -177,7 +177,9 @@ impl Angles {
 ///
 /// Every intermediate is bounded by a product of at most two of the lengths, so nothing
 /// overflows where the lengths are finite. The angles are within about 3e-7 rad of the libm
-/// ones away from the poles (docs/lut.md). The baked evaluator's `eval_far_dirs` uses this;
+/// ones away from the poles (docs/lut.md); φ lies in [−π, π] (−π only where `Angles::new`
+/// wraps it to π). This is the baked evaluator's one direction conversion
+/// ([`crate::Bcsdf::angles_from_dirs`], used by `eval_dirs`, `pdf_dirs` and `sample_dirs`);
 /// its WGSL twin (`shaders/fur_bcsdf.wgsl`, `fur_eval_far_dirs`) does the same operations.
 #[inline]
 pub(crate) fn polynomial_angles<M: Math>(
@@ -201,7 +203,7 @@ pub(crate) fn polynomial_angles<M: Math>(
     let theta_r = asin_polynomial((b * (1.0 / nr)).clamp(-1.0, 1.0));
     let y = dot(un, cross(wi, wr));
     let x = dot(wi, wr) - a * b;
-    Ok([theta_i, theta_r, atan2_polynomial(y, x).abs()])
+    Ok([theta_i, theta_r, atan2_polynomial(y, x)])
 }
 
 /// The fiber frame (v, w, u) of one view direction (docs/model.md §1): u the unit tangent,
@@ -472,6 +474,7 @@ mod tests {
             let wi = frame.to_world(&a);
             let exact = Angles::from_directions::<Libm>(wi, wr, tangent).unwrap();
             let [ti, tr, phi] = polynomial_angles::<Libm>(wi, wr, tangent).unwrap();
+            let phi = phi.abs();
             assert!(close(ti, exact.theta_i(), 1e-6), "{a:?}");
             assert!(close(tr, exact.theta_r(), 1e-6), "{a:?}");
             if exact.theta_i().abs() < 1.5 {

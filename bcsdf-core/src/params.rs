@@ -14,8 +14,10 @@ use crate::spectrum::Rgb;
 use core::fmt;
 
 mod name;
+mod resolved;
 mod schema;
 pub use name::{check_name, NameError, DEVICE_NAMES, NAME_MAX_BYTES};
+pub use resolved::{HeaderField, ResolvedParams, HEADER_FIELDS};
 pub use schema::{Domain, ParamDefault, ParamSpec, ParamValue, SCHEMA};
 
 /// Name of one user-facing parameter (docs/model.md §2); its [`ParamSpec`] is
@@ -267,23 +269,6 @@ impl FurParamsInput {
     pub fn set(&mut self, name: ParamName, value: f32) {
         self.set_value(name, ParamValue::Scalar(value));
     }
-
-    /// The same parameters with every [`ParamDefault::SameAs`] default written out
-    /// (β_n = β_m, η_m = η_c when absent), as the LUT header stores them.
-    #[must_use]
-    pub fn resolved(&self) -> FurParamsInput {
-        let mut out = *self;
-        for spec in &SCHEMA {
-            if let ParamDefault::SameAs(source) = spec.default {
-                if out.value(spec.name).is_none() {
-                    if let Some(v) = out.value(source) {
-                        out.set_value(spec.name, v);
-                    }
-                }
-            }
-        }
-        out
-    }
 }
 
 /// Validated parameters of the double-cylinder model (docs/model.md §2), angles in radians.
@@ -305,6 +290,8 @@ pub struct FurParams {
 impl FurParams {
     /// Validates `input`; the first invalid parameter is reported.
     pub fn new(input: &FurParamsInput) -> Result<FurParams, ParamError> {
+        // The defaults (β_n = β_m, η_m = η_c) come from `resolve`, the one place they live.
+        let input = input.resolve();
         let eta_c = ParamName::EtaC.check(input.eta_c)?;
         let sigma_ca = match input.pigment {
             Pigment::Absorption(s) => {
@@ -323,8 +310,8 @@ impl FurParams {
             }
         };
         let beta_m_deg = ParamName::BetaMDeg.check(input.beta_m_deg)?;
-        let beta_n_deg = ParamName::BetaNDeg.check(input.beta_n_deg.unwrap_or(beta_m_deg))?;
-        let eta_m = ParamName::EtaM.check(input.eta_m.unwrap_or(eta_c))?;
+        let beta_n_deg = ParamName::BetaNDeg.check(input.beta_n_deg)?;
+        let eta_m = ParamName::EtaM.check(input.eta_m)?;
         Ok(FurParams {
             eta_c,
             sigma_ca,

@@ -265,6 +265,32 @@ enum fur_status fur_sample_far(const struct fur_lut *FUR_RESTRICT lut,
                                struct fur_sample *FUR_RESTRICT out);
 
 /**
+ * One bounce of a path tracer with multiple importance sampling in one call (docs/model.md
+ * section 10): importance-samples omega_i given theta_r into `*out` (as `fur_sample_far`)
+ * and writes into `*out_pdf` the density of another direction at the same view, (theta_i,
+ * theta_r, phi) (a light's, as `fur_pdf_far`). The work that depends on theta_r alone is
+ * done once for both. Bit for bit the results of `fur_sample_far` and `fur_pdf_far`.
+ *
+ * Returns `FUR_ERR_ANGLE` (nothing written) for an invalid theta_r, theta_i or phi, and
+ * `FUR_ERR_NO_SAMPLE` when nothing can be sampled (`*out_pdf` is still written; `*out` is
+ * not). `out` and `out_pdf` must not overlap each other, `*lut` or the LUT bytes
+ * (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to a
+ * writable `fur_sample`; `out_pdf` is NULL or points to a writable float.
+ */
+enum fur_status fur_sample_pdf_far(const struct fur_lut *FUR_RESTRICT lut,
+                                   float theta_r,
+                                   float u0,
+                                   float u1,
+                                   float u2,
+                                   float theta_i,
+                                   float phi,
+                                   struct fur_sample *FUR_RESTRICT out,
+                                   float *FUR_RESTRICT out_pdf);
+
+/**
  * Density per unit solid angle with which `fur_sample_far` draws omega_i given omega_r; 0
  * for invalid arguments (NULL, unopened or other-build `lut`, invalid angles).
  *

@@ -1,5 +1,6 @@
 //! The evaluation entry points of the C ABI: the far field from angles, per family, from
-//! vectors and in batches, importance sampling and its pdf (docs/model.md §8, §10).
+//! vectors and in batches, importance sampling and its pdf, and both at one view in one call
+//! (docs/model.md §8, §10).
 //!
 //! Every output buffer is checked against every other buffer the call reads or keeps a
 //! reference into (the inputs, the `fur_lut`, the LUT bytes): an overlap is refused with
@@ -8,7 +9,7 @@
 use crate::args::{check_ptr, disjoint, read3, write3, Region};
 use crate::handle::opened;
 use crate::{fur_family, fur_lut, fur_sample, fur_status};
-use bcsdf_core::{Angles, Bcsdf, Families, LobeFamily, Rgb};
+use bcsdf_core::{Angles, Bcsdf, Families, LobeFamily, Rgb, Sample};
 
 fn angles(theta_i: f32, theta_r: f32, phi: f32) -> Result<Angles, fur_status> {
     Angles::new(theta_i, theta_r, phi).map_err(|_| fur_status::FUR_ERR_ANGLE)
@@ -200,23 +201,77 @@ pub unsafe extern "C" fn fur_sample_far(
     let Some(s) = open.lut.sample(theta_r, [u0, u1, u2]) else {
         return fur_status::FUR_ERR_NO_SAMPLE;
     };
+    // SAFETY: non-NULL and aligned (checked); a writable fur_sample by the caller's
+    // contract.
+    unsafe { out.write(record(&s)) };
+    fur_status::FUR_OK
+}
+
+/// The C record of a sample.
+fn record(s: &Sample) -> fur_sample {
     let family = match s.family {
         LobeFamily::R => fur_family::FUR_FAMILY_R,
         LobeFamily::TT => fur_family::FUR_FAMILY_TT,
         LobeFamily::TRT => fur_family::FUR_FAMILY_TRT,
         LobeFamily::Scattered => fur_family::FUR_FAMILY_SCATTERED,
     };
-    // SAFETY: non-NULL and aligned (checked); a writable fur_sample by the caller's
-    // contract.
-    unsafe {
-        out.write(fur_sample {
-            theta_i: s.angles.theta_i(),
-            phi: s.angles.phi(),
-            pdf: s.pdf,
-            weight: s.weight.0,
-            family,
-        })
+    fur_sample {
+        theta_i: s.angles.theta_i(),
+        phi: s.angles.phi(),
+        pdf: s.pdf,
+        weight: s.weight.0,
+        family,
+    }
+}
+
+/// One bounce of a path tracer with multiple importance sampling in one call (docs/model.md
+/// section 10): importance-samples omega_i given theta_r into `*out` (as `fur_sample_far`)
+/// and writes into `*out_pdf` the density of another direction at the same view, (theta_i,
+/// theta_r, phi) (a light's, as `fur_pdf_far`). The work that depends on theta_r alone is
+/// done once for both. Bit for bit the results of `fur_sample_far` and `fur_pdf_far`.
+///
+/// Returns `FUR_ERR_ANGLE` (nothing written) for an invalid theta_r, theta_i or phi, and
+/// `FUR_ERR_NO_SAMPLE` when nothing can be sampled (`*out_pdf` is still written; `*out` is
+/// not). `out` and `out_pdf` must not overlap each other, `*lut` or the LUT bytes
+/// (`FUR_ERR_OVERLAP`).
+///
+/// # Safety
+/// `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to a
+/// writable `fur_sample`; `out_pdf` is NULL or points to a writable float.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)] // the C signature: three uniforms and two angles
+pub unsafe extern "C" fn fur_sample_pdf_far(
+    lut: *const fur_lut,
+    theta_r: f32,
+    u0: f32,
+    u1: f32,
+    u2: f32,
+    theta_i: f32,
+    phi: f32,
+    out: *mut fur_sample,
+    out_pdf: *mut f32,
+) -> fur_status {
+    // SAFETY: forwarded caller guarantee on `lut`.
+    let open = tri!(unsafe { opened(lut) });
+    tri!(check_ptr(out));
+    tri!(check_ptr(out_pdf));
+    tri!(disjoint(Region::of(out, 1), &open.regions));
+    tri!(disjoint(Region::of(out_pdf, 1), &open.regions));
+    tri!(disjoint(Region::of(out_pdf, 1), &[Region::of(out, 1)]));
+    let light = tri!(angles(theta_i, theta_r, phi));
+    let Some(view) = open.lut.view(theta_r) else {
+        return fur_status::FUR_ERR_ANGLE;
     };
+    let pdf = view.pdf(light.theta_i(), light.phi());
+    // SAFETY: non-NULL and aligned (checked); a writable float by the caller's contract,
+    // disjoint from every other region this call touches (checked).
+    unsafe { out_pdf.write(pdf) };
+    let Some(s) = view.sample([u0, u1, u2]) else {
+        return fur_status::FUR_ERR_NO_SAMPLE;
+    };
+    // SAFETY: non-NULL and aligned (checked); a writable fur_sample by the caller's
+    // contract, disjoint from `*out_pdf`, `*lut` and the LUT bytes (checked).
+    unsafe { out.write(record(&s)) };
     fur_status::FUR_OK
 }
 

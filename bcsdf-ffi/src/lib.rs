@@ -50,7 +50,7 @@ mod nostd;
 
 pub use eval::{
     fur_eval_far, fur_eval_far_batch, fur_eval_far_dirs, fur_eval_far_families, fur_pdf_far,
-    fur_sample_far,
+    fur_sample_far, fur_sample_pdf_far,
 };
 pub use handle::{fur_lut_close, fur_lut_open};
 pub use info::{fur_lut_format_version, fur_model_version, fur_status_str, fur_version};

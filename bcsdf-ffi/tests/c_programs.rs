@@ -141,6 +141,24 @@ fn expected(blob: &[u8]) -> Vec<String> {
             s.family as i32
         ));
     }
+    // fur_sample_pdf_far: the sample above and fur_pdf_far's density of the i-th query,
+    // bit for bit (from the trait's separate calls, not from a view).
+    for (i, tr) in TR.iter().enumerate() {
+        let u = [0.1 + 0.15 * i as f32, 0.9 - 0.1 * i as f32, 0.37];
+        let s = l.sample(*tr, u).unwrap();
+        let p = l.pdf(&Angles::new(TI[i], TR[i], PH[i]).unwrap());
+        out.push(format!(
+            "samplepdf {} {} {} {} {} {} {} {}",
+            hex(s.angles.theta_i()),
+            hex(s.angles.phi()),
+            hex(s.pdf),
+            hex(s.weight.0[0]),
+            hex(s.weight.0[1]),
+            hex(s.weight.0[2]),
+            s.family as i32,
+            hex(p)
+        ));
+    }
     out
 }
 
@@ -225,6 +243,17 @@ fn check_cpp_output(run: &Output, blob: &[u8]) {
         hex(s.angles.phi()),
         hex(s.pdf),
         s.family as i32
+    );
+    assert!(stdout.lines().any(|x| x == line), "{stdout}\nwanted {line}");
+    // fur_sample_pdf_far: the same sample and fur_pdf_far's density of (TI[0], 0.3, PH[0]).
+    let p = l.pdf(&Angles::new(TI[0], 0.3, PH[0]).unwrap());
+    let line = format!(
+        "samplepdf {} {} {} {} {}",
+        hex(s.angles.theta_i()),
+        hex(s.angles.phi()),
+        hex(s.pdf),
+        s.family as i32,
+        hex(p)
     );
     assert!(stdout.lines().any(|x| x == line), "{stdout}\nwanted {line}");
 }

@@ -15,9 +15,10 @@
 //! [`Families::total`], so the results equal the scalar path's bit for bit
 //! (`tests/tests/baked_batch.rs` checks 10⁵ queries, NaN, ∞ and edge angles included).
 
+use super::dispatch::KernelOp;
 #[cfg(target_arch = "x86_64")]
 use super::texels::Avx2F16c;
-use super::texels::{Baseline, NKernel};
+use super::texels::NKernel;
 use super::{BakedBcsdf, Place};
 use crate::math::{wrap_angle, Math, PI};
 use crate::spectrum::Rgb;
@@ -145,15 +146,12 @@ impl<M: Math> BakedBcsdf<'_, M> {
                 output: n,
             });
         }
-        Ok(match self.kernel {
-            Isa::Baseline => self.eval_chunks(Baseline, theta_i, theta_r, phi, out),
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: `token` exists, so `Avx2F16c::detect` found AVX, AVX2 and F16C on this
-            // CPU and OS: the target features `eval_chunks_avx2` is compiled with.
-            Isa::Avx2F16c(token) => unsafe {
-                self.eval_chunks_avx2(token, theta_i, theta_r, phi, out)
-            },
-        })
+        Ok(self.dispatch(Batch {
+            theta_i,
+            theta_r,
+            phi,
+            out,
+        }))
     }
 
     /// The kernel the evaluator uses on this CPU.
@@ -168,22 +166,6 @@ impl<M: Math> BakedBcsdf<'_, M> {
     pub fn with_kernel(mut self, kernel: Kernel) -> Option<Self> {
         self.kernel = Isa::of(kernel)?;
         Some(self)
-    }
-
-    /// [`BakedBcsdf::eval_chunks`] compiled for AVX2 and F16C (the compiler vectorises pass 2
-    /// eight queries wide; table `N` is read with `vcvtph2ps`). Calling it takes the token
-    /// that proves the CPU has those features.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx,avx2,f16c")]
-    fn eval_chunks_avx2(
-        &self,
-        token: Avx2F16c,
-        theta_i: &[f32],
-        theta_r: &[f32],
-        phi: &[f32],
-        out: &mut [Rgb],
-    ) -> usize {
-        self.eval_chunks(token, theta_i, theta_r, phi, out)
     }
 
     /// Every chunk of equally long slices, table `N` read by `kernel`; returns the rejected
@@ -253,7 +235,7 @@ impl<M: Math> BakedBcsdf<'_, M> {
         let mut places = Places::default();
         let [a, b, c] = &angles;
         for (k, ((&a, &b), &c)) in a.iter().zip(b).zip(c).enumerate() {
-            places.set(k, self.place(a, b, c));
+            places.set(k, self.place(kernel, a, b, c));
         }
         // Pass 3: texel reads and the family sum.
         for (k, (o, ok)) in out.iter_mut().zip(valid).enumerate() {
@@ -264,6 +246,22 @@ impl<M: Math> BakedBcsdf<'_, M> {
             };
         }
         rejected
+    }
+}
+
+/// [`BakedBcsdf::eval_far_batch`]'s work: equally long slices.
+struct Batch<'s> {
+    theta_i: &'s [f32],
+    theta_r: &'s [f32],
+    phi: &'s [f32],
+    out: &'s mut [Rgb],
+}
+
+impl<M: Math> KernelOp<M> for Batch<'_> {
+    type Output = usize;
+    #[inline(always)]
+    fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> usize {
+        lut.eval_chunks(kernel, self.theta_i, self.theta_r, self.phi, self.out)
     }
 }
 

@@ -11,9 +11,11 @@ use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
 use crate::lut::cdf::{Density, DensityLayout, Nodes};
 use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
+use dispatch::KernelOp;
 use texels::{corner_weights, m_linear, ms_bilinear, Baseline, NKernel};
 
 mod batch;
+mod dispatch;
 mod simd;
 mod texels;
 
@@ -127,6 +129,11 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     m_start: usize,
     /// The instruction set of the evaluation ([`Kernel`]), with the proof of its features.
     kernel: Isa,
+    /// Table `N`'s scale for a kernel that decodes true half values (F16C), computed at
+    /// load: the baseline decodes halves × 2^−112 and folds `unbias` (scale × 2^112) into the
+    /// weights; F16C's `vcvtph2ps` gives true values, so its weights carry the scale itself
+    /// ([`NKernel::TRUE_HALVES`]), a power-of-two rescaling: the same products bit for bit.
+    n_scale_true: f32,
     /// Where each sampled density lives ([`Density::index`] order).
     pub(crate) densities: [DensityLayout; 9],
     pub(crate) sum: Axis,
@@ -240,6 +247,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             blob: bytes,
             m_start: res.byte_range(Table::M).start,
             kernel: Isa::best(),
+            n_scale_true: unbias[Table::N as usize] * f32::from_bits((127 - 112) << 23),
             densities: Density::ALL.map(|d| res.density_layout(d)),
             sum: Axis::new(-PI, 1.0 / (2.0 * PI), res.n_sum),
             theta_r: Axis::new(0.0, 1.0 / (PI / 2.0), res.n_theta_r),
@@ -281,7 +289,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// arithmetic, no memory reads besides `self`: the batch evaluator runs it over many
     /// queries in one loop, which the compiler vectorises.
     #[inline(always)]
-    pub(crate) fn place(&self, ti: f32, tr: f32, abs_phi: f32) -> Place {
+    pub(crate) fn place<K: NKernel>(&self, _kernel: K, ti: f32, tr: f32, abs_phi: f32) -> Place {
         let res = &self.header.res;
         // M_g(θ_i + θ_r): linear.
         let (m, w) = self.sum.locate(ti + tr);
@@ -295,7 +303,12 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let (row, wy) = self.theta_r.locate(tr.abs());
         let (col, wx) = self.phi.locate(abs_phi);
         let n = row * res.n_phi as usize + col;
-        let n_w = corner_weights(wy, wx, self.unbias[Table::N as usize]);
+        let n_scale = if K::TRUE_HALVES {
+            self.n_scale_true
+        } else {
+            self.unbias[Table::N as usize]
+        };
+        let n_w = corner_weights(wy, wx, n_scale);
         Place {
             m,
             m_w: [(1.0 - w) * km, w * km],
@@ -308,13 +321,8 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// The table reads of one query at `p`.
-    #[inline(always)]
-    pub(crate) fn gather(&self, p: &Place) -> Lookups {
-        self.gather_with(Baseline, p)
-    }
-
-    /// [`BakedBcsdf::gather`] with table `N` read by `kernel` (same bits).
+    /// The table reads of one query at `p` ([`BakedBcsdf::place`] for the same kernel),
+    /// table `N` read by `kernel`.
     #[inline(always)]
     pub(crate) fn gather_with<K: NKernel>(&self, kernel: K, p: &Place) -> Lookups {
         let res = &self.header.res;
@@ -338,16 +346,18 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// The table lookups of one query.
+    /// The table lookups of one query (the samplers' pdf), with the baseline kernel, inlined
+    /// into the sampler: through the AVX2 function (a call, the lookups returned in memory)
+    /// the pdf measured slower (docs/benchmarks.md, "Sampling and evaluation speed").
     #[inline]
     pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
-        let p = self.place(angles.theta_i(), angles.theta_r(), angles.phi().abs());
-        self.gather(&p)
+        let (ti, tr, abs_phi) = (angles.theta_i(), angles.theta_r(), angles.phi().abs());
+        self.gather_with(Baseline, &self.place(Baseline, ti, tr, abs_phi))
     }
 
     /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and
     /// M^s·N^s with M^s = (1 − |φ|/π)·back + (|φ|/π)·front, each over cos²θ_i.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn assemble(l: &Lookups) -> Families {
         let [back, front] = l.ms;
         let ms = back + l.front * (front - back);
@@ -360,63 +370,18 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         Families::from_array(out)
     }
 
-    /// [`Self::assemble`] followed by [`Families::total`], without forming the families:
-    /// the same products, summed in the same order (from zero, R, TT, TRT, then the
-    /// scattered family), so the same bits.
+    /// S, all families summed: [`Self::assemble`] followed by [`Families::total`] (inlined,
+    /// so the families are not stored; the batch path's per-query sum).
     #[inline(always)]
     pub(crate) fn total(l: &Lookups) -> Rgb {
-        let [back, front] = l.ms;
-        let ms = back + l.front * (front - back);
-        let weight = [l.m[0], l.m[1], l.m[2], ms].map(|m| m * l.inv_cos2);
-        let mut total = [0.0f32; 3];
-        for (f, w) in weight.iter().enumerate() {
-            for (c, t) in total.iter_mut().enumerate() {
-                *t += l.n[3 * f + c] * w;
-            }
-        }
-        Rgb(total)
+        Self::assemble(l).total()
     }
 
-    /// Far-field S(ω_i, ω_r) per lobe family, from the tables (docs/model.md §8).
+    /// Far-field S(ω_i, ω_r) per lobe family, from the tables (docs/model.md §8), with the
+    /// kernel chosen at load (the same bits with either).
     #[inline]
     pub fn eval_far(&self, angles: &Angles) -> Families {
-        self.eval_at(angles.theta_i(), angles.theta_r(), angles.phi().abs())
-    }
-
-    /// The families at validated θ_i, θ_r and |φ|: with the AVX2 + F16C table-`N` kernel
-    /// where the CPU has it (checked once, in `from_bytes`; the same bits either way).
-    #[inline]
-    fn eval_at(&self, ti: f32, tr: f32, abs_phi: f32) -> Families {
-        #[cfg(target_arch = "x86_64")]
-        if let Isa::Avx2F16c(token) = self.kernel {
-            // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
-            return unsafe { self.eval_at_avx2(token, ti, tr, abs_phi) };
-        }
-        Self::assemble(&self.gather(&self.place(ti, tr, abs_phi)))
-    }
-
-    /// [`BakedBcsdf::try_eval_far_dirs`] compiled for AVX2 and F16C (`token` proves the CPU
-    /// has them).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx,avx2,f16c")]
-    fn eval_dirs_avx2(
-        &self,
-        token: texels::Avx2F16c,
-        wi: Vec3,
-        wr: Vec3,
-        tangent: Vec3,
-    ) -> Result<Families, AngleError> {
-        let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
-        let p = self.place(ti, tr, abs_phi);
-        Ok(Self::assemble(&self.gather_with(token, &p)))
-    }
-
-    /// [`BakedBcsdf::eval_at`] compiled for AVX2 and F16C (`token` proves the CPU has them).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx,avx2,f16c")]
-    fn eval_at_avx2(&self, token: texels::Avx2F16c, ti: f32, tr: f32, abs_phi: f32) -> Families {
-        let p = self.place(ti, tr, abs_phi);
-        Self::assemble(&self.gather_with(token, &p))
+        self.dispatch(EvalAt(angles))
     }
 
     /// Far-field S from world-space directions: `wi` toward the light, `wr` toward the viewer,
@@ -425,7 +390,8 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     ///
     /// The angles come from a branch-free polynomial conversion (within about 3e-7 rad of
     /// [`Angles::from_directions`], docs/lut.md), so the result can differ from
-    /// `eval_far(&Angles::from_directions(..)?)` in the last bits.
+    /// `eval_far(&Angles::from_directions(..)?)` in the last bits; it equals
+    /// `eval_far(&self.angles_from_dirs(..)?)` bit for bit.
     #[inline]
     pub fn eval_far_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
         self.try_eval_far_dirs(wi, wr, tangent)
@@ -440,13 +406,63 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         wr: Vec3,
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
-        #[cfg(target_arch = "x86_64")]
-        if let Isa::Avx2F16c(token) = self.kernel {
-            // SAFETY: `token` proves this CPU has AVX, AVX2 and F16C (`Avx2F16c::detect`).
-            return unsafe { self.eval_dirs_avx2(token, wi, wr, tangent) };
-        }
-        let [ti, tr, abs_phi] = polynomial_angles::<M>(wi, wr, tangent)?;
-        Ok(Self::assemble(&self.gather(&self.place(ti, tr, abs_phi))))
+        self.dispatch(EvalDirs(wi, wr, tangent))
+    }
+
+    /// The baked evaluator's one direction-to-angle conversion (docs/model.md §1), behind
+    /// [`Bcsdf::angles_from_dirs`](crate::Bcsdf::angles_from_dirs) and so behind every
+    /// `*_dirs` method: the branch-free polynomials of [`BakedBcsdf::eval_far_dirs`] (within
+    /// about 3e-7 rad of [`Angles::from_directions`]), which the WGSL evaluator shares.
+    /// `eval_far_dirs` evaluates exactly these angles.
+    #[inline]
+    pub fn angles_from_dirs(
+        &self,
+        wi: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+    ) -> Result<Angles, AngleError> {
+        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        Angles::new(ti, tr, phi)
+    }
+}
+
+/// [`BakedBcsdf::eval_far`]'s work. It carries a reference to the angles, not θ_i, θ_r,
+/// |φ| by value: the dispatcher's AVX2 side is a separate function, the op reaches it in
+/// memory, and the caller's three 4-byte stores read back as one 8-byte load stalled store
+/// forwarding (it nearly doubled `eval_far`'s time, at the same instruction count).
+struct EvalAt<'s>(&'s Angles);
+
+impl<M: Math> KernelOp<M> for EvalAt<'_> {
+    type Output = Families;
+    #[inline(always)]
+    fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Families {
+        let a = self.0;
+        families_at(lut, kernel, a.theta_i(), a.theta_r(), a.phi().abs())
+    }
+}
+
+/// The families at validated θ_i, θ_r and |φ|, table `N` read by `kernel`.
+#[inline(always)]
+fn families_at<M: Math, K: NKernel>(
+    lut: &BakedBcsdf<'_, M>,
+    kernel: K,
+    ti: f32,
+    tr: f32,
+    abs_phi: f32,
+) -> Families {
+    BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &lut.place(kernel, ti, tr, abs_phi)))
+}
+
+/// [`BakedBcsdf::try_eval_far_dirs`]'s work: ω_i, ω_r, tangent.
+struct EvalDirs(Vec3, Vec3, Vec3);
+
+impl<M: Math> KernelOp<M> for EvalDirs {
+    type Output = Result<Families, AngleError>;
+    #[inline(always)]
+    fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Self::Output {
+        let EvalDirs(wi, wr, tangent) = self;
+        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        Ok(families_at(lut, kernel, ti, tr, phi.abs()))
     }
 }
 

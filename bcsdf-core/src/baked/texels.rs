@@ -18,6 +18,10 @@ use super::simd::F4;
 /// that needs CPU features is a token that only their detection constructs, so holding one
 /// is the proof that its instructions may run.
 pub(crate) trait NKernel: Copy {
+    /// Whether the kernel decodes true half values (F16C), so that the weights carry the
+    /// table scale itself, not scale × 2^112 (`BakedBcsdf::place`).
+    const TRUE_HALVES: bool;
+
     /// Table `N` bilinearly, as [`n_bilinear`].
     fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12];
 }
@@ -27,6 +31,7 @@ pub(crate) trait NKernel: Copy {
 pub(crate) struct Baseline;
 
 impl NKernel for Baseline {
+    const TRUE_HALVES: bool = false;
     #[inline(always)]
     fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
         n_bilinear(data, width, index, w)
@@ -108,10 +113,11 @@ pub(crate) fn ms_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) 
 }
 
 /// Table `N` with AVX and F16C: `vcvtph2ps` converts eight halves per instruction (true
-/// values, so the weights carry 2^−112 instead of the decode, which keeps every product and
-/// sum bit for bit those of [`n_bilinear`]: the weights are powers-of-two rescalings, exact
-/// in the normal range they stay in), eight channels in a 256-bit register and four in a
-/// 128-bit one.
+/// values, so the weights `w` must not carry the 2^112 of the biased decode: the evaluator
+/// takes it off the table scale once, at load ([`NKernel::TRUE_HALVES`]), which keeps every product
+/// and sum bit for bit those of [`n_bilinear`]: a power-of-two rescaling, exact in the normal
+/// range the weights stay in), eight channels in a 256-bit register and four in a 128-bit
+/// one.
 ///
 /// A value of this type is the proof that the CPU and its OS support AVX, AVX2 and F16C:
 /// its field is private to this module and [`Avx2F16c::detect`] is its only constructor.
@@ -134,6 +140,7 @@ impl Avx2F16c {
 
 #[cfg(target_arch = "x86_64")]
 impl NKernel for Avx2F16c {
+    const TRUE_HALVES: bool = true;
     #[inline(always)]
     fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
         use core::arch::x86_64::{
@@ -141,11 +148,8 @@ impl NKernel for Avx2F16c {
             _mm256_storeu_ps, _mm_add_ps, _mm_cvtph_ps, _mm_loadl_epi64, _mm_loadu_si128,
             _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps,
         };
-        /// 2^−112: the biased decode's factor, moved onto the weights.
-        const UNBIASED: f32 = f32::from_bits((127 - 112) << 23);
         let top = bytes::<48>(data, 24 * index);
         let bottom = bytes::<48>(data, 24 * (index + width));
-        let w = w.map(|x| x * UNBIASED);
         let mut out = [0.0; 12];
         // SAFETY: `self` exists, so `detect` found AVX, AVX2 and F16C on this CPU and OS
         // (the intrinsics' target features); every load reads inside a 48-byte texel pair

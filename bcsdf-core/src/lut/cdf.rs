@@ -223,23 +223,26 @@ impl<'a> Nodes<'a> {
     #[inline]
     #[must_use]
     pub fn value(&self, d: Density, row: usize, j: usize) -> f32 {
+        self.row(d, row).value(j)
+    }
+
+    /// One row of density `d`, for reading many of its nodes ([`NodeRow::value`]).
+    #[inline]
+    #[must_use]
+    pub fn row(&self, d: Density, row: usize) -> NodeRow<'a> {
         let t = d.table() as usize;
         let (first, n) = d.channels();
-        let data = self.tables[t];
-        let base = 2 * ((row * self.width[t] + j) * Table::ALL[t].channels() + first);
-        if n == 3 {
-            match data.get(base..base + 6) {
-                Some(b) => {
-                    let h = |i: usize| f16_biased(u16::from_le_bytes([b[i], b[i + 1]]));
-                    (h(0) + h(2) + h(4)) * (self.unbias[t] * (1.0 / 3.0))
-                }
-                None => 0.0,
-            }
-        } else {
-            match data.get(base..base + 2) {
-                Some(b) => f16_biased(u16::from_le_bytes([b[0], b[1]])) * self.unbias[t],
-                None => 0.0,
-            }
+        let channels = Table::ALL[t].channels();
+        let start = 2 * (row * self.width[t] * channels + first);
+        NodeRow {
+            data: self.tables[t].get(start..).unwrap_or(&[]),
+            stride: 2 * channels,
+            mean: n == 3,
+            scale: if n == 3 {
+                self.unbias[t] * (1.0 / 3.0)
+            } else {
+                self.unbias[t]
+            },
         }
     }
 
@@ -279,6 +282,42 @@ impl<'a> Nodes<'a> {
                         index += 1;
                     }
                 }
+            }
+        }
+    }
+}
+
+/// The nodes of one row of one density ([`Nodes::row`]): the value at a node is a half (× the
+/// table scale) or, for [`Density::N`], the mean of three (docs/lut.md "Sampling data").
+#[derive(Clone, Copy, Debug)]
+pub struct NodeRow<'a> {
+    /// The table from the row's first node's first channel on.
+    data: &'a [u8],
+    /// Bytes from one node to the next.
+    stride: usize,
+    /// Whether the value is the mean of three channels.
+    mean: bool,
+    /// Table scale × 2^112 (÷ 3 for a mean).
+    scale: f32,
+}
+
+impl NodeRow<'_> {
+    /// The value at node `j` (0 outside the table): the one formula of a node's value, for
+    /// the prefix sums and the sampler alike.
+    #[inline(always)]
+    #[must_use]
+    pub fn value(&self, j: usize) -> f32 {
+        let at = j * self.stride;
+        let h = |b: &[u8], i: usize| f16_biased(u16::from_le_bytes([b[i], b[i + 1]]));
+        if self.mean {
+            match self.data.get(at..at + 6) {
+                Some(b) => (h(b, 0) + h(b, 2) + h(b, 4)) * self.scale,
+                None => 0.0,
+            }
+        } else {
+            match self.data.get(at..at + 2) {
+                Some(b) => h(b, 0) * self.scale,
+                None => 0.0,
             }
         }
     }

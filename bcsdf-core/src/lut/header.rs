@@ -1,14 +1,15 @@
 //! The LUT header codec: [`LutHeader::encode`] and [`LutHeader::decode`] (byte layout in
-//! the [`super`] module docs and docs/lut.md). The parameter block iterates the parameter
-//! schema ([`crate::params::SCHEMA`]), so the header and every other serialisation of the
-//! parameters share one list.
+//! the [`super`] module docs and docs/lut.md). The parameter block follows the parameter
+//! schema ([`crate::params::SCHEMA`]): the decoder iterates [`ParamName::ALL`], the encoder
+//! [`crate::params::ResolvedParams::fields`] (every default written out, so no parameter
+//! can be missing; `params::tests` checks that the two orders agree).
 
 use super::{
     is_valid_scale, LutError, LutHeader, LutResolution, ProfileProvenance, Table, CHECKSUM,
     FORMAT_VERSION, HEADER_LEN, MAGIC, PROFILES, TABLE_COUNT,
 };
 use crate::medulla::{PhotonBudget, Resolution};
-use crate::params::{FurParams, FurParamsInput, ParamName, ParamValue};
+use crate::params::{FurParams, FurParamsInput, HeaderField, ParamName};
 use crate::pigment::Pigment;
 use crate::spectrum::Rgb;
 
@@ -91,21 +92,16 @@ impl LutHeader {
         }
         // The parameter block: every parameter in schema order, the three colour parameters
         // as one pigment record (kind, three values) at the first colour position.
-        let p = self.params.resolved();
-        for name in ParamName::ALL {
-            if name.is_colour() {
-                if name == ParamName::SigmaCa {
-                    let (kind, pig) = pigment_record(&p.pigment);
+        for field in self.params.resolve().fields() {
+            match field {
+                HeaderField::Pigment(pigment) => {
+                    let (kind, pig) = pigment_record(&pigment);
                     w.u32(kind);
                     for v in pig {
                         w.f32(v);
                     }
                 }
-            } else if let Some(ParamValue::Scalar(v)) = p.value(name) {
-                w.f32(v);
-            } else {
-                // `resolved` gives every scalar parameter a value.
-                w.f32(f32::NAN);
+                HeaderField::Scalar(_, v) => w.f32(v),
             }
         }
         match &self.profiles {

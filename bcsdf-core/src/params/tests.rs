@@ -3,6 +3,7 @@
 extern crate std;
 use super::*;
 use std::string::ToString;
+use std::vec::Vec;
 
 fn human_hair() -> FurParamsInput {
     crate::presets::find("human-hair").unwrap().input
@@ -124,4 +125,64 @@ fn resolved_fills_same_as_defaults_only() {
     assert_eq!(input.resolved().eta_m, Some(1.4));
     // Validation gives the same parameters either way.
     assert_eq!(FurParams::new(&input), FurParams::new(&input.resolved()));
+}
+
+#[test]
+fn header_fields_follow_the_schema_order() {
+    // The encoder writes `fields`, the decoder reads `ParamName::ALL`: the same order, the
+    // colour as one record at σ_ca's position (eumelanin and pheomelanin inside it).
+    let fields = human_hair().resolve().fields();
+    let names: Vec<ParamName> = fields
+        .iter()
+        .map(|f| match f {
+            HeaderField::Pigment(_) => ParamName::SigmaCa,
+            HeaderField::Scalar(name, _) => *name,
+        })
+        .collect();
+    let want: Vec<ParamName> = ParamName::ALL
+        .into_iter()
+        .filter(|n| !n.is_colour() || *n == ParamName::SigmaCa)
+        .collect();
+    assert_eq!(names, want);
+    assert_eq!(fields.len(), HEADER_FIELDS);
+    // Each scalar field carries the resolved value of its parameter.
+    let r = human_hair().resolved();
+    for f in fields {
+        match f {
+            HeaderField::Scalar(name, v) => {
+                assert_eq!(r.value(name), Some(ParamValue::Scalar(v)), "{name}");
+            }
+            HeaderField::Pigment(p) => assert_eq!(p, r.pigment),
+        }
+    }
+}
+
+#[test]
+fn resolve_applies_every_same_as_row_of_the_schema() {
+    // Walks SCHEMA, so a new `SameAs` row that `resolve` does not apply fails here.
+    let mut same_as = 0;
+    for spec in &SCHEMA {
+        if let ParamDefault::SameAs(source) = spec.default {
+            same_as += 1;
+            let mut input = human_hair();
+            input.beta_n_deg = None;
+            input.eta_m = None;
+            // A distinct source value, so that a default from the wrong source shows.
+            input.set(source, 1.234);
+            let r = input.resolved();
+            assert_eq!(
+                r.value(spec.name),
+                Some(ParamValue::Scalar(1.234)),
+                "{}",
+                spec.name
+            );
+            let fields = input.resolve().fields();
+            assert!(
+                fields.contains(&HeaderField::Scalar(spec.name, 1.234)),
+                "{}",
+                spec.name
+            );
+        }
+    }
+    assert_eq!(same_as, 2);
 }

@@ -20,18 +20,23 @@
 
 use super::{choose, invert_linear, linear_mass, unit};
 use crate::baked::{Axis, BakedBcsdf, Lookups};
-use crate::bcsdf::{finish, solid_angle_pdf, Bcsdf, Sample, SampledDirection};
-use crate::frame::{Angles, Vec3};
+use crate::bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection};
+use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
-use crate::lut::cdf::Density;
-use crate::math::{cos_within_half_pi, Math, PI};
+use crate::lut::cdf::{Density, NodeRow};
+use crate::math::{Math, PI};
+pub use view::BakedView;
+
+mod view;
 
 /// Two adjacent rows of one density blended with weights (1 − w, w): itself a piecewise-
-/// linear function on the rows' nodes, with prefix sums blended the same way.
-struct Rows<'b, 'a, M: Math> {
-    lut: &'b BakedBcsdf<'a, M>,
-    density: Density,
-    rows: (usize, usize),
+/// linear function on the rows' nodes, with prefix sums blended the same way. The rows'
+/// nodes and prefix entries are located once, in [`Rows::new`].
+struct Rows<'a> {
+    /// The two rows' nodes.
+    values: (NodeRow<'a>, NodeRow<'a>),
+    /// The two rows' prefix entries (little-endian f32).
+    prefixes: (&'a [u8], &'a [u8]),
     w: f32,
     /// Axis origin and node spacing.
     origin: f32,
@@ -39,47 +44,51 @@ struct Rows<'b, 'a, M: Math> {
     nodes: usize,
     entries: usize,
     block: usize,
-    /// Byte offset of the density's prefix entries in the blob.
-    prefix_at: usize,
 }
 
-impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
+impl<'a> Rows<'a> {
     #[inline]
-    fn new(
-        lut: &'b BakedBcsdf<'a, M>,
+    fn new<M: Math>(
+        lut: &BakedBcsdf<'a, M>,
         density: Density,
         axis: &Axis,
         (row, w): (usize, f32),
     ) -> Self {
         let l = &lut.densities[density.index()];
+        let rows = (row.min(l.rows - 1), (row + 1).min(l.rows - 1));
+        let prefix = |r: usize| {
+            let at = l.prefix_at + 4 * r * l.entries;
+            lut.blob.get(at..at + 4 * l.entries).unwrap_or(&[])
+        };
         Rows {
-            lut,
-            density,
-            rows: (row.min(l.rows - 1), (row + 1).min(l.rows - 1)),
+            values: (
+                lut.nodes.row(density, rows.0),
+                lut.nodes.row(density, rows.1),
+            ),
+            prefixes: (prefix(rows.0), prefix(rows.1)),
             w,
             origin: axis.lo,
             step: l.step,
             nodes: l.nodes,
             entries: l.entries,
             block: l.block,
-            prefix_at: l.prefix_at,
         }
     }
 
     #[inline(always)]
     fn value(&self, j: usize) -> f32 {
-        let v0 = self.lut.nodes.value(self.density, self.rows.0, j);
+        let v0 = self.values.0.value(j);
         if self.w == 0.0 {
             return v0;
         }
-        let v1 = self.lut.nodes.value(self.density, self.rows.1, j);
+        let v1 = self.values.1.value(j);
         (1.0 - self.w) * v0 + self.w * v1
     }
 
+    /// Prefix entry k of one row (0 past its end).
     #[inline(always)]
-    fn stored(&self, row: usize, k: usize) -> f32 {
-        let at = self.prefix_at + 4 * (row * self.entries + k);
-        match self.lut.blob.get(at..at + 4) {
+    fn stored(row: &[u8], k: usize) -> f32 {
+        match row.get(4 * k..4 * k + 4) {
             Some(b) => f32::from_le_bytes([b[0], b[1], b[2], b[3]]),
             None => 0.0,
         }
@@ -88,11 +97,11 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
     /// Blended prefix entry k: ∫ from the first node to node min(k·block, nodes − 1).
     #[inline(always)]
     fn prefix(&self, k: usize) -> f32 {
-        let p0 = self.stored(self.rows.0, k);
+        let p0 = Self::stored(self.prefixes.0, k);
         if self.w == 0.0 {
             return p0;
         }
-        (1.0 - self.w) * p0 + self.w * self.stored(self.rows.1, k)
+        (1.0 - self.w) * p0 + self.w * Self::stored(self.prefixes.1, k)
     }
 
     /// ∫ over the whole axis.
@@ -158,7 +167,7 @@ impl<'b, 'a, M: Math> Rows<'b, 'a, M> {
 
 impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// M_g restricted to θ_i ∈ [−π/2, π/2], i.e. x = θ_i + θ_r ∈ [θ_r − π/2, θ_r + π/2].
-    fn m_rows(&self, g: usize) -> Rows<'_, 'a, M> {
+    fn m_rows(&self, g: usize) -> Rows<'a> {
         Rows::new(self, Density::M(g), &self.sum, (0, 0.0))
     }
 
@@ -207,12 +216,12 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         t0 + (self.f32_at(at(row + 1)) - t0) * w
     }
 
-    fn n_rows(&self, family: usize, theta_r: f32) -> Rows<'_, 'a, M> {
+    fn n_rows(&self, family: usize, theta_r: f32) -> Rows<'a> {
         let at = self.theta_r.locate(theta_r.abs());
         Rows::new(self, Density::N(family), &self.phi, at)
     }
 
-    fn ms_rows(&self, half: usize, theta_r: f32) -> Rows<'_, 'a, M> {
+    fn ms_rows(&self, half: usize, theta_r: f32) -> Rows<'a> {
         let at = self.ms_r.locate(theta_r);
         Rows::new(self, Density::MS(half), &self.ms_i, at)
     }
@@ -253,21 +262,15 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    #[inline(always)]
-    fn weights_total(&self, theta_r: f32) -> f32 {
-        let a = self.parts(theta_r).0;
-        a[0] + a[1] + a[2] + a[3] + a[4]
-    }
-
-    /// Draws (θ_i, φ) given θ_r from three uniform numbers (docs/model.md §10); also returns
-    /// the mixture's total weight W.
-    fn draw(&self, theta_r: f32, u: [f32; 3]) -> Option<(SampledDirection, f32)> {
-        if !(theta_r.is_finite() && theta_r.abs() <= PI / 2.0) {
-            return None;
-        }
-        let (a, m) = self.parts(theta_r);
+    /// Draws (θ_i, φ) given a valid θ_r and its [`BakedBcsdf::parts`] `(a, m)` from three
+    /// uniform numbers (docs/model.md §10).
+    fn draw(
+        &self,
+        theta_r: f32,
+        (a, m): ([f32; 5], [(f32, f32); 3]),
+        u: [f32; 3],
+    ) -> Option<SampledDirection> {
         let (c, u0) = choose(&a, u[0])?;
-        let total_weight = a[0] + a[1] + a[2] + a[3] + a[4];
         let negative = u0 < 0.5;
         let theta_i = if c < 3 {
             let rows = self.m_rows(c);
@@ -284,11 +287,10 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let abs_phi = rows.invert_between(0.0, rows.total(), u[2]).clamp(0.0, PI);
         let phi = if negative { -abs_phi } else { abs_phi };
         let angles = Angles::new(theta_i, theta_r, phi).ok()?;
-        let d = SampledDirection {
+        Some(SampledDirection {
             angles,
             family: LobeFamily::ALL[family],
-        };
-        Some((d, total_weight))
+        })
     }
 }
 
@@ -300,36 +302,39 @@ impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
         self.eval_far(angles)
     }
 
-    /// [`BakedBcsdf::eval_far_dirs`]: the polynomial direction conversion (within about
+    /// [`BakedBcsdf::angles_from_dirs`]: the polynomial direction conversion (within about
     /// 3e-7 rad of [`Angles::from_directions`]), which the WGSL evaluator shares.
+    #[inline]
+    fn angles_from_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Result<Angles, AngleError> {
+        BakedBcsdf::angles_from_dirs(self, wi, wr, tangent)
+    }
+
+    /// [`BakedBcsdf::eval_far_dirs`]: the same angles as [`BakedBcsdf::angles_from_dirs`],
+    /// on the AVX2 + F16C kernel where the CPU has it.
     #[inline]
     fn eval_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
         self.eval_far_dirs(wi, wr, tangent)
     }
 
+    /// [`BakedView::pdf`] at a view made for this call; [`BakedBcsdf::view`] keeps it for
+    /// several calls at one θ_r.
     fn pdf(&self, angles: &Angles) -> f32 {
-        let l = self.lookups(angles);
-        let w = self.weights_total(angles.theta_r());
-        Self::density(&l, w, cos_within_half_pi(angles.theta_i()))
+        self.view(angles.theta_r())
+            .map_or(0.0, |v| v.pdf_at(angles))
     }
 
     fn eval_with_pdf(&self, angles: &Angles) -> (Families, f32) {
-        let l = self.lookups(angles);
-        let w = self.weights_total(angles.theta_r());
-        let pdf = Self::density(&l, w, cos_within_half_pi(angles.theta_i()));
-        (Self::assemble(&l), pdf)
+        self.view(angles.theta_r())
+            .map_or((Families::ZERO, 0.0), |v| v.eval_with_pdf_at(angles))
     }
 
     fn sample_direction(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
-        self.draw(theta_r, u).map(|(d, _)| d)
+        self.view(theta_r)?.sample_direction(u)
     }
 
+    /// [`BakedView::sample`]: the mixture weights of the draw serve the density too.
     fn sample(&self, theta_r: f32, u: [f32; 3]) -> Option<Sample> {
-        // The mixture weights of the draw serve the density too.
-        let (d, total_weight) = self.draw(theta_r, u)?;
-        let l = self.lookups(&d.angles);
-        let pdf = Self::density(&l, total_weight, cos_within_half_pi(d.angles.theta_i()));
-        finish(d, Self::assemble(&l), pdf, None)
+        self.view(theta_r)?.sample(u)
     }
 }
 
@@ -340,7 +345,7 @@ mod tests {
 
     /// ∫ of the rows' interpolant from the first node to x, segment by segment (the exact
     /// integral of a linear function), written independently of `Rows`.
-    fn integral<M: Math>(rows: &Rows<'_, '_, M>, x: f32) -> f64 {
+    fn integral(rows: &Rows<'_>, x: f32) -> f64 {
         let u = f64::from((x - rows.origin) / rows.step);
         let mut acc = 0.0f64;
         for j in 0..rows.nodes - 1 {

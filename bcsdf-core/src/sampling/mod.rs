@@ -29,6 +29,7 @@ pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 /// to [0, 1) within the chosen interval, so that the same number can drive a further
 /// choice. `None` when no weight is positive. Non-positive or non-finite weights are never
 /// chosen.
+#[inline]
 #[must_use]
 pub fn choose(weights: &[f32], u: f32) -> Option<(usize, f32)> {
     let ok = |w: f32| w.is_finite() && w > 0.0;

@@ -143,6 +143,16 @@ int main(int argc, char **argv) {
         printf("sample %08x %08x %08x %08x %08x %08x %d\n", bits(s.theta_i), bits(s.phi), bits(s.pdf),
                bits(s.weight[0]), bits(s.weight[1]), bits(s.weight[2]), (int)s.family);
     }
+    for (i = 0; i < N_DIRS; i++) {
+        /* A sample and the density of another direction (a light's) at the same view. */
+        float p = -1.0f;
+        fur_status st = fur_sample_pdf_far(&lut, TR[i], 0.1f + 0.15f * (float)i, 0.9f - 0.1f * (float)i,
+                                           0.37f, TI[i], PH[i], &s, &p);
+        EXPECT(st == FUR_OK);
+        printf("samplepdf %08x %08x %08x %08x %08x %08x %d %08x\n", bits(s.theta_i), bits(s.phi),
+               bits(s.pdf), bits(s.weight[0]), bits(s.weight[1]), bits(s.weight[2]), (int)s.family,
+               bits(p));
+    }
 
     /* NULL and zero-length arguments for every function. */
     EXPECT(fur_lut_open(NULL, len, &lut) == FUR_ERR_NULL);
@@ -168,6 +178,19 @@ int main(int argc, char **argv) {
     EXPECT(fur_sample_far(NULL, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NULL);
     EXPECT(fur_sample_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, NULL) == FUR_ERR_NULL);
     EXPECT(fur_pdf_far(NULL, 0.1f, 0.2f, 0.3f) == 0.0f);
+    {
+        float p = -1.0f;
+        EXPECT(fur_sample_pdf_far(NULL, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &s, &p) == FUR_ERR_NULL);
+        EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, NULL, &p) == FUR_ERR_NULL);
+        EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &s, NULL) == FUR_ERR_NULL);
+        EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &s, (float *)misaligned) ==
+               FUR_ERR_ALIGNMENT);
+        /* Bad angles: refused, nothing written. */
+        EXPECT(fur_sample_pdf_far(&lut, 1.7f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &s, &p) == FUR_ERR_ANGLE);
+        EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 2.0f, 0.3f, &s, &p) == FUR_ERR_ANGLE);
+        EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, NAN, &s, &p) == FUR_ERR_ANGLE);
+        EXPECT(p == -1.0f);
+    }
     EXPECT(fur_lut_close(NULL) == FUR_ERR_NULL);
 
     /* Misaligned pointers. */
@@ -209,6 +232,20 @@ int main(int argc, char **argv) {
         EXPECT(fur_eval_far_dirs(&lut, wi, wr, v, v + 2) == FUR_ERR_OVERLAP);
         EXPECT(fur_sample_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, (fur_sample *)(void *)(bytes + 16)) ==
                FUR_ERR_OVERLAP);
+        {
+            /* The two outputs against the LUT bytes, the fur_lut and each other. */
+            fur_sample so;
+            float p = -1.0f;
+            EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f,
+                                      (fur_sample *)(void *)(bytes + 16), &p) == FUR_ERR_OVERLAP);
+            EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &so,
+                                      (float *)(void *)(bytes + 36)) == FUR_ERR_OVERLAP);
+            EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &so,
+                                      (float *)(void *)&lut._opaque[7]) == FUR_ERR_OVERLAP);
+            EXPECT(fur_sample_pdf_far(&lut, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &so, &so.pdf) ==
+                   FUR_ERR_OVERLAP);
+            EXPECT(p == -1.0f);
+        }
         EXPECT(fur_lut_open(bytes, len, (fur_lut *)(void *)(bytes + 8)) == FUR_ERR_OVERLAP);
         EXPECT(bytes[40] == saved);
         /* Nothing was written into the bytes or the fur_lut: both still open and validate. */

@@ -66,5 +66,9 @@ int main(int argc, char **argv) {
     if (fur_sample_far(lut.get(), 0.3f, 0.2f, 0.4f, 0.6f, &s) != FUR_OK) return 1;
     std::printf("sample %08x %08x %08x %d\n", bits(s.theta_i), bits(s.phi), bits(s.pdf),
                 static_cast<int>(s.family));
+    float p = 0.0f;
+    if (fur_sample_pdf_far(lut.get(), 0.3f, 0.2f, 0.4f, 0.6f, TI[0], PH[0], &s, &p) != FUR_OK) return 1;
+    std::printf("samplepdf %08x %08x %08x %d %08x\n", bits(s.theta_i), bits(s.phi), bits(s.pdf),
+                static_cast<int>(s.family), bits(p));
     return 0;
 }

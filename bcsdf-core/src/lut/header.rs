@@ -103,6 +103,8 @@ impl LutHeader {
                 }
             } else if let Some(ParamValue::Scalar(v)) = p.value(name) {
                 w.f32(v);
+            } else if let Some(ParamValue::Choice(i)) = p.value(name) {
+                w.u32(u32::from(i));
             } else {
                 // `resolved` gives every scalar parameter a value.
                 w.f32(f32::NAN);
@@ -187,6 +189,12 @@ impl LutHeader {
                     },
                     _ => return Err(LutError::Field { field: "pigment" }),
                 };
+            } else if name.spec().is_choice() {
+                let index = r.u32();
+                if usize::try_from(index).map_or(true, |i| i >= name.spec().choices.len()) {
+                    return Err(LutError::Field { field: name.key() });
+                }
+                params.set_value(name, ParamValue::Choice(index as u8));
             } else if !name.is_colour() {
                 params.set(name, r.f32());
             }
@@ -225,9 +233,6 @@ impl LutHeader {
                 })
             }
         };
-        if bytes[CHECKSUM.end..HEADER_LEN].iter().any(|&b| b != 0) {
-            return Err(LutError::Field { field: "reserved" });
-        }
         Ok(LutHeader {
             res,
             scales,
@@ -316,6 +321,8 @@ mod tests {
                     })
                 }
                 Some(ParamValue::Rgb(c)) => ParamValue::Rgb(c * 0.5),
+                // The other choice.
+                Some(ParamValue::Choice(i)) => ParamValue::Choice(1 - i),
                 None => ParamValue::Scalar(0.5), // the colour form not in use: switch to it
             };
             h.params.set_value(spec.name, nudged);
@@ -344,6 +351,13 @@ mod tests {
             LutHeader::decode(&bytes),
             Err(LutError::Params(e)) if e.name == ParamName::Kappa && e.value == 1.5
         ));
+        // Closure 2 does not exist (0 report, 1 energy, after g).
+        let mut bytes = blob(&h);
+        bytes[104..108].copy_from_slice(&2u32.to_le_bytes());
+        assert_eq!(
+            LutHeader::decode(&bytes),
+            Err(LutError::Field { field: "closure" })
+        );
     }
 }
 

@@ -152,9 +152,11 @@ fn report_closure_keeps_todays_numbers() {
         (88.0, PIN[4]),
     ];
     let issue = [0.993, 0.991, 0.967, 0.748, 0.346];
+    let energy: FurBcsdf = FurBcsdf::unscattered(p.with_closure(Closure::Energy));
     for ((t, pin), from_issue) in pins.into_iter().zip(issue) {
         let rho = furnace(&p, t.to_radians(), |a| model.eval_far(a).total().0[0]);
-        eprintln!("report closure, human-hair θ_r {t}°: ρ {rho:.9}");
+        let kept = furnace(&p, t.to_radians(), |a| energy.eval_far(a).total().0[0]);
+        eprintln!("human-hair θ_r {t}°: ρ report {rho:.9}, energy {kept:.6}");
         assert!(
             (rho - pin).abs() <= 1e-6,
             "θ_r {t}°: ρ {rho:.9} vs pinned {pin}"

@@ -356,6 +356,7 @@ mod tests {
         assert_eq!(value("beta_n_deg"), "= β_m");
         assert_eq!(value("eta_m"), "1.4");
         assert_eq!(value("g"), "0.8");
+        assert_eq!(value("closure"), "energy");
 
         let melanin = input(Pigment::Melanin {
             eumelanin: 1.5,

@@ -89,17 +89,22 @@ impl Axis {
 ///
 /// A `.furlut` blob normally comes from the `bake` tool, as a file, a memory map or
 /// `include_bytes!`. Here, the smallest one, written with the format's own encoder, every
-/// table value 1:
+/// table value 1, in the report closure (which reads `M` as stored; the energy closure would
+/// divide it by its mass on the sphere, docs/model.md §12):
 ///
 /// ```
 /// use bcsdf_core::lut::{self, HEADER_LEN, TABLE_COUNT};
-/// use bcsdf_core::{presets, Angles, BakedBcsdf, Bcsdf, LutError, LutHeader, LutResolution};
+/// use bcsdf_core::{presets, Angles, BakedBcsdf, Bcsdf, Closure, FurParamsInput};
+/// use bcsdf_core::{LutError, LutHeader, LutResolution};
 ///
 /// let res = LutResolution { n_sum: 2, n_theta_r: 2, n_phi: 2, n_ms_i: 2, n_ms_r: 2 };
 /// let header = LutHeader {
 ///     res,
 ///     scales: [1.0; TABLE_COUNT],
-///     params: presets::find("human-hair").unwrap().input,
+///     params: FurParamsInput {
+///         closure: Closure::Report,
+///         ..presets::find("human-hair").unwrap().input
+///     },
 ///     profiles: None,
 /// };
 /// let mut blob = vec![0u8; res.blob_len()];

@@ -282,7 +282,7 @@ pub const SCHEMA: [ParamSpec; 14] = [
         key: "closure",
         symbol: "closure",
         unit: "",
-        meaning: "energy closure: report (the report's equations) or energy (§12)",
+        meaning: "energy closure: report (as published) or energy (lobes normalised on the sphere)",
         domain: Domain::closed(0.0, 1.0),
         default: ParamDefault::Value(1.0),
         choices: &Closure::NAMES,

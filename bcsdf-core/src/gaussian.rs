@@ -22,8 +22,10 @@ pub(crate) fn erf_mass(a: f64, b: f64) -> f64 {
     }
 }
 
-/// Mass of the normalised Gaussian G(x; β) (docs/model.md §5) over [lo, hi].
+/// Mass of the normalised Gaussian G(x; β) (docs/model.md §5) over [lo, hi] (0 for an empty
+/// interval or a β that is not positive, NaN included: hence the negated comparisons).
 #[must_use]
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
 pub fn gaussian_mass(beta: f32, lo: f32, hi: f32) -> f32 {
     if !(hi > lo) || !(beta > 0.0) {
         return 0.0;

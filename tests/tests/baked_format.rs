@@ -11,7 +11,7 @@ use bake::tables::{encode, node, TableValues};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::{
     self, f16_biased, LutError, LutHeader, LutResolution, ProfileProvenance, Table, F16_UNBIAS,
-    HEADER_LEN, TABLE_COUNT,
+    TABLE_COUNT,
 };
 use bcsdf_core::medulla::{PhotonBudget, Resolution, GENERATOR_VERSION};
 use bcsdf_core::{presets, Angles, LobeFamily, Pigment, Rgb};

@@ -109,15 +109,14 @@ pub fn gaussian_mass(lo: f64, hi: f64, beta: f64) -> f64 {
 }
 
 /// The divisor of M_p in closure `closure` (docs/model.md §12): 1 for the report's
-/// Gaussian; for the energy closure the Gaussian's mass over θ_i ∈ [−π/2, π/2] (from this
-/// module's erf), at least 1e-4 (bcsdf-core's `longitudinal::MIN_SPHERE_MASS`).
+/// Gaussian; for the energy closure the Gaussian's mass over θ_i ∈ [−π/2, π/2] as S weighs
+/// it, with the pole guard of 1/cos²θ_i ([`longitudinal_mass`]: this module's erf and
+/// Gauss–Legendre in the slivers), at least 1e-4 (bcsdf-core's
+/// `longitudinal::MIN_SPHERE_MASS`).
 pub fn sphere_mass(theta_r: f64, g: &GroupShape, closure: Closure) -> f64 {
     match closure {
         Closure::Report => 1.0,
-        Closure::Energy => {
-            let c = theta_r - g.shift;
-            gaussian_mass(c - FRAC_PI_2, c + FRAC_PI_2, g.beta_m).max(1e-4)
-        }
+        Closure::Energy => longitudinal_mass(theta_r, g, MIN_COS2).max(1e-4),
     }
 }
 

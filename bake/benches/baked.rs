@@ -4,7 +4,10 @@
 //! - `far_field_analytic/<preset>`: `FurBcsdf::eval_far(..).total()`, the full model (eight
 //!   unscattered paths and the scattered lobes);
 //! - `far_field_baked/<preset>`: `BakedBcsdf::eval_far(..).total()` on the LUT of the same
-//!   model at the default resolution.
+//!   model at the default resolution (the preset's closure: report);
+//! - `far_field_baked_energy/<preset>`: the same LUT with its header's closure set to energy
+//!   (the tables do not depend on it), i.e. with the energy closure's normalisation of M
+//!   (docs/model.md §12), so that the normalisation's cost is a ratio measured in one run.
 //!
 //! - `far_field_baked_reference/<preset>`: a copy of the scalar baked path as it was before
 //!   issue 12 (`reference` below), so that the speed-up is a ratio measured in one run;
@@ -14,8 +17,8 @@
 //! - `far_field_baked_dirs/<preset>`: `BakedBcsdf::eval_far_dirs(..).total()` on the same
 //!   directions as world-space vectors.
 //!
-//! Before timing, the setup checks that the reference, the scalar path and the batch agree
-//! bit for bit on the 256 queries.
+//! Before timing, the setup checks that the reference and the report-closure scalar path, and
+//! each closure's scalar path and batch, agree bit for bit on the 256 queries.
 //!
 //! The profiles use a small photon budget: neither evaluation's cost depends on it. The
 //! query index is masked (256 queries), not taken modulo: a division would cost as much as a
@@ -232,6 +235,15 @@ fn bench(c: &mut Criterion) {
         let (model, _) = build_model(params, &opts).unwrap();
         let blob = tables::bake(&model, &preset.input, LutResolution::DEFAULT);
         let baked = BakedBcsdf::from_bytes(&blob).unwrap();
+        // The presets use the report closure; the same tables in the energy closure: header
+        // word 26 (after g) is the closure.
+        assert_eq!(baked.params().closure(), bcsdf_core::Closure::Report);
+        let report = &baked;
+        let mut energy_blob = blob.clone();
+        energy_blob[104..108].copy_from_slice(&1u32.to_le_bytes());
+        bcsdf_core::lut::seal(&mut energy_blob);
+        let energy = BakedBcsdf::from_bytes(&energy_blob).unwrap();
+        assert_eq!(energy.params().closure(), bcsdf_core::Closure::Energy);
         let analytic = model.model();
 
         let mut i = 0usize;
@@ -251,17 +263,20 @@ fn bench(c: &mut Criterion) {
                 cycle().map(Angles::phi).collect(),
             )
         };
-        let mut batch_out = vec![Rgb::ZERO; 256];
-        baked
-            .eval_far_batch(&ti[..256], &tr[..256], &ph[..256], &mut batch_out)
-            .unwrap();
-        for (a, b) in qs.iter().zip(&batch_out) {
-            let scalar = baked.eval_far(a).total();
+        for lut in [&baked, &energy] {
+            let mut batch_out = vec![Rgb::ZERO; 256];
+            lut.eval_far_batch(&ti[..256], &tr[..256], &ph[..256], &mut batch_out)
+                .unwrap();
+            for (a, b) in qs.iter().zip(&batch_out) {
+                let scalar = lut.eval_far(a).total();
+                assert_eq!(scalar.0.map(f32::to_bits), b.0.map(f32::to_bits));
+            }
+        }
+        for a in &qs {
             assert_eq!(
-                scalar.0.map(f32::to_bits),
+                report.eval_far(a).total().0.map(f32::to_bits),
                 reference.eval_far_total(a).0.map(f32::to_bits)
             );
-            assert_eq!(scalar.0.map(f32::to_bits), b.0.map(f32::to_bits));
         }
         let dirs: Vec<(Vec3, Vec3, Vec3)> = qs.iter().map(directions).collect();
 
@@ -279,6 +294,14 @@ fn bench(c: &mut Criterion) {
                 let a = &qs[i & 255];
                 i += 1;
                 black_box(baked.eval_far(black_box(a)).total())
+            })
+        });
+        let mut i = 0usize;
+        c.bench_function(&format!("far_field_baked_energy/{name}"), |b| {
+            b.iter(|| {
+                let a = &qs[i & 255];
+                i += 1;
+                black_box(energy.eval_far(black_box(a)).total())
             })
         });
         let mut i = 0usize;

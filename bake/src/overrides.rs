@@ -29,6 +29,8 @@ pub enum OverrideErrorKind {
     UnknownKey(String),
     /// A value component is not a number (the offending text).
     NotANumber(String),
+    /// The value of a choice parameter (`closure`) is none of its names (the text).
+    NotAChoice(String),
     /// The wrong number of comma-separated components (how many were given).
     WrongArity(usize),
     /// A value outside the parameter's valid range.
@@ -68,6 +70,15 @@ impl fmt::Display for OverrideError {
                 valid_keys()
             ),
             OverrideErrorKind::NotANumber(text) => write!(f, "`{text}` is not a number"),
+            OverrideErrorKind::NotAChoice(text) => {
+                let key = self.spec.split('=').next().unwrap_or("").trim();
+                let choices = ParamName::from_key(key).map_or(&[][..], |n| n.spec().choices);
+                write!(
+                    f,
+                    "`{text}` is not a {key}: valid values are {}",
+                    choices.join(", ")
+                )
+            }
             OverrideErrorKind::WrongArity(n) => {
                 let key = self.spec.split('=').next().unwrap_or("").trim();
                 if key == ParamName::SigmaCa.key() {
@@ -97,6 +108,17 @@ impl Override {
         let key = key.trim();
         let name = ParamName::from_key(key)
             .ok_or_else(|| fail(OverrideErrorKind::UnknownKey(key.to_string())))?;
+        let spec = name.spec();
+        if spec.is_choice() {
+            let text = value.trim();
+            let index = spec
+                .choice_index(text)
+                .ok_or_else(|| fail(OverrideErrorKind::NotAChoice(text.to_string())))?;
+            return Ok(Override {
+                name,
+                value: ParamValue::Choice(index),
+            });
+        }
         let parts: Vec<&str> = value.split(',').map(str::trim).collect();
         let rgb_ok = name == ParamName::SigmaCa;
         if !(parts.len() == 1 || rgb_ok && parts.len() == 3) {

@@ -355,8 +355,25 @@ impl RawPreset {
 }
 
 /// A parameter's value from TOML: a number (integers accepted), or for `sigma_ca` also
-/// `[r, g, b]`. The error says what was expected.
+/// `[r, g, b]`, or for a choice (`closure`) one of its names as a string. The error says
+/// what was expected.
 fn param_value(name: ParamName, value: &toml::Value) -> Result<ParamValue, String> {
+    let spec = name.spec();
+    if spec.is_choice() {
+        let names = spec
+            .choices
+            .iter()
+            .map(|c| format!("\"{c}\""))
+            .collect::<Vec<_>>()
+            .join(" or ");
+        return match value {
+            toml::Value::String(text) => spec
+                .choice_index(text)
+                .map(ParamValue::Choice)
+                .ok_or_else(|| format!("invalid value: \"{text}\", expected {names}")),
+            v => Err(format!("invalid type: {}, expected {names}", v.type_str())),
+        };
+    }
     let number = |v: &toml::Value| match v {
         toml::Value::Float(f) => Some(*f as f32),
         toml::Value::Integer(i) => Some(*i as f32),

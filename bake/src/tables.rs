@@ -1,7 +1,7 @@
 //! Baking: samples the analytic far field into the tables of `bcsdf_core::lut` and encodes
 //! them as a half-float blob.
 //!
-//! Every value comes from the analytic model's own functions (`FurBcsdf::longitudinal`,
+//! Every value comes from the analytic model's own functions (`FurBcsdf::longitudinal_gaussian`,
 //! `azimuthal_far`, `longitudinal_scattered`), so no formula is restated here. Table rows are
 //! sampled in parallel, each value independently, so the blob has the same bits for any
 //! thread count.
@@ -42,11 +42,13 @@ fn angles(theta_i: f32, theta_r: f32, phi: f32) -> Angles {
 pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
     let mut tables: [Vec<f32>; TABLE_COUNT] = Default::default();
 
-    // M_g(x), x = θ_i + θ_r: evaluated as M_g(θ_i = x, θ_r = 0).
+    // M_g(x), x = θ_i + θ_r: the Gaussian G(x − α_g) evaluated as θ_i = x, θ_r = 0 (the
+    // energy closure divides it by its mass on the sphere when the LUT is evaluated).
     tables[Table::M as usize] = (0..res.n_sum as usize)
         .flat_map(|k| {
             let x = node(-PI, 2.0 * PI, k, res.n_sum);
-            [LobeGroup::R, LobeGroup::TT, LobeGroup::TRT].map(|g| model.longitudinal(g, x, 0.0))
+            [LobeGroup::R, LobeGroup::TT, LobeGroup::TRT]
+                .map(|g| model.longitudinal_gaussian(g, x, 0.0))
         })
         .collect();
 

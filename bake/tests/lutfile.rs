@@ -146,6 +146,12 @@ fn exr_layers_hold_the_blob_halves_and_the_metadata() {
                 assert_eq!(attr, Some(&v3), "{}", spec.key);
                 assert!(in_text, "{}", spec.key);
             }
+            Some(ParamValue::Choice(i)) => {
+                let name = spec.choices[usize::from(i)];
+                assert_eq!(text(spec.key), name, "{}", spec.key);
+                let kv = format!("{}={name}", spec.key);
+                assert!(text("params").split(' ').any(|t| t == kv), "{}", spec.key);
+            }
             None => assert!(attr.is_none() && !in_text, "{}", spec.key),
         }
     }

@@ -89,8 +89,8 @@ fn a_damaged_header_attribute_is_refused_naming_the_file_and_the_problem() {
             "LUT parameters are invalid".into(),
         ),
         (
-            changed(157, &[1]),
-            "header field reserved is invalid".into(),
+            changed(104, &2u32.to_le_bytes()),
+            "header field closure is invalid".into(),
         ),
     ];
     for (value, expected) in cases {

@@ -185,6 +185,10 @@ fn fur_lookups(theta_i: f32, theta_r: f32, phi_in: f32) -> FurLookups {
         let b = fur_half(m0 + 3u * (lm.i + 1u) + ch);
         m[ch] = wm0 * a + wm1 * b;
     }
+    let norm = fur_sphere_norms(theta_r);
+    for (var ch = 0u; ch < 3u; ch = ch + 1u) {
+        m[ch] = m[ch] * norm[ch];
+    }
 
     // M^s_back, M^s_front at (theta_i, theta_r): bilinear in table M_s (2 channels).
     let ly = fur_locate(fur_axis(true, 1.0 / FUR_PI, n_ms_r), theta_r);
@@ -530,21 +534,84 @@ fn fur_rows_invert_between(r: FurRows, t0: f32, t1: f32, u: f32) -> f32 {
     return fur_rows_invert(r, t);
 }
 
-// The three M CDFs at x, from one texel pair (BakedBcsdf::m_cdf).
-fn fur_m_cdf(x: f32) -> vec3<f32> {
-    let n_sum = fur_word(4u);
-    let l = fur_locate(fur_axis(true, 1.0 / (2.0 * FUR_PI), n_sum), x);
+// The three M CDFs and interpolated values at a location on the sum axis, from one texel
+// pair (BakedBcsdf::m_cdf_and_value).
+struct FurMAt {
+    cdf: vec3<f32>,
+    value: vec3<f32>,
+}
+
+fn fur_sum_axis() -> FurAxis {
+    return fur_axis(true, 1.0 / (2.0 * FUR_PI), fur_word(4u));
+}
+
+fn fur_m_at(l: FurLoc) -> FurMAt {
     let d0 = fur_density(0u);
     let off = l.w * d0.step;
-    var out = vec3<f32>(0.0);
+    var out = FurMAt(vec3<f32>(0.0), vec3<f32>(0.0));
     for (var g = 0u; g < 3u; g = g + 1u) {
         let d = fur_density(g);
         let v0 = fur_node(d, 0u, l.i);
         let v1 = fur_node(d, 0u, l.i + 1u);
         let at = v0 + (v1 - v0) * l.w;
-        out[g] = fur_f32_at(d.prefix_at + 4u * l.i) + fur_linear_mass(v0, at, off);
+        out.cdf[g] = fur_f32_at(d.prefix_at + 4u * l.i) + fur_linear_mass(v0, at, off);
+        out.value[g] = at;
     }
     return out;
+}
+
+// The three M CDFs at x (BakedBcsdf::m_cdf).
+fn fur_m_cdf(x: f32) -> vec3<f32> {
+    return fur_m_at(fur_locate(fur_sum_axis(), x)).cdf;
+}
+
+// The location dx away from l, clamped (baked::Axis::shifted).
+fn fur_shifted(a: FurAxis, l: FurLoc, dx: f32) -> FurLoc {
+    let u = min(max(f32(l.i) + l.w + dx * a.inv_step, 0.0), a.last);
+    let i = min(u32(floor(u)), a.nodes - 2u);
+    return FurLoc(i, u - f32(i));
+}
+
+// Header word of the closure (byte 104, after g): 0 report, 1 energy (docs/model.md §12).
+const FUR_CLOSURE_WORD: u32 = 26u;
+
+// Smallest M mass the energy closure divides by (longitudinal::MIN_SPHERE_MASS).
+const FUR_MIN_SPHERE_MASS: f32 = 1e-4;
+
+// The energy closure's factor for a tabulated M_g of mass `mass` inside theta_i in
+// [-pi/2, pi/2] (BakedBcsdf::sphere_norm): 1/max(mass, 1e-4); 1 in the report closure.
+fn fur_sphere_norm(mass: vec3<f32>) -> vec3<f32> {
+    if (fur_word(FUR_CLOSURE_WORD) != 1u) {
+        return vec3<f32>(1.0);
+    }
+    return vec3<f32>(1.0) / max(mass, vec3<f32>(FUR_MIN_SPHERE_MASS));
+}
+
+// Width of the pole slivers of the 1/cos^2 guard (model::POLE_SLIVER).
+const FUR_POLE_SLIVER: f32 = 0.010000167;
+
+// The pole sliver's loss s_c (11 M_0 + 28 M_half + M_1)/60 (BakedBcsdf::sphere_norms).
+fn fur_sliver(m0: vec3<f32>, m_half: vec3<f32>, m1: vec3<f32>) -> vec3<f32> {
+    return FUR_POLE_SLIVER * (1.0 / 60.0) * (11.0 * m0 + 28.0 * m_half + m1);
+}
+
+// M_g over tabulated M_g at theta_r (BakedBcsdf::sphere_norms): the interpolant's mass over
+// theta_i in [-pi/2, pi/2] less the pole slivers' loss.
+fn fur_sphere_norms(theta_r: f32) -> vec3<f32> {
+    if (fur_word(FUR_CLOSURE_WORD) != 1u) {
+        return vec3<f32>(1.0);
+    }
+    let axis = fur_sum_axis();
+    let l_lo = fur_locate(axis, theta_r - FUR_HALF_PI);
+    let l_hi = fur_locate(axis, theta_r + FUR_HALF_PI);
+    let lo = fur_m_at(l_lo);
+    let hi = fur_m_at(l_hi);
+    let lo_half = fur_m_at(fur_shifted(axis, l_lo, 0.5 * FUR_POLE_SLIVER)).value;
+    let lo_end = fur_m_at(fur_shifted(axis, l_lo, FUR_POLE_SLIVER)).value;
+    let hi_half = fur_m_at(fur_shifted(axis, l_hi, -0.5 * FUR_POLE_SLIVER)).value;
+    let hi_end = fur_m_at(fur_shifted(axis, l_hi, -FUR_POLE_SLIVER)).value;
+    let loss = fur_sliver(lo.value, lo_half, lo_end) + fur_sliver(hi.value, hi_half, hi_end);
+    return fur_sphere_norm(hi.cdf - lo.cdf - loss);
 }
 
 fn fur_row_total(d: FurDensity, l: FurLoc) -> f32 {
@@ -571,10 +638,12 @@ fn fur_parts(theta_r: f32) -> FurParts {
     let nr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, fur_word(5u)), abs(theta_r));
     let sr = fur_locate(fur_axis(true, 1.0 / FUR_PI, fur_word(8u)), theta_r);
     let nu_s = fur_row_total(fur_density(6u), nr);
+    // The mass of the evaluated M_g: the tabulated one times the closure's factor.
+    let kept = mass * fur_sphere_norms(theta_r);
     let a = array<f32, 5>(
-        fur_positive(2.0 * mass.x * fur_row_total(fur_density(3u), nr)),
-        fur_positive(2.0 * mass.y * fur_row_total(fur_density(4u), nr)),
-        fur_positive(2.0 * mass.z * fur_row_total(fur_density(5u), nr)),
+        fur_positive(2.0 * kept.x * fur_row_total(fur_density(3u), nr)),
+        fur_positive(2.0 * kept.y * fur_row_total(fur_density(4u), nr)),
+        fur_positive(2.0 * kept.z * fur_row_total(fur_density(5u), nr)),
         fur_positive(fur_row_total(fur_density(7u), sr) * nu_s),
         fur_positive(fur_row_total(fur_density(8u), sr) * nu_s),
     );

@@ -10,6 +10,30 @@ const INV_SQRT_TAU: f32 = 0.398_942_3;
 /// of the peak).
 pub const CUTOFF_SIGMAS: f32 = 6.2;
 
+/// ∫ₐᵇ of the standard Gaussian shape e^{−z²} in units of √π/2, i.e. (erf b − erf a), computed
+/// on the tail side that keeps its precision (erfc when both ends are on one side).
+pub(crate) fn erf_mass(a: f64, b: f64) -> f64 {
+    if a >= 0.0 {
+        libm::erfc(a) - libm::erfc(b)
+    } else if b <= 0.0 {
+        libm::erfc(-b) - libm::erfc(-a)
+    } else {
+        libm::erf(b) - libm::erf(a)
+    }
+}
+
+/// Mass of the normalised Gaussian G(x; β) (docs/model.md §5) over [lo, hi] (0 for an empty
+/// interval or a β that is not positive, NaN included: hence the negated comparisons).
+#[must_use]
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+pub fn gaussian_mass(beta: f32, lo: f32, hi: f32) -> f32 {
+    if !(hi > lo) || !(beta > 0.0) {
+        return 0.0;
+    }
+    let k = 1.0 / (core::f64::consts::SQRT_2 * f64::from(beta));
+    (0.5 * erf_mass(f64::from(lo) * k, f64::from(hi) * k)) as f32
+}
+
 /// A normalised Gaussian of standard deviation β.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Gaussian {

@@ -137,7 +137,7 @@ pub use math::{Libm, Math};
 pub use medulla::{MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout, Resolution};
 pub use model::{FurBcsdf, MODEL_VERSION};
 pub use params::{
-    Domain, FurParams, FurParamsInput, HeaderField, InputError, ParamDefault, ParamError,
+    Closure, Domain, FurParams, FurParamsInput, HeaderField, InputError, ParamDefault, ParamError,
     ParamName, ParamSpec, ParamValue, ResolvedParams, SCHEMA,
 };
 pub use pigment::{Pigment, EUMELANIN_SIGMA_A, PHEOMELANIN_SIGMA_A};

@@ -21,9 +21,14 @@ use core::marker::PhantomData;
 /// for grazing light.
 pub const MIN_COS2_THETA_I: f32 = 1e-4;
 
+/// Width of the pole slivers where that guard acts: cos²θ_i < [`MIN_COS2_THETA_I`] within
+/// s_c = asin √1e-4 ≈ 0.573° of θ_i = ±90° (the energy closure's normalisation accounts for
+/// them, docs/model.md §12).
+pub const POLE_SLIVER: f32 = 0.010_000_167;
+
 /// Version of the model's formulas: any change to what S evaluates to bumps it, so baked
 /// tables made by an older model are recognised (`lut` header).
-pub const MODEL_VERSION: u32 = 2;
+pub const MODEL_VERSION: u32 = 3;
 
 /// 1/cos²θ_i of eq. 1, with cos²θ_i kept at or above [`MIN_COS2_THETA_I`]. The analytic and
 /// the baked evaluators both divide by this.
@@ -250,10 +255,19 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         ((n, ns), dens + dens_s)
     }
 
-    /// M_p(θ_i, θ_r) = G(θ_r + θ_i − α_p; β_M) of one cuticle group (report eq. 2–3).
+    /// M_p(θ_i, θ_r) of one cuticle group: G(θ_r + θ_i − α_p; β_M) (report eq. 2–3), in the
+    /// energy closure divided by its mass on the sphere (docs/model.md §12).
     #[must_use]
     pub fn longitudinal(&self, group: LobeGroup, theta_i: f32, theta_r: f32) -> f32 {
         self.groups.m::<M>(group, theta_i, theta_r)
+    }
+
+    /// G(θ_r + θ_i − α_p; β_M) of one cuticle group, the report's M_p (docs/model.md §5):
+    /// what the baked table `M` stores, a function of θ_i + θ_r alone (the energy closure's
+    /// factor is applied when a LUT is evaluated, §12).
+    #[must_use]
+    pub fn longitudinal_gaussian(&self, group: LobeGroup, theta_i: f32, theta_r: f32) -> f32 {
+        self.groups.gaussian::<M>(group, theta_i, theta_r)
     }
 
     /// M^s(θ_i, θ_r, φ), the longitudinal scattered lobe (0 without profiles).
@@ -325,6 +339,15 @@ mod tests {
 
     fn params(name: &str) -> FurParams {
         FurParams::new(&presets::find(name).unwrap().input).unwrap()
+    }
+
+    #[test]
+    fn the_pole_sliver_is_where_the_guard_acts() {
+        let want = libm::asin(libm::sqrt(f64::from(MIN_COS2_THETA_I)));
+        assert!((f64::from(POLE_SLIVER) - want).abs() < 1e-9, "{want}");
+        let edge = |s: f32| libm::cosf(PI / 2.0 - s).powi(2);
+        assert!(edge(POLE_SLIVER * 0.999) < MIN_COS2_THETA_I);
+        assert!(edge(POLE_SLIVER * 1.001) > MIN_COS2_THETA_I);
     }
 
     #[test]

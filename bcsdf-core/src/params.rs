@@ -13,9 +13,11 @@ use crate::pigment::Pigment;
 use crate::spectrum::Rgb;
 use core::fmt;
 
+mod closure;
 mod name;
 mod resolved;
 mod schema;
+pub use closure::Closure;
 pub use name::{check_name, NameError, DEVICE_NAMES, NAME_MAX_BYTES};
 pub use resolved::{HeaderField, ResolvedParams, HEADER_FIELDS};
 pub use schema::{Domain, ParamDefault, ParamSpec, ParamValue, SCHEMA};
@@ -51,6 +53,8 @@ pub enum ParamName {
     SigmaMa,
     /// g, Henyey–Greenstein anisotropy in the medulla.
     G,
+    /// `closure`, the energy closure ([`Closure`], docs/model.md §12).
+    Closure,
 }
 
 impl fmt::Display for ParamName {
@@ -72,6 +76,19 @@ impl core::error::Error for ParamError {}
 
 impl fmt::Display for ParamError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let spec = self.name.spec();
+        if spec.is_choice() {
+            write!(
+                f,
+                "invalid {} = {}: valid values are ",
+                spec.key, self.value
+            )?;
+            for (i, c) in spec.choices.iter().enumerate() {
+                let sep = if i == 0 { "" } else { ", " };
+                write!(f, "{sep}{c}")?;
+            }
+            return Ok(());
+        }
         write!(
             f,
             "invalid {} = {}: valid range is {}",
@@ -141,6 +158,8 @@ pub struct FurParamsInput {
     pub sigma_ma: f32,
     /// g.
     pub g: f32,
+    /// The energy closure (docs/model.md §12).
+    pub closure: Closure,
 }
 
 impl FurParamsInput {
@@ -164,15 +183,19 @@ impl FurParamsInput {
             (ParamName::SigmaMs, _) => scalar(self.sigma_ms),
             (ParamName::SigmaMa, _) => scalar(self.sigma_ma),
             (ParamName::G, _) => scalar(self.g),
+            (ParamName::Closure, _) => Some(ParamValue::Choice(self.closure.index())),
         }
     }
 
     /// Sets one parameter. σ_ca (scalar or RGB) replaces a melanin colour; eumelanin or
     /// pheomelanin replaces an RGB σ_ca (the other concentration then starts from 0). An RGB
-    /// value for any other parameter sets its first channel.
+    /// value for any other parameter sets its first channel. A choice sets `closure` (index
+    /// past the end: left unchanged); a number sets it by index, and a choice sets any
+    /// number parameter to its index.
     pub fn set_value(&mut self, name: ParamName, value: ParamValue) {
         let v = match value {
             ParamValue::Scalar(v) => v,
+            ParamValue::Choice(i) => f32::from(i),
             ParamValue::Rgb(rgb) => {
                 if name == ParamName::SigmaCa {
                     self.pigment = Pigment::Absorption(rgb);
@@ -212,6 +235,15 @@ impl FurParamsInput {
             ParamName::SigmaMs => self.sigma_ms = v,
             ParamName::SigmaMa => self.sigma_ma = v,
             ParamName::G => self.g = v,
+            ParamName::Closure => {
+                // Only whole indices name a closure (FurParams::new rejects nothing here:
+                // the closure field can only hold a valid one).
+                if v == libm::floorf(v) && (0.0..=255.0).contains(&v) {
+                    if let Some(c) = Closure::from_index(v as u8) {
+                        self.closure = c;
+                    }
+                }
+            }
         }
     }
 
@@ -261,6 +293,7 @@ impl FurParamsInput {
             sigma_ms: 0.0,
             sigma_ma: 0.0,
             g: 0.0,
+            closure: Closure::Report,
         }
     }
 
@@ -285,6 +318,7 @@ pub struct FurParams {
     sigma_ms: f32,
     sigma_ma: f32,
     g: f32,
+    closure: Closure,
 }
 
 impl FurParams {
@@ -324,6 +358,7 @@ impl FurParams {
             sigma_ms: ParamName::SigmaMs.check(input.sigma_ms)?,
             sigma_ma: ParamName::SigmaMa.check(input.sigma_ma)?,
             g: ParamName::G.check(input.g)?,
+            closure: input.closure,
         })
     }
 
@@ -381,6 +416,17 @@ impl FurParams {
     #[must_use]
     pub fn g(&self) -> f32 {
         self.g
+    }
+    /// The energy closure (docs/model.md §12).
+    #[must_use]
+    pub fn closure(&self) -> Closure {
+        self.closure
+    }
+    /// The same parameters with another energy closure (docs/model.md §12).
+    #[must_use]
+    pub fn with_closure(mut self, closure: Closure) -> FurParams {
+        self.closure = closure;
+        self
     }
 }
 

@@ -13,7 +13,7 @@
 
 use crate::quadrature::{composite_gl_nodes, gauss_legendre, smoothstep_nodes};
 use crate::tracer::{bravais, cos_refracted, cuticle, trace, CrossSection, PATHS};
-use bcsdf_core::{Angles, FurBcsdf, FurParams, Math};
+use bcsdf_core::{Angles, Closure, FurBcsdf, FurParams, Math};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// The model divides by max(cos²θ_i, MIN_COS2) (bcsdf-core `model::MIN_COS2_THETA_I`; the
@@ -108,7 +108,25 @@ pub fn gaussian_mass(lo: f64, hi: f64, beta: f64) -> f64 {
     0.5 * (erf(hi / s) - erf(lo / s))
 }
 
-/// Mass of M_p(θ_i, θ_r) = G(θ_r + θ_i − α_p; β_M) over θ_i ∈ [−π/2, π/2], weighted as the
+/// The divisor of M_p in closure `closure` (docs/model.md §12): 1 for the report's
+/// Gaussian; for the energy closure the Gaussian's mass over θ_i ∈ [−π/2, π/2] as S weighs
+/// it, with the pole guard of 1/cos²θ_i ([`longitudinal_mass`]: this module's erf and
+/// Gauss–Legendre in the slivers), at least 1e-4 (bcsdf-core's
+/// `longitudinal::MIN_SPHERE_MASS`).
+pub fn sphere_mass(theta_r: f64, g: &GroupShape, closure: Closure) -> f64 {
+    match closure {
+        Closure::Report => 1.0,
+        Closure::Energy => longitudinal_mass(theta_r, g, MIN_COS2).max(1e-4),
+    }
+}
+
+/// M_p(θ_i, θ_r) of one group (docs/model.md §5, §12): G(θ_r + θ_i − α_p; β_M) divided by
+/// [`sphere_mass`].
+pub fn longitudinal_lobe(theta_i: f64, theta_r: f64, g: &GroupShape, closure: Closure) -> f64 {
+    gaussian(theta_r + theta_i - g.shift, g.beta_m) / sphere_mass(theta_r, g, closure)
+}
+
+/// Mass of the report's M_p(θ_i, θ_r) = G(θ_r + θ_i − α_p; β_M) over θ_i ∈ [−π/2, π/2], weighted as the
 /// furnace weights it: S·cos θ_i dω = S·cos²θ_i dθ_i dφ and S carries 1/max(cos²θ_i, c2min),
 /// so θ_i contributes min(1, cos²θ_i/c2min).
 pub fn longitudinal_mass(theta_r: f64, g: &GroupShape, c2min: f64) -> f64 {
@@ -238,11 +256,13 @@ pub struct Prediction {
     pub mass: [f64; 3],
 }
 
-/// ρ(θ_r) = Σ_p ⟨A_p⟩_h · mass_p (docs/model.md §8, unscattered paths).
+/// ρ(θ_r) = Σ_p ⟨A_p⟩_h · mass_p (docs/model.md §8, unscattered paths), with mass_p the
+/// mass of M_p in the parameters' closure (§12): [`longitudinal_mass`] / [`sphere_mass`].
 pub fn predicted_rho(p: &FurParams, theta_r: f64, panels: usize) -> Prediction {
     let fiber = Fiber::of(p);
     let shapes = group_shapes_of(p);
-    let mass = shapes.map(|g| longitudinal_mass(theta_r, &g, MIN_COS2));
+    let mass = shapes
+        .map(|g| longitudinal_mass(theta_r, &g, MIN_COS2) / sphere_mass(theta_r, &g, p.closure()));
     let mean = fiber.mean_attenuations(theta_r, panels);
     let mut rho = [0.0; 3];
     for (path, a) in mean.iter().enumerate() {

@@ -11,7 +11,7 @@ use bake::tables::{encode, node, TableValues};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::{
     self, f16_biased, LutError, LutHeader, LutResolution, ProfileProvenance, Table, F16_UNBIAS,
-    HEADER_LEN, TABLE_COUNT,
+    TABLE_COUNT,
 };
 use bcsdf_core::medulla::{PhotonBudget, Resolution, GENERATOR_VERSION};
 use bcsdf_core::{presets, Angles, LobeFamily, Pigment, Rgb};
@@ -27,8 +27,13 @@ const RES: LutResolution = LutResolution {
     n_ms_r: 11,
 };
 
+/// Bobcat in the report closure: the tables are read as stored (the energy closure's factor
+/// is checked in bcsdf-core's baked tests).
 fn input() -> bcsdf_core::FurParamsInput {
-    presets::find("bobcat").unwrap().input
+    bcsdf_core::FurParamsInput {
+        closure: bcsdf_core::Closure::Report,
+        ..presets::find("bobcat").unwrap().input
+    }
 }
 
 /// Test functions, each linear in every table axis (so bilinear interpolation is exact):
@@ -244,9 +249,10 @@ fn malformed_blobs_are_rejected_with_the_right_error() {
     *b.last_mut().unwrap() ^= 0x01; // a still-valid half, changed after sealing
     assert!(matches!(err(&b), LutError::Checksum { .. }));
 
+    // Closure 2 names nothing (0 report, 1 energy: the word after g).
     let mut b = good.clone();
-    b[HEADER_LEN - 1] = 1;
-    assert_eq!(err(&sealed(b)), LutError::Field { field: "reserved" });
+    b[104..108].copy_from_slice(&2u32.to_le_bytes());
+    assert_eq!(err(&sealed(b)), LutError::Field { field: "closure" });
 
     // Every message is one line.
     for e in [

@@ -151,6 +151,7 @@ fn far_field_matches_fine_reference_for_random_parameters() {
             sigma_ms: 5.0 * u(),
             sigma_ma: u(),
             g: 0.9 * u(),
+            closure: bcsdf_core::Closure::Energy,
         };
         let m = model(&input);
         let tr = -70.0 + 140.0 * u();

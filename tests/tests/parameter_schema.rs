@@ -27,6 +27,11 @@ fn one_per_row() -> Vec<(ParamName, FurParamsInput, ParamValue)> {
                     let q = quarter(spec.name);
                     ParamValue::Rgb(Rgb([q, 0.5 * q, 0.25 * q]))
                 }
+                // A choice: the one that is not the default.
+                _ if spec.is_choice() => match input.value(spec.name) {
+                    Some(ParamValue::Choice(i)) => ParamValue::Choice(1 - i),
+                    other => panic!("{}: {other:?}", spec.key),
+                },
                 n => ParamValue::Scalar(quarter(n)),
             };
             input.set_value(spec.name, value);
@@ -46,6 +51,9 @@ fn toml_of(name: &str, input: &FurParamsInput) -> String {
                     "{} = [{:?}, {:?}, {:?}]\n",
                     spec.key, c.0[0], c.0[1], c.0[2]
                 )
+            }
+            Some(ParamValue::Choice(i)) => {
+                text += &format!("{} = \"{}\"\n", spec.key, spec.choices[usize::from(i)])
             }
             None => {}
         }
@@ -91,9 +99,42 @@ fn set_overrides_reach_every_parameter() {
         let text = match value {
             ParamValue::Scalar(v) => format!("{}={v}", name.key()),
             ParamValue::Rgb(c) => format!("{}={},{},{}", name.key(), c.0[0], c.0[1], c.0[2]),
+            ParamValue::Choice(i) => {
+                format!("{}={}", name.key(), name.spec().choices[usize::from(i)])
+            }
         };
         let mut input = bcsdf_core::presets::find("human-hair").unwrap().input;
         Override::parse(&text).unwrap().apply(&mut input);
         assert_eq!(input.value(name), Some(value), "{text}");
+    }
+}
+
+#[test]
+fn closure_takes_its_names_and_nothing_else() {
+    // --set: the names, and one clear error for anything else.
+    for (text, want) in [("closure=report", 0u8), ("closure = energy", 1)] {
+        let o = Override::parse(text).unwrap();
+        assert_eq!(o.value, ParamValue::Choice(want), "{text}");
+    }
+    for text in ["closure=1", "closure=Energy", "closure="] {
+        let e = Override::parse(text).unwrap_err().to_string();
+        assert!(e.contains("valid values are report, energy"), "{text}: {e}");
+    }
+    // Preset files: a string naming one of them.
+    let base = "[[preset]]\nname = \"c\"\nsource = \"s\"\neta_c = 1.5\nsigma_ca = 0.1\n\
+                alpha_deg = 2\nbeta_m_deg = 5\nl = 0.5\nkappa = 0\nsigma_ms = 0\ng = 0\n";
+    let parsed = presets::parse(&format!("{base}closure = \"report\"\n"), "c.toml").unwrap();
+    assert_eq!(parsed[0].input.closure, bcsdf_core::Closure::Report);
+    let parsed = presets::parse(base, "c.toml").unwrap();
+    assert_eq!(
+        parsed[0].input.closure,
+        bcsdf_core::Closure::Energy,
+        "the default"
+    );
+    for bad in ["closure = \"both\"", "closure = 1"] {
+        let e = presets::parse(&format!("{base}{bad}\n"), "c.toml")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("\"report\" or \"energy\""), "{bad}: {e}");
     }
 }

@@ -28,7 +28,9 @@ fn assert_same_input(toml: &FurParamsInput, core: &FurParamsInput, name: &str) {
         sigma_ms,
         sigma_ma,
         g,
+        closure,
     } = *toml;
+    assert_eq!(closure, core.closure, "{name}: closure");
     let scalars = [
         ("eta_c", eta_c, core.eta_c),
         ("alpha_deg", alpha_deg, core.alpha_deg),

@@ -96,6 +96,7 @@ fn params(c: &Case) -> FurParams {
         sigma_ms: 0.0,
         sigma_ma: 0.0,
         g: 0.0,
+        closure: bcsdf_core::Closure::Energy,
     })
     .expect("valid parameters")
 }

@@ -12,7 +12,9 @@
 //!   fiber, TRT + TttRttT is TRT.
 
 use bcsdf_core::{presets, Angles, FurBcsdf, FurParams, FurParamsInput, Lobe, Pigment, Rgb};
-use fur_tests::furnace::{gaussian, group_shapes_of, wrapped_gaussian, Fiber, GROUP_OF_PATH};
+use fur_tests::furnace::{
+    gaussian, group_shapes_of, longitudinal_lobe, wrapped_gaussian, Fiber, GROUP_OF_PATH,
+};
 use fur_tests::tracer::{bravais, trace, SplitMix64, PATHS};
 
 const MEDULLA_PATHS: [Lobe; 5] = [
@@ -42,6 +44,7 @@ fn random_input(rng: &mut SplitMix64) -> FurParamsInput {
         sigma_ms: rng.range_f32(0.0, 4.0),
         sigma_ma: rng.range_f32(0.0, 1.0),
         g: rng.range_f32(0.0, 0.9),
+        closure: bcsdf_core::Closure::Energy,
     }
 }
 
@@ -68,7 +71,7 @@ fn reference_near(p: &FurParams, a: &Angles, h: f64) -> [[f64; 3]; 8] {
             continue;
         };
         let g = shapes[GROUP_OF_PATH[path]];
-        let m = gaussian(tr + ti - g.shift, g.beta_m);
+        let m = longitudinal_lobe(ti, tr, &g, p.closure());
         let d = wrapped_gaussian(phi - t.exit_azimuth, g.beta_n);
         for ch in 0..3 {
             out[path][ch] = m * d * att[path][ch] * inv_cos2;

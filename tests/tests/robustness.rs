@@ -104,6 +104,7 @@ fn valid_input() -> impl Strategy<Value = FurParamsInput> {
                     sigma_ms: sms,
                     sigma_ma: sma,
                     g,
+                    closure: bcsdf_core::Closure::Energy,
                 }
             },
         )
@@ -194,6 +195,23 @@ proptest! {
     }
 }
 
+/// The number parameters (every schema row but the choice `closure`, whose field is typed).
+const NUMBERS: [ParamName; 13] = [
+    ParamName::EtaC,
+    ParamName::SigmaCa,
+    ParamName::Eumelanin,
+    ParamName::Pheomelanin,
+    ParamName::AlphaDeg,
+    ParamName::BetaMDeg,
+    ParamName::BetaNDeg,
+    ParamName::L,
+    ParamName::Kappa,
+    ParamName::EtaM,
+    ParamName::SigmaMs,
+    ParamName::SigmaMa,
+    ParamName::G,
+];
+
 /// One parameter set to an invalid value (σ_ca: in its green channel only).
 fn set_invalid(input: &mut FurParamsInput, name: ParamName, v: f32) {
     match name {
@@ -225,6 +243,9 @@ fn invalid_value(name: ParamName) -> BoxedStrategy<f32> {
             prop_oneof![-1e30f32..=0.0, Just(0.0f32)].boxed()
         }
         ParamName::AlphaDeg => prop_oneof![90.0f32..1e30, -1e30f32..-90.0].boxed(),
+        // Not a whole index of a choice (`closure`); not drawn below, since the typed field
+        // cannot hold it (its parsers' errors are tested in bake).
+        ParamName::Closure => prop_oneof![Just(0.5f32), Just(2.0f32)].boxed(),
     };
     prop_oneof![1 => non_finite, 3 => class].boxed()
 }
@@ -234,8 +255,8 @@ proptest! {
 
     #[test]
     fn invalid_parameters_are_rejected_by_name(
-        (name, v) in (0..ParamName::ALL.len())
-            .prop_flat_map(|i| (Just(ParamName::ALL[i]), invalid_value(ParamName::ALL[i]))),
+        (name, v) in (0..NUMBERS.len())
+            .prop_flat_map(|i| (Just(NUMBERS[i]), invalid_value(NUMBERS[i]))),
         base in 0..presets::PRESETS.len(),
     ) {
         let mut input = presets::PRESETS[base].input;

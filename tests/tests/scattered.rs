@@ -71,6 +71,7 @@ fn forward_scattering_peaks_where_model_says() {
         sigma_ms: 2.0,
         sigma_ma: 0.0,
         g: 0.99,
+        closure: bcsdf_core::Closure::Energy,
     };
     let matched = FurParamsInput {
         eta_m: None,
@@ -449,6 +450,7 @@ fn lossless() -> FurParams {
         sigma_ms: 6.0,
         sigma_ma: 0.0,
         g: 0.3,
+        closure: bcsdf_core::Closure::Energy,
     })
     .unwrap()
 }
@@ -508,6 +510,7 @@ fn scattered_longitudinal_peak_follows_the_tt_tilt() {
         sigma_ms: 2.0,
         sigma_ma: 0.0,
         g: 0.99,
+        closure: bcsdf_core::Closure::Energy,
     };
     let p = FurParams::new(&input).unwrap();
     let prof = OwnedProfiles::for_params(&p, res, budget, 0x7117_0001);

@@ -171,6 +171,7 @@ fn cases() -> [Case; 3] {
                 sigma_ms: 4.0,
                 sigma_ma: 0.0,
                 g: 0.3,
+                closure: bcsdf_core::Closure::Energy,
                 pigment: Pigment::Absorption(Rgb::splat(0.2)),
                 l: 0.5,
                 ..row_a

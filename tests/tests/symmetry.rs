@@ -40,6 +40,7 @@ fn random_params(rng: &mut SplitMix64) -> FurParams {
         sigma_ms: rng.range_f32(0.0, 10.0),
         sigma_ma: rng.range_f32(0.0, 2.0),
         g: rng.range_f32(-0.9, 0.95),
+        closure: bcsdf_core::Closure::Energy,
     })
     .expect("valid parameters")
 }

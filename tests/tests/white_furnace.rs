@@ -182,6 +182,7 @@ fn random_params(rng: &mut SplitMix64) -> FurParams {
         sigma_ms: rng.range_f32(0.0, 5.0),
         sigma_ma: rng.range_f32(0.0, 1.0),
         g: rng.range_f32(-0.5, 0.95),
+        closure: bcsdf_core::Closure::Energy,
     };
     FurParams::new(&input).expect("valid random parameters")
 }
@@ -231,6 +232,7 @@ fn rho_never_exceeds_one() {
                 sigma_ms: 0.0,
                 sigma_ma: 0.0,
                 g: 0.0,
+                closure: bcsdf_core::Closure::Energy,
             };
             input.l = rng.range_f32(0.0, 64.0);
             p = FurParams::new(&input).unwrap();
@@ -276,6 +278,7 @@ fn deficit_is_energy_beyond_trt() {
             sigma_ms: 0.0,
             sigma_ma: 0.0,
             g: 0.0,
+            closure: bcsdf_core::Closure::Energy,
         })
         .unwrap();
         let model: FurBcsdf = FurBcsdf::unscattered(p);

@@ -72,6 +72,7 @@ fn cell(input: &FurParamsInput, spec: &ParamSpec) -> String {
         Some(ParamValue::Scalar(v)) => format!("{v}"),
         Some(ParamValue::Rgb(Rgb([r, g, b]))) if r == g && g == b => format!("{r}"),
         Some(ParamValue::Rgb(Rgb([r, g, b]))) => format!("{r},{g},{b}"),
+        Some(ParamValue::Choice(i)) => spec.choice_name(i).unwrap_or("?").to_string(),
         None => String::from("-"),
     }
 }
@@ -168,6 +169,7 @@ impl<'a> PresetsJson<'a> {
                         let v = match resolved.value(s.name)? {
                             ParamValue::Scalar(v) => serde_json::json!(v),
                             ParamValue::Rgb(Rgb(c)) => serde_json::json!(c),
+                            ParamValue::Choice(i) => serde_json::json!(s.choice_name(i)?),
                         };
                         Some((s.key.to_string(), v))
                     })

@@ -195,6 +195,7 @@ fn parameter_rows(params: &FurParamsInput) -> Vec<ParamRow> {
             let value = match (params.value(spec.name), spec.default) {
                 (Some(ParamValue::Scalar(v)), _) => format!("{v}"),
                 (Some(ParamValue::Rgb(Rgb([r, g, b]))), _) => format!("{r}, {g}, {b}"),
+                (Some(ParamValue::Choice(i)), _) => spec.choice_name(i)?.to_string(),
                 (None, ParamDefault::SameAs(source)) => format!("= {}", source.spec().symbol),
                 (None, _) => return None,
             };
@@ -326,6 +327,7 @@ mod tests {
             sigma_ms: 2.5,
             sigma_ma: 0.0,
             g: 0.8,
+            closure: bcsdf_core::Closure::Energy,
         }
     }
 
@@ -354,6 +356,7 @@ mod tests {
         assert_eq!(value("beta_n_deg"), "= β_m");
         assert_eq!(value("eta_m"), "1.4");
         assert_eq!(value("g"), "0.8");
+        assert_eq!(value("closure"), "energy");
 
         let melanin = input(Pigment::Melanin {
             eumelanin: 1.5,

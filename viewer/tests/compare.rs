@@ -90,12 +90,14 @@ fn write_lut(dir: &Path, name: &str, preset: &str, blob: &[u8]) -> PathBuf {
     path
 }
 
-/// `blob` with every value of table `M` (the longitudinal functions of the R, TT and TRT
-/// groups) multiplied by `factor`, resealed so that it is a valid LUT.
+/// `blob` with every value of table `N` (the azimuthal functions of every family) multiplied
+/// by `factor`, resealed so that it is a valid LUT.
 fn perturbed(blob: &[u8], factor: f32) -> Vec<u8> {
     let mut blob = blob.to_vec();
     let header = lut::validate(&blob).unwrap();
-    let range = header.res.byte_range(Table::M);
+    // Table N: in the energy closure M_g is divided by its own mass, so a scaled table M
+    // would not change S there (docs/model.md §12); a scaled N changes S in both closures.
+    let range = header.res.byte_range(Table::N);
     for pair in blob[range].chunks_exact_mut(2) {
         let v = half::f16::from_bits(u16::from_le_bytes([pair[0], pair[1]]));
         let scaled = half::f16::from_f32(v.to_f32() * factor);

@@ -44,21 +44,9 @@ struct FurLookups {
     float front;
     float inv_cos2_;
 };
-struct type_8 {
-    float inner[4];
-};
-struct type_9 {
-    metal::float3 inner[4];
-};
-struct FurSample {
-    float theta_i;
-    float phi;
-    float pdf;
-    char _pad3[4];
-    metal::packed_float3 weight;
-    uint family;
-    bool ok;
-    char _pad6[15];
+struct FurMAt {
+    metal::float3 cdf;
+    metal::float3 value;
 };
 struct FurDensity {
     uint prefix_at;
@@ -71,8 +59,24 @@ struct FurDensity {
     uint first;
     uint channels;
 };
-struct type_10 {
+struct type_8 {
     uint inner[3];
+};
+struct type_9 {
+    float inner[4];
+};
+struct type_10 {
+    metal::float3 inner[4];
+};
+struct FurSample {
+    float theta_i;
+    float phi;
+    float pdf;
+    char _pad3[4];
+    metal::packed_float3 weight;
+    uint family;
+    bool ok;
+    char _pad6[15];
 };
 struct FurRows {
     FurDensity d;
@@ -100,6 +104,9 @@ constant float FUR_HALF_PI = 1.5707964;
 constant float FUR_TAU = 6.2831855;
 constant float FUR_MIN_COS2_ = 0.0001;
 constant uint FUR_HEADER_HALVES = 80u;
+constant uint FUR_CLOSURE_WORD = 26u;
+constant float FUR_POLE_SLIVER = 0.010000167;
+constant float FUR_MIN_SPHERE_MASS = 0.0001;
 
 FurAxis fur_axis(
     bool centred,
@@ -156,9 +163,9 @@ float fur_cos_within_half_pi(
 ) {
     float acc = -0.0000002755732;
     float acc_1 = 0.0000027557319;
-    float a_1 = metal::abs(x_1);
-    if (a_1 <= 0.7853982) {
-        float y_2 = a_1 * a_1;
+    float a_2 = metal::abs(x_1);
+    if (a_2 <= 0.7853982) {
+        float y_2 = a_2 * a_2;
         float _e7 = acc;
         acc = (_e7 * y_2) + 0.000024801588;
         float _e11 = acc;
@@ -170,7 +177,7 @@ float fur_cos_within_half_pi(
         float _e23 = acc;
         return (_e23 * y_2) + 1.0;
     }
-    float r_6 = (1.5707964 - a_1) + -0.00000004371139;
+    float r_6 = (1.5707964 - a_2) + -0.00000004371139;
     float y_3 = r_6 * r_6;
     float _e34 = acc_1;
     acc_1 = (_e34 * y_3) - 0.0001984127;
@@ -294,45 +301,260 @@ bool fur_valid(
     return _e27;
 }
 
-FurLookups fur_lookups(
-    float theta_i_1,
-    float theta_r_1,
-    float phi_in,
+FurAxis fur_sum_axis(
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    type_5 m = {};
-    uint ch = 0u;
-    type_6 ms = {};
-    uint ch_1 = 0u;
-    type_7 n = {};
-    uint ch_2 = 0u;
-    float _e3 = fur_wrap_angle(phi_in);
-    uint _e5 = fur_word(4u, fur_lut, _buffer_sizes);
-    uint _e7 = fur_word(5u, fur_lut, _buffer_sizes);
-    uint _e9 = fur_word(6u, fur_lut, _buffer_sizes);
-    uint _e11 = fur_word(7u, fur_lut, _buffer_sizes);
-    uint _e13 = fur_word(8u, fur_lut, _buffer_sizes);
-    uint n0_ = FUR_HEADER_HALVES + (3u * _e5);
-    uint s0_ = n0_ + ((12u * _e9) * _e7);
-    float abs_phi = metal::abs(_e3);
-    float _e23 = fur_cos_within_half_pi(theta_i_1);
-    float inv_cos2_ = 1.0 / metal::max(_e23 * _e23, FUR_MIN_COS2_);
-    FurAxis _e31 = fur_axis(true, 0.15915494, _e5);
-    FurLoc _e33 = fur_locate(_e31, theta_i_1 + theta_r_1);
-    float _e35 = fur_unbias(0u, fur_lut, _buffer_sizes);
-    float wm0_ = (1.0 - _e33.w) * _e35;
-    float wm1_ = _e33.w * _e35;
+    uint _e3 = fur_word(4u, fur_lut, _buffer_sizes);
+    FurAxis _e4 = fur_axis(true, 0.15915494, _e3);
+    return _e4;
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint fur_entries(
+    uint nodes_1,
+    uint block
+) {
+    return naga_div(((nodes_1 - 1u) + block) - 1u, block) + 1u;
+}
+
+FurDensity fur_density(
+    uint d,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint at = {};
+    uint _e2 = fur_word(4u, fur_lut, _buffer_sizes);
+    uint _e4 = fur_word(5u, fur_lut, _buffer_sizes);
+    uint _e6 = fur_word(6u, fur_lut, _buffer_sizes);
+    uint _e8 = fur_word(7u, fur_lut, _buffer_sizes);
+    uint _e10 = fur_word(8u, fur_lut, _buffer_sizes);
+    uint values = ((3u * _e2) + ((12u * _e6) * _e4)) + ((2u * _e8) * _e10);
+    at = 160u + (2u * values);
+    uint _e27 = fur_entries(_e2, 1u);
+    uint _e29 = fur_entries(_e6, 8u);
+    uint _e31 = fur_entries(_e8, 8u);
+    if (d < 3u) {
+        uint _e34 = at;
+        return FurDensity {_e34 + ((4u * d) * _e27), _e27, _e2, 1u, 6.2831855 / static_cast<float>(_e2 - 1u), 1u, 0u, d, 1u};
+    }
+    uint _e49 = at;
+    at = _e49 + (12u * _e27);
+    if (d < 7u) {
+        uint f_2 = d - 3u;
+        uint _e57 = at;
+        return FurDensity {_e57 + (((4u * f_2) * _e4) * _e29), _e29, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 3u * f_2, 3u};
+    }
+    uint _e74 = at;
+    at = _e74 + ((16u * _e4) * _e29);
+    uint x_7 = d - 7u;
+    uint _e81 = at;
+    return FurDensity {_e81 + (((4u * x_7) * _e10) * _e31), _e31, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_7, 1u};
+}
+
+float fur_node(
+    FurDensity d_1,
+    uint row,
+    uint j,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e4 = fur_word(4u, fur_lut, _buffer_sizes);
+    uint _e6 = fur_word(5u, fur_lut, _buffer_sizes);
+    uint _e8 = fur_word(6u, fur_lut, _buffer_sizes);
+    uint n0_ = FUR_HEADER_HALVES + (3u * _e4);
+    uint s0_ = n0_ + ((12u * _e8) * _e6);
+    type_8 starts = type_8 {{FUR_HEADER_HALVES, n0_, s0_}};
+    type_8 chans = type_8 {{3u, 12u, 2u}};
+    uint base = (starts.inner[d_1.table] + (((row * d_1.nodes) + j) * chans.inner[d_1.table])) + d_1.first;
+    if (d_1.channels == 3u) {
+        float _e36 = fur_half(base, fur_lut, _buffer_sizes);
+        float _e39 = fur_half(base + 1u, fur_lut, _buffer_sizes);
+        float _e43 = fur_half(base + 2u, fur_lut, _buffer_sizes);
+        float sum = (_e36 + _e39) + _e43;
+        float _e46 = fur_unbias(d_1.table, fur_lut, _buffer_sizes);
+        return sum * (_e46 * 0.33333334);
+    }
+    float _e50 = fur_half(base, fur_lut, _buffer_sizes);
+    float _e52 = fur_unbias(d_1.table, fur_lut, _buffer_sizes);
+    return _e50 * _e52;
+}
+
+float fur_f32_at(
+    uint byte,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint w_2 = byte >> 2u;
+    if ((byte & 3u) == 0u) {
+        uint _e9 = fur_lut[w_2];
+        return as_type<float>(_e9);
+    }
+    uint _e13 = fur_lut[w_2];
+    uint _e20 = fur_lut[w_2 + 1u];
+    return as_type<float>((_e13 >> 16u) | (_e20 << 16u));
+}
+
+float fur_linear_mass(
+    float v0_,
+    float v1_,
+    float len
+) {
+    return (0.5 * len) * (v0_ + v1_);
+}
+
+FurMAt fur_m_at(
+    FurLoc l,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FurMAt out = FurMAt {metal::float3(0.0), metal::float3(0.0)};
+    uint g = 0u;
+    FurDensity _e2 = fur_density(0u, fur_lut, _buffer_sizes);
+    float off = l.w * _e2.step;
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
+            uint _e45 = g;
+            g = _e45 + 1u;
+        }
+        loop_init = false;
+        uint _e14 = g;
+        if (_e14 < 3u) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = g;
+            FurDensity _e18 = fur_density(_e17, fur_lut, _buffer_sizes);
+            float _e21 = fur_node(_e18, 0u, l.i, fur_lut, _buffer_sizes);
+            float _e26 = fur_node(_e18, 0u, l.i + 1u, fur_lut, _buffer_sizes);
+            float at_1 = _e21 + ((_e26 - _e21) * l.w);
+            uint _e32 = g;
+            float _e39 = fur_f32_at(_e18.prefix_at + (4u * l.i), fur_lut, _buffer_sizes);
+            float _e40 = fur_linear_mass(_e21, at_1, off);
+            out.cdf[_e32] = _e39 + _e40;
+            uint _e43 = g;
+            out.value[_e43] = at_1;
+        }
+    }
+    FurMAt _e48 = out;
+    return _e48;
+}
+
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+FurLoc fur_shifted(
+    FurAxis a_1,
+    FurLoc l_1,
+    float dx
+) {
+    float u_5 = metal::min(metal::max((static_cast<float>(l_1.i) + l_1.w) + (dx * a_1.inv_step), 0.0), a_1.last);
+    uint i_1 = metal::min(naga_f2u32(metal::floor(u_5)), a_1.nodes - 2u);
+    return FurLoc {i_1, u_5 - static_cast<float>(i_1)};
+}
+
+metal::float3 fur_sliver(
+    metal::float3 m0_,
+    metal::float3 m_half,
+    metal::float3 m1_
+) {
+    return 0.00016666946 * (((11.0 * m0_) + (28.0 * m_half)) + m1_);
+}
+
+metal::float3 fur_sphere_norm(
+    metal::float3 mass,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e2 = fur_word(FUR_CLOSURE_WORD, fur_lut, _buffer_sizes);
+    if (_e2 != 1u) {
+        return metal::float3(1.0);
+    }
+    return metal::float3(1.0) / metal::max(mass, metal::float3(0.0001));
+}
+
+metal::float3 fur_sphere_norms(
+    float theta_r_1,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e2 = fur_word(FUR_CLOSURE_WORD, fur_lut, _buffer_sizes);
+    if (_e2 != 1u) {
+        return metal::float3(1.0);
+    }
+    FurAxis _e7 = fur_sum_axis(fur_lut, _buffer_sizes);
+    FurLoc _e10 = fur_locate(_e7, theta_r_1 - FUR_HALF_PI);
+    FurLoc _e13 = fur_locate(_e7, theta_r_1 + FUR_HALF_PI);
+    FurMAt _e14 = fur_m_at(_e10, fur_lut, _buffer_sizes);
+    FurMAt _e15 = fur_m_at(_e13, fur_lut, _buffer_sizes);
+    FurLoc _e17 = fur_shifted(_e7, _e10, 0.0050000837);
+    FurMAt _e18 = fur_m_at(_e17, fur_lut, _buffer_sizes);
+    metal::float3 lo_half = _e18.value;
+    FurLoc _e21 = fur_shifted(_e7, _e10, FUR_POLE_SLIVER);
+    FurMAt _e22 = fur_m_at(_e21, fur_lut, _buffer_sizes);
+    metal::float3 lo_end = _e22.value;
+    FurLoc _e25 = fur_shifted(_e7, _e13, -0.0050000837);
+    FurMAt _e26 = fur_m_at(_e25, fur_lut, _buffer_sizes);
+    metal::float3 hi_half = _e26.value;
+    FurLoc _e29 = fur_shifted(_e7, _e13, -0.010000167);
+    FurMAt _e30 = fur_m_at(_e29, fur_lut, _buffer_sizes);
+    metal::float3 hi_end = _e30.value;
+    metal::float3 _e33 = fur_sliver(_e14.value, lo_half, lo_end);
+    metal::float3 _e35 = fur_sliver(_e15.value, hi_half, hi_end);
+    metal::float3 loss = _e33 + _e35;
+    metal::float3 _e41 = fur_sphere_norm((_e15.cdf - _e14.cdf) - loss, fur_lut, _buffer_sizes);
+    return _e41;
+}
+
+FurLookups fur_lookups(
+    float theta_i_1,
+    float theta_r_2,
+    float phi_in,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    type_5 m = {};
+    uint ch = 0u;
+    uint ch_1 = 0u;
+    type_6 ms = {};
+    uint ch_2 = 0u;
+    type_7 n = {};
+    uint ch_3 = 0u;
+    float _e3 = fur_wrap_angle(phi_in);
+    uint _e5 = fur_word(4u, fur_lut, _buffer_sizes);
+    uint _e7 = fur_word(5u, fur_lut, _buffer_sizes);
+    uint _e9 = fur_word(6u, fur_lut, _buffer_sizes);
+    uint _e11 = fur_word(7u, fur_lut, _buffer_sizes);
+    uint _e13 = fur_word(8u, fur_lut, _buffer_sizes);
+    uint n0_1 = FUR_HEADER_HALVES + (3u * _e5);
+    uint s0_1 = n0_1 + ((12u * _e9) * _e7);
+    float abs_phi = metal::abs(_e3);
+    float _e23 = fur_cos_within_half_pi(theta_i_1);
+    float inv_cos2_ = 1.0 / metal::max(_e23 * _e23, FUR_MIN_COS2_);
+    FurAxis _e31 = fur_axis(true, 0.15915494, _e5);
+    FurLoc _e33 = fur_locate(_e31, theta_i_1 + theta_r_2);
+    float _e35 = fur_unbias(0u, fur_lut, _buffer_sizes);
+    float wm0_ = (1.0 - _e33.w) * _e35;
+    float wm1_ = _e33.w * _e35;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
             uint _e69 = ch;
             ch = _e69 + 1u;
         }
-        loop_init = false;
+        loop_init_1 = false;
         uint _e45 = ch;
         if (_e45 < 3u) {
         } else {
@@ -347,112 +569,136 @@ FurLookups fur_lookups(
             m.inner[_e64] = (wm0_ * _e54) + (wm1_ * _e63);
         }
     }
-    FurAxis _e74 = fur_axis(true, 0.31830987, _e13);
-    FurLoc _e75 = fur_locate(_e74, theta_r_1);
-    FurAxis _e78 = fur_axis(true, 0.31830987, _e11);
-    FurLoc _e79 = fur_locate(_e78, theta_i_1);
-    float _e81 = fur_unbias(2u, fur_lut, _buffer_sizes);
-    {
-        float ky0_ = (1.0 - _e75.w) * _e81;
-        float ky1_ = _e75.w * _e81;
-        float w0_ = ky0_ * (1.0 - _e79.w);
-        float w1_ = ky0_ * _e79.w;
-        float w2_ = ky1_ * (1.0 - _e79.w);
-        float w3_ = ky1_ * _e79.w;
-        uint i0_ = (_e75.i * _e11) + _e79.i;
-        uint2 loop_bound_1 = uint2(4294967295u);
-        bool loop_init_1 = true;
-        while(true) {
-            if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-            if (!loop_init_1) {
-                uint _e149 = ch_1;
-                ch_1 = _e149 + 1u;
-            }
-            loop_init_1 = false;
-            uint _e107 = ch_1;
-            if (_e107 < 2u) {
-            } else {
-                break;
-            }
-            {
-                uint _e113 = ch_1;
-                float _e115 = fur_half((s0_ + (2u * i0_)) + _e113, fur_lut, _buffer_sizes);
-                uint _e121 = ch_1;
-                float _e123 = fur_half((s0_ + (2u * (i0_ + 1u))) + _e121, fur_lut, _buffer_sizes);
-                uint _e128 = ch_1;
-                float _e130 = fur_half((s0_ + (2u * (i0_ + _e11))) + _e128, fur_lut, _buffer_sizes);
-                uint _e137 = ch_1;
-                float _e139 = fur_half((s0_ + (2u * ((i0_ + _e11) + 1u))) + _e137, fur_lut, _buffer_sizes);
-                uint _e140 = ch_1;
-                ms.inner[_e140] = (((w0_ * _e115) + (w1_ * _e123)) + (w2_ * _e130)) + (w3_ * _e139);
-            }
-        }
-    }
-    float front_w = metal::min(abs_phi * 0.31830987, 1.0);
-    FurAxis _e158 = fur_axis(false, 0.63661975, _e7);
-    FurLoc _e160 = fur_locate(_e158, metal::abs(theta_r_1));
-    FurAxis _e163 = fur_axis(false, 0.31830987, _e9);
-    FurLoc _e164 = fur_locate(_e163, abs_phi);
-    float _e166 = fur_unbias(1u, fur_lut, _buffer_sizes);
-    float ny0_ = (1.0 - _e160.w) * _e166;
-    float ny1_ = _e160.w * _e166;
-    float v0_2 = ny0_ * (1.0 - _e164.w);
-    float v1_2 = ny0_ * _e164.w;
-    float v2_ = ny1_ * (1.0 - _e164.w);
-    float v3_ = ny1_ * _e164.w;
-    uint j0_ = (_e160.i * _e9) + _e164.i;
+    metal::float3 _e72 = fur_sphere_norms(theta_r_2, fur_lut, _buffer_sizes);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e234 = ch_2;
-            ch_2 = _e234 + 1u;
+            uint _e86 = ch_1;
+            ch_1 = _e86 + 1u;
         }
         loop_init_2 = false;
-        uint _e192 = ch_2;
-        if (_e192 < 12u) {
+        uint _e75 = ch_1;
+        if (_e75 < 3u) {
         } else {
             break;
         }
         {
-            uint _e198 = ch_2;
-            float _e200 = fur_half((n0_ + (12u * j0_)) + _e198, fur_lut, _buffer_sizes);
-            uint _e206 = ch_2;
-            float _e208 = fur_half((n0_ + (12u * (j0_ + 1u))) + _e206, fur_lut, _buffer_sizes);
-            uint _e213 = ch_2;
-            float _e215 = fur_half((n0_ + (12u * (j0_ + _e9))) + _e213, fur_lut, _buffer_sizes);
-            uint _e222 = ch_2;
-            float _e224 = fur_half((n0_ + (12u * ((j0_ + _e9) + 1u))) + _e222, fur_lut, _buffer_sizes);
-            uint _e225 = ch_2;
-            n.inner[_e225] = (((v0_2 * _e200) + (v1_2 * _e208)) + (v2_ * _e215)) + (v3_ * _e224);
+            uint _e78 = ch_1;
+            uint _e80 = ch_1;
+            float _e82 = m.inner[_e80];
+            uint _e83 = ch_1;
+            m.inner[_e78] = _e82 * _e72[_e83];
         }
     }
-    type_5 _e237 = m;
-    type_6 _e238 = ms;
-    type_7 _e239 = n;
-    return FurLookups {_e237, _e238, _e239, front_w, inv_cos2_};
+    FurAxis _e91 = fur_axis(true, 0.31830987, _e13);
+    FurLoc _e92 = fur_locate(_e91, theta_r_2);
+    FurAxis _e95 = fur_axis(true, 0.31830987, _e11);
+    FurLoc _e96 = fur_locate(_e95, theta_i_1);
+    float _e98 = fur_unbias(2u, fur_lut, _buffer_sizes);
+    {
+        float ky0_ = (1.0 - _e92.w) * _e98;
+        float ky1_ = _e92.w * _e98;
+        float w0_ = ky0_ * (1.0 - _e96.w);
+        float w1_ = ky0_ * _e96.w;
+        float w2_ = ky1_ * (1.0 - _e96.w);
+        float w3_ = ky1_ * _e96.w;
+        uint i0_ = (_e92.i * _e11) + _e96.i;
+        uint2 loop_bound_3 = uint2(4294967295u);
+        bool loop_init_3 = true;
+        while(true) {
+            if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e166 = ch_2;
+                ch_2 = _e166 + 1u;
+            }
+            loop_init_3 = false;
+            uint _e124 = ch_2;
+            if (_e124 < 2u) {
+            } else {
+                break;
+            }
+            {
+                uint _e130 = ch_2;
+                float _e132 = fur_half((s0_1 + (2u * i0_)) + _e130, fur_lut, _buffer_sizes);
+                uint _e138 = ch_2;
+                float _e140 = fur_half((s0_1 + (2u * (i0_ + 1u))) + _e138, fur_lut, _buffer_sizes);
+                uint _e145 = ch_2;
+                float _e147 = fur_half((s0_1 + (2u * (i0_ + _e11))) + _e145, fur_lut, _buffer_sizes);
+                uint _e154 = ch_2;
+                float _e156 = fur_half((s0_1 + (2u * ((i0_ + _e11) + 1u))) + _e154, fur_lut, _buffer_sizes);
+                uint _e157 = ch_2;
+                ms.inner[_e157] = (((w0_ * _e132) + (w1_ * _e140)) + (w2_ * _e147)) + (w3_ * _e156);
+            }
+        }
+    }
+    float front_w = metal::min(abs_phi * 0.31830987, 1.0);
+    FurAxis _e175 = fur_axis(false, 0.63661975, _e7);
+    FurLoc _e177 = fur_locate(_e175, metal::abs(theta_r_2));
+    FurAxis _e180 = fur_axis(false, 0.31830987, _e9);
+    FurLoc _e181 = fur_locate(_e180, abs_phi);
+    float _e183 = fur_unbias(1u, fur_lut, _buffer_sizes);
+    float ny0_ = (1.0 - _e177.w) * _e183;
+    float ny1_ = _e177.w * _e183;
+    float v0_2 = ny0_ * (1.0 - _e181.w);
+    float v1_2 = ny0_ * _e181.w;
+    float v2_ = ny1_ * (1.0 - _e181.w);
+    float v3_ = ny1_ * _e181.w;
+    uint j0_ = (_e177.i * _e9) + _e181.i;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e251 = ch_3;
+            ch_3 = _e251 + 1u;
+        }
+        loop_init_4 = false;
+        uint _e209 = ch_3;
+        if (_e209 < 12u) {
+        } else {
+            break;
+        }
+        {
+            uint _e215 = ch_3;
+            float _e217 = fur_half((n0_1 + (12u * j0_)) + _e215, fur_lut, _buffer_sizes);
+            uint _e223 = ch_3;
+            float _e225 = fur_half((n0_1 + (12u * (j0_ + 1u))) + _e223, fur_lut, _buffer_sizes);
+            uint _e230 = ch_3;
+            float _e232 = fur_half((n0_1 + (12u * (j0_ + _e9))) + _e230, fur_lut, _buffer_sizes);
+            uint _e239 = ch_3;
+            float _e241 = fur_half((n0_1 + (12u * ((j0_ + _e9) + 1u))) + _e239, fur_lut, _buffer_sizes);
+            uint _e242 = ch_3;
+            n.inner[_e242] = (((v0_2 * _e217) + (v1_2 * _e225)) + (v2_ * _e232)) + (v3_ * _e241);
+        }
+    }
+    type_5 _e254 = m;
+    type_6 _e255 = ms;
+    type_7 _e256 = n;
+    return FurLookups {_e254, _e255, _e256, front_w, inv_cos2_};
 }
 
 FurFamilies fur_assemble(
-    FurLookups l
+    FurLookups l_2
 ) {
-    type_9 f = {};
+    type_10 f = {};
     uint k_1 = 0u;
-    float mss = l.ms.inner[0] + (l.front * (l.ms.inner[1] - l.ms.inner[0]));
-    type_8 lon = type_8 {{l.m.inner[0], l.m.inner[1], l.m.inner[2], mss}};
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    float mss = l_2.ms.inner[0] + (l_2.front * (l_2.ms.inner[1] - l_2.ms.inner[0]));
+    type_9 lon = type_9 {{l_2.m.inner[0], l_2.m.inner[1], l_2.m.inner[2], mss}};
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e51 = k_1;
             k_1 = _e51 + 1u;
         }
-        loop_init_3 = false;
+        loop_init_5 = false;
         uint _e21 = k_1;
         if (_e21 < 4u) {
         } else {
@@ -460,12 +706,12 @@ FurFamilies fur_assemble(
         }
         {
             uint _e24 = k_1;
-            float weight = lon.inner[_e24] * l.inv_cos2_;
+            float weight = lon.inner[_e24] * l_2.inv_cos2_;
             uint _e28 = k_1;
             uint _e32 = k_1;
             uint _e37 = k_1;
             uint _e44 = k_1;
-            f.inner[_e28] = metal::float3(l.n.inner[3u * _e32], l.n.inner[(3u * _e37) + 1u], l.n.inner[(3u * _e44) + 2u]) * weight;
+            f.inner[_e28] = metal::float3(l_2.n.inner[3u * _e32], l_2.n.inner[(3u * _e37) + 1u], l_2.n.inner[(3u * _e44) + 2u]) * weight;
         }
     }
     metal::float3 _e55 = f.inner[0];
@@ -481,17 +727,17 @@ FurFamilies fur_assemble(
 
 FurFamilies fur_eval_far(
     float theta_i_2,
-    float theta_r_2,
+    float theta_r_3,
     float phi_1,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool _e3 = fur_valid(theta_i_2, theta_r_2, phi_1);
+    bool _e3 = fur_valid(theta_i_2, theta_r_3, phi_1);
     if (!(_e3)) {
         FurFamilies _e5 = fur_zero();
         return _e5;
     }
-    FurLookups _e6 = fur_lookups(theta_i_2, theta_r_2, phi_1, fur_lut, _buffer_sizes);
+    FurLookups _e6 = fur_lookups(theta_i_2, theta_r_3, phi_1, fur_lut, _buffer_sizes);
     FurFamilies _e7 = fur_assemble(_e6);
     return _e7;
 }
@@ -530,10 +776,10 @@ float fur_atan2_(
     float r = {};
     float ax_1 = metal::abs(x_5);
     float ay = metal::abs(y_1);
-    float a_2 = metal::min(ax_1, ay) / metal::max(metal::max(ax_1, ay), 0.000000000000000000000000000000000000011754944);
-    float t_4 = a_2 * a_2;
+    float a_3 = metal::min(ax_1, ay) / metal::max(metal::max(ax_1, ay), 0.000000000000000000000000000000000000011754944);
+    float t_4 = a_3 * a_3;
     float _e10 = fur_atan_poly(t_4);
-    r = a_2 + (a_2 * (t_4 * _e10));
+    r = a_3 + (a_3 * (t_4 * _e10));
     float _e15 = r;
     float _e17 = r;
     r = (ay > ax_1) ? (FUR_HALF_PI - _e17) : _e15;
@@ -598,103 +844,15 @@ FurFamilies fur_eval_far_dirs(
         return _e36;
     }
     metal::float3 un = u * (1.0 / nu);
-    float a_3 = metal::dot(wi, un);
+    float a_4 = metal::dot(wi, un);
     float b = metal::dot(wr, un);
-    float _e48 = fur_asin(metal::clamp(a_3 * (1.0 / ni), -1.0, 1.0));
+    float _e48 = fur_asin(metal::clamp(a_4 * (1.0 / ni), -1.0, 1.0));
     float _e55 = fur_asin(metal::clamp(b * (1.0 / nr), -1.0, 1.0));
     float y_4 = metal::dot(un, metal::cross(wi, wr));
-    float x_7 = metal::dot(wi, wr) - (a_3 * b);
-    float _e61 = fur_atan2_(y_4, x_7);
+    float x_8 = metal::dot(wi, wr) - (a_4 * b);
+    float _e61 = fur_atan2_(y_4, x_8);
     FurFamilies _e63 = fur_eval_far(_e48, _e55, metal::abs(_e61), fur_lut, _buffer_sizes);
     return _e63;
-}
-
-float fur_f32_at(
-    uint byte,
-    device type_1 const& fur_lut,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint w_2 = byte >> 2u;
-    if ((byte & 3u) == 0u) {
-        uint _e9 = fur_lut[w_2];
-        return as_type<float>(_e9);
-    }
-    uint _e13 = fur_lut[w_2];
-    uint _e20 = fur_lut[w_2 + 1u];
-    return as_type<float>((_e13 >> 16u) | (_e20 << 16u));
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
-}
-
-uint fur_entries(
-    uint nodes_1,
-    uint block
-) {
-    return naga_div(((nodes_1 - 1u) + block) - 1u, block) + 1u;
-}
-
-FurDensity fur_density(
-    uint d,
-    device type_1 const& fur_lut,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint at = {};
-    uint _e2 = fur_word(4u, fur_lut, _buffer_sizes);
-    uint _e4 = fur_word(5u, fur_lut, _buffer_sizes);
-    uint _e6 = fur_word(6u, fur_lut, _buffer_sizes);
-    uint _e8 = fur_word(7u, fur_lut, _buffer_sizes);
-    uint _e10 = fur_word(8u, fur_lut, _buffer_sizes);
-    uint values = ((3u * _e2) + ((12u * _e6) * _e4)) + ((2u * _e8) * _e10);
-    at = 160u + (2u * values);
-    uint _e27 = fur_entries(_e2, 1u);
-    uint _e29 = fur_entries(_e6, 8u);
-    uint _e31 = fur_entries(_e8, 8u);
-    if (d < 3u) {
-        uint _e34 = at;
-        return FurDensity {_e34 + ((4u * d) * _e27), _e27, _e2, 1u, 6.2831855 / static_cast<float>(_e2 - 1u), 1u, 0u, d, 1u};
-    }
-    uint _e49 = at;
-    at = _e49 + (12u * _e27);
-    if (d < 7u) {
-        uint f_2 = d - 3u;
-        uint _e57 = at;
-        return FurDensity {_e57 + (((4u * f_2) * _e4) * _e29), _e29, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 3u * f_2, 3u};
-    }
-    uint _e74 = at;
-    at = _e74 + ((16u * _e4) * _e29);
-    uint x_8 = d - 7u;
-    uint _e81 = at;
-    return FurDensity {_e81 + (((4u * x_8) * _e10) * _e31), _e31, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_8, 1u};
-}
-
-float fur_node(
-    FurDensity d_1,
-    uint row,
-    uint j,
-    device type_1 const& fur_lut,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint _e4 = fur_word(4u, fur_lut, _buffer_sizes);
-    uint _e6 = fur_word(5u, fur_lut, _buffer_sizes);
-    uint _e8 = fur_word(6u, fur_lut, _buffer_sizes);
-    uint n0_1 = FUR_HEADER_HALVES + (3u * _e4);
-    uint s0_1 = n0_1 + ((12u * _e8) * _e6);
-    type_10 starts = type_10 {{FUR_HEADER_HALVES, n0_1, s0_1}};
-    type_10 chans = type_10 {{3u, 12u, 2u}};
-    uint base = (starts.inner[d_1.table] + (((row * d_1.nodes) + j) * chans.inner[d_1.table])) + d_1.first;
-    if (d_1.channels == 3u) {
-        float _e36 = fur_half(base, fur_lut, _buffer_sizes);
-        float _e39 = fur_half(base + 1u, fur_lut, _buffer_sizes);
-        float _e43 = fur_half(base + 2u, fur_lut, _buffer_sizes);
-        float sum = (_e36 + _e39) + _e43;
-        float _e46 = fur_unbias(d_1.table, fur_lut, _buffer_sizes);
-        return sum * (_e46 * 0.33333334);
-    }
-    float _e50 = fur_half(base, fur_lut, _buffer_sizes);
-    float _e52 = fur_unbias(d_1.table, fur_lut, _buffer_sizes);
-    return _e50 * _e52;
 }
 
 FurRows fur_rows(
@@ -741,14 +899,6 @@ float fur_rows_total(
 ) {
     float _e5 = fur_rows_prefix(r_3, r_3.d.entries - 1u, fur_lut, _buffer_sizes);
     return _e5;
-}
-
-float fur_linear_mass(
-    float v0_,
-    float v1_,
-    float len
-) {
-    return (0.5 * len) * (v0_ + v1_);
 }
 
 float fur_invert_linear(
@@ -822,10 +972,10 @@ float fur_rows_invert(
     float last_v1_ = 0.0;
     uint j_2 = {};
     len_2 = r_4.d.entries - 1u;
-    uint2 loop_bound_4 = uint2(4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         uint _e9 = len_2;
         if (_e9 <= 1u) {
             break;
@@ -849,16 +999,16 @@ float fur_rows_invert(
     float _e40 = fur_rows_value(r_4, first, fur_lut, _buffer_sizes);
     prev = _e40;
     j_2 = first;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_4 = true;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_4) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_6) {
             uint _e85 = j_2;
             j_2 = _e85 + 1u;
         }
-        loop_init_4 = false;
+        loop_init_6 = false;
         uint _e51 = j_2;
         if (_e51 < end) {
         } else {
@@ -923,53 +1073,21 @@ metal::float3 fur_m_cdf(
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 out = metal::float3(0.0);
-    uint g = 0u;
-    uint _e2 = fur_word(4u, fur_lut, _buffer_sizes);
-    FurAxis _e5 = fur_axis(true, 0.15915494, _e2);
-    FurLoc _e6 = fur_locate(_e5, x_6);
-    FurDensity _e8 = fur_density(0u, fur_lut, _buffer_sizes);
-    float off = _e6.w * _e8.step;
-    uint2 loop_bound_6 = uint2(4294967295u);
-    bool loop_init_5 = true;
-    while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e44 = g;
-            g = _e44 + 1u;
-        }
-        loop_init_5 = false;
-        uint _e17 = g;
-        if (_e17 < 3u) {
-        } else {
-            break;
-        }
-        {
-            uint _e20 = g;
-            FurDensity _e21 = fur_density(_e20, fur_lut, _buffer_sizes);
-            float _e24 = fur_node(_e21, 0u, _e6.i, fur_lut, _buffer_sizes);
-            float _e29 = fur_node(_e21, 0u, _e6.i + 1u, fur_lut, _buffer_sizes);
-            float at_1 = _e24 + ((_e29 - _e24) * _e6.w);
-            uint _e34 = g;
-            float _e41 = fur_f32_at(_e21.prefix_at + (4u * _e6.i), fur_lut, _buffer_sizes);
-            float _e42 = fur_linear_mass(_e24, at_1, off);
-            out[_e34] = _e41 + _e42;
-        }
-    }
-    metal::float3 _e47 = out;
-    return _e47;
+    FurAxis _e1 = fur_sum_axis(fur_lut, _buffer_sizes);
+    FurLoc _e2 = fur_locate(_e1, x_6);
+    FurMAt _e3 = fur_m_at(_e2, fur_lut, _buffer_sizes);
+    return _e3.cdf;
 }
 
 float fur_row_total(
     FurDensity d_3,
-    FurLoc l_1,
+    FurLoc l_3,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e17 = fur_f32_at(d_3.prefix_at + (4u * (((metal::min(l_1.i, d_3.rows - 1u) * d_3.entries) + d_3.entries) - 1u)), fur_lut, _buffer_sizes);
-    float _e35 = fur_f32_at(d_3.prefix_at + (4u * (((metal::min(l_1.i + 1u, d_3.rows - 1u) * d_3.entries) + d_3.entries) - 1u)), fur_lut, _buffer_sizes);
-    return _e17 + ((_e35 - _e17) * l_1.w);
+    float _e17 = fur_f32_at(d_3.prefix_at + (4u * (((metal::min(l_3.i, d_3.rows - 1u) * d_3.entries) + d_3.entries) - 1u)), fur_lut, _buffer_sizes);
+    float _e35 = fur_f32_at(d_3.prefix_at + (4u * (((metal::min(l_3.i + 1u, d_3.rows - 1u) * d_3.entries) + d_3.entries) - 1u)), fur_lut, _buffer_sizes);
+    return _e17 + ((_e35 - _e17) * l_3.w);
 }
 
 float fur_positive(
@@ -987,78 +1105,80 @@ float fur_positive(
 }
 
 FurParts fur_parts(
-    float theta_r_3,
+    float theta_r_4,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = fur_m_cdf(theta_r_3 - FUR_HALF_PI, fur_lut, _buffer_sizes);
-    metal::float3 _e6 = fur_m_cdf(theta_r_3 + FUR_HALF_PI, fur_lut, _buffer_sizes);
-    metal::float3 mass = metal::max(_e6 - _e3, metal::float3(0.0));
+    metal::float3 _e3 = fur_m_cdf(theta_r_4 - FUR_HALF_PI, fur_lut, _buffer_sizes);
+    metal::float3 _e6 = fur_m_cdf(theta_r_4 + FUR_HALF_PI, fur_lut, _buffer_sizes);
+    metal::float3 mass_1 = metal::max(_e6 - _e3, metal::float3(0.0));
     uint _e14 = fur_word(5u, fur_lut, _buffer_sizes);
     FurAxis _e15 = fur_axis(false, 0.63661975, _e14);
-    FurLoc _e17 = fur_locate(_e15, metal::abs(theta_r_3));
+    FurLoc _e17 = fur_locate(_e15, metal::abs(theta_r_4));
     uint _e21 = fur_word(8u, fur_lut, _buffer_sizes);
     FurAxis _e22 = fur_axis(true, 0.31830987, _e21);
-    FurLoc _e23 = fur_locate(_e22, theta_r_3);
+    FurLoc _e23 = fur_locate(_e22, theta_r_4);
     FurDensity _e25 = fur_density(6u, fur_lut, _buffer_sizes);
     float _e26 = fur_row_total(_e25, _e17, fur_lut, _buffer_sizes);
-    FurDensity _e31 = fur_density(3u, fur_lut, _buffer_sizes);
-    float _e32 = fur_row_total(_e31, _e17, fur_lut, _buffer_sizes);
-    float _e34 = fur_positive((2.0 * mass.x) * _e32);
-    FurDensity _e39 = fur_density(4u, fur_lut, _buffer_sizes);
-    float _e40 = fur_row_total(_e39, _e17, fur_lut, _buffer_sizes);
-    float _e42 = fur_positive((2.0 * mass.y) * _e40);
-    FurDensity _e47 = fur_density(5u, fur_lut, _buffer_sizes);
-    float _e48 = fur_row_total(_e47, _e17, fur_lut, _buffer_sizes);
-    float _e50 = fur_positive((2.0 * mass.z) * _e48);
-    FurDensity _e52 = fur_density(7u, fur_lut, _buffer_sizes);
-    float _e53 = fur_row_total(_e52, _e23, fur_lut, _buffer_sizes);
-    float _e55 = fur_positive(_e53 * _e26);
-    FurDensity _e57 = fur_density(8u, fur_lut, _buffer_sizes);
-    float _e58 = fur_row_total(_e57, _e23, fur_lut, _buffer_sizes);
-    float _e60 = fur_positive(_e58 * _e26);
-    type_11 a_4 = type_11 {{_e34, _e42, _e50, _e55, _e60}};
-    return FurParts {a_4, {}, mass, _e3};
+    metal::float3 _e27 = fur_sphere_norms(theta_r_4, fur_lut, _buffer_sizes);
+    metal::float3 kept = mass_1 * _e27;
+    FurDensity _e33 = fur_density(3u, fur_lut, _buffer_sizes);
+    float _e34 = fur_row_total(_e33, _e17, fur_lut, _buffer_sizes);
+    float _e36 = fur_positive((2.0 * kept.x) * _e34);
+    FurDensity _e41 = fur_density(4u, fur_lut, _buffer_sizes);
+    float _e42 = fur_row_total(_e41, _e17, fur_lut, _buffer_sizes);
+    float _e44 = fur_positive((2.0 * kept.y) * _e42);
+    FurDensity _e49 = fur_density(5u, fur_lut, _buffer_sizes);
+    float _e50 = fur_row_total(_e49, _e17, fur_lut, _buffer_sizes);
+    float _e52 = fur_positive((2.0 * kept.z) * _e50);
+    FurDensity _e54 = fur_density(7u, fur_lut, _buffer_sizes);
+    float _e55 = fur_row_total(_e54, _e23, fur_lut, _buffer_sizes);
+    float _e57 = fur_positive(_e55 * _e26);
+    FurDensity _e59 = fur_density(8u, fur_lut, _buffer_sizes);
+    float _e60 = fur_row_total(_e59, _e23, fur_lut, _buffer_sizes);
+    float _e62 = fur_positive(_e60 * _e26);
+    type_11 a_5 = type_11 {{_e36, _e44, _e52, _e57, _e62}};
+    return FurParts {a_5, {}, mass_1, _e3};
 }
 
 float fur_density_of(
-    FurLookups l_2,
+    FurLookups l_4,
     float w_1,
     float cos_theta_i
 ) {
     if (!((w_1 > 0.0))) {
         return 0.0;
     }
-    float mean0_ = ((l_2.n.inner[0] + l_2.n.inner[1]) + l_2.n.inner[2]) * 0.33333334;
-    float mean1_ = ((l_2.n.inner[3] + l_2.n.inner[4]) + l_2.n.inner[5]) * 0.33333334;
-    float mean2_ = ((l_2.n.inner[6] + l_2.n.inner[7]) + l_2.n.inner[8]) * 0.33333334;
-    float mean3_ = ((l_2.n.inner[9] + l_2.n.inner[10]) + l_2.n.inner[11]) * 0.33333334;
-    float p = (((l_2.m.inner[0] * mean0_) + (l_2.m.inner[1] * mean1_)) + (l_2.m.inner[2] * mean2_)) + ((0.5 * (l_2.ms.inner[0] + l_2.ms.inner[1])) * mean3_);
+    float mean0_ = ((l_4.n.inner[0] + l_4.n.inner[1]) + l_4.n.inner[2]) * 0.33333334;
+    float mean1_ = ((l_4.n.inner[3] + l_4.n.inner[4]) + l_4.n.inner[5]) * 0.33333334;
+    float mean2_ = ((l_4.n.inner[6] + l_4.n.inner[7]) + l_4.n.inner[8]) * 0.33333334;
+    float mean3_ = ((l_4.n.inner[9] + l_4.n.inner[10]) + l_4.n.inner[11]) * 0.33333334;
+    float p = (((l_4.m.inner[0] * mean0_) + (l_4.m.inner[1] * mean1_)) + (l_4.m.inner[2] * mean2_)) + ((0.5 * (l_4.ms.inner[0] + l_4.ms.inner[1])) * mean3_);
     float _e71 = fur_positive((p / w_1) / metal::max(cos_theta_i, 0.000001));
     return _e71;
 }
 
 float fur_pdf_far(
     float theta_i_3,
-    float theta_r_4,
+    float theta_r_5,
     float phi_2,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool _e3 = fur_valid(theta_i_3, theta_r_4, phi_2);
+    bool _e3 = fur_valid(theta_i_3, theta_r_5, phi_2);
     if (!(_e3)) {
         return 0.0;
     }
-    FurParts _e6 = fur_parts(theta_r_4, fur_lut, _buffer_sizes);
+    FurParts _e6 = fur_parts(theta_r_5, fur_lut, _buffer_sizes);
     float w_3 = (((_e6.a.inner[0] + _e6.a.inner[1]) + _e6.a.inner[2]) + _e6.a.inner[3]) + _e6.a.inner[4];
-    FurLookups _e21 = fur_lookups(theta_i_3, theta_r_4, phi_2, fur_lut, _buffer_sizes);
+    FurLookups _e21 = fur_lookups(theta_i_3, theta_r_5, phi_2, fur_lut, _buffer_sizes);
     float _e22 = fur_cos_within_half_pi(theta_i_3);
     float _e23 = fur_density_of(_e21, w_3, _e22);
     return _e23;
 }
 
 FurSample fur_sample_far(
-    float theta_r_5,
+    float theta_r_6,
     metal::float3 u_3,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
@@ -1074,9 +1194,9 @@ FurSample fur_sample_far(
     uint k_4 = 0u;
     float theta_i_4 = 0.0;
     bool local_16 = {};
-    bool _e11 = fur_finite(theta_r_5);
+    bool _e11 = fur_finite(theta_r_6);
     if (_e11) {
-        local_15 = metal::abs(theta_r_5) <= FUR_HALF_PI;
+        local_15 = metal::abs(theta_r_6) <= FUR_HALF_PI;
     } else {
         local_15 = false;
     }
@@ -1085,17 +1205,17 @@ FurSample fur_sample_far(
         FurSample _e20 = out_1;
         return _e20;
     }
-    FurParts _e21 = fur_parts(theta_r_5, fur_lut, _buffer_sizes);
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_6 = true;
+    FurParts _e21 = fur_parts(theta_r_6, fur_lut, _buffer_sizes);
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_7) {
             uint _e34 = k_3;
             k_3 = _e34 + 1u;
         }
-        loop_init_6 = false;
+        loop_init_7 = false;
         uint _e26 = k_3;
         if (_e26 < 5u) {
         } else {
@@ -1115,16 +1235,16 @@ FurSample fur_sample_far(
     float _e43 = fur_unit(u_3.x);
     float _e44 = total;
     float target_mass = _e43 * _e44;
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_7 = true;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_7) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_8) {
             uint _e76 = k_4;
             k_4 = _e76 + 1u;
         }
-        loop_init_7 = false;
+        loop_init_8 = false;
         uint _e56 = k_4;
         if (_e56 < 5u) {
         } else {
@@ -1169,11 +1289,11 @@ FurSample fur_sample_far(
         uint _e116 = c;
         uint _e119 = c;
         float _e123 = fur_rows_invert_between(_e111, _e21.lo[_e113], _e21.lo[_e116] + _e21.mass[_e119], u_3.y, fur_lut, _buffer_sizes);
-        theta_i_4 = metal::clamp(_e123 - theta_r_5, -1.5707964, FUR_HALF_PI);
+        theta_i_4 = metal::clamp(_e123 - theta_r_6, -1.5707964, FUR_HALF_PI);
     } else {
         uint _e131 = fur_word(8u, fur_lut, _buffer_sizes);
         FurAxis _e132 = fur_axis(true, 0.31830987, _e131);
-        FurLoc _e133 = fur_locate(_e132, theta_r_5);
+        FurLoc _e133 = fur_locate(_e132, theta_r_6);
         uint _e135 = c;
         FurDensity _e139 = fur_density((7u + _e135) - 3u, fur_lut, _buffer_sizes);
         FurRows _e143 = fur_rows(_e139, _e133.i, _e133.w, -1.5707964);
@@ -1185,7 +1305,7 @@ FurSample fur_sample_far(
     uint family = metal::min(_e151, 3u);
     uint _e157 = fur_word(5u, fur_lut, _buffer_sizes);
     FurAxis _e158 = fur_axis(false, 0.63661975, _e157);
-    FurLoc _e160 = fur_locate(_e158, metal::abs(theta_r_5));
+    FurLoc _e160 = fur_locate(_e158, metal::abs(theta_r_6));
     FurDensity _e163 = fur_density(3u + family, fur_lut, _buffer_sizes);
     FurRows _e167 = fur_rows(_e163, _e160.i, _e160.w, 0.0);
     float _e169 = fur_rows_total(_e167, fur_lut, _buffer_sizes);
@@ -1193,7 +1313,7 @@ FurSample fur_sample_far(
     float abs_phi_1 = metal::clamp(_e171, 0.0, FUR_PI);
     float _e177 = fur_wrap_angle(negative ? -(abs_phi_1) : abs_phi_1);
     float _e178 = theta_i_4;
-    FurLookups _e179 = fur_lookups(_e178, theta_r_5, _e177, fur_lut, _buffer_sizes);
+    FurLookups _e179 = fur_lookups(_e178, theta_r_6, _e177, fur_lut, _buffer_sizes);
     float _e180 = theta_i_4;
     float _e181 = fur_cos_within_half_pi(_e180);
     float _e182 = fur_density_of(_e179, total_weight, _e181);
@@ -1226,16 +1346,16 @@ void fur_store(
     uint k_5 = 0u;
     uint base_1 = 16u * q;
     type_15 parts = type_15 {{f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total}};
-    uint2 loop_bound_9 = uint2(4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_10 = uint2(4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_8) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e46 = k_5;
             k_5 = _e46 + 1u;
         }
-        loop_init_8 = false;
+        loop_init_9 = false;
         uint _e12 = k_5;
         if (_e12 < 5u) {
         } else {
@@ -1270,8 +1390,8 @@ struct fur_eval_mainInput {
     if (q_1 >= (1 + (_buffer_sizes.size1 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_5 = fur_queries[q_1];
-    FurFamilies _e11 = fur_eval_far(a_5.x, a_5.y, a_5.z, fur_lut, _buffer_sizes);
+    metal::float4 a_6 = fur_queries[q_1];
+    FurFamilies _e11 = fur_eval_far(a_6.x, a_6.y, a_6.z, fur_lut, _buffer_sizes);
     fur_store(q_1, _e11, fur_results, _buffer_sizes);
     return;
 }
@@ -1312,8 +1432,8 @@ struct fur_sample_mainInput {
     if (q_3 >= (1 + (_buffer_sizes.size1 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_6 = fur_queries[q_3];
-    FurSample _e10 = fur_sample_far(a_6.x, a_6.yzw, fur_lut, _buffer_sizes);
+    metal::float4 a_7 = fur_queries[q_3];
+    FurSample _e10 = fur_sample_far(a_7.x, a_7.yzw, fur_lut, _buffer_sizes);
     uint base_2 = 16u * q_3;
     fur_results[base_2] = _e10.theta_i;
     fur_results[base_2 + 1u] = _e10.phi;
@@ -1340,8 +1460,8 @@ struct fur_pdf_mainInput {
     if (q_4 >= (1 + (_buffer_sizes.size1 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_7 = fur_queries[q_4];
-    float _e15 = fur_pdf_far(a_7.x, a_7.y, a_7.z, fur_lut, _buffer_sizes);
+    metal::float4 a_8 = fur_queries[q_4];
+    float _e15 = fur_pdf_far(a_8.x, a_8.y, a_8.z, fur_lut, _buffer_sizes);
     fur_results[16u * q_4] = _e15;
     return;
 }

@@ -27,13 +27,9 @@ struct FurLookups {
     float front;
     float inv_cos2_;
 };
-struct FurSample {
-    float theta_i;
-    float phi;
-    float pdf;
-    vec3 weight;
-    uint family;
-    bool ok;
+struct FurMAt {
+    vec3 cdf;
+    vec3 value;
 };
 struct FurDensity {
     uint prefix_at;
@@ -45,6 +41,14 @@ struct FurDensity {
     uint table;
     uint first;
     uint channels;
+};
+struct FurSample {
+    float theta_i;
+    float phi;
+    float pdf;
+    vec3 weight;
+    uint family;
+    bool ok;
 };
 struct FurRows {
     FurDensity d;
@@ -63,6 +67,9 @@ const float FUR_HALF_PI = 1.5707964;
 const float FUR_TAU = 6.2831855;
 const float FUR_MIN_COS2_ = 0.0001;
 const uint FUR_HEADER_HALVES = 80u;
+const uint FUR_CLOSURE_WORD = 26u;
+const float FUR_POLE_SLIVER = 0.010000167;
+const float FUR_MIN_SPHERE_MASS = 0.0001;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
@@ -101,9 +108,9 @@ float fur_unbias(uint t) {
 float fur_cos_within_half_pi(float x_1) {
     float acc = -2.755732e-7;
     float acc_1 = 2.7557319e-6;
-    float a_1 = abs(x_1);
-    if ((a_1 <= 0.7853982)) {
-        float y_2 = (a_1 * a_1);
+    float a_2 = abs(x_1);
+    if ((a_2 <= 0.7853982)) {
+        float y_2 = (a_2 * a_2);
         float _e7 = acc;
         acc = ((_e7 * y_2) + 2.4801588e-5);
         float _e11 = acc;
@@ -115,7 +122,7 @@ float fur_cos_within_half_pi(float x_1) {
         float _e23 = acc;
         return ((_e23 * y_2) + 1.0);
     }
-    float r_6 = ((1.5707964 - a_1) + -4.371139e-8);
+    float r_6 = ((1.5707964 - a_2) + -4.371139e-8);
     float y_3 = (r_6 * r_6);
     float _e34 = acc_1;
     acc_1 = ((_e34 * y_3) - 0.0001984127);
@@ -230,36 +237,196 @@ bool fur_valid(float theta_i, float theta_r, float phi) {
     return _e27;
 }
 
-FurLookups fur_lookups(float theta_i_1, float theta_r_1, float phi_in) {
+FurAxis fur_sum_axis() {
+    uint _e3 = fur_word(4u);
+    FurAxis _e4 = fur_axis(true, 0.15915494, _e3);
+    return _e4;
+}
+
+uint fur_entries(uint nodes_1, uint block) {
+    return (((((nodes_1 - 1u) + block) - 1u) / block) + 1u);
+}
+
+FurDensity fur_density(uint d) {
+    uint at = 0u;
+    uint _e2 = fur_word(4u);
+    uint _e4 = fur_word(5u);
+    uint _e6 = fur_word(6u);
+    uint _e8 = fur_word(7u);
+    uint _e10 = fur_word(8u);
+    uint values = (((3u * _e2) + ((12u * _e6) * _e4)) + ((2u * _e8) * _e10));
+    at = (160u + (2u * values));
+    uint _e27 = fur_entries(_e2, 1u);
+    uint _e29 = fur_entries(_e6, 8u);
+    uint _e31 = fur_entries(_e8, 8u);
+    if ((d < 3u)) {
+        uint _e34 = at;
+        return FurDensity((_e34 + ((4u * d) * _e27)), _e27, _e2, 1u, (6.2831855 / float((_e2 - 1u))), 1u, 0u, d, 1u);
+    }
+    uint _e49 = at;
+    at = (_e49 + (12u * _e27));
+    if ((d < 7u)) {
+        uint f_2 = (d - 3u);
+        uint _e57 = at;
+        return FurDensity((_e57 + (((4u * f_2) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_2), 3u);
+    }
+    uint _e74 = at;
+    at = (_e74 + ((16u * _e4) * _e29));
+    uint x_7 = (d - 7u);
+    uint _e81 = at;
+    return FurDensity((_e81 + (((4u * x_7) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_7, 1u);
+}
+
+float fur_node(FurDensity d_1, uint row, uint j) {
+    uint _e4 = fur_word(4u);
+    uint _e6 = fur_word(5u);
+    uint _e8 = fur_word(6u);
+    uint n0_ = (FUR_HEADER_HALVES + (3u * _e4));
+    uint s0_ = (n0_ + ((12u * _e8) * _e6));
+    uint starts[3] = uint[3](FUR_HEADER_HALVES, n0_, s0_);
+    uint chans[3] = uint[3](3u, 12u, 2u);
+    uint base = ((starts[d_1.table] + (((row * d_1.nodes) + j) * chans[d_1.table])) + d_1.first);
+    if ((d_1.channels == 3u)) {
+        float _e36 = fur_half(base);
+        float _e39 = fur_half((base + 1u));
+        float _e43 = fur_half((base + 2u));
+        float sum = ((_e36 + _e39) + _e43);
+        float _e46 = fur_unbias(d_1.table);
+        return (sum * (_e46 * 0.33333334));
+    }
+    float _e50 = fur_half(base);
+    float _e52 = fur_unbias(d_1.table);
+    return (_e50 * _e52);
+}
+
+float fur_f32_at(uint byte) {
+    uint w_2 = (byte >> 2u);
+    if (((byte & 3u) == 0u)) {
+        uint _e9 = _group_0_binding_0_cs[w_2];
+        return uintBitsToFloat(_e9);
+    }
+    uint _e13 = _group_0_binding_0_cs[w_2];
+    uint _e20 = _group_0_binding_0_cs[(w_2 + 1u)];
+    return uintBitsToFloat(((_e13 >> 16u) | (_e20 << 16u)));
+}
+
+float fur_linear_mass(float v0_, float v1_, float len) {
+    return ((0.5 * len) * (v0_ + v1_));
+}
+
+FurMAt fur_m_at(FurLoc l) {
+    FurMAt out_ = FurMAt(vec3(0.0), vec3(0.0));
+    uint g = 0u;
+    FurDensity _e2 = fur_density(0u);
+    float off = (l.w * _e2.step_);
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e45 = g;
+            g = (_e45 + 1u);
+        }
+        loop_init = false;
+        uint _e14 = g;
+        if ((_e14 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = g;
+            FurDensity _e18 = fur_density(_e17);
+            float _e21 = fur_node(_e18, 0u, l.i);
+            float _e26 = fur_node(_e18, 0u, (l.i + 1u));
+            float at_1 = (_e21 + ((_e26 - _e21) * l.w));
+            uint _e32 = g;
+            float _e39 = fur_f32_at((_e18.prefix_at + (4u * l.i)));
+            float _e40 = fur_linear_mass(_e21, at_1, off);
+            out_.cdf[_e32] = (_e39 + _e40);
+            uint _e43 = g;
+            out_.value[_e43] = at_1;
+        }
+    }
+    FurMAt _e48 = out_;
+    return _e48;
+}
+
+FurLoc fur_shifted(FurAxis a_1, FurLoc l_1, float dx) {
+    float u_5 = min(max(((float(l_1.i) + l_1.w) + (dx * a_1.inv_step)), 0.0), a_1.last);
+    uint i_1 = min(uint(floor(u_5)), (a_1.nodes - 2u));
+    return FurLoc(i_1, (u_5 - float(i_1)));
+}
+
+vec3 fur_sliver(vec3 m0_, vec3 m_half, vec3 m1_) {
+    return (0.00016666946 * (((11.0 * m0_) + (28.0 * m_half)) + m1_));
+}
+
+vec3 fur_sphere_norm(vec3 mass) {
+    uint _e2 = fur_word(FUR_CLOSURE_WORD);
+    if ((_e2 != 1u)) {
+        return vec3(1.0);
+    }
+    return (vec3(1.0) / max(mass, vec3(0.0001)));
+}
+
+vec3 fur_sphere_norms(float theta_r_1) {
+    uint _e2 = fur_word(FUR_CLOSURE_WORD);
+    if ((_e2 != 1u)) {
+        return vec3(1.0);
+    }
+    FurAxis _e7 = fur_sum_axis();
+    FurLoc _e10 = fur_locate(_e7, (theta_r_1 - FUR_HALF_PI));
+    FurLoc _e13 = fur_locate(_e7, (theta_r_1 + FUR_HALF_PI));
+    FurMAt _e14 = fur_m_at(_e10);
+    FurMAt _e15 = fur_m_at(_e13);
+    FurLoc _e17 = fur_shifted(_e7, _e10, 0.0050000837);
+    FurMAt _e18 = fur_m_at(_e17);
+    vec3 lo_half = _e18.value;
+    FurLoc _e21 = fur_shifted(_e7, _e10, FUR_POLE_SLIVER);
+    FurMAt _e22 = fur_m_at(_e21);
+    vec3 lo_end = _e22.value;
+    FurLoc _e25 = fur_shifted(_e7, _e13, -0.0050000837);
+    FurMAt _e26 = fur_m_at(_e25);
+    vec3 hi_half = _e26.value;
+    FurLoc _e29 = fur_shifted(_e7, _e13, -0.010000167);
+    FurMAt _e30 = fur_m_at(_e29);
+    vec3 hi_end = _e30.value;
+    vec3 _e33 = fur_sliver(_e14.value, lo_half, lo_end);
+    vec3 _e35 = fur_sliver(_e15.value, hi_half, hi_end);
+    vec3 loss = (_e33 + _e35);
+    vec3 _e41 = fur_sphere_norm(((_e15.cdf - _e14.cdf) - loss));
+    return _e41;
+}
+
+FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
     float m[3] = float[3](0.0, 0.0, 0.0);
     uint ch = 0u;
-    float ms[2] = float[2](0.0, 0.0);
     uint ch_1 = 0u;
-    float n[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    float ms[2] = float[2](0.0, 0.0);
     uint ch_2 = 0u;
+    float n[12] = float[12](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    uint ch_3 = 0u;
     float _e3 = fur_wrap_angle(phi_in);
     uint _e5 = fur_word(4u);
     uint _e7 = fur_word(5u);
     uint _e9 = fur_word(6u);
     uint _e11 = fur_word(7u);
     uint _e13 = fur_word(8u);
-    uint n0_ = (FUR_HEADER_HALVES + (3u * _e5));
-    uint s0_ = (n0_ + ((12u * _e9) * _e7));
+    uint n0_1 = (FUR_HEADER_HALVES + (3u * _e5));
+    uint s0_1 = (n0_1 + ((12u * _e9) * _e7));
     float abs_phi = abs(_e3);
     float _e23 = fur_cos_within_half_pi(theta_i_1);
     float inv_cos2_ = (1.0 / max((_e23 * _e23), FUR_MIN_COS2_));
     FurAxis _e31 = fur_axis(true, 0.15915494, _e5);
-    FurLoc _e33 = fur_locate(_e31, (theta_i_1 + theta_r_1));
+    FurLoc _e33 = fur_locate(_e31, (theta_i_1 + theta_r_2));
     float _e35 = fur_unbias(0u);
     float wm0_ = ((1.0 - _e33.w) * _e35);
     float wm1_ = (_e33.w * _e35);
-    bool loop_init = true;
+    bool loop_init_1 = true;
     while(true) {
-        if (!loop_init) {
+        if (!loop_init_1) {
             uint _e69 = ch;
             ch = (_e69 + 1u);
         }
-        loop_init = false;
+        loop_init_1 = false;
         uint _e45 = ch;
         if ((_e45 < 3u)) {
         } else {
@@ -274,101 +441,122 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_1, float phi_in) {
             m[_e64] = ((wm0_ * _e54) + (wm1_ * _e63));
         }
     }
-    FurAxis _e74 = fur_axis(true, 0.31830987, _e13);
-    FurLoc _e75 = fur_locate(_e74, theta_r_1);
-    FurAxis _e78 = fur_axis(true, 0.31830987, _e11);
-    FurLoc _e79 = fur_locate(_e78, theta_i_1);
-    float _e81 = fur_unbias(2u);
-    {
-        float ky0_ = ((1.0 - _e75.w) * _e81);
-        float ky1_ = (_e75.w * _e81);
-        float w0_ = (ky0_ * (1.0 - _e79.w));
-        float w1_ = (ky0_ * _e79.w);
-        float w2_ = (ky1_ * (1.0 - _e79.w));
-        float w3_ = (ky1_ * _e79.w);
-        uint i0_ = ((_e75.i * _e11) + _e79.i);
-        bool loop_init_1 = true;
-        while(true) {
-            if (!loop_init_1) {
-                uint _e149 = ch_1;
-                ch_1 = (_e149 + 1u);
-            }
-            loop_init_1 = false;
-            uint _e107 = ch_1;
-            if ((_e107 < 2u)) {
-            } else {
-                break;
-            }
-            {
-                uint _e113 = ch_1;
-                float _e115 = fur_half(((s0_ + (2u * i0_)) + _e113));
-                uint _e121 = ch_1;
-                float _e123 = fur_half(((s0_ + (2u * (i0_ + 1u))) + _e121));
-                uint _e128 = ch_1;
-                float _e130 = fur_half(((s0_ + (2u * (i0_ + _e11))) + _e128));
-                uint _e137 = ch_1;
-                float _e139 = fur_half(((s0_ + (2u * ((i0_ + _e11) + 1u))) + _e137));
-                uint _e140 = ch_1;
-                ms[_e140] = ((((w0_ * _e115) + (w1_ * _e123)) + (w2_ * _e130)) + (w3_ * _e139));
-            }
-        }
-    }
-    float front_w = min((abs_phi * 0.31830987), 1.0);
-    FurAxis _e158 = fur_axis(false, 0.63661975, _e7);
-    FurLoc _e160 = fur_locate(_e158, abs(theta_r_1));
-    FurAxis _e163 = fur_axis(false, 0.31830987, _e9);
-    FurLoc _e164 = fur_locate(_e163, abs_phi);
-    float _e166 = fur_unbias(1u);
-    float ny0_ = ((1.0 - _e160.w) * _e166);
-    float ny1_ = (_e160.w * _e166);
-    float v0_2 = (ny0_ * (1.0 - _e164.w));
-    float v1_2 = (ny0_ * _e164.w);
-    float v2_ = (ny1_ * (1.0 - _e164.w));
-    float v3_ = (ny1_ * _e164.w);
-    uint j0_ = ((_e160.i * _e9) + _e164.i);
+    vec3 _e72 = fur_sphere_norms(theta_r_2);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e234 = ch_2;
-            ch_2 = (_e234 + 1u);
+            uint _e86 = ch_1;
+            ch_1 = (_e86 + 1u);
         }
         loop_init_2 = false;
-        uint _e192 = ch_2;
-        if ((_e192 < 12u)) {
+        uint _e75 = ch_1;
+        if ((_e75 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e198 = ch_2;
-            float _e200 = fur_half(((n0_ + (12u * j0_)) + _e198));
-            uint _e206 = ch_2;
-            float _e208 = fur_half(((n0_ + (12u * (j0_ + 1u))) + _e206));
-            uint _e213 = ch_2;
-            float _e215 = fur_half(((n0_ + (12u * (j0_ + _e9))) + _e213));
-            uint _e222 = ch_2;
-            float _e224 = fur_half(((n0_ + (12u * ((j0_ + _e9) + 1u))) + _e222));
-            uint _e225 = ch_2;
-            n[_e225] = ((((v0_2 * _e200) + (v1_2 * _e208)) + (v2_ * _e215)) + (v3_ * _e224));
+            uint _e78 = ch_1;
+            uint _e80 = ch_1;
+            float _e82 = m[_e80];
+            uint _e83 = ch_1;
+            m[_e78] = (_e82 * _e72[_e83]);
         }
     }
-    float _e237[3] = m;
-    float _e238[2] = ms;
-    float _e239[12] = n;
-    return FurLookups(_e237, _e238, _e239, front_w, inv_cos2_);
+    FurAxis _e91 = fur_axis(true, 0.31830987, _e13);
+    FurLoc _e92 = fur_locate(_e91, theta_r_2);
+    FurAxis _e95 = fur_axis(true, 0.31830987, _e11);
+    FurLoc _e96 = fur_locate(_e95, theta_i_1);
+    float _e98 = fur_unbias(2u);
+    {
+        float ky0_ = ((1.0 - _e92.w) * _e98);
+        float ky1_ = (_e92.w * _e98);
+        float w0_ = (ky0_ * (1.0 - _e96.w));
+        float w1_ = (ky0_ * _e96.w);
+        float w2_ = (ky1_ * (1.0 - _e96.w));
+        float w3_ = (ky1_ * _e96.w);
+        uint i0_ = ((_e92.i * _e11) + _e96.i);
+        bool loop_init_3 = true;
+        while(true) {
+            if (!loop_init_3) {
+                uint _e166 = ch_2;
+                ch_2 = (_e166 + 1u);
+            }
+            loop_init_3 = false;
+            uint _e124 = ch_2;
+            if ((_e124 < 2u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e130 = ch_2;
+                float _e132 = fur_half(((s0_1 + (2u * i0_)) + _e130));
+                uint _e138 = ch_2;
+                float _e140 = fur_half(((s0_1 + (2u * (i0_ + 1u))) + _e138));
+                uint _e145 = ch_2;
+                float _e147 = fur_half(((s0_1 + (2u * (i0_ + _e11))) + _e145));
+                uint _e154 = ch_2;
+                float _e156 = fur_half(((s0_1 + (2u * ((i0_ + _e11) + 1u))) + _e154));
+                uint _e157 = ch_2;
+                ms[_e157] = ((((w0_ * _e132) + (w1_ * _e140)) + (w2_ * _e147)) + (w3_ * _e156));
+            }
+        }
+    }
+    float front_w = min((abs_phi * 0.31830987), 1.0);
+    FurAxis _e175 = fur_axis(false, 0.63661975, _e7);
+    FurLoc _e177 = fur_locate(_e175, abs(theta_r_2));
+    FurAxis _e180 = fur_axis(false, 0.31830987, _e9);
+    FurLoc _e181 = fur_locate(_e180, abs_phi);
+    float _e183 = fur_unbias(1u);
+    float ny0_ = ((1.0 - _e177.w) * _e183);
+    float ny1_ = (_e177.w * _e183);
+    float v0_2 = (ny0_ * (1.0 - _e181.w));
+    float v1_2 = (ny0_ * _e181.w);
+    float v2_ = (ny1_ * (1.0 - _e181.w));
+    float v3_ = (ny1_ * _e181.w);
+    uint j0_ = ((_e177.i * _e9) + _e181.i);
+    bool loop_init_4 = true;
+    while(true) {
+        if (!loop_init_4) {
+            uint _e251 = ch_3;
+            ch_3 = (_e251 + 1u);
+        }
+        loop_init_4 = false;
+        uint _e209 = ch_3;
+        if ((_e209 < 12u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e215 = ch_3;
+            float _e217 = fur_half(((n0_1 + (12u * j0_)) + _e215));
+            uint _e223 = ch_3;
+            float _e225 = fur_half(((n0_1 + (12u * (j0_ + 1u))) + _e223));
+            uint _e230 = ch_3;
+            float _e232 = fur_half(((n0_1 + (12u * (j0_ + _e9))) + _e230));
+            uint _e239 = ch_3;
+            float _e241 = fur_half(((n0_1 + (12u * ((j0_ + _e9) + 1u))) + _e239));
+            uint _e242 = ch_3;
+            n[_e242] = ((((v0_2 * _e217) + (v1_2 * _e225)) + (v2_ * _e232)) + (v3_ * _e241));
+        }
+    }
+    float _e254[3] = m;
+    float _e255[2] = ms;
+    float _e256[12] = n;
+    return FurLookups(_e254, _e255, _e256, front_w, inv_cos2_);
 }
 
-FurFamilies fur_assemble(FurLookups l) {
+FurFamilies fur_assemble(FurLookups l_2) {
     vec3 f[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint k_1 = 0u;
-    float mss = (l.ms[0] + (l.front * (l.ms[1] - l.ms[0])));
-    float lon[4] = float[4](l.m[0], l.m[1], l.m[2], mss);
-    bool loop_init_3 = true;
+    float mss = (l_2.ms[0] + (l_2.front * (l_2.ms[1] - l_2.ms[0])));
+    float lon[4] = float[4](l_2.m[0], l_2.m[1], l_2.m[2], mss);
+    bool loop_init_5 = true;
     while(true) {
-        if (!loop_init_3) {
+        if (!loop_init_5) {
             uint _e51 = k_1;
             k_1 = (_e51 + 1u);
         }
-        loop_init_3 = false;
+        loop_init_5 = false;
         uint _e21 = k_1;
         if ((_e21 < 4u)) {
         } else {
@@ -376,12 +564,12 @@ FurFamilies fur_assemble(FurLookups l) {
         }
         {
             uint _e24 = k_1;
-            float weight = (lon[_e24] * l.inv_cos2_);
+            float weight = (lon[_e24] * l_2.inv_cos2_);
             uint _e28 = k_1;
             uint _e32 = k_1;
             uint _e37 = k_1;
             uint _e44 = k_1;
-            f[_e28] = (vec3(l.n[(3u * _e32)], l.n[((3u * _e37) + 1u)], l.n[((3u * _e44) + 2u)]) * weight);
+            f[_e28] = (vec3(l_2.n[(3u * _e32)], l_2.n[((3u * _e37) + 1u)], l_2.n[((3u * _e44) + 2u)]) * weight);
         }
     }
     vec3 _e55 = f[0];
@@ -395,13 +583,13 @@ FurFamilies fur_assemble(FurLookups l) {
     return FurFamilies(_e55, _e57, _e59, _e61, (((_e63 + _e65) + _e68) + _e71));
 }
 
-FurFamilies fur_eval_far(float theta_i_2, float theta_r_2, float phi_1) {
-    bool _e3 = fur_valid(theta_i_2, theta_r_2, phi_1);
+FurFamilies fur_eval_far(float theta_i_2, float theta_r_3, float phi_1) {
+    bool _e3 = fur_valid(theta_i_2, theta_r_3, phi_1);
     if (!(_e3)) {
         FurFamilies _e5 = fur_zero();
         return _e5;
     }
-    FurLookups _e6 = fur_lookups(theta_i_2, theta_r_2, phi_1);
+    FurLookups _e6 = fur_lookups(theta_i_2, theta_r_3, phi_1);
     FurFamilies _e7 = fur_assemble(_e6);
     return _e7;
 }
@@ -433,10 +621,10 @@ float fur_atan2_(float y_1, float x_5) {
     float r = 0.0;
     float ax_1 = abs(x_5);
     float ay = abs(y_1);
-    float a_2 = (min(ax_1, ay) / max(max(ax_1, ay), 1.1754944e-38));
-    float t_4 = (a_2 * a_2);
+    float a_3 = (min(ax_1, ay) / max(max(ax_1, ay), 1.1754944e-38));
+    float t_4 = (a_3 * a_3);
     float _e10 = fur_atan_poly(t_4);
-    r = (a_2 + (a_2 * (t_4 * _e10)));
+    r = (a_3 + (a_3 * (t_4 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_1) ? (FUR_HALF_PI - _e17) : _e15);
@@ -495,82 +683,15 @@ FurFamilies fur_eval_far_dirs(vec3 wi, vec3 wr, vec3 u) {
         return _e36;
     }
     vec3 un = (u * (1.0 / nu));
-    float a_3 = dot(wi, un);
+    float a_4 = dot(wi, un);
     float b = dot(wr, un);
-    float _e48 = fur_asin(clamp((a_3 * (1.0 / ni)), -1.0, 1.0));
+    float _e48 = fur_asin(clamp((a_4 * (1.0 / ni)), -1.0, 1.0));
     float _e55 = fur_asin(clamp((b * (1.0 / nr)), -1.0, 1.0));
     float y_4 = dot(un, cross(wi, wr));
-    float x_7 = (dot(wi, wr) - (a_3 * b));
-    float _e61 = fur_atan2_(y_4, x_7);
+    float x_8 = (dot(wi, wr) - (a_4 * b));
+    float _e61 = fur_atan2_(y_4, x_8);
     FurFamilies _e63 = fur_eval_far(_e48, _e55, abs(_e61));
     return _e63;
-}
-
-float fur_f32_at(uint byte) {
-    uint w_2 = (byte >> 2u);
-    if (((byte & 3u) == 0u)) {
-        uint _e9 = _group_0_binding_0_cs[w_2];
-        return uintBitsToFloat(_e9);
-    }
-    uint _e13 = _group_0_binding_0_cs[w_2];
-    uint _e20 = _group_0_binding_0_cs[(w_2 + 1u)];
-    return uintBitsToFloat(((_e13 >> 16u) | (_e20 << 16u)));
-}
-
-uint fur_entries(uint nodes_1, uint block) {
-    return (((((nodes_1 - 1u) + block) - 1u) / block) + 1u);
-}
-
-FurDensity fur_density(uint d) {
-    uint at = 0u;
-    uint _e2 = fur_word(4u);
-    uint _e4 = fur_word(5u);
-    uint _e6 = fur_word(6u);
-    uint _e8 = fur_word(7u);
-    uint _e10 = fur_word(8u);
-    uint values = (((3u * _e2) + ((12u * _e6) * _e4)) + ((2u * _e8) * _e10));
-    at = (160u + (2u * values));
-    uint _e27 = fur_entries(_e2, 1u);
-    uint _e29 = fur_entries(_e6, 8u);
-    uint _e31 = fur_entries(_e8, 8u);
-    if ((d < 3u)) {
-        uint _e34 = at;
-        return FurDensity((_e34 + ((4u * d) * _e27)), _e27, _e2, 1u, (6.2831855 / float((_e2 - 1u))), 1u, 0u, d, 1u);
-    }
-    uint _e49 = at;
-    at = (_e49 + (12u * _e27));
-    if ((d < 7u)) {
-        uint f_2 = (d - 3u);
-        uint _e57 = at;
-        return FurDensity((_e57 + (((4u * f_2) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_2), 3u);
-    }
-    uint _e74 = at;
-    at = (_e74 + ((16u * _e4) * _e29));
-    uint x_8 = (d - 7u);
-    uint _e81 = at;
-    return FurDensity((_e81 + (((4u * x_8) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_8, 1u);
-}
-
-float fur_node(FurDensity d_1, uint row, uint j) {
-    uint _e4 = fur_word(4u);
-    uint _e6 = fur_word(5u);
-    uint _e8 = fur_word(6u);
-    uint n0_1 = (FUR_HEADER_HALVES + (3u * _e4));
-    uint s0_1 = (n0_1 + ((12u * _e8) * _e6));
-    uint starts[3] = uint[3](FUR_HEADER_HALVES, n0_1, s0_1);
-    uint chans[3] = uint[3](3u, 12u, 2u);
-    uint base = ((starts[d_1.table] + (((row * d_1.nodes) + j) * chans[d_1.table])) + d_1.first);
-    if ((d_1.channels == 3u)) {
-        float _e36 = fur_half(base);
-        float _e39 = fur_half((base + 1u));
-        float _e43 = fur_half((base + 2u));
-        float sum = ((_e36 + _e39) + _e43);
-        float _e46 = fur_unbias(d_1.table);
-        return (sum * (_e46 * 0.33333334));
-    }
-    float _e50 = fur_half(base);
-    float _e52 = fur_unbias(d_1.table);
-    return (_e50 * _e52);
 }
 
 FurRows fur_rows(FurDensity d_2, uint row_1, float w, float origin) {
@@ -598,10 +719,6 @@ float fur_rows_prefix(FurRows r_2, uint k_2) {
 float fur_rows_total(FurRows r_3) {
     float _e5 = fur_rows_prefix(r_3, (r_3.d.entries - 1u));
     return _e5;
-}
-
-float fur_linear_mass(float v0_, float v1_, float len) {
-    return ((0.5 * len) * (v0_ + v1_));
 }
 
 float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_2) {
@@ -687,13 +804,13 @@ float fur_rows_invert(FurRows r_4, float t_3) {
     float _e40 = fur_rows_value(r_4, first);
     prev = _e40;
     j_2 = first;
-    bool loop_init_4 = true;
+    bool loop_init_6 = true;
     while(true) {
-        if (!loop_init_4) {
+        if (!loop_init_6) {
             uint _e85 = j_2;
             j_2 = (_e85 + 1u);
         }
-        loop_init_4 = false;
+        loop_init_6 = false;
         uint _e51 = j_2;
         if ((_e51 < end)) {
         } else {
@@ -747,45 +864,16 @@ float fur_rows_invert_between(FurRows r_5, float t0_, float t1_, float u_2) {
 }
 
 vec3 fur_m_cdf(float x_6) {
-    vec3 out_ = vec3(0.0);
-    uint g = 0u;
-    uint _e2 = fur_word(4u);
-    FurAxis _e5 = fur_axis(true, 0.15915494, _e2);
-    FurLoc _e6 = fur_locate(_e5, x_6);
-    FurDensity _e8 = fur_density(0u);
-    float off = (_e6.w * _e8.step_);
-    bool loop_init_5 = true;
-    while(true) {
-        if (!loop_init_5) {
-            uint _e44 = g;
-            g = (_e44 + 1u);
-        }
-        loop_init_5 = false;
-        uint _e17 = g;
-        if ((_e17 < 3u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e20 = g;
-            FurDensity _e21 = fur_density(_e20);
-            float _e24 = fur_node(_e21, 0u, _e6.i);
-            float _e29 = fur_node(_e21, 0u, (_e6.i + 1u));
-            float at_1 = (_e24 + ((_e29 - _e24) * _e6.w));
-            uint _e34 = g;
-            float _e41 = fur_f32_at((_e21.prefix_at + (4u * _e6.i)));
-            float _e42 = fur_linear_mass(_e24, at_1, off);
-            out_[_e34] = (_e41 + _e42);
-        }
-    }
-    vec3 _e47 = out_;
-    return _e47;
+    FurAxis _e1 = fur_sum_axis();
+    FurLoc _e2 = fur_locate(_e1, x_6);
+    FurMAt _e3 = fur_m_at(_e2);
+    return _e3.cdf;
 }
 
-float fur_row_total(FurDensity d_3, FurLoc l_1) {
-    float _e17 = fur_f32_at((d_3.prefix_at + (4u * (((min(l_1.i, (d_3.rows - 1u)) * d_3.entries) + d_3.entries) - 1u))));
-    float _e35 = fur_f32_at((d_3.prefix_at + (4u * (((min((l_1.i + 1u), (d_3.rows - 1u)) * d_3.entries) + d_3.entries) - 1u))));
-    return (_e17 + ((_e35 - _e17) * l_1.w));
+float fur_row_total(FurDensity d_3, FurLoc l_3) {
+    float _e17 = fur_f32_at((d_3.prefix_at + (4u * (((min(l_3.i, (d_3.rows - 1u)) * d_3.entries) + d_3.entries) - 1u))));
+    float _e35 = fur_f32_at((d_3.prefix_at + (4u * (((min((l_3.i + 1u), (d_3.rows - 1u)) * d_3.entries) + d_3.entries) - 1u))));
+    return (_e17 + ((_e35 - _e17) * l_3.w));
 }
 
 float fur_positive(float v) {
@@ -800,64 +888,66 @@ float fur_positive(float v) {
     return (_e7 ? v : 0.0);
 }
 
-FurParts fur_parts(float theta_r_3) {
-    vec3 _e3 = fur_m_cdf((theta_r_3 - FUR_HALF_PI));
-    vec3 _e6 = fur_m_cdf((theta_r_3 + FUR_HALF_PI));
-    vec3 mass = max((_e6 - _e3), vec3(0.0));
+FurParts fur_parts(float theta_r_4) {
+    vec3 _e3 = fur_m_cdf((theta_r_4 - FUR_HALF_PI));
+    vec3 _e6 = fur_m_cdf((theta_r_4 + FUR_HALF_PI));
+    vec3 mass_1 = max((_e6 - _e3), vec3(0.0));
     uint _e14 = fur_word(5u);
     FurAxis _e15 = fur_axis(false, 0.63661975, _e14);
-    FurLoc _e17 = fur_locate(_e15, abs(theta_r_3));
+    FurLoc _e17 = fur_locate(_e15, abs(theta_r_4));
     uint _e21 = fur_word(8u);
     FurAxis _e22 = fur_axis(true, 0.31830987, _e21);
-    FurLoc _e23 = fur_locate(_e22, theta_r_3);
+    FurLoc _e23 = fur_locate(_e22, theta_r_4);
     FurDensity _e25 = fur_density(6u);
     float _e26 = fur_row_total(_e25, _e17);
-    FurDensity _e31 = fur_density(3u);
-    float _e32 = fur_row_total(_e31, _e17);
-    float _e34 = fur_positive(((2.0 * mass.x) * _e32));
-    FurDensity _e39 = fur_density(4u);
-    float _e40 = fur_row_total(_e39, _e17);
-    float _e42 = fur_positive(((2.0 * mass.y) * _e40));
-    FurDensity _e47 = fur_density(5u);
-    float _e48 = fur_row_total(_e47, _e17);
-    float _e50 = fur_positive(((2.0 * mass.z) * _e48));
-    FurDensity _e52 = fur_density(7u);
-    float _e53 = fur_row_total(_e52, _e23);
-    float _e55 = fur_positive((_e53 * _e26));
-    FurDensity _e57 = fur_density(8u);
-    float _e58 = fur_row_total(_e57, _e23);
-    float _e60 = fur_positive((_e58 * _e26));
-    float a_4[5] = float[5](_e34, _e42, _e50, _e55, _e60);
-    return FurParts(a_4, mass, _e3);
+    vec3 _e27 = fur_sphere_norms(theta_r_4);
+    vec3 kept = (mass_1 * _e27);
+    FurDensity _e33 = fur_density(3u);
+    float _e34 = fur_row_total(_e33, _e17);
+    float _e36 = fur_positive(((2.0 * kept.x) * _e34));
+    FurDensity _e41 = fur_density(4u);
+    float _e42 = fur_row_total(_e41, _e17);
+    float _e44 = fur_positive(((2.0 * kept.y) * _e42));
+    FurDensity _e49 = fur_density(5u);
+    float _e50 = fur_row_total(_e49, _e17);
+    float _e52 = fur_positive(((2.0 * kept.z) * _e50));
+    FurDensity _e54 = fur_density(7u);
+    float _e55 = fur_row_total(_e54, _e23);
+    float _e57 = fur_positive((_e55 * _e26));
+    FurDensity _e59 = fur_density(8u);
+    float _e60 = fur_row_total(_e59, _e23);
+    float _e62 = fur_positive((_e60 * _e26));
+    float a_5[5] = float[5](_e36, _e44, _e52, _e57, _e62);
+    return FurParts(a_5, mass_1, _e3);
 }
 
-float fur_density_of(FurLookups l_2, float w_1, float cos_theta_i) {
+float fur_density_of(FurLookups l_4, float w_1, float cos_theta_i) {
     if (!((w_1 > 0.0))) {
         return 0.0;
     }
-    float mean0_ = (((l_2.n[0] + l_2.n[1]) + l_2.n[2]) * 0.33333334);
-    float mean1_ = (((l_2.n[3] + l_2.n[4]) + l_2.n[5]) * 0.33333334);
-    float mean2_ = (((l_2.n[6] + l_2.n[7]) + l_2.n[8]) * 0.33333334);
-    float mean3_ = (((l_2.n[9] + l_2.n[10]) + l_2.n[11]) * 0.33333334);
-    float p = ((((l_2.m[0] * mean0_) + (l_2.m[1] * mean1_)) + (l_2.m[2] * mean2_)) + ((0.5 * (l_2.ms[0] + l_2.ms[1])) * mean3_));
+    float mean0_ = (((l_4.n[0] + l_4.n[1]) + l_4.n[2]) * 0.33333334);
+    float mean1_ = (((l_4.n[3] + l_4.n[4]) + l_4.n[5]) * 0.33333334);
+    float mean2_ = (((l_4.n[6] + l_4.n[7]) + l_4.n[8]) * 0.33333334);
+    float mean3_ = (((l_4.n[9] + l_4.n[10]) + l_4.n[11]) * 0.33333334);
+    float p = ((((l_4.m[0] * mean0_) + (l_4.m[1] * mean1_)) + (l_4.m[2] * mean2_)) + ((0.5 * (l_4.ms[0] + l_4.ms[1])) * mean3_));
     float _e71 = fur_positive(((p / w_1) / max(cos_theta_i, 1e-6)));
     return _e71;
 }
 
-float fur_pdf_far(float theta_i_3, float theta_r_4, float phi_2) {
-    bool _e3 = fur_valid(theta_i_3, theta_r_4, phi_2);
+float fur_pdf_far(float theta_i_3, float theta_r_5, float phi_2) {
+    bool _e3 = fur_valid(theta_i_3, theta_r_5, phi_2);
     if (!(_e3)) {
         return 0.0;
     }
-    FurParts _e6 = fur_parts(theta_r_4);
+    FurParts _e6 = fur_parts(theta_r_5);
     float w_3 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
-    FurLookups _e21 = fur_lookups(theta_i_3, theta_r_4, phi_2);
+    FurLookups _e21 = fur_lookups(theta_i_3, theta_r_5, phi_2);
     float _e22 = fur_cos_within_half_pi(theta_i_3);
     float _e23 = fur_density_of(_e21, w_3, _e22);
     return _e23;
 }
 
-FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
+FurSample fur_sample_far(float theta_r_6, vec3 u_3) {
     FurSample out_1 = FurSample(0.0, 0.0, 0.0, vec3(0.0), 0u, false);
     bool local_15 = false;
     float total = 0.0;
@@ -869,9 +959,9 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     uint k_4 = 0u;
     float theta_i_4 = 0.0;
     bool local_16 = false;
-    bool _e11 = fur_finite(theta_r_5);
+    bool _e11 = fur_finite(theta_r_6);
     if (_e11) {
-        local_15 = (abs(theta_r_5) <= FUR_HALF_PI);
+        local_15 = (abs(theta_r_6) <= FUR_HALF_PI);
     } else {
         local_15 = false;
     }
@@ -880,14 +970,14 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
         FurSample _e20 = out_1;
         return _e20;
     }
-    FurParts _e21 = fur_parts(theta_r_5);
-    bool loop_init_6 = true;
+    FurParts _e21 = fur_parts(theta_r_6);
+    bool loop_init_7 = true;
     while(true) {
-        if (!loop_init_6) {
+        if (!loop_init_7) {
             uint _e34 = k_3;
             k_3 = (_e34 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_7 = false;
         uint _e26 = k_3;
         if ((_e26 < 5u)) {
         } else {
@@ -907,13 +997,13 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     float _e43 = fur_unit(u_3.x);
     float _e44 = total;
     float target_mass = (_e43 * _e44);
-    bool loop_init_7 = true;
+    bool loop_init_8 = true;
     while(true) {
-        if (!loop_init_7) {
+        if (!loop_init_8) {
             uint _e76 = k_4;
             k_4 = (_e76 + 1u);
         }
-        loop_init_7 = false;
+        loop_init_8 = false;
         uint _e56 = k_4;
         if ((_e56 < 5u)) {
         } else {
@@ -958,11 +1048,11 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
         uint _e116 = c;
         uint _e119 = c;
         float _e123 = fur_rows_invert_between(_e111, _e21.lo[_e113], (_e21.lo[_e116] + _e21.mass[_e119]), u_3.y);
-        theta_i_4 = clamp((_e123 - theta_r_5), -1.5707964, FUR_HALF_PI);
+        theta_i_4 = clamp((_e123 - theta_r_6), -1.5707964, FUR_HALF_PI);
     } else {
         uint _e131 = fur_word(8u);
         FurAxis _e132 = fur_axis(true, 0.31830987, _e131);
-        FurLoc _e133 = fur_locate(_e132, theta_r_5);
+        FurLoc _e133 = fur_locate(_e132, theta_r_6);
         uint _e135 = c;
         FurDensity _e139 = fur_density(((7u + _e135) - 3u));
         FurRows _e143 = fur_rows(_e139, _e133.i, _e133.w, -1.5707964);
@@ -974,7 +1064,7 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     uint family = min(_e151, 3u);
     uint _e157 = fur_word(5u);
     FurAxis _e158 = fur_axis(false, 0.63661975, _e157);
-    FurLoc _e160 = fur_locate(_e158, abs(theta_r_5));
+    FurLoc _e160 = fur_locate(_e158, abs(theta_r_6));
     FurDensity _e163 = fur_density((3u + family));
     FurRows _e167 = fur_rows(_e163, _e160.i, _e160.w, 0.0);
     float _e169 = fur_rows_total(_e167);
@@ -982,7 +1072,7 @@ FurSample fur_sample_far(float theta_r_5, vec3 u_3) {
     float abs_phi_1 = clamp(_e171, 0.0, FUR_PI);
     float _e177 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
     float _e178 = theta_i_4;
-    FurLookups _e179 = fur_lookups(_e178, theta_r_5, _e177);
+    FurLookups _e179 = fur_lookups(_e178, theta_r_6, _e177);
     float _e180 = theta_i_4;
     float _e181 = fur_cos_within_half_pi(_e180);
     float _e182 = fur_density_of(_e179, total_weight, _e181);
@@ -1010,13 +1100,13 @@ void fur_store(uint q, FurFamilies f_1) {
     uint k_5 = 0u;
     uint base_1 = (16u * q);
     vec3 parts[5] = vec3[5](f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total);
-    bool loop_init_8 = true;
+    bool loop_init_9 = true;
     while(true) {
-        if (!loop_init_8) {
+        if (!loop_init_9) {
             uint _e46 = k_5;
             k_5 = (_e46 + 1u);
         }
-        loop_init_8 = false;
+        loop_init_9 = false;
         uint _e12 = k_5;
         if ((_e12 < 5u)) {
         } else {
@@ -1044,8 +1134,8 @@ void main() {
     if ((q_1 >= uint(_group_0_binding_1_cs.length()))) {
         return;
     }
-    vec4 a_5 = _group_0_binding_1_cs[q_1];
-    float _e15 = fur_pdf_far(a_5.x, a_5.y, a_5.z);
+    vec4 a_6 = _group_0_binding_1_cs[q_1];
+    float _e15 = fur_pdf_far(a_6.x, a_6.y, a_6.z);
     _group_0_binding_2_cs[(16u * q_1)] = _e15;
     return;
 }

@@ -267,15 +267,15 @@ impl<M: Math> KernelOp<M> for Batch<'_> {
 
 /// [`Place`]s of one chunk, one array per field.
 struct Places {
-    index: [[u32; CHUNK]; 3],
-    weight: [[f32; CHUNK]; 12],
+    index: [[u32; CHUNK]; 5],
+    weight: [[f32; CHUNK]; 14],
 }
 
 impl Default for Places {
     fn default() -> Places {
         Places {
-            index: [[0; CHUNK]; 3],
-            weight: [[0.0; CHUNK]; 12],
+            index: [[0; CHUNK]; 5],
+            weight: [[0.0; CHUNK]; 14],
         }
     }
 }

@@ -19,9 +19,11 @@ mod dispatch;
 mod simd;
 mod texels;
 
+use crate::longitudinal::MIN_SPHERE_MASS;
 use crate::math::{cos_within_half_pi, Libm, Math, PI};
-use crate::model::inv_cos2_theta_i;
-use crate::params::FurParams;
+use crate::model::{inv_cos2_theta_i, POLE_SLIVER};
+use crate::params::{Closure, FurParams};
+use crate::sampling::linear_mass;
 use crate::spectrum::Rgb;
 use batch::Isa;
 pub use batch::{BatchLengthError, Kernel};
@@ -56,6 +58,15 @@ impl Axis {
         }
     }
 
+    /// The location `dx` away from the location `at` (clamped to the axis ends): the same
+    /// node position arithmetic as [`Axis::locate`], u = j + w + dx·inv_step.
+    #[inline(always)]
+    pub(crate) fn shifted(&self, (j, w): (usize, f32), dx: f32) -> (usize, f32) {
+        let u = (j as f32 + w + dx * self.inv_step).max(0.0).min(self.last);
+        let i = (libm::floorf(u) as usize).min(self.nodes - 2);
+        (i, u - i as f32)
+    }
+
     /// Lower node index and weight of the upper node for `x` (clamped to the axis ends).
     #[inline(always)]
     pub(crate) fn locate(&self, x: f32) -> (usize, f32) {
@@ -80,17 +91,22 @@ impl Axis {
 ///
 /// A `.furlut` blob normally comes from the `bake` tool, as a file, a memory map or
 /// `include_bytes!`. Here, the smallest one, written with the format's own encoder, every
-/// table value 1:
+/// table value 1, in the report closure (which reads `M` as stored; the energy closure would
+/// divide it by its mass on the sphere, docs/model.md §12):
 ///
 /// ```
 /// use bcsdf_core::lut::{self, HEADER_LEN, TABLE_COUNT};
-/// use bcsdf_core::{presets, Angles, BakedBcsdf, Bcsdf, LutError, LutHeader, LutResolution};
+/// use bcsdf_core::{presets, Angles, BakedBcsdf, Bcsdf, Closure, FurParamsInput};
+/// use bcsdf_core::{LutError, LutHeader, LutResolution};
 ///
 /// let res = LutResolution { n_sum: 2, n_theta_r: 2, n_phi: 2, n_ms_i: 2, n_ms_r: 2 };
 /// let header = LutHeader {
 ///     res,
 ///     scales: [1.0; TABLE_COUNT],
-///     params: presets::find("human-hair").unwrap().input,
+///     params: FurParamsInput {
+///         closure: Closure::Report,
+///         ..presets::find("human-hair").unwrap().input
+///     },
 ///     profiles: None,
 /// };
 /// let mut blob = vec![0u8; res.blob_len()];
@@ -141,6 +157,9 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) phi: Axis,
     pub(crate) ms_i: Axis,
     pub(crate) ms_r: Axis,
+    /// The energy closure (docs/model.md §12): M_g is divided by its mass inside
+    /// θ_i ∈ [−π/2, π/2], from the sampling section's prefix sums.
+    pub(crate) energy: bool,
     _math: PhantomData<M>,
 }
 
@@ -161,24 +180,50 @@ pub(crate) struct Place {
     front: f32,
     /// 1/cos²θ_i, guarded.
     inv_cos2: f32,
+    /// The ends x = θ_r ∓ π/2 of the range of M_g on the `sum` axis (node, weight), for the
+    /// energy closure's mass (docs/model.md §12).
+    range: [(usize, f32); 2],
 }
 
 impl Place {
-    /// The texel indices (`M`, `M_s`, `N`) and the twelve floats, for storage by field.
+    /// The texel indices (`M`, `M_s`, `N`, the two range ends) and the fourteen floats, for
+    /// storage by field.
     #[inline(always)]
-    fn into_parts(self) -> ([u32; 3], [f32; 12]) {
+    fn into_parts(self) -> ([u32; 5], [f32; 14]) {
         let [a, b] = self.m_w;
         let [c, d, e, f] = self.ms_w;
         let [g, h, i, j] = self.n_w;
+        let [(lo, lo_w), (hi, hi_w)] = self.range;
         (
-            [self.m as u32, self.ms as u32, self.n as u32],
-            [a, b, c, d, e, f, g, h, i, j, self.front, self.inv_cos2],
+            [
+                self.m as u32,
+                self.ms as u32,
+                self.n as u32,
+                lo as u32,
+                hi as u32,
+            ],
+            [
+                a,
+                b,
+                c,
+                d,
+                e,
+                f,
+                g,
+                h,
+                i,
+                j,
+                self.front,
+                self.inv_cos2,
+                lo_w,
+                hi_w,
+            ],
         )
     }
 
     /// The inverse of [`Place::into_parts`].
     #[inline(always)]
-    fn from_parts(index: [u32; 3], w: [f32; 12]) -> Place {
+    fn from_parts(index: [u32; 5], w: [f32; 14]) -> Place {
         Place {
             m: index[0] as usize,
             m_w: [w[0], w[1]],
@@ -188,6 +233,7 @@ impl Place {
             n_w: [w[6], w[7], w[8], w[9]],
             front: w[10],
             inv_cos2: w[11],
+            range: [(index[3] as usize, w[12]), (index[4] as usize, w[13])],
         }
     }
 }
@@ -195,7 +241,8 @@ impl Place {
 /// The table lookups of one query, shared by evaluation and pdf.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Lookups {
-    /// M_g(θ_i + θ_r), g = R, TT, TRT.
+    /// M_g(θ_i + θ_r), g = R, TT, TRT (in the energy closure divided by its mass on the
+    /// sphere, docs/model.md §12).
     pub(crate) m: [f32; 3],
     /// M^s_back(θ_i, θ_r), M^s_front(θ_i, θ_r).
     pub(crate) ms: [f32; 2],
@@ -254,6 +301,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             phi: Axis::new(0.0, 1.0 / PI, res.n_phi),
             ms_i: Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_i),
             ms_r: Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_r),
+            energy: params.closure() == Closure::Energy,
             _math: PhantomData,
         })
     }
@@ -318,6 +366,90 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             n_w,
             front: (abs_phi * (1.0 / PI)).min(1.0),
             inv_cos2: inv_cos2_theta_i(cos_within_half_pi(ti)),
+            range: [
+                self.sum.locate(tr - PI / 2.0),
+                self.sum.locate(tr + PI / 2.0),
+            ],
+        }
+    }
+
+    /// ∫ M_g from the first node of the `sum` axis to the point at node `j`, weight `w`
+    /// (a location from [`Axis::locate`]), for the three groups at once: the prefix sum at
+    /// node j plus the mass of the linear interpolant up to the point.
+    #[inline(always)]
+    pub(crate) fn m_cdf_at(&self, at: (usize, f32)) -> [f32; 3] {
+        self.m_cdf_and_value(at).0
+    }
+
+    /// [`BakedBcsdf::m_cdf_at`] and the interpolated M_g at the point.
+    #[inline(always)]
+    fn m_cdf_and_value(&self, (j, w): (usize, f32)) -> ([f32; 3], [f32; 3]) {
+        let off = w * self.densities[0].step;
+        let v = self.nodes.m_pair(j);
+        let mut cdf = [0.0; 3];
+        let mut value = [0.0; 3];
+        for g in 0..3 {
+            let (v0, v1) = (v[g], v[3 + g]);
+            let at = v0 + (v1 - v0) * w;
+            cdf[g] = self.f32_at(self.densities[g].prefix_at + 4 * j) + linear_mass(v0, at, off);
+            value[g] = at;
+        }
+        (cdf, value)
+    }
+
+    /// The interpolated M_g at `dx` from a location on the `sum` axis.
+    #[inline(always)]
+    fn m_value_beside(&self, at: (usize, f32), dx: f32) -> [f32; 3] {
+        let (j, w) = self.sum.shifted(at, dx);
+        let v = self.nodes.m_pair(j);
+        core::array::from_fn(|g| v[g] + (v[3 + g] - v[g]) * w)
+    }
+
+    /// f32 at byte offset `at` of the blob (0 past its end).
+    #[inline(always)]
+    pub(crate) fn f32_at(&self, at: usize) -> f32 {
+        match self.blob.get(at..at + 4) {
+            Some(b) => f32::from_le_bytes([b[0], b[1], b[2], b[3]]),
+            None => 0.0,
+        }
+    }
+
+    /// The energy closure's factor M_g / (tabulated M_g) for the range between the located
+    /// ends (docs/model.md §12): 1/Z_g with Z_g the interpolant's mass over
+    /// θ_i ∈ [−π/2, π/2] (at least [`MIN_SPHERE_MASS`]); 1 in the report closure.
+    #[inline(always)]
+    pub(crate) fn sphere_norms(&self, range: [(usize, f32); 2]) -> [f32; 3] {
+        if !self.energy {
+            return [1.0; 3];
+        }
+        let (lo, lo_pole) = self.m_cdf_and_value(range[0]);
+        let (hi, hi_pole) = self.m_cdf_and_value(range[1]);
+        // The pole slivers: ∫ M·(1 − s²/s_c²) ds over s ∈ [0, s_c] from the pole, M taken
+        // quadratic through s = 0, s_c/2, s_c: s_c·(11·M_0 + 28·M_½ + M_1)/60.
+        let inside = |at: (usize, f32), dir: f32| {
+            [0.5, 1.0].map(|f| self.m_value_beside(at, dir * f * POLE_SLIVER))
+        };
+        let [lo_half, lo_end] = inside(range[0], 1.0);
+        let [hi_half, hi_end] = inside(range[1], -1.0);
+        let sliver = |m0: f32, m_half: f32, m1: f32| {
+            POLE_SLIVER * (1.0 / 60.0) * (11.0 * m0 + 28.0 * m_half + m1)
+        };
+        core::array::from_fn(|g| {
+            let loss = sliver(lo_pole[g], lo_half[g], lo_end[g])
+                + sliver(hi_pole[g], hi_half[g], hi_end[g]);
+            self.sphere_norm(hi[g] - lo[g] - loss)
+        })
+    }
+
+    /// The energy closure's factor for a tabulated M_g of mass `mass` inside θ_i ∈
+    /// [−π/2, π/2] (docs/model.md §12): 1/max(mass, [`MIN_SPHERE_MASS`]); 1 in the report
+    /// closure.
+    #[inline(always)]
+    fn sphere_norm(&self, mass: f32) -> f32 {
+        if self.energy {
+            1.0 / mass.max(MIN_SPHERE_MASS)
+        } else {
+            1.0
         }
     }
 
@@ -326,9 +458,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     #[inline(always)]
     pub(crate) fn gather_with<K: NKernel>(&self, kernel: K, p: &Place) -> Lookups {
         let res = &self.header.res;
+        // Read from the blob: a pair is read as eight halves (table N follows M).
+        let m = m_linear(self.blob, self.m_start, p.m, p.m_w[0], p.m_w[1]);
+        let norm = self.sphere_norms(p.range);
         Lookups {
-            // Read from the blob: a pair is read as eight halves (table N follows M).
-            m: m_linear(self.blob, self.m_start, p.m, p.m_w[0], p.m_w[1]),
+            m: core::array::from_fn(|g| m[g] * norm[g]),
             ms: ms_bilinear(
                 self.tables[Table::MS as usize],
                 res.n_ms_i as usize,

@@ -4,8 +4,10 @@
 extern crate std;
 
 use super::*;
+use crate::lobes::LobeFamily;
 use crate::lut::{LutResolution, HEADER_LEN};
 use crate::math::wrap_angle;
+use crate::params::FurParamsInput;
 use crate::presets;
 use std::vec;
 use std::vec::Vec;
@@ -19,16 +21,28 @@ pub(crate) const RES: LutResolution = LutResolution {
     n_ms_r: 7,
 };
 
-/// A sealed LUT at `res` for the first preset's parameters, every stored half from
-/// `half(table, x, y, channel)`.
+/// A sealed LUT at `res` for the first preset's parameters in the report closure (the
+/// tables read as stored), every stored half from `half(table, x, y, channel)`.
 pub(crate) fn blob(
     res: LutResolution,
+    half: impl Fn(Table, usize, usize, usize) -> u16,
+) -> Vec<u8> {
+    blob_with(res, Closure::Report, half)
+}
+
+/// [`blob`] in the closure `closure`.
+pub(crate) fn blob_with(
+    res: LutResolution,
+    closure: Closure,
     half: impl Fn(Table, usize, usize, usize) -> u16,
 ) -> Vec<u8> {
     let header = LutHeader {
         res,
         scales: [1.0; TABLE_COUNT],
-        params: presets::PRESETS[0].input,
+        params: FurParamsInput {
+            closure,
+            ..presets::PRESETS[0].input
+        },
         profiles: None,
     };
     let mut b = vec![0u8; res.blob_len()];
@@ -198,7 +212,12 @@ fn value_reads_texels_and_is_zero_outside() {
 
 /// A LUT at [`RES`] with pseudo-random halves in [0, 2), one in eight zero.
 pub(crate) fn random() -> Vec<u8> {
-    blob(RES, |t, x, y, c| {
+    random_with(Closure::Report)
+}
+
+/// [`random`] in the closure `closure`.
+pub(crate) fn random_with(closure: Closure) -> Vec<u8> {
+    blob_with(RES, closure, |t, x, y, c| {
         let mut z = (t as u64) << 48 ^ (x as u64) << 32 ^ (y as u64) << 16 ^ c as u64;
         z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
@@ -241,8 +260,43 @@ fn directions_agree_with_angles_and_reject_like_angles() {
 }
 
 #[test]
+fn energy_closure_divides_m_by_its_mass_on_the_sphere() {
+    // Every table 1: the interpolated M_g has mass π over θ_i ∈ [−π/2, π/2] at every θ_r,
+    // less (2/3)·s_c in each pole sliver (the weight 1 − s²/s_c² of the 1/cos² guard), so the
+    // energy closure's M_g is 1/(π − 4/3·s_c); M^s is left as it is (docs/model.md §12).
+    let report = blob(RES, |_, _, _, _| half(1.0));
+    let energy = blob_with(RES, Closure::Energy, |_, _, _, _| half(1.0));
+    let (report, energy) = (
+        BakedBcsdf::from_bytes(&report).unwrap(),
+        BakedBcsdf::from_bytes(&energy).unwrap(),
+    );
+    assert_eq!(energy.params().closure(), Closure::Energy);
+    for tr in [-90.0f32, -61.0, -3.0, 0.0, 44.0, 89.0, 90.0] {
+        for ti in [-80.0f32, -10.0, 0.0, 35.0, 89.9] {
+            let a = Angles::from_degrees(ti, tr, 120.0).unwrap();
+            let (r, e) = (report.eval_far(&a), energy.eval_far(&a));
+            for f in [LobeFamily::R, LobeFamily::TT, LobeFamily::TRT] {
+                let mass = PI - (4.0 / 3.0) * crate::model::POLE_SLIVER;
+                let (want, got) = (r.get(f).0[0] / mass, e.get(f).0[0]);
+                assert!(
+                    close(got, want, 2e-5 * want),
+                    "{f:?} {ti} {tr}: {got} vs {want}"
+                );
+            }
+            assert_eq!(e.get(LobeFamily::Scattered), r.get(LobeFamily::Scattered));
+        }
+    }
+}
+
+#[test]
 fn batch_equals_the_scalar_path_bit_for_bit() {
-    let b = random();
+    for closure in Closure::ALL {
+        batch_equals_the_scalar_path_in(closure);
+    }
+}
+
+fn batch_equals_the_scalar_path_in(closure: Closure) {
+    let b = random_with(closure);
     let lut = BakedBcsdf::from_bytes(&b).unwrap();
     let n = 100; // more than three chunks, the last one partial
     let mut ti: Vec<f32> = (0..n).map(|k| -1.5 + 0.03 * k as f32).collect();

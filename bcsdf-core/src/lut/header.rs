@@ -9,7 +9,7 @@ use super::{
     FORMAT_VERSION, HEADER_LEN, MAGIC, PROFILES, TABLE_COUNT,
 };
 use crate::medulla::{PhotonBudget, Resolution};
-use crate::params::{FurParams, FurParamsInput, HeaderField, ParamName};
+use crate::params::{FurParams, FurParamsInput, HeaderField, ParamName, ParamValue};
 use crate::pigment::Pigment;
 use crate::spectrum::Rgb;
 
@@ -102,6 +102,7 @@ impl LutHeader {
                     }
                 }
                 HeaderField::Scalar(_, v) => w.f32(v),
+                HeaderField::Choice(_, i) => w.u32(u32::from(i)),
             }
         }
         match &self.profiles {
@@ -183,6 +184,12 @@ impl LutHeader {
                     },
                     _ => return Err(LutError::Field { field: "pigment" }),
                 };
+            } else if name.spec().is_choice() {
+                let index = r.u32();
+                if usize::try_from(index).map_or(true, |i| i >= name.spec().choices.len()) {
+                    return Err(LutError::Field { field: name.key() });
+                }
+                params.set_value(name, ParamValue::Choice(index as u8));
             } else if !name.is_colour() {
                 params.set(name, r.f32());
             }
@@ -221,9 +228,6 @@ impl LutHeader {
                 })
             }
         };
-        if bytes[CHECKSUM.end..HEADER_LEN].iter().any(|&b| b != 0) {
-            return Err(LutError::Field { field: "reserved" });
-        }
         Ok(LutHeader {
             res,
             scales,
@@ -312,6 +316,8 @@ mod tests {
                     })
                 }
                 Some(ParamValue::Rgb(c)) => ParamValue::Rgb(c * 0.5),
+                // The other choice.
+                Some(ParamValue::Choice(i)) => ParamValue::Choice(1 - i),
                 None => ParamValue::Scalar(0.5), // the colour form not in use: switch to it
             };
             h.params.set_value(spec.name, nudged);
@@ -340,6 +346,13 @@ mod tests {
             LutHeader::decode(&bytes),
             Err(LutError::Params(e)) if e.name == ParamName::Kappa && e.value == 1.5
         ));
+        // Closure 2 does not exist (0 report, 1 energy, after g).
+        let mut bytes = blob(&h);
+        bytes[104..108].copy_from_slice(&2u32.to_le_bytes());
+        assert_eq!(
+            LutHeader::decode(&bytes),
+            Err(LutError::Field { field: "closure" })
+        );
     }
 }
 

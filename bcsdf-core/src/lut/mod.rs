@@ -44,13 +44,12 @@
 //! | 12 | model version (u32, [`crate::MODEL_VERSION`]) |
 //! | 16 | resolution: n_sum, n_theta_r, n_phi, n_ms_i, n_ms_r (5 × u32) |
 //! | 36 | scales (3 × f32, [`Table::ALL`] order) |
-//! | 48 | parameters: η_c, pigment kind (u32: 0 σ_ca, 1 melanin), pigment (3 × f32), α°, β_m°, β_n°, l, κ, η_m, σ_ms, σ_ma, g |
-//! | 104 | has profiles (u32 0/1), profile generator version (u32) |
-//! | 112 | profile seed (u64) |
-//! | 120 | photon budget: per C^N cell, per C^M row (2 × u32) |
-//! | 128 | profile resolution: n_sigma, n_h, n_psi, n_in, n_out (5 × u32) |
-//! | 148 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
-//! | 156 | reserved, zero (4 bytes) |
+//! | 48 | parameters: η_c, pigment kind (u32: 0 σ_ca, 1 melanin), pigment (3 × f32), α°, β_m°, β_n°, l, κ, η_m, σ_ms, σ_ma, g, closure (u32: 0 report, 1 energy) |
+//! | 108 | has profiles (u32 0/1), profile generator version (u32) |
+//! | 116 | profile seed (u64) |
+//! | 124 | photon budget: per C^N cell, per C^M row (2 × u32) |
+//! | 132 | profile resolution: n_sigma, n_h, n_psi, n_in, n_out (5 × u32) |
+//! | 152 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
 //! | 160 | table data (u16 halves) |
 //! | [`LutResolution::sampling_start`] | sampling section (f32 prefix sums, [`cdf`]) |
 
@@ -66,17 +65,17 @@ use core::ops::Range;
 pub const MAGIC: [u8; 8] = *b"FURLUT\0\0";
 
 /// Version of this layout; a blob of another version is rejected. Version 2 added the
-/// sampling section ([`cdf`]).
-pub const FORMAT_VERSION: u32 = 2;
+/// sampling section ([`cdf`]); version 3 the `closure` parameter (docs/model.md §12).
+pub const FORMAT_VERSION: u32 = 3;
 
 /// Length of the fixed header in bytes.
 pub const HEADER_LEN: usize = 160;
 
 /// Byte offset of the profile provenance block.
-const PROFILES: usize = 104;
+const PROFILES: usize = 108;
 
 /// Byte range of the checksum field.
-pub const CHECKSUM: Range<usize> = 148..156;
+pub const CHECKSUM: Range<usize> = 152..160;
 
 /// Largest node count accepted on any axis.
 pub const MAX_NODES: u32 = 8192;

@@ -1,7 +1,7 @@
 //! [`ResolvedParams`]: parameters with every default written out, as the LUT header stores
 //! them (docs/model.md §2, §9; docs/lut.md "Header").
 
-use super::{FurParamsInput, ParamName};
+use super::{Closure, FurParamsInput, ParamName};
 use crate::pigment::Pigment;
 
 /// [`FurParamsInput`] with its [`ParamDefault::SameAs`](super::ParamDefault::SameAs)
@@ -22,6 +22,7 @@ pub struct ResolvedParams {
     pub(super) sigma_ms: f32,
     pub(super) sigma_ma: f32,
     pub(super) g: f32,
+    pub(super) closure: Closure,
 }
 
 /// One field of the LUT header's parameter block ([`ResolvedParams::fields`]; docs/model.md
@@ -33,11 +34,13 @@ pub enum HeaderField {
     Pigment(Pigment),
     /// A scalar parameter and its value.
     Scalar(ParamName, f32),
+    /// A choice parameter (`closure`) and the index of its value.
+    Choice(ParamName, u8),
 }
 
 /// Number of fields of the LUT header's parameter block ([`ResolvedParams::fields`], docs/model.md
-/// §2): the 13 parameters, the three colour ones as one.
-pub const HEADER_FIELDS: usize = 11;
+/// §2): the 14 parameters, the three colour ones as one.
+pub const HEADER_FIELDS: usize = 12;
 
 impl FurParamsInput {
     /// The parameters with every default written out (docs/model.md §2): β_n = β_m and
@@ -57,6 +60,7 @@ impl FurParamsInput {
             sigma_ms: self.sigma_ms,
             sigma_ma: self.sigma_ma,
             g: self.g,
+            closure: self.closure,
         }
     }
 
@@ -83,6 +87,7 @@ impl ResolvedParams {
             sigma_ms: self.sigma_ms,
             sigma_ma: self.sigma_ma,
             g: self.g,
+            closure: self.closure,
         }
     }
 
@@ -109,6 +114,7 @@ impl ResolvedParams {
             Scalar(ParamName::SigmaMs, self.sigma_ms),
             Scalar(ParamName::SigmaMa, self.sigma_ma),
             Scalar(ParamName::G, self.g),
+            HeaderField::Choice(ParamName::Closure, self.closure.index()),
         ]
     }
 }

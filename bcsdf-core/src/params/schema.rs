@@ -2,7 +2,7 @@
 //! and the [`ParamName`] lookups that read it. Every serialisation of the parameter set
 //! iterates this table.
 
-use super::{ParamError, ParamName};
+use super::{Closure, ParamError, ParamName};
 use crate::spectrum::Rgb;
 use core::fmt;
 
@@ -77,6 +77,8 @@ pub enum ParamValue {
     Scalar(f32),
     /// Three numbers; only σ_ca takes them.
     Rgb(Rgb),
+    /// One of a choice parameter's values, by index into [`ParamSpec::choices`] (`closure`).
+    Choice(u8),
 }
 
 /// One row of the parameter schema (docs/model.md §2): everything a serialisation needs to
@@ -99,11 +101,37 @@ pub struct ParamSpec {
     pub domain: Domain,
     /// What an absent value means.
     pub default: ParamDefault,
+    /// For a choice ([`ParamValue::Choice`]): the names of its values, by index (the
+    /// domain is then the index range); empty for a number.
+    pub choices: &'static [&'static str],
+}
+
+impl ParamSpec {
+    /// Whether the parameter is a choice among [`ParamSpec::choices`] (not a number).
+    #[must_use]
+    pub const fn is_choice(&self) -> bool {
+        !self.choices.is_empty()
+    }
+
+    /// The index of the choice named `name`; `None` for a number or an unknown name.
+    #[must_use]
+    pub fn choice_index(&self, name: &str) -> Option<u8> {
+        self.choices
+            .iter()
+            .position(|c| *c == name)
+            .map(|i| i as u8)
+    }
+
+    /// The name of choice `index`; `None` past the end (or for a number).
+    #[must_use]
+    pub fn choice_name(&self, index: u8) -> Option<&'static str> {
+        self.choices.get(usize::from(index)).copied()
+    }
 }
 
 /// The parameter schema, in [`ParamName::ALL`] order (which is also the order of the LUT
 /// header's parameter block, docs/lut.md).
-pub const SCHEMA: [ParamSpec; 13] = [
+pub const SCHEMA: [ParamSpec; 14] = [
     ParamSpec {
         name: ParamName::EtaC,
         key: "eta_c",
@@ -117,6 +145,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
             hi_inclusive: true,
         },
         default: ParamDefault::Required,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::SigmaCa,
@@ -126,6 +155,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "cortex absorption (RGB)",
         domain: Domain::closed(0.0, 1000.0),
         default: ParamDefault::Colour,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::Eumelanin,
@@ -135,6 +165,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "eumelanin concentration (colours σ_ca)",
         domain: Domain::closed(0.0, 100.0),
         default: ParamDefault::Colour,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::Pheomelanin,
@@ -144,6 +175,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "pheomelanin concentration (colours σ_ca)",
         domain: Domain::closed(0.0, 100.0),
         default: ParamDefault::Colour,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::AlphaDeg,
@@ -153,6 +185,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "cuticle scale tilt",
         domain: Domain::closed(-30.0, 30.0),
         default: ParamDefault::Required,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::BetaMDeg,
@@ -162,6 +195,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "longitudinal roughness",
         domain: Domain::closed(0.5, 45.0),
         default: ParamDefault::Required,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::BetaNDeg,
@@ -171,6 +205,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "azimuthal roughness",
         domain: Domain::closed(0.5, 45.0),
         default: ParamDefault::SameAs(ParamName::BetaMDeg),
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::L,
@@ -180,6 +215,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "cuticle layers",
         domain: Domain::closed(0.0, 64.0),
         default: ParamDefault::Required,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::Kappa,
@@ -189,6 +225,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "medulla radius / fiber radius",
         domain: Domain::closed(0.0, 0.99),
         default: ParamDefault::Required,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::EtaM,
@@ -203,6 +240,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
             hi_inclusive: true,
         },
         default: ParamDefault::SameAs(ParamName::EtaC),
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::SigmaMs,
@@ -212,6 +250,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "medulla scattering coefficient",
         domain: Domain::closed(0.0, 100.0),
         default: ParamDefault::Required,
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::SigmaMa,
@@ -221,6 +260,7 @@ pub const SCHEMA: [ParamSpec; 13] = [
         meaning: "medulla absorption coefficient",
         domain: Domain::closed(0.0, 100.0),
         default: ParamDefault::Value(0.0),
+        choices: &[],
     },
     ParamSpec {
         name: ParamName::G,
@@ -235,12 +275,24 @@ pub const SCHEMA: [ParamSpec; 13] = [
             hi_inclusive: false,
         },
         default: ParamDefault::Required,
+        choices: &[],
+    },
+    ParamSpec {
+        name: ParamName::Closure,
+        key: "closure",
+        symbol: "closure",
+        unit: "",
+        meaning: "energy closure: report (as published) or energy (lobes normalised on the sphere)",
+        domain: Domain::closed(0.0, 1.0),
+        // report until the energy closure's baked cost is within its budget (docs/model.md §12).
+        default: ParamDefault::Value(0.0),
+        choices: &Closure::NAMES,
     },
 ];
 
 impl ParamName {
     /// Every parameter, in docs/model.md §2 order (the order of [`SCHEMA`]).
-    pub const ALL: [ParamName; 13] = [
+    pub const ALL: [ParamName; 14] = [
         ParamName::EtaC,
         ParamName::SigmaCa,
         ParamName::Eumelanin,
@@ -254,6 +306,7 @@ impl ParamName {
         ParamName::SigmaMs,
         ParamName::SigmaMa,
         ParamName::G,
+        ParamName::Closure,
     ];
 
     /// This parameter's row of [`SCHEMA`].
@@ -286,9 +339,11 @@ impl ParamName {
         self.spec().domain
     }
 
-    /// Checks one value against this parameter's domain (NaN is never valid).
+    /// Checks one value against this parameter's domain (NaN is never valid; a choice's
+    /// value must be a whole index).
     pub fn check(self, value: f32) -> Result<f32, ParamError> {
-        if self.domain().contains(value) {
+        let whole = !self.spec().is_choice() || value == libm::floorf(value);
+        if self.domain().contains(value) && whole {
             Ok(value)
         } else {
             Err(ParamError { name: self, value })

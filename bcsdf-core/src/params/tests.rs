@@ -72,6 +72,22 @@ fn set_value_then_value_round_trips_every_parameter() {
     for (i, spec) in SCHEMA.iter().enumerate() {
         let mut input = human_hair();
         let v = 0.25 + i as f32 * 0.01;
+        if spec.is_choice() {
+            // A choice takes whole indices only; anything else leaves it unchanged.
+            for (k, name) in spec.choices.iter().enumerate() {
+                input.set_value(spec.name, ParamValue::Choice(k as u8));
+                assert_eq!(input.value(spec.name), Some(ParamValue::Choice(k as u8)));
+                assert_eq!(spec.choice_index(name), Some(k as u8));
+                assert_eq!(spec.choice_name(k as u8), Some(*name));
+                input.set(spec.name, v);
+                assert_eq!(input.value(spec.name), Some(ParamValue::Choice(k as u8)));
+            }
+            assert_eq!(spec.choice_index("neither"), None);
+            assert!(ParamName::Closure.check(0.5).is_err());
+            assert!(ParamName::Closure.check(2.0).is_err());
+            assert_eq!(ParamName::Closure.check(1.0), Ok(1.0));
+            continue;
+        }
         input.set(spec.name, v);
         let expected = if spec.name == ParamName::SigmaCa {
             ParamValue::Rgb(Rgb::splat(v))
@@ -136,7 +152,7 @@ fn header_fields_follow_the_schema_order() {
         .iter()
         .map(|f| match f {
             HeaderField::Pigment(_) => ParamName::SigmaCa,
-            HeaderField::Scalar(name, _) => *name,
+            HeaderField::Scalar(name, _) | HeaderField::Choice(name, _) => *name,
         })
         .collect();
     let want: Vec<ParamName> = ParamName::ALL
@@ -151,6 +167,9 @@ fn header_fields_follow_the_schema_order() {
         match f {
             HeaderField::Scalar(name, v) => {
                 assert_eq!(r.value(name), Some(ParamValue::Scalar(v)), "{name}");
+            }
+            HeaderField::Choice(name, i) => {
+                assert_eq!(r.value(name), Some(ParamValue::Choice(i)), "{name}");
             }
             HeaderField::Pigment(p) => assert_eq!(p, r.pigment),
         }

@@ -268,7 +268,10 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
             let reach = CUTOFF_SIGMAS * beta;
             let lo = (center - reach).max(-PI / 2.0);
             let hi = (center + reach).min(PI / 2.0);
-            let mass = gaussian_mass(beta, lo - center, hi - center);
+            // The mass of M_p = G·(sphere norm) over [lo, hi] (docs/model.md §12).
+            let group = [LobeGroup::R, LobeGroup::TT, LobeGroup::TRT][j];
+            let mass =
+                gaussian_mass(beta, lo - center, hi - center) * g.sphere_norm(group, theta_r);
             Longitudinal {
                 center,
                 lo,

@@ -11,7 +11,8 @@
 //! | scattered back, front | M^s_x(θ_i, θ_r)/s_x | n_s(\|φ\|)/(2 ν_s) | s_x·ν_s |
 //!
 //! with n_f the mean of family f's three N channels, ν_f = ∫₀^π n_f, m_g = ∫ M_g over the
-//! restricted range and s_x = ∫ M^s_x dθ_i (all exact integrals of the interpolants, from
+//! restricted range (in the energy closure M_g is divided by its tabulated mass there, so its
+//! mass is then 1, docs/model.md §12) and s_x = ∫ M^s_x dθ_i (all exact integrals of the interpolants, from
 //! the LUT's prefix sums). The mixture density per unit solid angle is then
 //!
 //! p_ω = [Σ_g M_g·n_g + ½(M^s_back + M^s_front)·n_s] / (W·cos θ_i),   W = Σ_c A_c,
@@ -171,28 +172,10 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         Rows::new(self, Density::M(g), &self.sum, (0, 0.0))
     }
 
-    /// f32 at byte offset `at` of the blob (0 past its end).
-    #[inline(always)]
-    fn f32_at(&self, at: usize) -> f32 {
-        match self.blob.get(at..at + 4) {
-            Some(b) => f32::from_le_bytes([b[0], b[1], b[2], b[3]]),
-            None => 0.0,
-        }
-    }
-
     /// ∫ M_g from the first node to x, for the three groups at once (one texel pair).
     #[inline(always)]
     fn m_cdf(&self, x: f32) -> [f32; 3] {
-        let (j, w) = self.sum.locate(x);
-        let off = w * self.densities[0].step;
-        let v = self.nodes.m_pair(j);
-        let mut out = [0.0; 3];
-        for (g, o) in out.iter_mut().enumerate() {
-            let (v0, v1) = (v[g], v[3 + g]);
-            let at = v0 + (v1 - v0) * w;
-            *o = self.f32_at(self.densities[g].prefix_at + 4 * j) + linear_mass(v0, at, off);
-        }
-        out
+        self.m_cdf_at(self.sum.locate(x))
     }
 
     /// (∫ M_g over θ_i ∈ [−π/2, π/2], CDF at the range start) for the three groups.
@@ -234,10 +217,14 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let nr = self.theta_r.locate(theta_r.abs());
         let sr = self.ms_r.locate(theta_r);
         let nu_s = self.row_total(Density::N(3), nr);
+        // The mass of the evaluated M_g: the tabulated one times the closure's factor.
+        let ends = [PI / 2.0, -PI / 2.0].map(|h| self.sum.locate(theta_r - h));
+        let norm = self.sphere_norms(ends);
+        let mass = |g: usize| m[g].0 * norm[g];
         let a = [
-            2.0 * m[0].0 * self.row_total(Density::N(0), nr),
-            2.0 * m[1].0 * self.row_total(Density::N(1), nr),
-            2.0 * m[2].0 * self.row_total(Density::N(2), nr),
+            2.0 * mass(0) * self.row_total(Density::N(0), nr),
+            2.0 * mass(1) * self.row_total(Density::N(1), nr),
+            2.0 * mass(2) * self.row_total(Density::N(2), nr),
             self.row_total(Density::MS(0), sr) * nu_s,
             self.row_total(Density::MS(1), sr) * nu_s,
         ];

@@ -11,6 +11,9 @@
 pub mod analytic;
 pub mod baked;
 
+use crate::gaussian::erf_mass;
+pub use crate::gaussian::gaussian_mass;
+
 /// Clamps a uniform number into [0, 1) (NaN becomes 0).
 #[inline]
 #[must_use]
@@ -94,28 +97,6 @@ pub fn invert_linear(v0: f32, v1: f32, len: f32, t: f32) -> f32 {
     } else {
         s
     }
-}
-
-/// ∫ₐᵇ of the standard Gaussian shape e^{−z²} in units of √π/2, i.e. (erf b − erf a), computed
-/// on the tail side that keeps its precision (erfc when both ends are on one side).
-fn erf_mass(a: f64, b: f64) -> f64 {
-    if a >= 0.0 {
-        libm::erfc(a) - libm::erfc(b)
-    } else if b <= 0.0 {
-        libm::erfc(-b) - libm::erfc(-a)
-    } else {
-        libm::erf(b) - libm::erf(a)
-    }
-}
-
-/// Mass of the normalised Gaussian G(x; β) (docs/model.md §5) over [lo, hi].
-#[must_use]
-pub fn gaussian_mass(beta: f32, lo: f32, hi: f32) -> f32 {
-    if !(hi > lo) || !(beta > 0.0) {
-        return 0.0;
-    }
-    let k = 1.0 / (core::f64::consts::SQRT_2 * f64::from(beta));
-    (0.5 * erf_mass(f64::from(lo) * k, f64::from(hi) * k)) as f32
 }
 
 /// Draws x from the normalised Gaussian G(x; β) restricted to [lo, hi], by inverting its

@@ -164,6 +164,11 @@ pub(super) fn insert_metadata(
                 put(spec.key, FloatVec3((r, g, b)));
                 readable.push(format!("{}={r},{g},{b}", spec.key));
             }
+            Some(ParamValue::Choice(i)) => {
+                let name = spec.choice_name(i).unwrap_or("?");
+                put(spec.key, T(text(name)));
+                readable.push(format!("{}={name}", spec.key));
+            }
             None => {}
         }
     }

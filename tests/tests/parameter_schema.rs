@@ -123,13 +123,13 @@ fn closure_takes_its_names_and_nothing_else() {
     // Preset files: a string naming one of them.
     let base = "[[preset]]\nname = \"c\"\nsource = \"s\"\neta_c = 1.5\nsigma_ca = 0.1\n\
                 alpha_deg = 2\nbeta_m_deg = 5\nl = 0.5\nkappa = 0\nsigma_ms = 0\ng = 0\n";
-    let parsed = presets::parse(&format!("{base}closure = \"report\"\n"), "c.toml").unwrap();
-    assert_eq!(parsed[0].input.closure, bcsdf_core::Closure::Report);
+    let parsed = presets::parse(&format!("{base}closure = \"energy\"\n"), "c.toml").unwrap();
+    assert_eq!(parsed[0].input.closure, bcsdf_core::Closure::Energy);
     let parsed = presets::parse(base, "c.toml").unwrap();
     assert_eq!(
         parsed[0].input.closure,
-        bcsdf_core::Closure::Energy,
-        "the default"
+        bcsdf_core::Closure::Report,
+        "the default (docs/model.md §12 Status)"
     );
     for bad in ["closure = \"both\"", "closure = 1"] {
         let e = presets::parse(&format!("{base}{bad}\n"), "c.toml")

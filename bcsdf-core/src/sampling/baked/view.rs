@@ -136,7 +136,9 @@ mod tests {
         let lut = BakedBcsdf::from_bytes(&b).unwrap();
         let mut rng = Pcg32::new(22, 3);
         let mut positive = 0;
-        for k in 0..300 {
+        // Under Miri (CI's unsafe-code check, ~10⁴ times slower) a tenth of the views.
+        let views = if cfg!(miri) { 30 } else { 300 };
+        for k in 0..views {
             let theta_r = (rng.uniform() - 0.5) * core::f32::consts::PI;
             let view = lut.view(theta_r).unwrap();
             assert_eq!(view.theta_r(), theta_r);
@@ -155,7 +157,8 @@ mod tests {
                 positive += usize::from(p > 0.0);
             }
         }
-        assert!(positive > 1000, "{positive}");
+        // Most random (θ_i, φ) carry density (1000 of 1200 in the full run).
+        assert!(positive * 6 > views * 4 * 5, "{positive} of {}", views * 4);
         // Invalid angles: no view, or zero.
         assert!(lut.view(f32::NAN).is_none() && lut.view(1.6).is_none());
         let view = lut.view(0.2).unwrap();

@@ -365,10 +365,15 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             n_w,
             front: (abs_phi * (1.0 / PI)).min(1.0),
             inv_cos2: inv_cos2_theta_i(cos_within_half_pi(ti)),
-            range: [
-                self.sum.locate(tr - PI / 2.0),
-                self.sum.locate(tr + PI / 2.0),
-            ],
+            // Only the energy closure reads the range (`sphere_norms`).
+            range: if self.energy {
+                [
+                    self.sum.locate(tr - PI / 2.0),
+                    self.sum.locate(tr + PI / 2.0),
+                ]
+            } else {
+                [(0, 0.0); 2]
+            },
         }
     }
 

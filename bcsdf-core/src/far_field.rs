@@ -29,19 +29,26 @@
 //! resolves A_p where Φ_p is flat; this floor, not β_N, sets the node count of most queries,
 //! and A_p changes fastest at a segment's end).
 //!
+//! A segment ending at grazing incidence (a = π/2) also has the layered cuticle's Fresnel knee
+//! ([`cuticle_grazing_knee`]) there; when it is narrower than the last sub-panel (few cuticle
+//! layers), that sub-panel is cut geometrically toward π/2.
+//!
 //! Measured against a 50× finer reference (`tests/tests/far_field_accuracy.rs`): worst
-//! relative error 2.1e-5 over the presets and 2.9e-5 over its 96 random parameter sets,
-//! against the 1e-4 budget (`docs/accuracy.md`, which also notes parameter sets outside
-//! that sample where the budget is exceeded).
+//! relative error 5.0e-5 over the presets, 2.9e-5 over its 96 random parameter sets and 6.9e-5
+//! over three pinned sets from an 800-set scan, against the 1e-4 budget (`docs/accuracy.md`).
 
+use crate::fresnel::cuticle_grazing_knee;
 use crate::geometry::{Chord, ChordVariable, Region, ViewSlice};
 use crate::lobes::{Lobe, UNSCATTERED_COUNT};
 use crate::longitudinal::GroupLobes;
-use crate::math::{asin_clamped, wrap_angle, Math, PI};
+use crate::math::{asin_clamped, Math, PI};
 use crate::medulla::MedullaProfiles;
 use crate::scattered::{azimuthal_on_row, exit_transmittance, scattered_paths, SCATTERED_COUNT};
 use crate::spectrum::Rgb;
 use crate::unscattered::{attenuations, exit_azimuths, Extinction};
+
+mod probes;
+use probes::{window, Panel, Probes};
 
 /// Probe panels per segment.
 pub const PROBES: usize = 12;
@@ -82,6 +89,10 @@ const MAX_SCATTER_BOUNDS: usize = 72;
 /// Gauss–Legendre nodes per panel of the scattered far-field rule (2 points).
 const SCATTER_NODES: [f32; 2] = [-0.577_350_26, 0.577_350_26];
 const SCATTER_WEIGHTS: [f32; 2] = [1.0, 1.0];
+
+/// Smallest knee width (in a, radians) the end refinement resolves: below it the pieces
+/// would be lost to f32 rounding near π/2, and their Jacobian cos a makes them negligible.
+const MIN_KNEE: f32 = 2e-5;
 
 /// Bit mask of lobes by [`Lobe::index`].
 type PathMask = u16;
@@ -374,14 +385,14 @@ impl FarFieldQuery<'_> {
             {
                 end += 1;
             }
-            self.run::<M>(
+            let run = Run {
                 seg,
                 k,
-                &probes.bounds[j..=end + 1],
-                &panels[j..=end],
+                bounds: &probes.bounds[j..=end + 1],
+                panels: &panels[j..=end],
                 phi,
-                acc,
-            );
+            };
+            self.run::<M>(&run, acc);
             j = end + 1;
         }
     }
@@ -426,18 +437,10 @@ impl FarFieldQuery<'_> {
         out
     }
 
-    /// Integrates a run of contiguous active panels (probe bounds `bounds`, one more than
-    /// panels) with Gauss–Legendre sub-panels placed at equal increments of required work.
-    #[allow(clippy::too_many_arguments)]
-    fn run<M: Math>(
-        &self,
-        seg: &Segment,
-        k: f32,
-        bounds: &[f32],
-        run: &[Panel],
-        phi: f32,
-        acc: &mut Accumulator<'_>,
-    ) {
+    /// Integrates a run of contiguous active panels with Gauss–Legendre sub-panels placed at
+    /// equal increments of required work.
+    fn run<M: Math>(&self, r: &Run<'_>, acc: &mut Accumulator<'_>) {
+        let (seg, bounds, run) = (r.seg, r.bounds, r.panels);
         // Work of each panel: sub-panels it needs (at least its floor, MIN_DENSITY or
         // END_DENSITY per probe panel, so that A_p and the Jacobian are resolved even where
         // Φ_p is flat).
@@ -462,32 +465,75 @@ impl FarFieldQuery<'_> {
             }
             bounds[run.len()]
         };
+        // The layered cuticle's knee (f turning toward 1 at grazing incidence, at cos a ≈
+        // `knee`) sits within the last sub-panel of a segment ending at a = π/2 when the
+        // cuticle has few layers: that sub-panel is then cut at π/2 − knee·4^j, j = 0, 1, …
+        // (6-point Gauss–Legendre converges fast on each piece, whose distance to the knee's
+        // pole at −knee is at least its half-width).
+        let ends_grazing =
+            seg.var == ChordVariable::A && seg.t1 >= PI / 2.0 && bounds[run.len()] >= seg.t1;
+        let knee = if ends_grazing {
+            cuticle_grazing_knee::<M>(self.slice.eta_c_prime, self.layers).max(MIN_KNEE)
+        } else {
+            0.0
+        };
         let mut ta = t_at(0.0);
         for q in 0..n {
             let tb = t_at(total * (q + 1) as f32 / n as f32);
-            let (mid, half) = (0.5 * (ta + tb), 0.5 * (tb - ta));
-            for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS.iter()) {
-                let t = mid + half * x;
-                let panel = bounds[1..run.len()].iter().take_while(|&&b| b <= t).count();
-                let active = run[panel].active;
-                let chord = Chord::at_variable::<M>(self.slice, seg.var, t, seg.region);
-                // ½ (far-field average) · dh/dt = K cos t · quadrature weight.
-                let weight = 0.5 * k * chord.variable_cos(seg.var) * (half * w);
-                let azimuths = exit_azimuths(&chord);
-                let att = attenuations::<M>(self.slice, &chord, self.extinction, self.layers);
-                for p in 0..UNSCATTERED_COUNT {
-                    if active & (1 << p) == 0 {
-                        continue;
-                    }
-                    let d = self.groups.d(Lobe::unscattered_group(p));
-                    let dist = d.eval::<M>(phi - azimuths[p]) + d.eval::<M>(-phi - azimuths[p]);
-                    acc.value[p] += att[p] * (weight * dist);
-                    acc.density += acc.coeffs[p] * (weight * dist);
+            if q + 1 == n && knee > 0.0 && 2.0 * knee < tb - ta {
+                let mut cut = knee;
+                while 4.0 * cut < tb - ta {
+                    cut *= 4.0;
                 }
+                let mut from = ta;
+                while cut >= knee {
+                    self.gauss_panel::<M>(r, from, seg.t1 - cut, acc);
+                    from = seg.t1 - cut;
+                    cut *= 0.25;
+                }
+                self.gauss_panel::<M>(r, from, tb, acc);
+            } else {
+                self.gauss_panel::<M>(r, ta, tb, acc);
             }
             ta = tb;
         }
     }
+
+    /// One 6-point Gauss–Legendre sub-panel [ta, tb] of a run (see [`Self::run`]).
+    fn gauss_panel<M: Math>(&self, r: &Run<'_>, ta: f32, tb: f32, acc: &mut Accumulator<'_>) {
+        let (seg, k, bounds, run, phi) = (r.seg, r.k, r.bounds, r.panels, r.phi);
+        let (mid, half) = (0.5 * (ta + tb), 0.5 * (tb - ta));
+        for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS.iter()) {
+            let t = mid + half * x;
+            let panel = bounds[1..run.len()].iter().take_while(|&&b| b <= t).count();
+            let active = run[panel].active;
+            let chord = Chord::at_variable::<M>(self.slice, seg.var, t, seg.region);
+            // ½ (far-field average) · dh/dt = K cos t · quadrature weight.
+            let weight = 0.5 * k * chord.variable_cos(seg.var) * (half * w);
+            let azimuths = exit_azimuths(&chord);
+            let att = attenuations::<M>(self.slice, &chord, self.extinction, self.layers);
+            for p in 0..UNSCATTERED_COUNT {
+                if active & (1 << p) == 0 {
+                    continue;
+                }
+                let d = self.groups.d(Lobe::unscattered_group(p));
+                let dist = d.eval::<M>(phi - azimuths[p]) + d.eval::<M>(-phi - azimuths[p]);
+                acc.value[p] += att[p] * (weight * dist);
+                acc.density += acc.coeffs[p] * (weight * dist);
+            }
+        }
+    }
+}
+
+/// A run of contiguous active probe panels of one segment, at one φ.
+struct Run<'r> {
+    seg: &'r Segment,
+    /// K in h = K·sin t.
+    k: f32,
+    /// Probe bounds of the run: one more than panels.
+    bounds: &'r [f32],
+    panels: &'r [Panel],
+    phi: f32,
 }
 
 /// What one far-field pass accumulates: N_p per path, and the sampling density.
@@ -497,66 +543,6 @@ struct Accumulator<'c> {
     coeffs: &'c [f32; UNSCATTERED_COUNT],
 }
 
-/// Exit azimuths at a segment's probe points, with per-panel spans and curvature margins.
-struct Probes {
-    /// Probe points t_j, graded toward the segment's end.
-    bounds: [f32; PROBES + 1],
-    /// Φ_p(t_j).
-    phi: [[f32; UNSCATTERED_COUNT]; PROBES + 1],
-    /// Φ_p(t_{j+1}) − Φ_p(t_j), wrapped: the chord of Φ_p over panel j.
-    span: [[f32; UNSCATTERED_COUNT]; PROBES],
-    /// How far Φ_p may stray from that chord inside panel j (twice |Φ''|Δ²/8).
-    margin: [[f32; UNSCATTERED_COUNT]; PROBES],
-}
-
-impl Probes {
-    fn new<M: Math>(slice: &ViewSlice, seg: &Segment) -> Probes {
-        let mut pr = Probes {
-            bounds: [0.0; PROBES + 1],
-            phi: [[0.0; UNSCATTERED_COUNT]; PROBES + 1],
-            span: [[0.0; UNSCATTERED_COUNT]; PROBES],
-            margin: [[0.0; UNSCATTERED_COUNT]; PROBES],
-        };
-        // t_j = t0 + (t1 − t0)(1 − (1 − j/P)²): denser toward the segment's end, where its
-        // singular angle and grazing Fresnel make A_p change fastest.
-        for j in 0..=PROBES {
-            let x = 1.0 - j as f32 / PROBES as f32;
-            let t = if j == PROBES {
-                seg.t1
-            } else {
-                seg.t0 + (seg.t1 - seg.t0) * (1.0 - x * x)
-            };
-            pr.bounds[j] = t;
-            pr.phi[j] = exit_azimuths(&Chord::at_variable::<M>(slice, seg.var, t, seg.region));
-        }
-        for j in 0..PROBES {
-            let (a, b) = (pr.phi[j], pr.phi[j + 1]);
-            for (span, (pa, pb)) in pr.span[j].iter_mut().zip(a.iter().zip(b.iter())) {
-                *span = wrap_angle(pb - pa);
-            }
-        }
-        // |Φ''| at interior probe i from divided differences (taken as 0 at the ends).
-        let mut curv = [[0.0f32; UNSCATTERED_COUNT]; PROBES + 1];
-        for (i, row) in curv.iter_mut().enumerate().take(PROBES).skip(1) {
-            let (w0, w1) = (
-                pr.bounds[i] - pr.bounds[i - 1],
-                pr.bounds[i + 1] - pr.bounds[i],
-            );
-            let (s0, s1) = (pr.span[i - 1], pr.span[i]);
-            for (c, (d0, d1)) in row.iter_mut().zip(s0.iter().zip(s1.iter())) {
-                *c = 2.0 * (d1 / w1 - d0 / w0).abs() / (w0 + w1);
-            }
-        }
-        for j in 0..PROBES {
-            let w = pr.bounds[j + 1] - pr.bounds[j];
-            for (p, m) in pr.margin[j].iter_mut().enumerate() {
-                *m = 0.25 * curv[j][p].max(curv[j + 1][p]) * w * w;
-            }
-        }
-        pr
-    }
-}
-
 /// K in h = K·sin t for the segment variable.
 pub(crate) fn segment_scale(slice: &ViewSlice, var: ChordVariable) -> f32 {
     match var {
@@ -564,37 +550,4 @@ pub(crate) fn segment_scale(slice: &ViewSlice, var: ChordVariable) -> f32 {
         ChordVariable::M => slice.h_medulla(),
         ChordVariable::Mu => slice.h_tir(),
     }
-}
-
-/// Screening result of one probe panel.
-#[derive(Clone, Copy, Debug, Default)]
-struct Panel {
-    /// Paths within reach of ±φ somewhere on the panel.
-    active: PathMask,
-    /// Part of the panel to integrate, s ∈ [lo, hi] ⊂ [0, 1].
-    lo: f32,
-    hi: f32,
-    /// Sub-panels needed per unit s.
-    density: f32,
-    /// Fewest sub-panels per unit s ([`MIN_DENSITY`] or [`END_DENSITY`]).
-    floor: f32,
-}
-
-/// The part `[s_lo, s_hi]` ⊂ [0, 1] of a panel on which Φ(s) = pa + span·s comes within
-/// `reach` of `target` (mod 2π); `None` when it never does. Wide reaches take the whole panel.
-fn window(pa: f32, span: f32, target: f32, reach: f32) -> Option<(f32, f32)> {
-    let center = pa + 0.5 * span;
-    let offset = wrap_angle(target - center);
-    let half = 0.5 * span.abs();
-    if offset.abs() - half >= reach {
-        return None;
-    }
-    if reach + half >= PI || half < 1e-6 {
-        return Some((0.0, 1.0));
-    }
-    // Nearest representative of the target, relative to the panel start, in units of span.
-    let rel = 0.5 * span + offset;
-    let (a, b) = ((rel - reach) / span, (rel + reach) / span);
-    let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-    Some((lo.max(0.0), hi.min(1.0)))
 }

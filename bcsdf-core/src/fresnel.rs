@@ -31,6 +31,25 @@ pub fn dielectric<M: Math>(cos_i: f32, eta: f32) -> f32 {
     0.5 * (rs + rp)
 }
 
+/// The cos a below which the layered cuticle's `f` ([`cuticle`]) turns from its value inside
+/// the fiber's cross-section toward 1 at grazing incidence: where 1 − R1 = l·R1 (the two
+/// terms of `f`'s denominator are equal, f = ½ when R1 ≈ 1).
+///
+/// Near grazing, with cos t = √(1 − 1/η'²), the single interface gives 1 − r_s ≈ 4cos a/(η'cos t)
+/// and 1 − r_p ≈ 4η'cos a/cos t, one plate 1 − 2r/(1 + r) ≈ (1 − r)/2, so
+/// 1 − R1 ≈ cos a·(η' + 1/η')/cos t, and the knee is at cos a ≈ l·cos t/(η' + 1/η'). For few
+/// layers (l ≪ 1) it is very close to a = π/2 and the far field's quadrature refines toward it
+/// (docs/model.md §5). Returns 0 for η' ≤ 1 (no knee: nothing to refine).
+#[inline]
+#[must_use]
+pub fn cuticle_grazing_knee<M: Math>(eta_c_prime: f32, l: f32) -> f32 {
+    if eta_c_prime <= 1.0 || l <= 0.0 {
+        return 0.0;
+    }
+    let cos_t = sqrt_pos::<M>(1.0 - 1.0 / (eta_c_prime * eta_c_prime));
+    (l * cos_t / (eta_c_prime + 1.0 / eta_c_prime)).min(1.0)
+}
+
 /// Cuticle reflectance `f` with `l` layers (Stokes pile of plates, docs/model.md §4).
 ///
 /// Per polarisation the single-interface reflectance `r` (2D angle `a`, index `η'_c`) becomes
@@ -62,6 +81,27 @@ pub fn medulla<M: Math>(cos_m: f32, eta_rel: f32) -> f32 {
 mod tests {
     use super::*;
     use crate::math::Libm;
+
+    #[test]
+    fn cuticle_is_half_way_to_one_at_its_grazing_knee() {
+        // The knee is where f's two denominator terms are equal, so f ≈ ½ there, and f is
+        // small a decade inside it (well away from grazing) and near 1 a decade outside.
+        for eta in [1.2f32, 1.55, 2.3] {
+            for l in [1e-3f32, 5e-3, 2e-2] {
+                let knee = cuticle_grazing_knee::<Libm>(eta, l);
+                let f = |cos_a: f32| cuticle::<Libm>(cos_a, eta, l);
+                assert!(
+                    (f(knee) - 0.5).abs() < 0.05,
+                    "η' {eta} l {l}: f(knee) = {}",
+                    f(knee)
+                );
+                assert!(f(10.0 * knee) < 0.15, "η' {eta} l {l}: {}", f(10.0 * knee));
+                assert!(f(0.1 * knee) > 0.85, "η' {eta} l {l}: {}", f(0.1 * knee));
+            }
+        }
+        assert_eq!(cuticle_grazing_knee::<Libm>(1.0, 0.5), 0.0);
+        assert_eq!(cuticle_grazing_knee::<Libm>(1.5, 0.0), 0.0);
+    }
 
     fn close(a: f32, b: f32, tol: f32) -> bool {
         (a - b).abs() <= tol

@@ -86,6 +86,7 @@ pub mod lut;
 pub mod medulla;
 pub mod params;
 pub mod presets;
+pub mod residual;
 pub mod shader;
 
 mod bcsdf;

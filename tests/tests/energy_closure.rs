@@ -208,10 +208,18 @@ fn full_nodes(model: &FurBcsdf, theta_r: f32) -> Vec<(f64, f64)> {
     theta_i_nodes_with(f64::from(theta_r), &group_shapes_of(p), &kinks, 0.1)
 }
 
+/// φ nodes for a model with a residual: [`n_phi`] rounded up to a multiple of the residual's
+/// 2·n_phi bins over the circle, so that the trapezoid rule puts the same number of nodes in
+/// every bin of the piecewise-constant D_res and integrates it exactly.
+fn n_phi_residual(model: &FurBcsdf) -> usize {
+    let bins = 2 * model.residual().map_or(1, |t| t.layout().n_phi);
+    n_phi(model.params()).div_ceil(bins) * bins
+}
+
 /// ρ of `eval` on the full model's θ_i nodes (first channel), φ by the periodic trapezoid rule.
 fn furnace_full(model: &FurBcsdf, theta_r: f32, eval: impl Fn(&Angles) -> f32) -> f64 {
     let nodes = full_nodes(model, theta_r);
-    let n = n_phi(model.params());
+    let n = n_phi_residual(model);
     let dphi = TAU / n as f64;
     let mut rho = 0.0;
     for &(ti, wi) in &nodes {

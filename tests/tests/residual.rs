@@ -127,7 +127,13 @@ fn check_absorbing(name: &str) {
         Some(prof) => m_s_kinks(&p, prof.layout()),
         None => Vec::new(),
     };
-    let n_phi = ((TAU / (f64::from(p.beta_n()) / 1.5)).ceil() as usize).max(48);
+    // φ spacing at most β_n/1.5 and a multiple of the residual's 2·n_phi bins (D_res is
+    // piecewise constant: the trapezoid rule then integrates it exactly).
+    let bins = 2 * model.residual().unwrap().layout().n_phi;
+    let n_phi = ((TAU / (f64::from(p.beta_n()) / 1.5)).ceil() as usize)
+        .max(48)
+        .div_ceil(bins)
+        * bins;
     let mut worst = 0.0f64;
     for t in ABSORBING_THETAS {
         let tr = t.to_radians();

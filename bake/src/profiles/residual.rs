@@ -4,14 +4,14 @@
 
 use super::Error;
 use bcsdf_core::residual::{generate_row, ResidualLayout, RowStats};
-use bcsdf_core::{FurBcsdf, Math};
+use bcsdf_core::FurBcsdf;
 use rayon::prelude::*;
 
 /// Generates the residual table of `model` (a model without a residual: its lobes give
 /// E_model) at `layout` with rayon, one θ_r row per task. `threads` as for
 /// [`super::generate_parallel`]. Returns the table and each row's statistics.
-pub fn generate_residual<M: Math>(
-    model: &FurBcsdf<'_, M>,
+pub fn generate_residual(
+    model: &FurBcsdf<'_>,
     layout: &ResidualLayout,
     seed: u64,
     threads: Option<usize>,

@@ -15,7 +15,9 @@
 //! and S gains M_TRT(θ_i, θ_r)·N_res/cos²θ_i (folded into the TRT family).
 //!
 //! # Layout
-//! Flat f32 in caller memory, per θ_r node (`n_theta` nodes k·(π/2)/(n_theta − 1)) one row
+//! Flat f32 in caller memory, per θ_r node (`n_theta` nodes θ_k = (π/2)·(1 − (1 − x_k)²),
+//! x_k = k/(n_theta − 1): graded toward grazing view, where the Bravais index grows as
+//! 1/cos θ_r and the residual changes fastest) one row
 //! of [`ResidualLayout::row_len`] values: A_res at the `n_h` offsets h_j = (j + ½)/n_h (RGB
 //! interleaved), then ⟨A_res⟩_h (RGB, the midpoint rule over those offsets, which is exactly the
 //! h-mean of the near field's piecewise-linear interpolant), then D_res in `n_phi` bins of
@@ -60,12 +62,12 @@ pub struct ResidualLayout {
 }
 
 impl ResidualLayout {
-    /// The default: 32 θ_r nodes, 32 offsets, 36 azimuth bins, K = 2000 (docs/model.md §12).
+    /// The default: 32 θ_r nodes, 32 offsets, 36 azimuth bins, K = 500 (docs/model.md §12).
     pub const DEFAULT: ResidualLayout = ResidualLayout {
         n_theta: 32,
         n_h: 32,
         n_phi: 36,
-        photons: 2000,
+        photons: 500,
     };
 
     /// Values per θ_r row: 3·(n_h + 1 + n_phi).
@@ -86,10 +88,20 @@ impl ResidualLayout {
         self.len() == 0
     }
 
-    /// θ_r of node `k`: k·(π/2)/(n_theta − 1).
+    /// θ_r of node `k`: (π/2)·(1 − (1 − x)²), x = k/(n_theta − 1).
     #[must_use]
     pub fn theta_node(&self, k: usize) -> f32 {
-        (PI / 2.0) * k as f32 / (self.n_theta - 1) as f32
+        let x = 1.0 - k as f32 / (self.n_theta - 1) as f32;
+        (PI / 2.0) * (1.0 - x * x)
+    }
+
+    /// The fractional node position of |θ_r| (the inverse of [`ResidualLayout::theta_node`]),
+    /// clamped to [0, n_theta − 1].
+    #[must_use]
+    pub fn theta_position(&self, theta_r: f32) -> f32 {
+        let t = (theta_r.abs() / (PI / 2.0)).min(1.0);
+        let x = 1.0 - libm::sqrtf(1.0 - t);
+        (x * (self.n_theta - 1) as f32).clamp(0.0, (self.n_theta - 1) as f32)
     }
 
     /// h of node `j`: (j + ½)/n_h.
@@ -356,7 +368,7 @@ impl<'a> ResidualTable<'a> {
     /// The two θ_r rows around |θ_r| and the weight of the upper.
     fn rows(&self, theta_r: f32) -> (&'a [f32], &'a [f32], f32) {
         let n = self.layout.n_theta;
-        let u = (theta_r.abs() / (PI / 2.0) * (n - 1) as f32).clamp(0.0, (n - 1) as f32);
+        let u = self.layout.theta_position(theta_r);
         let k = if u.is_finite() { (u as usize).min(n - 2) } else { 0 };
         let w = if u.is_finite() { u - k as f32 } else { 0.0 };
         let len = self.layout.row_len();

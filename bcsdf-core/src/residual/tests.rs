@@ -30,6 +30,8 @@ fn small_profiles(p: &FurParams) -> (ProfileLayout, Vec<f32>, Vec<f32>) {
     (layout, cn, cm)
 }
 
+const DEFAULT_NODES: usize = ResidualLayout::DEFAULT.n_theta;
+
 const SMALL: ResidualLayout = ResidualLayout {
     n_theta: 4,
     n_h: 8,
@@ -98,6 +100,11 @@ fn the_table_normalises_its_shape_and_its_near_field_averages_to_its_far_field()
     let mut data = vec![0.0; SMALL.len()];
     generate(&model, &SMALL, 1, &mut data).unwrap();
     let table = ResidualTable::new(p, SMALL, &data).unwrap();
+    for k in 0..DEFAULT_NODES {
+        let l = ResidualLayout::DEFAULT;
+        let at = l.theta_position(l.theta_node(k));
+        assert!((at - k as f32).abs() < 1e-3, "node {k}: {at}");
+    }
     for theta_r in [0.0f32, 0.3, -0.9, 1.5] {
         let n = 2000;
         let (mut d, mut near) = (Rgb::ZERO, Rgb::ZERO);

@@ -270,6 +270,10 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             let exit = exit_transmittance::<M>(&slice, &ext);
             if let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, self.params.l(), exit) {
                 ns = azimuthal_at(&s.profiles, &sp, self.sigma_n(&slice), phi);
+                if let Some(t) = self.active_residual() {
+                    let k = t.scattered_scale_near(theta_r, h);
+                    ns = ns.map(|v| v * k);
+                }
             }
         }
         (n, ns)
@@ -317,7 +321,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             index_matched: self.index_matched(),
         };
         let (n, dens) = query.azimuthal_with_density::<M>(phi, &coeffs.0);
-        let (ns, dens_s) = match &self.scattering {
+        let (mut ns, dens_s) = match &self.scattering {
             Some(s) if ext.medulla_scattering > 0.0 => query.azimuthal_scattered_with_density::<M>(
                 &s.profiles,
                 self.sigma_n(&slice),
@@ -326,6 +330,12 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             ),
             _ => ([Rgb::ZERO; SCATTERED_COUNT], 0.0),
         };
+        // The energy closure's residual table scales the scattered lobes down where they
+        // carry more than the cross-section lets out (docs/model.md §12, "Residual").
+        if let Some(t) = self.active_residual() {
+            let k = t.scattered_scale(theta_r);
+            ns = ns.map(|v| v * k);
+        }
         ((n, ns), dens + dens_s)
     }
 

@@ -70,9 +70,15 @@ impl ResidualLayout {
         photons: 500,
     };
 
-    /// Values per θ_r row: 3·(n_h + 1 + n_phi).
+    /// Values per θ_r row: 3·(2·(n_h + 1) + n_phi).
     #[must_use]
     pub fn row_len(&self) -> usize {
+        3 * (2 * (self.n_h + 1) + self.n_phi)
+    }
+
+    /// Where the scattered lobes' scale factors start in a row: 3·(n_h + 1 + n_phi).
+    #[must_use]
+    pub fn scale_offset(&self) -> usize {
         3 * (self.n_h + 1 + self.n_phi)
     }
 
@@ -129,6 +135,9 @@ pub struct RowStats {
     pub exiting: [f64; 3],
     /// ⟨E_model⟩_h: the energy the model's lobes carry.
     pub model: [f64; 3],
+    /// ⟨max(0, E_model − E_sim)⟩_h: what the scattered lobes carry beyond the simulation
+    /// (removed by their scale factor).
+    pub excess: [f64; 3],
     /// ⟨A_res⟩_h = ⟨max(0, E_sim − E_model)⟩_h.
     pub residual: [f64; 3],
     /// ⟨classified unmodelled energy⟩_h; its gap to E_sim − E_model is the scattered lobes'
@@ -166,30 +175,74 @@ pub fn generate_row<M: Math>(
     seed: u64,
     out: &mut [f32],
 ) -> RowStats {
-    let mut stats = RowStats::default();
     if layout.validate().is_err() || row >= layout.n_theta || out.len() != layout.row_len() {
-        return stats;
+        return RowStats::default();
     }
+    simulate_row(model, layout, layout.theta_node(row), row as u64, seed, out)
+}
+
+/// The row of [`generate_row`] at any view angle `theta_r` (its cells on their own streams,
+/// distinct from the table's): for measuring the residual between nodes (docs/model.md §12).
+/// Nothing is written when the layout is invalid or `out` has the wrong length.
+pub fn simulate_view<M: Math>(
+    model: &FurBcsdf<'_, M>,
+    layout: &ResidualLayout,
+    theta_r: f32,
+    seed: u64,
+    out: &mut [f32],
+) -> RowStats {
+    if layout.validate().is_err() || out.len() != layout.row_len() || !theta_r.is_finite() {
+        return RowStats::default();
+    }
+    let id = (1u64 << 40) | u64::from(theta_r.to_bits());
+    simulate_row(model, layout, theta_r, id, seed, out)
+}
+
+fn simulate_row<M: Math>(
+    model: &FurBcsdf<'_, M>,
+    layout: &ResidualLayout,
+    theta_r: f32,
+    row: u64,
+    seed: u64,
+    out: &mut [f32],
+) -> RowStats {
+    let mut stats = RowStats::default();
     let params = model.params();
-    let theta_r = layout.theta_node(row);
     let sec = section(params, theta_r);
     let energies = ModelEnergy::new(model, theta_r);
     let n_h = layout.n_h;
     let mut hist = [[0.0f64; 3]; 4096];
+    let scale_at = layout.scale_offset();
+    let (mut scattered_mean, mut excess_mean) = ([0.0f64; 3], [0.0f64; 3]);
     let hist = &mut hist[..layout.n_phi];
     let inv_n = 1.0 / n_h as f64;
     for j in 0..n_h {
         let h = layout.h_node(j);
-        let stream = cell_stream(seed, TABLE_RESIDUAL, (row * n_h + j) as u64);
+        let stream = cell_stream(seed, TABLE_RESIDUAL, row * n_h as u64 + j as u64);
         let mut rng = Pcg32::new(stream, stream.rotate_left(17));
         let t: CellTally = simulate_cell(&sec, h, layout.photons, &mut rng, hist);
-        let e_model = energies.at(h);
+        let (e_unscattered, e_scattered) = energies.at(h);
         let mut cell_drop = 0.0f64;
         for c in 0..3 {
-            let res = (t.exiting[c] - f64::from(e_model.0[c])).max(0.0);
+            let (eu, es) = (
+                f64::from(e_unscattered.0[c]),
+                f64::from(e_scattered.0[c]),
+            );
+            let res = (t.exiting[c] - eu - es).max(0.0);
+            // Where the scattered lobes carry more than the simulation lets out, they are
+            // scaled down to it (the eight unscattered paths are part of E_sim exactly).
+            let excess = (eu + es - t.exiting[c]).max(0.0).min(es);
             out[3 * j + c] = res as f32;
+            out[scale_at + 3 * j + c] = if es > 0.0 {
+                (1.0 - excess / es) as f32
+            } else {
+                1.0
+            };
+            scattered_mean[c] += es * inv_n;
+            excess_mean[c] += excess * inv_n;
             stats.exiting[c] += t.exiting[c] * inv_n;
-            stats.model[c] += f64::from(e_model.0[c]) * inv_n;
+            stats.model[c] += (eu + es) * inv_n;
+            stats.excess[c] += excess * inv_n;
             stats.residual[c] += res * inv_n;
             stats.unmodelled[c] += t.unmodelled[c] * inv_n;
             stats.dropped[c] += t.dropped[c] * inv_n;
@@ -201,10 +254,15 @@ pub fn generate_row<M: Math>(
     }
     for c in 0..3 {
         out[3 * n_h + c] = stats.residual[c] as f32;
+        out[scale_at + 3 * n_h + c] = if scattered_mean[c] > 0.0 {
+            (1.0 - excess_mean[c] / scattered_mean[c]).clamp(0.0, 1.0) as f32
+        } else {
+            1.0
+        };
     }
     // D_res: the histogram over |φ| ∈ [0, π] as a density over φ ∈ (−π, π] (both signs).
     let width = PI / layout.n_phi as f32;
-    let d = &mut out[3 * (n_h + 1)..];
+    let d = &mut out[3 * (n_h + 1)..scale_at];
     for c in 0..3 {
         let total: f64 = hist.iter().map(|b| b[c]).sum();
         for (k, b) in hist.iter().enumerate() {
@@ -275,7 +333,8 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
         }
     }
 
-    fn at(&self, h: f32) -> Rgb {
+    /// (Σ_p A_p(h), the scattered lobes' energy at h).
+    fn at(&self, h: f32) -> (Rgb, Rgb) {
         let model = self.model;
         let (slice, ext) = model.slice_and_extinction(self.theta_r);
         let chord = Chord::at_offset::<M>(&slice, h);
@@ -285,15 +344,16 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
             e += a;
         }
         let Some(profiles) = model.profiles() else {
-            return e;
+            return (e, Rgb::ZERO);
         };
         if ext.medulla_scattering <= 0.0 {
-            return e;
+            return (e, Rgb::ZERO);
         }
         let exit = exit_transmittance::<M>(&slice, &ext);
         let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, l, exit) else {
-            return e;
+            return (e, Rgb::ZERO);
         };
+        let mut es = Rgb::ZERO;
         let row = profiles.n_row(model.sigma_n(&slice), sp.h_m);
         let n = PSI_SUBSAMPLES * profiles.layout().res.n_psi;
         let step = TAU / n as f32;
@@ -302,10 +362,10 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
             let w = phi.abs() / PI;
             let blend = (1.0 - w) * self.exit_mass[0] + w * self.exit_mass[1];
             for v in azimuthal_on_row(profiles, &row, &sp, phi) {
-                e += v * (blend * step);
+                es += v * (blend * step);
             }
         }
-        e
+        (e, es)
     }
 }
 
@@ -456,6 +516,31 @@ impl<'a> ResidualTable<'a> {
             .rev()
             .find(|&k| mass(k) > 0.0)
             .map_or(0.5 * PI, |k| (k as f32 + 1.0) * width)
+    }
+
+    /// The far-field scale of the scattered lobes at θ_r: 1 − ⟨excess⟩_h/⟨E_s⟩_h, E_s the
+    /// scattered lobes' energy (linear in θ_r).
+    #[must_use]
+    pub fn scattered_scale(&self, theta_r: f32) -> Rgb {
+        let (a, b, w) = self.rows(theta_r);
+        let k = self.layout.scale_offset() / 3 + self.layout.n_h;
+        Self::rgb(a, k) * (1.0 - w) + Self::rgb(b, k) * w
+    }
+
+    /// The near-field scale of the scattered lobes at (θ_r, h): 1 − excess/E_s at the
+    /// offsets, interpolated like [`ResidualTable::magnitude`].
+    #[must_use]
+    pub fn scattered_scale_near(&self, theta_r: f32, h: f32) -> Rgb {
+        let (a, b, w) = self.rows(theta_r);
+        let n_h = self.layout.n_h;
+        let base = self.layout.scale_offset() / 3;
+        let u = (h.abs() * n_h as f32 - 0.5).clamp(0.0, (n_h - 1) as f32);
+        let j = if u.is_finite() { (u as usize).min(n_h - 2) } else { 0 };
+        let v = if u.is_finite() { u - j as f32 } else { 0.0 };
+        let at = |row: &[f32]| {
+            Self::rgb(row, base + j) * (1.0 - v) + Self::rgb(row, base + j + 1) * v
+        };
+        at(a) * (1.0 - w) + at(b) * w
     }
 
     /// Far field N_res(θ_r, φ) = ⟨A_res⟩_h·D_res(θ_r, |φ|).

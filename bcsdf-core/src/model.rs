@@ -124,10 +124,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     /// have been made for these parameters ([`crate::residual::generate`] from this model
     /// without a residual). In the energy closure S gains M_TRT·N_res/cos²θ_i, folded into the
     /// TRT family of [`FurBcsdf::eval_far`]; the report closure ignores it.
-    pub fn with_residual(
-        self,
-        table: ResidualTable<'a>,
-    ) -> Result<FurBcsdf<'a, M>, ProfileError> {
+    pub fn with_residual(self, table: ResidualTable<'a>) -> Result<FurBcsdf<'a, M>, ProfileError> {
         if !table.matches(&self.params) {
             return Err(ProfileError::Mismatch);
         }

@@ -155,7 +155,10 @@ fn check_absorbing(name: &str) {
             // Grey fibers: one simulation serves every channel.
             if c > 0 && sigma[c] == sigma[0] {
                 let err = (rho[c] - rho[0]).abs();
-                assert!(err <= 1e-6, "{name} θ_r {t}°: channels differ on a grey fiber");
+                assert!(
+                    err <= 1e-6,
+                    "{name} θ_r {t}°: channels differ on a grey fiber"
+                );
                 continue;
             }
             let mc = McParams {

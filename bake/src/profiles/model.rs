@@ -3,8 +3,8 @@
 //! [`FurBcsdf`] over them.
 
 use super::cache::load_or_generate;
-use super::{Error, OwnedProfiles, DEFAULT_SEED};
 use super::residual::generate_residual;
+use super::{Error, OwnedProfiles, DEFAULT_SEED};
 use bcsdf_core::medulla::{PhotonBudget, ProfileError, Resolution};
 use bcsdf_core::residual::{ResidualLayout, ResidualTable};
 use bcsdf_core::{Closure, FurBcsdf, FurParams, Libm, Math};

@@ -224,14 +224,14 @@ fn simulate_row<M: Math>(
         let (e_unscattered, e_scattered) = energies.at(h);
         let mut cell_drop = 0.0f64;
         for c in 0..3 {
-            let (eu, es) = (
-                f64::from(e_unscattered.0[c]),
-                f64::from(e_scattered.0[c]),
-            );
-            let res = (t.exiting[c] - eu - es).max(0.0);
+            let (eu, es) = (f64::from(e_unscattered.0[c]), f64::from(e_scattered.0[c]));
+            // What the cutoffs dropped is still in the fiber: counted as leaving (exact for
+            // lossless fibers, where all of it does; a bound otherwise).
+            let e_sim = t.exiting[c] + t.dropped[c];
+            let res = (e_sim - eu - es).max(0.0);
             // Where the scattered lobes carry more than the simulation lets out, they are
             // scaled down to it (the eight unscattered paths are part of E_sim exactly).
-            let excess = (eu + es - t.exiting[c]).max(0.0).min(es);
+            let excess = (eu + es - e_sim).max(0.0).min(es);
             out[3 * j + c] = res as f32;
             out[scale_at + 3 * j + c] = if es > 0.0 {
                 (1.0 - excess / es) as f32
@@ -429,7 +429,11 @@ impl<'a> ResidualTable<'a> {
     fn rows(&self, theta_r: f32) -> (&'a [f32], &'a [f32], f32) {
         let n = self.layout.n_theta;
         let u = self.layout.theta_position(theta_r);
-        let k = if u.is_finite() { (u as usize).min(n - 2) } else { 0 };
+        let k = if u.is_finite() {
+            (u as usize).min(n - 2)
+        } else {
+            0
+        };
         let w = if u.is_finite() { u - k as f32 } else { 0.0 };
         let len = self.layout.row_len();
         (
@@ -458,7 +462,11 @@ impl<'a> ResidualTable<'a> {
         let (a, b, w) = self.rows(theta_r);
         let n_h = self.layout.n_h;
         let u = (h.abs() * n_h as f32 - 0.5).clamp(0.0, (n_h - 1) as f32);
-        let j = if u.is_finite() { (u as usize).min(n_h - 2) } else { 0 };
+        let j = if u.is_finite() {
+            (u as usize).min(n_h - 2)
+        } else {
+            0
+        };
         let v = if u.is_finite() { u - j as f32 } else { 0.0 };
         let at = |row: &[f32]| Self::rgb(row, j) * (1.0 - v) + Self::rgb(row, j + 1) * v;
         at(a) * (1.0 - w) + at(b) * w
@@ -535,11 +543,14 @@ impl<'a> ResidualTable<'a> {
         let n_h = self.layout.n_h;
         let base = self.layout.scale_offset() / 3;
         let u = (h.abs() * n_h as f32 - 0.5).clamp(0.0, (n_h - 1) as f32);
-        let j = if u.is_finite() { (u as usize).min(n_h - 2) } else { 0 };
-        let v = if u.is_finite() { u - j as f32 } else { 0.0 };
-        let at = |row: &[f32]| {
-            Self::rgb(row, base + j) * (1.0 - v) + Self::rgb(row, base + j + 1) * v
+        let j = if u.is_finite() {
+            (u as usize).min(n_h - 2)
+        } else {
+            0
         };
+        let v = if u.is_finite() { u - j as f32 } else { 0.0 };
+        let at =
+            |row: &[f32]| Self::rgb(row, base + j) * (1.0 - v) + Self::rgb(row, base + j + 1) * v;
         at(a) * (1.0 - w) + at(b) * w
     }
 

@@ -511,7 +511,8 @@ fn scatter(
                     let n = normal(p);
                     let cos_i = dot(d, n).clamp(0.0, 1.0);
                     let eta = slice.eta_m_prime / slice.eta_c_prime;
-                    let fr = fresnel::dielectric::<Libm>(cos_i, slice.eta_c_prime / slice.eta_m_prime);
+                    let fr =
+                        fresnel::dielectric::<Libm>(cos_i, slice.eta_c_prime / slice.eta_m_prime);
                     match refract(d, n, eta) {
                         Some(out) if rng.uniform() >= fr => {
                             d = out;
@@ -538,7 +539,8 @@ fn scatter(
                         // From the cortex onto the medulla.
                         let cos_i = (-dot(d, n)).clamp(0.0, 1.0);
                         let eta = slice.eta_c_prime / slice.eta_m_prime;
-                        let fr = fresnel::medulla::<Libm>(cos_i, slice.eta_m_prime / slice.eta_c_prime);
+                        let fr =
+                            fresnel::medulla::<Libm>(cos_i, slice.eta_m_prime / slice.eta_c_prime);
                         match refract(d, n, eta) {
                             Some(inside) if rng.uniform() >= fr => {
                                 d = inside;

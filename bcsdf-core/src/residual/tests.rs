@@ -116,13 +116,19 @@ fn the_table_normalises_its_shape_and_its_near_field_averages_to_its_far_field()
         let mean = table.mean(theta_r);
         for c in 0..3 {
             assert!((d.0[c] - 1.0).abs() < 1e-4, "{theta_r}: ∫D = {d:?}");
-            assert!((near.0[c] - mean.0[c]).abs() < 1e-4 * mean.0[c].max(1e-3), "{theta_r}");
+            assert!(
+                (near.0[c] - mean.0[c]).abs() < 1e-4 * mean.0[c].max(1e-3),
+                "{theta_r}"
+            );
         }
         assert!(mean.max_channel() > 0.0);
     }
     // Made for bobcat: refused by another parameter set, accepted in either closure.
     let other: FurBcsdf = FurBcsdf::unscattered(lossless("cat"));
-    assert_eq!(other.with_residual(table).err(), Some(ProfileError::Mismatch));
+    assert_eq!(
+        other.with_residual(table).err(),
+        Some(ProfileError::Mismatch)
+    );
     let report = FurBcsdf::<Libm>::new(p.with_closure(Closure::Report), profiles).unwrap();
     let report = report.with_residual(table).unwrap();
     let a = Angles::new(0.1, 0.2, 0.3).unwrap();

@@ -235,7 +235,10 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
             let enters = seg.region == Region::Enter && scattering.is_some();
             if enters {
                 enter = Some((i, h1 - h0));
-                for (k, e) in exists[UNSCATTERED_COUNT..RESIDUAL_PART].chunks_mut(2).enumerate() {
+                for (k, e) in exists[UNSCATTERED_COUNT..RESIDUAL_PART]
+                    .chunks_mut(2)
+                    .enumerate()
+                {
                     // TtrtT^s carries f_m, which is 0 when index-matched.
                     let present = !(index_matched && k == 1);
                     e[0] = present;
@@ -394,9 +397,7 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
         let Some(t) = self.model.active_residual() else {
             return 0.0;
         };
-        if !(w > 0.0 && self.total > 0.0 && lon.mass > 0.0)
-            || theta_i < lon.lo
-            || theta_i > lon.hi
+        if !(w > 0.0 && self.total > 0.0 && lon.mass > 0.0) || theta_i < lon.lo || theta_i > lon.hi
         {
             return 0.0;
         }

@@ -53,14 +53,12 @@ fn check_series(input: &FurParamsInput) -> f64 {
             let h = layout.h_node(j);
             let got = table.magnitude(theta_r, h);
             let want = series(&p, f64::from(theta_r), f64::from(h));
-            for c in 0..3 {
-                let err = (f64::from(got.0[c]) - want[c]).abs();
+            for (c, (g, w)) in got.0.iter().zip(want).enumerate() {
+                let err = (f64::from(*g) - w).abs();
                 worst = worst.max(err);
                 assert!(
                     err <= 1e-4,
-                    "θ_r {theta_r} h {h} channel {c}: A_res {} vs series {}",
-                    got.0[c],
-                    want[c]
+                    "θ_r {theta_r} h {h} channel {c}: A_res {g} vs series {w}"
                 );
             }
         }

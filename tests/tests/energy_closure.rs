@@ -14,6 +14,10 @@
 //!   LUT's θ_r interpolation, nodes 1.9° apart where Σ⟨A_p⟩ rises steeply toward grazing view,
 //!   or the pole-sliver estimate of the baked normalisation) is not yet established.
 //! - `report_closure_keeps_todays_numbers`: the report closure's lossless ρ(θ_r), pinned.
+//! - `residual_furnace_*` (one per preset): the model with its residual (docs/model.md §12,
+//!   "Residual"), lossless, analytic far field and near field averaged over 48 offsets:
+//!   ρ(θ_r) = 1 within 0.5 % at every θ_r above (the residual returns what the lobes leave out;
+//!   measured worst 1.5e-3, air-medulla).
 
 use bake::profiles::{build_model, scale_budget, OwnedModel, ProfileOptions};
 use bake::tables::{encode, sample};

@@ -68,6 +68,11 @@ pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
                             *acc += v;
                         }
                     }
+                    // The energy closure's residual shares TRT's M: N_TRT carries it.
+                    let res = model.residual_azimuthal_far(theta_r.min(PI / 2.0), phi);
+                    for (acc, v) in fam[LobeFamily::TRT as usize].iter_mut().zip(res.0) {
+                        *acc += v;
+                    }
                     fam
                 })
                 .collect()
@@ -206,8 +211,17 @@ pub fn rebuild_model(
 ) -> Result<OwnedModel, RebuildError> {
     let params = bcsdf_core::FurParams::new(&header.params).map_err(RebuildError::Params)?;
     match header.profiles {
-        None => OwnedModel::new(params, None)
-            .map_err(|e| RebuildError::Profiles(crate::profiles::Error::Profile(e))),
+        // No profiles; in the energy closure the residual is regenerated (default seed).
+        None => crate::profiles::build_model(
+            params,
+            &crate::profiles::ProfileOptions {
+                cache_dir,
+                threads,
+                ..crate::profiles::ProfileOptions::default()
+            },
+        )
+        .map(|(m, _)| m)
+        .map_err(RebuildError::Profiles),
         Some(p) => {
             if p.generator_version != GENERATOR_VERSION {
                 return Err(RebuildError::GeneratorVersion {

@@ -72,7 +72,8 @@
 //!
 //! The documented modules are the ones with more than the root needs: [`baked`] (the baked
 //! evaluator), [`lut`] (the blob format, read and written), [`medulla`] (profile generation
-//! and lookup), [`params`], [`presets`] and [`shader`] (the WGSL source). The model's
+//! and lookup), [`params`], [`presets`], [`residual`] (the energy closure's residual term: the
+//! model's own cross-section simulation and its table) and [`shader`] (the WGSL source). The model's
 //! building blocks (geometry, Fresnel, Gaussians, the far-field quadrature, the samplers, the
 //! math helpers, the random numbers) are public but hidden from these docs: they are kept
 //! reachable for the independent tests in `fur-tests` and for the `bake` tool, and are not
@@ -86,6 +87,7 @@ pub mod lut;
 pub mod medulla;
 pub mod params;
 pub mod presets;
+pub mod residual;
 pub mod shader;
 
 mod bcsdf;

@@ -31,8 +31,8 @@ mod walk;
 
 pub use lookup::{Half, MedullaProfiles, NRow};
 pub use walk::{
-    generate, generate_cm_row, generate_cn_cell, simulate_cylinder_row, simulate_disk_cell,
-    CellStats, MAX_PHOTONS_PER_CELL,
+    generate, generate_cm_row, generate_cn_cell, sample_hg_2d, simulate_cylinder_row,
+    simulate_disk_cell, CellStats, MAX_PHOTONS_PER_CELL,
 };
 
 /// Version of the generator: any change to the walks, binning or layout bumps it, so caches

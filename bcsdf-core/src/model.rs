@@ -5,11 +5,12 @@
 use crate::far_field::FarFieldQuery;
 use crate::frame::{Angles, Vec3};
 use crate::geometry::{Chord, MedullaEvent, ViewSlice};
-use crate::lobes::{Families, Lobe, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
+use crate::lobes::{Families, Lobe, LobeFamily, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
 use crate::longitudinal::GroupLobes;
 use crate::math::{Libm, Math};
 use crate::medulla::{MedullaProfiles, ProfileError};
-use crate::params::FurParams;
+use crate::params::{Closure, FurParams};
+use crate::residual::ResidualTable;
 use crate::scattered::{
     azimuthal_at, exit_transmittance, scattered_paths, ScatteredLongitudinal, SCATTERED_COUNT,
 };
@@ -28,7 +29,7 @@ pub const POLE_SLIVER: f32 = 0.010_000_167;
 
 /// Version of the model's formulas: any change to what S evaluates to bumps it, so baked
 /// tables made by an older model are recognised (`lut` header).
-pub const MODEL_VERSION: u32 = 3;
+pub const MODEL_VERSION: u32 = 4;
 
 /// 1/cos²θ_i of eq. 1, with cos²θ_i kept at or above [`MIN_COS2_THETA_I`]. The analytic and
 /// the baked evaluators both divide by this.
@@ -74,6 +75,8 @@ pub struct FurBcsdf<'a, M: Math = Libm> {
     params: FurParams,
     pub(crate) groups: GroupLobes,
     pub(crate) scattering: Option<Scattering<'a>>,
+    /// The residual table (docs/model.md §12, "Residual"); used in the energy closure only.
+    pub(crate) residual: Option<ResidualTable<'a>>,
     _math: PhantomData<M>,
 }
 
@@ -89,6 +92,7 @@ impl<M: Math> FurBcsdf<'static, M> {
             params,
             groups: GroupLobes::new(&params),
             scattering: None,
+            residual: None,
             _math: PhantomData,
         }
     }
@@ -111,8 +115,75 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
                 profiles,
                 longitudinal: ScatteredLongitudinal::new::<M>(&params, &profiles),
             }),
+            residual: None,
             _math: PhantomData,
         })
+    }
+
+    /// This model with the residual table `table` (docs/model.md §12, "Residual"), which must
+    /// have been made for these parameters ([`crate::residual::generate`] from this model
+    /// without a residual). In the energy closure S gains M_TRT·N_res/cos²θ_i, folded into the
+    /// TRT family of [`FurBcsdf::eval_far`]; the report closure ignores it.
+    pub fn with_residual(self, table: ResidualTable<'a>) -> Result<FurBcsdf<'a, M>, ProfileError> {
+        if !table.matches(&self.params) {
+            return Err(ProfileError::Mismatch);
+        }
+        Ok(FurBcsdf {
+            residual: Some(table),
+            ..self
+        })
+    }
+
+    /// The residual table, when the model has one.
+    #[must_use]
+    pub fn residual(&self) -> Option<&ResidualTable<'a>> {
+        self.residual.as_ref()
+    }
+
+    /// The residual table the evaluation uses: the model's, in the energy closure only.
+    pub(crate) fn active_residual(&self) -> Option<&ResidualTable<'a>> {
+        match self.params.closure() {
+            Closure::Energy => self.residual.as_ref(),
+            Closure::Report => None,
+        }
+    }
+
+    /// Far-field N_res(θ_r, φ) = ⟨A_res⟩_h·D_res(θ_r, |φ|) (docs/model.md §12, "Residual"); zero
+    /// in the report closure or without a residual table.
+    #[must_use]
+    pub fn residual_azimuthal_far(&self, theta_r: f32, phi: f32) -> Rgb {
+        match self.active_residual() {
+            Some(t) if theta_r.is_finite() && phi.is_finite() => t.far(theta_r, phi),
+            _ => Rgb::ZERO,
+        }
+    }
+
+    /// The residual's S: M_TRT(θ_i, θ_r)·N_res/cos²θ_i, with the near-field N_res at `h`
+    /// when given, the far field otherwise (docs/model.md §12, "Residual").
+    #[must_use]
+    pub fn eval_residual(&self, angles: &Angles, h: Option<f32>) -> Rgb {
+        let Some(t) = self.active_residual() else {
+            return Rgb::ZERO;
+        };
+        let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
+        let n = match h {
+            Some(h) if h.is_finite() && (-1.0..=1.0).contains(&h) => t.near(tr, h, phi),
+            Some(_) => return Rgb::ZERO,
+            None => t.far(tr, phi),
+        };
+        let m = self.groups.m::<M>(ResidualTable::GROUP, ti, tr) * inv_cos2_theta_i(M::cos(ti));
+        (n * m).map(|c| if c.is_finite() && c > 0.0 { c } else { 0.0 })
+    }
+
+    /// `families` (the eleven lobes' far field) with the far-field residual added to the TRT
+    /// family.
+    pub(crate) fn add_residual_far(&self, angles: &Angles, families: Families) -> Families {
+        if self.active_residual().is_none() {
+            return families;
+        }
+        let mut f = *families.as_array();
+        f[LobeFamily::TRT as usize] += self.eval_residual(angles, None);
+        Families::from_array(f)
     }
 
     /// The parameters this model was built from.
@@ -196,6 +267,10 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             let exit = exit_transmittance::<M>(&slice, &ext);
             if let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, self.params.l(), exit) {
                 ns = azimuthal_at(&s.profiles, &sp, self.sigma_n(&slice), phi);
+                if let Some(t) = self.active_residual() {
+                    let k = t.scattered_scale_near(theta_r, h);
+                    ns = ns.map(|v| v * k);
+                }
             }
         }
         (n, ns)
@@ -243,7 +318,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             index_matched: self.index_matched(),
         };
         let (n, dens) = query.azimuthal_with_density::<M>(phi, &coeffs.0);
-        let (ns, dens_s) = match &self.scattering {
+        let (mut ns, dens_s) = match &self.scattering {
             Some(s) if ext.medulla_scattering > 0.0 => query.azimuthal_scattered_with_density::<M>(
                 &s.profiles,
                 self.sigma_n(&slice),
@@ -252,6 +327,12 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             ),
             _ => ([Rgb::ZERO; SCATTERED_COUNT], 0.0),
         };
+        // The energy closure's residual table scales the scattered lobes down where they
+        // carry more than the cross-section lets out (docs/model.md §12, "Residual").
+        if let Some(t) = self.active_residual() {
+            let k = t.scattered_scale(theta_r);
+            ns = ns.map(|v| v * k);
+        }
         ((n, ns), dens + dens_s)
     }
 
@@ -300,7 +381,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     /// Far-field S(ω_i, ω_r) per lobe family, the type both evaluators return
     /// (docs/model.md §8); [`FurBcsdf::eval_far_lobes`] has the per-lobe breakdown.
     pub fn eval_far(&self, angles: &Angles) -> Families {
-        self.eval_far_lobes(angles).families()
+        self.add_residual_far(angles, self.eval_far_lobes(angles).families())
     }
 
     /// Near-field S from world-space directions (see [`Angles::from_directions`]); invalid

@@ -31,7 +31,8 @@
 //! - anything in between, to attribute the difference between the two to single
 //!   simplifications.
 //!
-//! Tallies: photons that scattered at least once in the medulla, by exit azimuth
+//! Tallies: the energy of every photon leaving the fiber ([`Tally::all_exiting`]), and photons
+//! that scattered at least once in the medulla, by exit azimuth
 //! Φ = −atan2(d_y, d_x) of the final travel direction d (the tracer's convention, Φ_R = −2 asin h)
 //! in `n_bins` equal bins of (−π, π], as energy per unit φ averaged over h ∈ [−1, 1] —
 //! i.e. normalised like the far field N(φ) = ½∫ N(h, φ) dh. Each tally is split by the
@@ -150,6 +151,11 @@ pub struct Tally {
     pub after_reentry: f64,
     /// Σ weight of photons abandoned after `MAX_EVENTS` events.
     pub abandoned: f64,
+    /// Σ weight of photons leaving the fiber without having scattered (reflected at entry
+    /// included).
+    pub unscattered: f64,
+    /// Σ weight² of every photon leaving the fiber (scattered or not).
+    pub exit_sq: f64,
 }
 
 impl Tally {
@@ -163,6 +169,8 @@ impl Tally {
             after_cuticle_reflection: 0.0,
             after_reentry: 0.0,
             abandoned: 0.0,
+            unscattered: 0.0,
+            exit_sq: 0.0,
         }
     }
 
@@ -182,6 +190,21 @@ impl Tally {
         self.after_cuticle_reflection += other.after_cuticle_reflection;
         self.after_reentry += other.after_reentry;
         self.abandoned += other.abandoned;
+        self.unscattered += other.unscattered;
+        self.exit_sq += other.exit_sq;
+    }
+
+    /// All energy leaving the fiber per photon, scattered or not (h averaged over [−1, 1]).
+    pub fn all_exiting(&self) -> f64 {
+        let scattered: f64 = self.sum.iter().flatten().sum();
+        (scattered + self.unscattered) / self.photons as f64
+    }
+
+    /// Standard error of [`Tally::all_exiting`].
+    pub fn all_exiting_std_error(&self) -> f64 {
+        let n = self.photons as f64;
+        let mean = self.all_exiting();
+        ((self.exit_sq / n - mean * mean).max(0.0) / n).sqrt()
     }
 
     /// Bin width in φ.
@@ -531,6 +554,8 @@ struct Exit {
 /// Result of one photon: its exit, or the weight abandoned at `MAX_EVENTS`.
 enum Fate {
     Exit(Exit),
+    /// Left the fiber without scattering, with this weight.
+    Unscattered(f64),
     Abandoned(f64),
     Nothing,
 }
@@ -544,7 +569,7 @@ fn run(s: &Slice, o: &Options, h: f64, rng: &mut SplitMix64) -> Fate {
     let radial = (-s.cortex_abs * (1.0 - s.kappa)).exp();
     // Entry at the cuticle.
     match ph.cross(s, 1.0, rng) {
-        Crossing::Reflected => return Fate::Nothing,
+        Crossing::Reflected => return Fate::Unscattered(ph.w),
         Crossing::Transmitted(_) => ph.record(b'T'),
     }
     loop {
@@ -586,7 +611,7 @@ fn run(s: &Slice, o: &Options, h: f64, rng: &mut SplitMix64) -> Fate {
                     Crossing::Transmitted(Region::Outside) => {
                         ph.record(b'T');
                         if ph.scatters == 0 {
-                            return Fate::Nothing;
+                            return Fate::Unscattered(ph.w);
                         }
                         if !o.exit_refraction {
                             ph.d = before;
@@ -659,6 +684,7 @@ pub fn simulate(
                     tally.sum[e.class as usize][b] += e.w;
                     tally.sum_sq[b] += e.w * e.w;
                     tally.class_sum_sq[e.class as usize] += e.w * e.w;
+                    tally.exit_sq += e.w * e.w;
                     if e.cuticle_reflection_after {
                         tally.after_cuticle_reflection += e.w;
                     }
@@ -667,6 +693,10 @@ pub fn simulate(
                     }
                 }
                 Fate::Abandoned(w) => tally.abandoned += w,
+                Fate::Unscattered(w) => {
+                    tally.unscattered += w;
+                    tally.exit_sq += w * w;
+                }
                 Fate::Nothing => {}
             }
         }

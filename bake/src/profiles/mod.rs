@@ -34,6 +34,7 @@
 pub mod cache;
 pub mod generate;
 pub mod model;
+pub mod residual;
 
 pub use cache::{
     decode, default_cache_dir, encode, fnv1a64, load_or_generate, CacheError, CacheOutcome,
@@ -41,6 +42,7 @@ pub use cache::{
 };
 pub use generate::{generate_parallel, scale_budget};
 pub use model::{build_model, needs_profiles, OwnedModel, ProfileOptions};
+pub use residual::generate_residual;
 
 use bcsdf_core::medulla::{MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout};
 use std::fmt;

@@ -3,9 +3,11 @@
 //! [`FurBcsdf`] over them.
 
 use super::cache::load_or_generate;
+use super::residual::generate_residual;
 use super::{Error, OwnedProfiles, DEFAULT_SEED};
 use bcsdf_core::medulla::{PhotonBudget, ProfileError, Resolution};
-use bcsdf_core::{FurBcsdf, FurParams, Libm, Math};
+use bcsdf_core::residual::{ResidualLayout, ResidualTable};
+use bcsdf_core::{Closure, FurBcsdf, FurParams, Libm, Math};
 use std::path::PathBuf;
 
 /// How [`build_model`] gets its profiles.
@@ -42,11 +44,13 @@ pub fn needs_profiles(params: &FurParams) -> bool {
     params.sigma_ms() > 0.0 && params.kappa() > 0.0
 }
 
-/// Parameters with the profiles their model needs (none when [`needs_profiles`] is false).
+/// Parameters with the profiles their model needs (none when [`needs_profiles`] is false)
+/// and, in the energy closure, the residual table (docs/model.md §12, "Residual").
 #[derive(Clone, Debug, PartialEq)]
 pub struct OwnedModel {
     params: FurParams,
     profiles: Option<OwnedProfiles>,
+    residual: Option<Vec<f32>>,
 }
 
 impl OwnedModel {
@@ -63,7 +67,26 @@ impl OwnedModel {
                 return Err(ProfileError::Mismatch);
             }
         }
-        Ok(OwnedModel { params, profiles })
+        Ok(OwnedModel {
+            params,
+            profiles,
+            residual: None,
+        })
+    }
+
+    /// This model with the residual table `data` ([`ResidualLayout::DEFAULT`], generated for
+    /// these parameters by [`generate_residual`]); checked like [`ResidualTable::new`].
+    pub fn with_residual(self, data: Vec<f32>) -> Result<OwnedModel, ProfileError> {
+        ResidualTable::new(self.params, ResidualLayout::DEFAULT, &data)?;
+        Ok(OwnedModel {
+            residual: Some(data),
+            ..self
+        })
+    }
+
+    /// The residual table, when the model has one.
+    pub fn residual(&self) -> Option<&[f32]> {
+        self.residual.as_deref()
     }
 
     /// The parameters.
@@ -84,6 +107,17 @@ impl OwnedModel {
 
     /// The model with math backend `M`.
     pub fn model_with<M: Math>(&self) -> FurBcsdf<'_, M> {
+        let model = self.model_without_residual::<M>();
+        match &self.residual {
+            Some(data) => ResidualTable::new(self.params, ResidualLayout::DEFAULT, data)
+                .and_then(|t| model.with_residual(t))
+                .expect("OwnedModel checks the residual table at construction"),
+            None => model,
+        }
+    }
+
+    /// The model without its residual (what the residual's E_model is computed from).
+    pub fn model_without_residual<M: Math>(&self) -> FurBcsdf<'_, M> {
         match &self.profiles {
             Some(p) => FurBcsdf::new(self.params, p.view())
                 .expect("OwnedModel checks that the profiles match the parameters"),
@@ -94,28 +128,33 @@ impl OwnedModel {
 
 /// The model for `params`: profiles from [`load_or_generate`] with `opts` when
 /// [`needs_profiles`], none otherwise (the outcome is then `None` and nothing is generated
-/// or cached).
+/// or cached); in the energy closure also the residual table ([`generate_residual`] at
+/// [`ResidualLayout::DEFAULT`] with `opts.seed`), for every parameter set.
 pub fn build_model(
     params: FurParams,
     opts: &ProfileOptions,
 ) -> Result<(OwnedModel, Option<super::CacheOutcome>), Error> {
-    if !needs_profiles(&params) {
-        return Ok((
-            OwnedModel {
-                params,
-                profiles: None,
-            },
-            None,
-        ));
+    let (model, outcome) = if needs_profiles(&params) {
+        let (profiles, outcome) = load_or_generate(
+            &params,
+            opts.res,
+            opts.budget,
+            opts.seed,
+            opts.cache_dir.as_deref(),
+            opts.threads,
+        )?;
+        (OwnedModel::new(params, Some(profiles))?, Some(outcome))
+    } else {
+        (OwnedModel::new(params, None)?, None)
+    };
+    if params.closure() != Closure::Energy {
+        return Ok((model, outcome));
     }
-    let (profiles, outcome) = load_or_generate(
-        &params,
-        opts.res,
-        opts.budget,
+    let (data, _) = generate_residual(
+        &model.model_without_residual::<Libm>(),
+        &ResidualLayout::DEFAULT,
         opts.seed,
-        opts.cache_dir.as_deref(),
         opts.threads,
     )?;
-    let model = OwnedModel::new(params, Some(profiles))?;
-    Ok((model, Some(outcome)))
+    Ok((model.with_residual(data)?, outcome))
 }

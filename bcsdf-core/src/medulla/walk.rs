@@ -29,7 +29,7 @@ const TABLE_CM: u64 = 2;
 
 /// Samples the 2D Henyey–Greenstein (wrapped Cauchy) deflection angle.
 #[inline]
-pub(super) fn sample_hg_2d(g: f32, u: f32) -> f32 {
+pub fn sample_hg_2d(g: f32, u: f32) -> f32 {
     let k = (1.0 - g) / (1.0 + g);
     2.0 * libm::atanf(k * libm::tanf(PI * (u - 0.5)))
 }

@@ -15,7 +15,10 @@
 //! - scattered lobe k, half x: θ' from C^M_x(· | θ'_in) over the θ' reachable from
 //!   θ_i ∈ [−π/2, π/2] (each monotonic branch of θ_i ↦ θ' separately), then θ_i on that
 //!   branch, density C^M_x·|dθ'/dθ_i| / Z_x; h uniform over the h that enter the medulla,
-//!   ψ from the interpolated C^N row at (σ_N, h_m), φ = ±(π + Φ^s_k(h) + ψ).
+//!   ψ from the interpolated C^N row at (σ_N, h_m), φ = ±(π + Φ^s_k(h) + ψ);
+//! - the residual (energy closure with a residual table, docs/model.md §12): θ_i from TRT's
+//!   M as for the TRT paths, |φ| from the channel mean of D_res(θ_r, ·) (piecewise constant:
+//!   a bin by its mass, uniform inside), sign uniform; proxy ⟨A_res⟩_h.
 //!
 //! The 1/cos²θ_i of S, the Fresnel and absorption factors, μ and F_t, and the back/front
 //! blend of M^s are left to the weight. `pdf` is the full mixture and costs about one
@@ -42,8 +45,12 @@ const PROXY_FLOOR: f32 = 1e-3;
 /// 2-point Gauss–Legendre nodes on [−1, 1] (weights 1) for the proxies.
 const PROXY_NODES: [f32; 2] = [-0.577_350_26, 0.577_350_26];
 
-/// Number of mixture parts: eight unscattered paths, then (lobe k, half x) for k = 0..3.
-const PARTS: usize = UNSCATTERED_COUNT + 2 * SCATTERED_COUNT;
+/// Number of mixture parts: eight unscattered paths, then (lobe k, half x) for k = 0..3,
+/// then the residual (energy closure, docs/model.md §12).
+const PARTS: usize = UNSCATTERED_COUNT + 2 * SCATTERED_COUNT + 1;
+
+/// The residual's part: θ_i from TRT's M, |φ| from D_res, sign uniform.
+const RESIDUAL_PART: usize = PARTS - 1;
 
 /// The longitudinal interval of an unscattered group: θ_i ∈ [lo, hi] around `center`.
 #[derive(Clone, Copy, Debug, Default)]
@@ -228,7 +235,10 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
             let enters = seg.region == Region::Enter && scattering.is_some();
             if enters {
                 enter = Some((i, h1 - h0));
-                for (k, e) in exists[UNSCATTERED_COUNT..].chunks_mut(2).enumerate() {
+                for (k, e) in exists[UNSCATTERED_COUNT..RESIDUAL_PART]
+                    .chunks_mut(2)
+                    .enumerate()
+                {
                     // TtrtT^s carries f_m, which is 0 when index-matched.
                     let present = !(index_matched && k == 1);
                     e[0] = present;
@@ -256,6 +266,10 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
                     }
                 }
             }
+        }
+        if let Some(t) = model.active_residual() {
+            est[RESIDUAL_PART] = mean(t.mean(theta_r).0);
+            exists[RESIDUAL_PART] = est[RESIDUAL_PART] > 0.0;
         }
         let largest = est.iter().copied().fold(0.0f32, f32::max);
         let floor = PROXY_FLOOR * largest;
@@ -301,6 +315,8 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
             let proxy = est[i].max(floor);
             *w = if i < UNSCATTERED_COUNT {
                 proxy * groups[Lobe::unscattered_group(i) as usize].mass
+            } else if i == RESIDUAL_PART {
+                proxy * groups[LobeGroup::TRT as usize].mass
             } else {
                 let half = (i - UNSCATTERED_COUNT) % 2;
                 match cm[half] {
@@ -373,12 +389,34 @@ impl<'m, 'a, M: Math> Plan<'m, 'a, M> {
         (c, cs)
     }
 
+    /// Density of the residual part at (θ_i, φ): its probability × TRT's θ_i density ×
+    /// D_res's channel mean (0 without a residual).
+    fn residual_density(&self, theta_i: f32, theta_r: f32, phi: f32) -> f32 {
+        let w = self.weights[RESIDUAL_PART];
+        let lon = &self.groups[LobeGroup::TRT as usize];
+        let Some(t) = self.model.active_residual() else {
+            return 0.0;
+        };
+        if !(w > 0.0 && self.total > 0.0 && lon.mass > 0.0) || theta_i < lon.lo || theta_i > lon.hi
+        {
+            return 0.0;
+        }
+        let theta = self.model.longitudinal(LobeGroup::TRT, theta_i, theta_r) / lon.mass;
+        w / self.total * theta * t.phi_density(theta_r, phi)
+    }
+
     /// Draws (θ_i, φ) and the family.
     fn draw(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
         let (part, u0) = choose(&self.weights, u[0])?;
         let negative = u0 < 0.5;
         let u0 = unit(if negative { 2.0 * u0 } else { 2.0 * u0 - 1.0 });
-        let (theta_i, phi, family) = if part < UNSCATTERED_COUNT {
+        let (theta_i, phi, family) = if part == RESIDUAL_PART {
+            let t = self.model.active_residual()?;
+            let lon = &self.groups[LobeGroup::TRT as usize];
+            let theta_i = lon.center
+                + sample_gaussian(lon.beta, lon.lo - lon.center, lon.hi - lon.center, u[1])?;
+            (theta_i, t.sample_abs_phi(theta_r, u[2]), LobeFamily::TRT)
+        } else if part < UNSCATTERED_COUNT {
             let j = Lobe::unscattered_group(part) as usize;
             let lon = &self.groups[j];
             let theta_i = lon.center
@@ -443,7 +481,8 @@ impl<M: Math> FurBcsdf<'_, M> {
         let plan = Plan::new(self, tr);
         let coeffs = plan.coefficients(ti, tr);
         let (n, p) = self.azimuthal_far_with_density(tr, angles.phi(), &coeffs);
-        let value = self.assemble(angles, &n).families();
+        let p = p + plan.residual_density(ti, tr, angles.phi());
+        let value = self.add_residual_far(angles, self.assemble(angles, &n).families());
         let pdf = solid_angle_pdf(p, cos_within_half_pi(ti));
         (
             value,

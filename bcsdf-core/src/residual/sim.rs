@@ -1,0 +1,599 @@
+//! The model's own cross-section simulation at one (θ_r, h) cell (docs/model.md §12,
+//! "Residual"): the flatland problem of §3 — outer circle of radius 1 with the layered cuticle
+//! Fresnel at η'_c, medulla circle κ at η'_m, cortex absorption σ_ca/cos θ_tc, medulla
+//! scattering σ_ms/cos θ_tm (2D Henyey–Greenstein) and absorption σ_ma/cos θ_tm per 2D length.
+//!
+//! - **Unscattered light** is a deterministic beam tree: the beam entering at h is split at
+//!   every interface into its reflected and transmitted beams (× f, × (1 − f); total internal
+//!   reflection included), absorbed per leg, until a beam carries less than [`BEAM_CUTOFF`]
+//!   (what the cutoff drops is tallied). A chord's signed impact parameter is conserved by
+//!   reflection off a circle and only rescaled by refraction (b = h/η'_c in the cortex,
+//!   h/η'_m in the medulla), so every leg's length and every event's rotation is the one of
+//!   §3's event rule, and the exit azimuth is that rule's Φ.
+//! - **Scattered light**: on each medulla chord a beam of weight w crosses, w·(1 − e^{−σ_s ℓ})
+//!   scatters. It is carried by photons (first scattering from the truncated exponential on the
+//!   chord, medulla absorption up to it) walked with full physics — stochastic Fresnel choice
+//!   at every boundary, both absorptions, re-entry into the medulla allowed — until they leave
+//!   the fiber. The rest continues as a beam.
+//!
+//! Tallies: the total exiting energy and the energy on paths the model does not model, by
+//! exit azimuth |Φ| (docs/model.md §12 lists which paths those are).
+
+use crate::fresnel;
+use crate::geometry::{Chord, MedullaEvent, ViewSlice};
+use crate::math::{wrap_angle, Libm, PI};
+use crate::medulla::sample_hg_2d;
+use crate::rng::Pcg32;
+use crate::spectrum::Rgb;
+use crate::unscattered::{cortex_leg, transmittance, Extinction};
+
+/// A beam carrying less than this (largest channel) is dropped; its weight is tallied as
+/// [`CellTally::dropped`].
+pub const BEAM_CUTOFF: f32 = 1e-7;
+
+/// Beams waiting in the depth-first walk of the tree; a beam that does not fit is dropped
+/// (tallied like the cutoff).
+pub const BEAM_STACK: usize = 1024;
+
+/// Interface and scattering events after which a photon walk is abandoned (tallied as
+/// dropped); never reached for the presets.
+pub const MAX_PHOTON_EVENTS: u32 = 10_000;
+
+/// The event letters of docs/model.md §3: uppercase at the cuticle, lowercase at the medulla.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u32)]
+pub enum Event {
+    /// Transmission through the cuticle (in or out).
+    T = 0,
+    /// Reflection at the cuticle (outside or inside).
+    R = 1,
+    /// Transmission through the medulla boundary (either way).
+    Tm = 2,
+    /// Reflection at the medulla boundary (either side, total reflection included).
+    Rm = 3,
+}
+
+/// An event string, two bits per event; strings longer than 15 events are only "long".
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Events {
+    code: u32,
+    len: u8,
+}
+
+impl Events {
+    /// The empty string.
+    pub const EMPTY: Events = Events { code: 0, len: 0 };
+
+    /// The string of `s`, written with T, R, t, r (docs/model.md §3).
+    #[must_use]
+    pub const fn parse(s: &[u8]) -> Events {
+        let mut e = Events::EMPTY;
+        let mut k = 0;
+        while k < s.len() {
+            let ev = match s[k] {
+                b'T' => Event::T,
+                b'R' => Event::R,
+                b't' => Event::Tm,
+                _ => Event::Rm,
+            };
+            e = e.push(ev);
+            k += 1;
+        }
+        e
+    }
+
+    /// This string followed by `event`.
+    #[must_use]
+    pub const fn push(self, event: Event) -> Events {
+        if self.len >= 15 {
+            return Events {
+                code: self.code,
+                len: 16,
+            };
+        }
+        Events {
+            code: self.code | ((event as u32) << (2 * self.len as u32)),
+            len: self.len + 1,
+        }
+    }
+}
+
+/// The eight unscattered paths of docs/model.md §3.
+pub const MODELLED_UNSCATTERED: [Events; 8] = [
+    Events::parse(b"R"),
+    Events::parse(b"TT"),
+    Events::parse(b"TRT"),
+    Events::parse(b"TrT"),
+    Events::parse(b"TttT"),
+    Events::parse(b"TtrtT"),
+    Events::parse(b"TrRrT"),
+    Events::parse(b"TttRttT"),
+];
+
+/// The strings before the scattering chord of the three scattered lobes (docs/model.md §6).
+pub const MODELLED_BEFORE_SCATTERING: [Events; 3] = [
+    Events::parse(b"Tt"),
+    Events::parse(b"Ttr"),
+    Events::parse(b"TttRt"),
+];
+
+/// The only string after the last… first scattering the model's scattered lobes carry: leave
+/// the medulla, leave the cuticle.
+pub const MODELLED_AFTER_SCATTERING: Events = Events::parse(b"tT");
+
+/// The cross-section at one θ_r and the coefficients of its regions, per 2D length.
+#[derive(Clone, Copy, Debug)]
+pub struct Section {
+    /// Bravais indices, κ, and the 3D-length factors.
+    pub slice: ViewSlice,
+    /// σ_ca/cos θ_tc (RGB), (σ_ms + σ_ma)/cos θ_tm, σ_ms/cos θ_tm.
+    pub ext: Extinction,
+    /// σ_ma/cos θ_tm.
+    pub medulla_absorption: f32,
+    /// Cuticle layers l.
+    pub layers: f32,
+    /// The Henyey–Greenstein g of the medulla.
+    pub g: f32,
+}
+
+/// What one cell's simulation found; energies per unit incident energy, f64.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CellTally {
+    /// All energy leaving the fiber, E_sim.
+    pub exiting: [f64; 3],
+    /// The part on paths the model does not model.
+    pub unmodelled: [f64; 3],
+    /// Energy dropped by the beam cutoff, the stack bound and the photon event bound.
+    pub dropped: [f64; 3],
+    /// Beams processed.
+    pub beams: u64,
+    /// Photons launched.
+    pub photons: u64,
+}
+
+/// Where a beam is, heading where.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Place {
+    /// In the cortex just inside the cuticle, heading inward.
+    CortexIn,
+    /// In the cortex just outside the medulla, heading out.
+    CortexOut,
+    /// Just inside the medulla boundary, about to cross the medulla.
+    Medulla,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Beam {
+    weight: Rgb,
+    events: Events,
+    /// Sum of the event rule's rotations so far (docs/model.md §3); the travel direction
+    /// angle is π − turn, the exit azimuth π + turn.
+    turn: f32,
+    place: Place,
+}
+
+/// The per-chord constants of the beam tree at offset h.
+struct Legs {
+    /// a, c and the medulla event of the chord.
+    chord: Chord,
+    /// Cuticle reflectance f (outside at a, inside at c: the same, docs/model.md §4).
+    f: f32,
+    /// Medulla reflectance f_m (1 under total reflection; 0 when missed).
+    fm: f32,
+    /// Transmittance of the cortex chord that misses the medulla (2 cos c), or of one cortex
+    /// leg ℓ_c when it hits.
+    cortex: Rgb,
+    /// Medulla chord ℓ_m = 2κ cos μ (0 unless the ray enters).
+    ell_m: f32,
+}
+
+/// Adds `w` to the RGB tally `acc`.
+fn add(acc: &mut [f64; 3], w: Rgb) {
+    for (a, v) in acc.iter_mut().zip(w.0) {
+        *a += f64::from(v);
+    }
+}
+
+/// Simulates the cell (θ_r of `section`, offset `h`): the beam tree, and `photons` photons
+/// per unit of scattered weight (at least one per medulla chord that scatters), drawn from
+/// `rng`. Unmodelled energy is binned by |Φ| into `hist` (`n_phi` bins of [0, π], RGB
+/// interleaved, accumulated). Allocation-free; the same bits for the same inputs.
+pub fn simulate_cell(
+    section: &Section,
+    h: f32,
+    photons: u32,
+    rng: &mut Pcg32,
+    hist: &mut [[f64; 3]],
+) -> CellTally {
+    let mut tally = CellTally::default();
+    let slice = &section.slice;
+    let chord = Chord::at_offset::<Libm>(slice, h);
+    let f = fresnel::cuticle::<Libm>(chord.cos_a, slice.eta_c_prime, section.layers);
+    let (fm, cortex, ell_m) = match chord.medulla {
+        MedullaEvent::Miss => (
+            0.0,
+            transmittance::<Libm>(section.ext.cortex, 2.0 * chord.cos_c),
+            0.0,
+        ),
+        MedullaEvent::TotalReflection { cos_m, .. } => (
+            1.0,
+            transmittance::<Libm>(section.ext.cortex, cortex_leg(slice, &chord, cos_m)),
+            0.0,
+        ),
+        MedullaEvent::Enter { cos_m, cos_mu, .. } => (
+            fresnel::medulla::<Libm>(cos_m, slice.eta_m_prime / slice.eta_c_prime),
+            transmittance::<Libm>(section.ext.cortex, cortex_leg(slice, &chord, cos_m)),
+            2.0 * slice.kappa * cos_mu,
+        ),
+    };
+    let legs = Legs {
+        chord,
+        f,
+        fm,
+        cortex,
+        ell_m,
+    };
+    let (a, c) = (chord.a, chord.c);
+    // R: reflection off the outside, Φ_R = −2a.
+    let r = Rgb::splat(f);
+    add(&mut tally.exiting, r);
+    tally.beams += 1;
+    let mut stack = [Beam {
+        weight: Rgb::ZERO,
+        events: Events::EMPTY,
+        turn: 0.0,
+        place: Place::CortexIn,
+    }; BEAM_STACK];
+    let mut top = 0usize;
+    push(
+        &mut stack,
+        &mut top,
+        &mut tally,
+        Beam {
+            weight: Rgb::splat(1.0 - f),
+            events: Events::EMPTY.push(Event::T),
+            turn: c - a,
+            place: Place::CortexIn,
+        },
+    );
+    while top > 0 {
+        top -= 1;
+        let beam = stack[top];
+        tally.beams += 1;
+        let w = beam.weight;
+        match (beam.place, legs.chord.medulla) {
+            (Place::CortexIn, MedullaEvent::Miss) | (Place::CortexOut, _) => {
+                // A cortex leg to the cuticle, then out (T) or back in (R).
+                let w = w * legs.cortex;
+                exit_beam(
+                    &Beam {
+                        weight: w * (1.0 - legs.f),
+                        events: beam.events.push(Event::T),
+                        turn: beam.turn + (c - a),
+                        ..beam
+                    },
+                    &mut tally,
+                    hist,
+                );
+                push(
+                    &mut stack,
+                    &mut top,
+                    &mut tally,
+                    Beam {
+                        weight: w * legs.f,
+                        events: beam.events.push(Event::R),
+                        turn: beam.turn + PI + 2.0 * c,
+                        place: Place::CortexIn,
+                    },
+                );
+            }
+            (Place::CortexIn, MedullaEvent::TotalReflection { m, .. })
+            | (Place::CortexIn, MedullaEvent::Enter { m, .. }) => {
+                // A cortex leg to the medulla, reflected off it (r) or into it (t).
+                let w = w * legs.cortex;
+                push(
+                    &mut stack,
+                    &mut top,
+                    &mut tally,
+                    Beam {
+                        weight: w * legs.fm,
+                        events: beam.events.push(Event::Rm),
+                        turn: beam.turn + PI - 2.0 * m,
+                        place: Place::CortexOut,
+                    },
+                );
+                if let MedullaEvent::Enter { mu, .. } = legs.chord.medulla {
+                    push(
+                        &mut stack,
+                        &mut top,
+                        &mut tally,
+                        Beam {
+                            weight: w * (1.0 - legs.fm),
+                            events: beam.events.push(Event::Tm),
+                            turn: beam.turn + (mu - m),
+                            place: Place::Medulla,
+                        },
+                    );
+                }
+            }
+            (Place::Medulla, MedullaEvent::Enter { m, mu, .. }) => {
+                // Across the medulla: the part that scatters goes to the photons, the rest
+                // reaches the far side, reflected (r) or out (t).
+                let ell = legs.ell_m;
+                let p = 1.0 - libm::expf(-section.ext.medulla_scattering * ell);
+                if p > 0.0 {
+                    scatter(section, &beam, h, w * p, photons, rng, &mut tally, hist);
+                }
+                let w = w * libm::expf(-section.ext.medulla * ell);
+                push(
+                    &mut stack,
+                    &mut top,
+                    &mut tally,
+                    Beam {
+                        weight: w * legs.fm,
+                        events: beam.events.push(Event::Rm),
+                        turn: beam.turn + PI + 2.0 * mu,
+                        place: Place::Medulla,
+                    },
+                );
+                push(
+                    &mut stack,
+                    &mut top,
+                    &mut tally,
+                    Beam {
+                        weight: w * (1.0 - legs.fm),
+                        events: beam.events.push(Event::Tm),
+                        turn: beam.turn + (mu - m),
+                        place: Place::CortexOut,
+                    },
+                );
+            }
+            // A beam in the medulla exists only where the chord enters it.
+            (Place::Medulla, _) => add(&mut tally.dropped, w),
+        }
+    }
+    tally
+}
+
+/// Pushes `beam` onto the walk's stack, or tallies it as dropped when it is below the cutoff
+/// or the stack is full.
+fn push(stack: &mut [Beam; BEAM_STACK], top: &mut usize, tally: &mut CellTally, beam: Beam) {
+    if beam.weight.max_channel() < BEAM_CUTOFF || *top == BEAM_STACK {
+        add(&mut tally.dropped, beam.weight);
+    } else {
+        stack[*top] = beam;
+        *top += 1;
+    }
+}
+
+/// Tallies a beam leaving the fiber: all of it as exiting, and in `hist` at its exit azimuth
+/// Φ = π + turn when its event string is not one of the eight modelled paths.
+fn exit_beam(beam: &Beam, tally: &mut CellTally, hist: &mut [[f64; 3]]) {
+    add(&mut tally.exiting, beam.weight);
+    if !MODELLED_UNSCATTERED.contains(&beam.events) {
+        add(&mut tally.unmodelled, beam.weight);
+        bin(hist, PI + beam.turn, beam.weight);
+    }
+}
+
+/// Adds `w` to the |Φ| bin of `hist`.
+fn bin(hist: &mut [[f64; 3]], phi: f32, w: Rgb) {
+    let n = hist.len();
+    if n == 0 {
+        return;
+    }
+    let x = wrap_angle(phi).abs() / PI;
+    let k = ((x * n as f32) as usize).min(n - 1);
+    for (a, v) in hist[k].iter_mut().zip(w.0) {
+        *a += f64::from(v);
+    }
+}
+
+/// A 2D vector.
+type V2 = [f32; 2];
+
+fn dot(p: V2, q: V2) -> f32 {
+    p[0] * q[0] + p[1] * q[1]
+}
+
+/// Distance along unit `d` from `p` to the circle of radius `r`, leaving it from inside
+/// (the far intersection).
+fn exit_distance(p: V2, d: V2, r: f32) -> f32 {
+    let pd = dot(p, d);
+    let disc = (pd * pd + r * r - dot(p, p)).max(0.0);
+    (-pd + libm::sqrtf(disc)).max(0.0)
+}
+
+/// Distance along unit `d` from `p` (outside the circle of radius `r`) to where it enters
+/// the circle, if it does.
+fn entry_distance(p: V2, d: V2, r: f32) -> Option<f32> {
+    let pd = dot(p, d);
+    if pd >= 0.0 {
+        return None;
+    }
+    let disc = pd * pd + r * r - dot(p, p);
+    if disc <= 0.0 {
+        return None;
+    }
+    let t = -pd - libm::sqrtf(disc);
+    (t >= 0.0).then_some(t)
+}
+
+/// Reflects `d` about the unit normal `n`.
+fn reflect(d: V2, n: V2) -> V2 {
+    let k = 2.0 * dot(d, n);
+    [d[0] - k * n[0], d[1] - k * n[1]]
+}
+
+/// Refracts unit `d` through a boundary with unit normal `n` (either orientation), relative
+/// index `eta` = n_from/n_to; `None` under total internal reflection.
+fn refract(d: V2, n: V2, eta: f32) -> Option<V2> {
+    let mut n = n;
+    let mut cos_i = -dot(d, n);
+    if cos_i < 0.0 {
+        n = [-n[0], -n[1]];
+        cos_i = -cos_i;
+    }
+    let sin2_t = eta * eta * (1.0 - cos_i * cos_i).max(0.0);
+    if sin2_t >= 1.0 {
+        return None;
+    }
+    let cos_t = libm::sqrtf(1.0 - sin2_t);
+    let k = eta * cos_i - cos_t;
+    let out = [eta * d[0] + k * n[0], eta * d[1] + k * n[1]];
+    let len = libm::sqrtf(dot(out, out));
+    Some([out[0] / len, out[1] / len])
+}
+
+/// Region of a photon.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Region {
+    Medulla,
+    Cortex,
+}
+
+/// Launches the photons carrying `w_s`, the weight of `beam` that scatters on its medulla
+/// chord, and walks them out of the fiber (docs/model.md §12, "Residual").
+#[allow(clippy::too_many_arguments)]
+fn scatter(
+    section: &Section,
+    beam: &Beam,
+    h: f32,
+    w_s: Rgb,
+    photons: u32,
+    rng: &mut Pcg32,
+    tally: &mut CellTally,
+    hist: &mut [[f64; 3]],
+) {
+    let slice = &section.slice;
+    let kappa = slice.kappa;
+    let sigma_s = section.ext.medulla_scattering;
+    // The chord: travel direction at angle π − turn, signed impact parameter h/η'_m.
+    let angle = PI - beam.turn;
+    let d0 = [libm::cosf(angle), libm::sinf(angle)];
+    let b = h / slice.eta_m_prime;
+    let q = [b * d0[1], -b * d0[0]];
+    let half = libm::sqrtf((kappa * kappa - b * b).max(0.0));
+    let entry = [q[0] - half * d0[0], q[1] - half * d0[1]];
+    let ell = 2.0 * half;
+    let p_scatter = 1.0 - libm::expf(-sigma_s * ell);
+    let modelled_before = MODELLED_BEFORE_SCATTERING.contains(&beam.events);
+    let k = (libm::ceilf(photons as f32 * w_s.max_channel()) as u32).max(1);
+    let w0 = w_s * (1.0 / k as f32);
+    for _ in 0..k {
+        tally.photons += 1;
+        // First scattering from the truncated exponential on the chord.
+        let u = rng.uniform();
+        let s = (-libm::logf(1.0 - u * p_scatter) / sigma_s).min(ell);
+        let mut w = w0 * libm::expf(-section.medulla_absorption * s);
+        let mut p = [entry[0] + s * d0[0], entry[1] + s * d0[1]];
+        let mut a = angle + sample_hg_2d(section.g, rng.uniform());
+        let mut d = [libm::cosf(a), libm::sinf(a)];
+        let mut region = Region::Medulla;
+        let mut after = Events::EMPTY;
+        let mut events = 0u32;
+        let mut left = false;
+        while events < MAX_PHOTON_EVENTS {
+            events += 1;
+            match region {
+                Region::Medulla => {
+                    let t = exit_distance(p, d, kappa);
+                    let free = -libm::logf(rng.uniform_open0()) / sigma_s;
+                    if free < t {
+                        p = [p[0] + free * d[0], p[1] + free * d[1]];
+                        w = w * libm::expf(-section.medulla_absorption * free);
+                        a = libm::atan2f(d[1], d[0]) + sample_hg_2d(section.g, rng.uniform());
+                        d = [libm::cosf(a), libm::sinf(a)];
+                        continue;
+                    }
+                    p = [p[0] + t * d[0], p[1] + t * d[1]];
+                    w = w * libm::expf(-section.medulla_absorption * t);
+                    let n = normal(p);
+                    let cos_i = dot(d, n).clamp(0.0, 1.0);
+                    let eta = slice.eta_m_prime / slice.eta_c_prime;
+                    let fr =
+                        fresnel::dielectric::<Libm>(cos_i, slice.eta_c_prime / slice.eta_m_prime);
+                    match refract(d, n, eta) {
+                        Some(out) if rng.uniform() >= fr => {
+                            d = out;
+                            region = Region::Cortex;
+                            after = after.push(Event::Tm);
+                        }
+                        _ => {
+                            d = reflect(d, n);
+                            after = after.push(Event::Rm);
+                        }
+                    }
+                }
+                Region::Cortex => {
+                    let to_medulla = if kappa > 0.0 {
+                        entry_distance(p, d, kappa)
+                    } else {
+                        None
+                    };
+                    let t = to_medulla.unwrap_or_else(|| exit_distance(p, d, 1.0));
+                    p = [p[0] + t * d[0], p[1] + t * d[1]];
+                    w = w * transmittance::<Libm>(section.ext.cortex, t);
+                    let n = normal(p);
+                    if to_medulla.is_some() {
+                        // From the cortex onto the medulla.
+                        let cos_i = (-dot(d, n)).clamp(0.0, 1.0);
+                        let eta = slice.eta_c_prime / slice.eta_m_prime;
+                        let fr =
+                            fresnel::medulla::<Libm>(cos_i, slice.eta_m_prime / slice.eta_c_prime);
+                        match refract(d, n, eta) {
+                            Some(inside) if rng.uniform() >= fr => {
+                                d = inside;
+                                region = Region::Medulla;
+                                after = after.push(Event::Tm);
+                            }
+                            _ => {
+                                d = reflect(d, n);
+                                after = after.push(Event::Rm);
+                            }
+                        }
+                    } else {
+                        // From the cortex onto the cuticle: the outside angle a has
+                        // sin a = η'_c sin c; beyond 1 the cuticle reflects totally.
+                        let cos_c = dot(d, n).clamp(0.0, 1.0);
+                        let sin_a = slice.eta_c_prime * libm::sqrtf((1.0 - cos_c * cos_c).max(0.0));
+                        let fr = if sin_a >= 1.0 {
+                            1.0
+                        } else {
+                            let cos_a = libm::sqrtf((1.0 - sin_a) * (1.0 + sin_a));
+                            fresnel::cuticle::<Libm>(cos_a, slice.eta_c_prime, section.layers)
+                        };
+                        match refract(d, n, slice.eta_c_prime) {
+                            Some(out) if rng.uniform() >= fr => {
+                                after = after.push(Event::T);
+                                d = out;
+                                left = true;
+                                break;
+                            }
+                            _ => {
+                                d = reflect(d, n);
+                                after = after.push(Event::R);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        if !left {
+            add(&mut tally.dropped, w);
+            continue;
+        }
+        add(&mut tally.exiting, w);
+        if !(modelled_before && after == MODELLED_AFTER_SCATTERING) {
+            add(&mut tally.unmodelled, w);
+            // The exit azimuth of the event rule: Φ = −(travel direction angle).
+            bin(hist, -libm::atan2f(d[1], d[0]), w);
+        }
+    }
+}
+
+/// The outward unit normal at `p` (on a circle about the origin).
+fn normal(p: V2) -> V2 {
+    let r = libm::sqrtf(dot(p, p)).max(1e-30);
+    [p[0] / r, p[1] / r]
+}

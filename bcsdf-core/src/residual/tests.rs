@@ -1,0 +1,139 @@
+extern crate std;
+use super::sim::{simulate_cell, Events, MODELLED_UNSCATTERED};
+use super::*;
+use crate::medulla::{generate as generate_profiles, MedullaProfiles, PhotonBudget};
+use crate::medulla::{ProfileLayout, Resolution};
+use crate::params::{Closure, FurParamsInput};
+use crate::pigment::Pigment;
+use crate::presets;
+use std::vec;
+use std::vec::Vec;
+
+fn lossless(name: &str) -> FurParams {
+    let input = FurParamsInput {
+        pigment: Pigment::Absorption(Rgb::ZERO),
+        sigma_ma: 0.0,
+        closure: Closure::Energy,
+        ..presets::find(name).unwrap().input
+    };
+    FurParams::new(&input).unwrap()
+}
+
+fn small_profiles(p: &FurParams) -> (ProfileLayout, Vec<f32>, Vec<f32>) {
+    let layout = ProfileLayout::for_params(p, Resolution::DEFAULT);
+    let (mut cn, mut cm) = (vec![0.0; layout.cn_len()], vec![0.0; layout.cm_len()]);
+    let budget = PhotonBudget {
+        per_cn_cell: 2000,
+        per_cm_row: 4000,
+    };
+    generate_profiles(&layout, &budget, 1, &mut cn, &mut cm).unwrap();
+    (layout, cn, cm)
+}
+
+const DEFAULT_NODES: usize = ResidualLayout::DEFAULT.n_theta;
+
+const SMALL: ResidualLayout = ResidualLayout {
+    n_theta: 4,
+    n_h: 8,
+    n_phi: 12,
+    photons: 200,
+};
+
+#[test]
+fn event_strings_tell_the_modelled_paths_apart() {
+    assert_eq!(Events::parse(b"TT"), MODELLED_UNSCATTERED[1]);
+    assert_ne!(Events::parse(b"TRT"), Events::parse(b"TRRT"));
+    assert_ne!(Events::parse(b"TrT"), Events::parse(b"TtT"));
+    assert!(!MODELLED_UNSCATTERED.contains(&Events::parse(b"TRRT")));
+    assert!(!MODELLED_UNSCATTERED.contains(&Events::parse(b"TrRttT")));
+    // Long strings saturate and are never one of the eight.
+    let long = Events::parse(b"TRRRRRRRRRRRRRRRRRRRT");
+    assert_eq!(long, Events::parse(b"TRRRRRRRRRRRRRRRRRRRRRRRRRRRRRRT"));
+}
+
+#[test]
+fn a_lossless_fiber_returns_every_photon_and_beam() {
+    // σ_ca = σ_ma = 0: everything that enters leaves, up to what the cutoffs drop.
+    for name in ["bobcat", "air-medulla", "human-hair"] {
+        let p = lossless(name);
+        for theta_r in [0.0f32, 0.7, 1.3] {
+            let sec = section(&p, theta_r);
+            for h in [0.05f32, 0.4, 0.8, 0.97] {
+                let mut rng = Pcg32::new(3, 4);
+                let mut hist = [[0.0; 3]; 12];
+                let t = simulate_cell(&sec, h, 500, &mut rng, &mut hist);
+                for c in 0..3 {
+                    let sum = t.exiting[c] + t.dropped[c];
+                    assert!((sum - 1.0).abs() < 2e-5, "{name} {theta_r} {h}: {t:?}");
+                    assert!(t.dropped[c] < 1e-5, "{name} {theta_r} {h}: {t:?}");
+                    let binned: f64 = hist.iter().map(|b| b[c]).sum();
+                    assert!((binned - t.unmodelled[c]).abs() < 1e-9);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn rows_are_the_same_bits_alone_or_in_a_table() {
+    let p = lossless("bobcat");
+    let (layout, cn, cm) = small_profiles(&p);
+    let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
+    let model: FurBcsdf = FurBcsdf::new(p, profiles).unwrap();
+    let mut all = vec![0.0; SMALL.len()];
+    generate(&model, &SMALL, 9, &mut all).unwrap();
+    let mut row = vec![0.0; SMALL.row_len()];
+    generate_row(&model, &SMALL, 2, 9, &mut row);
+    let len = SMALL.row_len();
+    assert_eq!(&all[2 * len..3 * len], &row[..]);
+    // Another seed gives other photons.
+    generate_row(&model, &SMALL, 2, 10, &mut row);
+    assert_ne!(&all[2 * len..3 * len], &row[..]);
+}
+
+#[test]
+fn the_table_normalises_its_shape_and_its_near_field_averages_to_its_far_field() {
+    let p = lossless("bobcat");
+    let (layout, cn, cm) = small_profiles(&p);
+    let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
+    let model: FurBcsdf = FurBcsdf::new(p, profiles).unwrap();
+    let mut data = vec![0.0; SMALL.len()];
+    generate(&model, &SMALL, 1, &mut data).unwrap();
+    let table = ResidualTable::new(p, SMALL, &data).unwrap();
+    for k in 0..DEFAULT_NODES {
+        let l = ResidualLayout::DEFAULT;
+        let at = l.theta_position(l.theta_node(k));
+        assert!((at - k as f32).abs() < 1e-3, "node {k}: {at}");
+    }
+    for theta_r in [0.0f32, 0.3, -0.9, 1.5] {
+        // A multiple of the 2·n_phi bins: the midpoint rule is exact on the step function D.
+        let n = 2400;
+        let (mut d, mut near) = (Rgb::ZERO, Rgb::ZERO);
+        for k in 0..n {
+            let x = (k as f32 + 0.5) / n as f32;
+            d += table.density(theta_r, -PI + TAU * x) * (TAU / n as f32);
+            near += table.magnitude(theta_r, x) * (1.0 / n as f32);
+        }
+        let mean = table.mean(theta_r);
+        for c in 0..3 {
+            assert!((d.0[c] - 1.0).abs() < 1e-4, "{theta_r}: ∫D = {d:?}");
+            assert!(
+                (near.0[c] - mean.0[c]).abs() < 1e-4 * mean.0[c].max(1e-3),
+                "{theta_r}"
+            );
+        }
+        assert!(mean.max_channel() > 0.0);
+    }
+    // Made for bobcat: refused by another parameter set, accepted in either closure.
+    let other: FurBcsdf = FurBcsdf::unscattered(lossless("cat"));
+    assert_eq!(
+        other.with_residual(table).err(),
+        Some(ProfileError::Mismatch)
+    );
+    let report = FurBcsdf::<Libm>::new(p.with_closure(Closure::Report), profiles).unwrap();
+    let report = report.with_residual(table).unwrap();
+    let a = Angles::new(0.1, 0.2, 0.3).unwrap();
+    assert_eq!(report.eval_residual(&a, None), Rgb::ZERO);
+    let energy = model.with_residual(table).unwrap();
+    assert!(energy.eval_residual(&a, None).max_channel() > 0.0);
+}

@@ -4,13 +4,15 @@
 //!
 //! - The integrator itself is proved with an ideal fiber: S = 1/π² in every direction, so
 //!   ∫ S cos θ_i dω_i = (1/π²)·2π·∫cos²θ dθ = 1 exactly, and its exact uniform-sphere sampler.
-//! - The fur BCSDF, made lossless (σ_ca = σ_ma = 0), is run in report mode: its deficit per
-//!   bounce order is printed. With the energy closure (issue 20) the same run becomes one
-//!   more `assert_white` case.
+//! - The fur BCSDF, made lossless (σ_ca = σ_ma = 0), in the energy closure (docs/model.md §12:
+//!   M on the sphere, the residual) keeps the furnace white like the ideal fiber, for a plain
+//!   and a medullated preset; in the report closure its deficit per bounce order is printed.
 
 mod common;
 
-use bcsdf_core::{Angles, Bcsdf, Families, Libm, LobeFamily, Pigment, Rgb, SampledDirection};
+use bcsdf_core::{
+    Angles, Bcsdf, Closure, Families, Libm, LobeFamily, Pigment, Rgb, SampledDirection,
+};
 use core::f32::consts::PI;
 use render::scatter::One;
 use render::{integrator, scenes, Render, SceneKind, SceneOptions, Settings};
@@ -199,6 +201,32 @@ fn ideal_fibers_with_bcsdf_sampling_give_exactly_one_per_pixel() {
     assert!(worst < 1e-4, "a pixel is {worst} away from 1");
 }
 
+/// The fur BCSDF, lossless, in the energy closure: the image mean within 0.5 % of 1 and every
+/// pixel within 5 of its standard errors, for a plain and a medullated preset.
+#[test]
+fn lossless_fur_in_the_energy_closure_keeps_the_furnace_white() {
+    let scene = furnace(1500);
+    for preset in [common::plain(), common::medullated()] {
+        let mut input = preset.input;
+        input.pigment = Pigment::Absorption(Rgb::ZERO);
+        input.sigma_ma = 0.0;
+        input.closure = Closure::Energy;
+        let settings = Settings {
+            max_depth: 1024,
+            seed: 21,
+            ..Settings::new(32, 32, 128)
+        };
+        let r = common::with_model(&input, |model| {
+            integrator::render(&scene, &One(model), &settings)
+        })
+        .unwrap();
+        let name = format!("{} lossless, energy closure", preset.name);
+        print_orders(&name, &r);
+        println!("{name}: {:?}", r.image.whole());
+        assert_white(&r, &name);
+    }
+}
+
 /// The fur BCSDF, lossless, in report mode: prints the deficit per bounce order. The
 /// model's energy deficit compounds with every bounce; what can be asserted without the
 /// energy closure is that no energy is created.
@@ -209,6 +237,7 @@ fn lossless_fur_reports_its_deficit_per_bounce() {
         let mut input = preset.input;
         input.pigment = Pigment::Absorption(Rgb::ZERO);
         input.sigma_ma = 0.0;
+        input.closure = Closure::Report;
         let settings = Settings {
             max_depth: 256,
             ..Settings::new(16, 16, 8)

@@ -4,9 +4,10 @@
 
 use bcsdf_core::medulla::generate;
 use bcsdf_core::presets::{Preset, PRESETS};
+use bcsdf_core::residual::{self, ResidualLayout, ResidualTable};
 use bcsdf_core::{
-    presets, FurBcsdf, FurParams, FurParamsInput, MedullaProfiles, PhotonBudget, ProfileLayout,
-    Resolution,
+    presets, Closure, FurBcsdf, FurParams, FurParamsInput, MedullaProfiles, PhotonBudget,
+    ProfileLayout, Resolution,
 };
 use render::Estimate;
 
@@ -24,7 +25,9 @@ pub fn medullated() -> &'static Preset {
 }
 
 /// Calls `f` with the analytic model of `input` (profiles, when needed, generated here from
-/// a small photon budget: the tests need a model, not the preset's reference profiles).
+/// a small photon budget: the tests need a model, not the preset's reference profiles). In the
+/// energy closure the model gets its residual table (docs/model.md §12), generated here with
+/// the default layout.
 pub fn with_model<R>(input: &FurParamsInput, f: impl FnOnce(&FurBcsdf<'_>) -> R) -> R {
     let params = FurParams::new(input).expect("valid parameters");
     if input.kappa > 0.0 && input.sigma_ms > 0.0 {
@@ -36,10 +39,24 @@ pub fn with_model<R>(input: &FurParamsInput, f: impl FnOnce(&FurBcsdf<'_>) -> R)
         };
         generate(&layout, &budget, 1, &mut cn, &mut cm).expect("profiles");
         let profiles = MedullaProfiles::new(layout, &cn, &cm).expect("profiles");
-        f(&FurBcsdf::new(params, profiles).expect("model"))
+        with_residual(FurBcsdf::new(params, profiles).expect("model"), f)
     } else {
-        f(&FurBcsdf::unscattered(params))
+        with_residual(FurBcsdf::unscattered(params), f)
     }
+}
+
+/// `f` of `model`, with its residual table in the energy closure.
+fn with_residual<R>(model: FurBcsdf<'_>, f: impl FnOnce(&FurBcsdf<'_>) -> R) -> R {
+    if model.params().closure() != Closure::Energy {
+        return f(&model);
+    }
+    let layout = ResidualLayout::DEFAULT;
+    let mut data = vec![0.0; layout.len()];
+    residual::generate(&model, &layout, 1, &mut data).expect("residual table");
+    let table = ResidualTable::new(*model.params(), layout, &data).expect("residual table");
+    f(&model
+        .with_residual(table)
+        .expect("residual for these parameters"))
 }
 
 /// z-score of the difference of two estimates, channel by channel (largest |z|).

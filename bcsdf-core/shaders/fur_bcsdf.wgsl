@@ -516,17 +516,17 @@ fn fur_invert_weighted_linear(v0: f32, v1: f32, a: f32, b: f32, len: f32, t: f32
     let cc = (b - a) * (v1 - v0);
     let q0 = ca;
     let q1 = b * v1;
-    let target = t / len;
+    let goal = t / len;
     let total = ca + 0.5 * cb + (1.0 / 3.0) * cc;
     let lin = 0.5 * (q0 + q1);
     var x = 0.5;
     if (total > 0.0 && lin > 0.0) {
-        x = fur_invert_linear(q0, q1, 1.0, target * (lin / total));
+        x = fur_invert_linear(q0, q1, 1.0, goal * (lin / total));
     }
     var lo = 0.0;
     var hi = 1.0;
     for (var k = 0u; k < 8u; k = k + 1u) {
-        let fx = x * (ca + x * (0.5 * cb + x * (1.0 / 3.0) * cc)) - target;
+        let fx = x * (ca + x * (0.5 * cb + x * (1.0 / 3.0) * cc)) - goal;
         if (fx > 0.0) {
             hi = x;
         } else {

@@ -254,7 +254,10 @@ mod tests {
                 })
                 .sum();
             let mass = weighted_linear_mass(v0, v1, a, b, len);
-            assert!((f64::from(mass) - mid).abs() < 1e-6 * mid.max(1e-3), "{mass} {mid}");
+            assert!(
+                (f64::from(mass) - mid).abs() < 1e-6 * mid.max(1e-3),
+                "{mass} {mid}"
+            );
             // The integral from the segment start to s, in f64.
             let to = |s: f64| {
                 let x = s / f64::from(len);

@@ -80,7 +80,10 @@ impl<'a> Rows<'a> {
             lut.blob.get(at..at + 4 * l.entries).unwrap_or(&[])
         };
         let fronts = if weighting == Weighting::Back {
-            (prefix(Density::Front, rows.0), prefix(Density::Front, rows.1))
+            (
+                prefix(Density::Front, rows.0),
+                prefix(Density::Front, rows.1),
+            )
         } else {
             (&[][..], &[][..])
         };

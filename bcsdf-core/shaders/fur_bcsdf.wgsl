@@ -540,7 +540,11 @@ fn fur_invert_weighted_linear(v0: f32, v1: f32, a: f32, b: f32, len: f32, t: f32
                 next = n;
             }
         }
+        let done = abs(next - x) <= 1.2e-7;
         x = next;
+        if (done) {
+            break;
+        }
     }
     let s = clamp(x * len, 0.0, len);
     let inset = len * (1.0 / 1048576.0);

@@ -773,8 +773,8 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e96 = k_4;
-            k_4 = (_e96 + 1u);
+            uint _e102 = k_4;
+            k_4 = (_e102 + 1u);
         }
         loop_init_6 = false;
         uint _e50 = k_4;
@@ -816,19 +816,25 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
                 }
             }
             float _e95 = next;
-            x_6 = _e95;
+            float _e96 = x_6;
+            bool done = (abs((_e95 - _e96)) <= 1.2e-7);
+            float _e101 = next;
+            x_6 = _e101;
+            if (done) {
+                break;
+            }
         }
     }
-    float _e99 = x_6;
-    float s_1 = clamp((_e99 * len_3), 0.0, len_3);
+    float _e105 = x_6;
+    float s_1 = clamp((_e105 * len_3), 0.0, len_3);
     float inset_1 = (len_3 * 9.536743e-7);
     if ((q0_ <= 0.0)) {
         local_16 = (s_1 < inset_1);
     } else {
         local_16 = false;
     }
-    bool _e111 = local_16;
-    if (_e111) {
+    bool _e117 = local_16;
+    if (_e117) {
         return inset_1;
     }
     if ((q1_ <= 0.0)) {
@@ -836,8 +842,8 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
     } else {
         local_17 = false;
     }
-    bool _e119 = local_17;
-    if (_e119) {
+    bool _e125 = local_17;
+    if (_e125) {
         return (len_3 - inset_1);
     }
     return s_1;

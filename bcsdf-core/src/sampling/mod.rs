@@ -114,9 +114,9 @@ pub fn weighted_linear_mass(v0: f32, v1: f32, a: f32, b: f32, len: f32) -> f32 {
 /// integral of the weighted density from the segment start is `t`. The integral is the cubic
 /// F(τ) = len·(Aτ + Bτ²/2 + Cτ³/3), τ = s/len, with A = a·v0, B = a·(v1 − v0) + v0·(b − a),
 /// C = (b − a)·(v1 − v0), increasing (its derivative, the density, is ≥ 0); it is solved by
-/// Newton steps kept inside a shrinking bracket, from the linear density's inversion, a
-/// fixed number of times (F is a cubic: the steps converge quadratically, and the bracket
-/// halves on any step that would leave it). As [`invert_linear`], an end where the density
+/// Newton steps kept inside a shrinking bracket, from the linear density's inversion, at
+/// most eight, until a step moves τ by at most 1.2e-7 (F is a cubic: the steps converge
+/// quadratically, and the bracket halves on any step that would leave it). As [`invert_linear`], an end where the density
 /// is 0 is never returned (s is kept 2⁻²⁰·len inside it).
 #[inline]
 #[must_use]
@@ -149,7 +149,12 @@ pub fn invert_weighted_linear(v0: f32, v1: f32, a: f32, b: f32, len: f32, t: f32
         if !(next >= lo && next <= hi) {
             next = 0.5 * (lo + hi);
         }
+        // Converged: the step is below f32's resolution of τ near 1 (2⁻²³ ≈ 1.2e-7).
+        let done = (next - x).abs() <= 1.2e-7;
         x = next;
+        if done {
+            break;
+        }
     }
     let s = (x * len).clamp(0.0, len);
     let inset = len * (1.0 / 1_048_576.0);

@@ -1,7 +1,8 @@
 //! χ² goodness of fit of the samplers against their own `pdf` (docs/model.md §10), for every
-//! preset, analytic and baked, at θ_r ∈ {−60°, −20°, 0°, 30°, 70°}: 10⁶ samples in 64 θ × 128 φ
-//! bins, expected counts from `pdf` integrated over each bin, overall significance 0.01 with a
-//! Šidák correction over the 50 tests. A control shows the test rejects a density off by a 2 %
+//! preset, analytic and baked (the baked LUT in the preset's closure and in the energy
+//! closure), at θ_r ∈ {−60°, −20°, 0°, 30°, 70°}: 10⁶ samples in 64 θ × 128 φ bins, expected
+//! counts from `pdf` integrated over each bin, overall significance 0.01 with a Šidák
+//! correction over the 75 tests. A control shows the test rejects a density off by a 2 %
 //! tilt.
 
 use bake::profiles::{build_model, scale_budget, OwnedModel, ProfileOptions};
@@ -10,16 +11,20 @@ use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::rng::{cell_stream, Pcg32};
-use bcsdf_core::{presets, Angles, Bcsdf, FurParams};
+use bcsdf_core::{presets, Angles, Bcsdf, Closure, FurParams, FurParamsInput};
 use fur_tests::chi2::{chi2_test, sidak, Chi2Outcome, Chi2Setup};
 use std::path::PathBuf;
 
 const THETA_R_DEG: [f32; 5] = [-60.0, -20.0, 0.0, 30.0, 70.0];
-/// Statistics in all: presets × θ_r × (analytic, baked) × (fine, coarse).
-const TESTS: usize = 5 * 5 * 2 * 2;
+/// Statistics in all: presets × θ_r × (analytic, baked, baked energy) × (fine, coarse).
+const TESTS: usize = 5 * 5 * 3 * 2;
 
 fn model(name: &str) -> OwnedModel {
-    let params = FurParams::new(&presets::find(name).unwrap().input).unwrap();
+    model_in(&presets::find(name).unwrap().input)
+}
+
+fn model_in(input: &FurParamsInput) -> OwnedModel {
+    let params = FurParams::new(input).unwrap();
     let opts = ProfileOptions {
         budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
         cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
@@ -83,11 +88,19 @@ fn analytic(name: &str) {
 }
 
 fn baked(name: &str) {
-    let m = model(name);
-    let input = presets::find(name).unwrap().input;
-    let blob = tables::bake(&m, &input, LutResolution::DEFAULT);
-    let lut = BakedBcsdf::from_bytes(&blob).unwrap();
-    check(name, "baked", &lut);
+    let preset = presets::find(name).unwrap().input;
+    for closure in [preset.closure, Closure::Energy] {
+        let input = FurParamsInput { closure, ..preset };
+        let m = model_in(&input);
+        let blob = tables::bake(&m, &input, LutResolution::DEFAULT);
+        let lut = BakedBcsdf::from_bytes(&blob).unwrap();
+        let kind = if closure == Closure::Energy {
+            "baked energy"
+        } else {
+            "baked"
+        };
+        check(name, kind, &lut);
+    }
 }
 
 #[test]

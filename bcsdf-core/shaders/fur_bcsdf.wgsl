@@ -371,7 +371,8 @@ fn fur_entries(nodes: u32, block: u32) -> u32 {
     return (nodes - 1u + block - 1u) / block + 1u;
 }
 
-// Density d in section order: 0..2 M_g, 3..6 N_f, 7..8 M^s_x.
+// Density d in section order: 0..2 M_g, 3..6 N_f, 7..8 M^s_x, 9 the front-weighted N^s
+// (lut::cdf::Density::Front).
 fn fur_density(d: u32) -> FurDensity {
     let n_sum = fur_word(4u);
     let n_theta_r = fur_word(5u);
@@ -392,8 +393,12 @@ fn fur_density(d: u32) -> FurDensity {
         return FurDensity(at + 4u * f * n_theta_r * e_n, e_n, n_phi, n_theta_r, FUR_PI / f32(n_phi - 1u), 8u, 1u, 3u * f, 3u);
     }
     at = at + 4u * 4u * n_theta_r * e_n;
-    let x = d - 7u;
-    return FurDensity(at + 4u * x * n_ms_r * e_s, e_s, n_ms_i, n_ms_r, FUR_PI / f32(n_ms_i - 1u), 8u, 2u, x, 1u);
+    if (d < 9u) {
+        let x = d - 7u;
+        return FurDensity(at + 4u * x * n_ms_r * e_s, e_s, n_ms_i, n_ms_r, FUR_PI / f32(n_ms_i - 1u), 8u, 2u, x, 1u);
+    }
+    at = at + 4u * 2u * n_ms_r * e_s;
+    return FurDensity(at, e_n, n_phi, n_theta_r, FUR_PI / f32(n_phi - 1u), 8u, 1u, 9u, 3u);
 }
 
 // lut::cdf::Nodes::value: density node value at (row, j).
@@ -414,17 +419,27 @@ fn fur_node(d: FurDensity, row: u32, j: u32) -> f32 {
     return fur_half(base) * fur_unbias(d.table);
 }
 
-// Two rows of a density blended with weights (1 - w, w).
+// Two rows of a density blended with weights (1 - w, w), weighted along |phi| by the
+// scattered blend (sampling::baked::rows::Weighting): 0 one, 1 back (1 - |phi|/pi; prefix
+// sums N^s's less density 9's), 2 front (|phi|/pi; density 9).
 struct FurRows {
     d: FurDensity,
     r0: u32,
     r1: u32,
     w: f32,
     origin: f32,
+    weighting: u32,
 }
 
 fn fur_rows(d: FurDensity, row: u32, w: f32, origin: f32) -> FurRows {
-    return FurRows(d, min(row, d.rows - 1u), min(row + 1u, d.rows - 1u), w, origin);
+    return FurRows(d, min(row, d.rows - 1u), min(row + 1u, d.rows - 1u), w, origin, 0u);
+}
+
+// The scattered |phi| rows weighted by 1 - |phi|/pi (weighting 1, Rows::back) or |phi|/pi
+// (weighting 2, density 9, Rows::new of Density::Front).
+fn fur_rows_weighted(weighting: u32, row: u32, w: f32) -> FurRows {
+    let d = fur_density(select(6u, 9u, weighting == 2u));
+    return FurRows(d, min(row, d.rows - 1u), min(row + 1u, d.rows - 1u), w, 0.0, weighting);
 }
 
 fn fur_rows_value(r: FurRows, j: u32) -> f32 {
@@ -436,13 +451,21 @@ fn fur_rows_value(r: FurRows, j: u32) -> f32 {
     return (1.0 - r.w) * v0 + r.w * v1;
 }
 
-fn fur_rows_prefix(r: FurRows, k: u32) -> f32 {
-    let p0 = fur_f32_at(r.d.prefix_at + 4u * (r.r0 * r.d.entries + k));
+fn fur_blended_prefix(r: FurRows, d: FurDensity, k: u32) -> f32 {
+    let p0 = fur_f32_at(d.prefix_at + 4u * (r.r0 * d.entries + k));
     if (r.w == 0.0) {
         return p0;
     }
-    let p1 = fur_f32_at(r.d.prefix_at + 4u * (r.r1 * r.d.entries + k));
+    let p1 = fur_f32_at(d.prefix_at + 4u * (r.r1 * d.entries + k));
     return (1.0 - r.w) * p0 + r.w * p1;
+}
+
+fn fur_rows_prefix(r: FurRows, k: u32) -> f32 {
+    let p = fur_blended_prefix(r, r.d, k);
+    if (r.weighting == 1u) {
+        return p - fur_blended_prefix(r, fur_density(9u), k);
+    }
+    return p;
 }
 
 fn fur_rows_total(r: FurRows) -> f32 {
@@ -478,6 +501,90 @@ fn fur_invert_linear(v0: f32, v1: f32, len: f32, t: f32) -> f32 {
     return s;
 }
 
+// sampling::weighted_linear_mass.
+fn fur_weighted_linear_mass(v0: f32, v1: f32, a: f32, b: f32, len: f32) -> f32 {
+    return len * (a * v0 + 0.5 * (a * v1 + b * v0) + b * v1) * (1.0 / 3.0);
+}
+
+// sampling::invert_weighted_linear: Newton steps on the cubic inside a shrinking bracket.
+fn fur_invert_weighted_linear(v0: f32, v1: f32, a: f32, b: f32, len: f32, t: f32) -> f32 {
+    if (!(len > 0.0)) {
+        return 0.0;
+    }
+    let ca = a * v0;
+    let cb = a * (v1 - v0) + v0 * (b - a);
+    let cc = (b - a) * (v1 - v0);
+    let q0 = ca;
+    let q1 = b * v1;
+    let goal = t / len;
+    let total = ca + 0.5 * cb + (1.0 / 3.0) * cc;
+    let lin = 0.5 * (q0 + q1);
+    var x = 0.5;
+    if (total > 0.0 && lin > 0.0) {
+        x = fur_invert_linear(q0, q1, 1.0, goal * (lin / total));
+    }
+    var lo = 0.0;
+    var hi = 1.0;
+    for (var k = 0u; k < 8u; k = k + 1u) {
+        let fx = x * (ca + x * (0.5 * cb + x * (1.0 / 3.0) * cc)) - goal;
+        if (fx > 0.0) {
+            hi = x;
+        } else {
+            lo = x;
+        }
+        let d = ca + x * (cb + x * cc);
+        var next = 0.5 * (lo + hi);
+        if (d > 0.0) {
+            let n = x - fx / d;
+            if (n >= lo && n <= hi) {
+                next = n;
+            }
+        }
+        let done = abs(next - x) <= 1.2e-7;
+        x = next;
+        if (done) {
+            break;
+        }
+    }
+    let s = clamp(x * len, 0.0, len);
+    let inset = len * (1.0 / 1048576.0);
+    if (q0 <= 0.0 && s < inset) {
+        return inset;
+    }
+    if (q1 <= 0.0 && s > len - inset) {
+        return len - inset;
+    }
+    return s;
+}
+
+// The weights at nodes j and j + 1 of a weighted row (Rows::weights).
+fn fur_rows_weights(r: FurRows, j: u32) -> vec2<f32> {
+    let inv = 1.0 / f32(r.d.nodes - 1u);
+    let ab = vec2<f32>(f32(j) * inv, f32(j + 1u) * inv);
+    if (r.weighting == 1u) {
+        return vec2<f32>(1.0 - ab.x, 1.0 - ab.y);
+    }
+    return ab;
+}
+
+// Rows::segment_mass.
+fn fur_rows_segment_mass(r: FurRows, j: u32, v0: f32, v1: f32) -> f32 {
+    if (r.weighting == 0u) {
+        return fur_linear_mass(v0, v1, r.d.step);
+    }
+    let ab = fur_rows_weights(r, j);
+    return fur_weighted_linear_mass(v0, v1, ab.x, ab.y, r.d.step);
+}
+
+// Rows::invert_segment.
+fn fur_rows_invert_segment(r: FurRows, j: u32, v0: f32, v1: f32, t: f32) -> f32 {
+    if (r.weighting == 0u) {
+        return fur_invert_linear(v0, v1, r.d.step, t);
+    }
+    let ab = fur_rows_weights(r, j);
+    return fur_invert_weighted_linear(v0, v1, ab.x, ab.y, r.d.step, t);
+}
+
 fn fur_unit(u: f32) -> f32 {
     if (u > 0.0) {
         return min(u, 0.99999994);
@@ -505,24 +612,27 @@ fn fur_rows_invert(r: FurRows, t: f32) -> f32 {
     var last_j = 0u;
     var last_v0 = 0.0;
     var last_v1 = 0.0;
+    var last_m = 0.0;
     for (var j = first; j < end; j = j + 1u) {
         let v = fur_rows_value(r, j + 1u);
-        let m = fur_linear_mass(prev, v, r.d.step);
+        let m = fur_rows_segment_mass(r, j, prev, v);
         if (m > 0.0) {
             if (t - acc <= m) {
-                let s = fur_invert_linear(prev, v, r.d.step, t - acc);
+                let s = fur_rows_invert_segment(r, j, prev, v, t - acc);
                 return r.origin + f32(j) * r.d.step + s;
             }
             have_last = true;
             last_j = j;
             last_v0 = prev;
             last_v1 = v;
+            last_m = m;
         }
         acc = acc + m;
         prev = v;
     }
     if (have_last) {
-        let s = fur_invert_linear(last_v0, last_v1, r.d.step, r.d.step * (last_v0 + last_v1));
+        let whole = select(last_m, r.d.step * (last_v0 + last_v1), r.weighting == 0u);
+        let s = fur_rows_invert_segment(r, last_j, last_v0, last_v1, whole);
         return r.origin + f32(last_j) * r.d.step + s;
     }
     return r.origin + f32(end) * r.d.step;
@@ -565,53 +675,31 @@ fn fur_m_cdf(x: f32) -> vec3<f32> {
     return fur_m_at(fur_locate(fur_sum_axis(), x)).cdf;
 }
 
-// The location dx away from l, clamped (baked::Axis::shifted).
-fn fur_shifted(a: FurAxis, l: FurLoc, dx: f32) -> FurLoc {
-    let u = min(max(f32(l.i) + l.w + dx * a.inv_step, 0.0), a.last);
-    let i = min(u32(floor(u)), a.nodes - 2u);
-    return FurLoc(i, u - f32(i));
-}
-
 // Header word of the closure (byte 104, after g): 0 report, 1 energy (docs/model.md §12).
 const FUR_CLOSURE_WORD: u32 = 26u;
 
-// Smallest M mass the energy closure divides by (longitudinal::MIN_SPHERE_MASS).
-const FUR_MIN_SPHERE_MASS: f32 = 1e-4;
-
-// The energy closure's factor for a tabulated M_g of mass `mass` inside theta_i in
-// [-pi/2, pi/2] (BakedBcsdf::sphere_norm): 1/max(mass, 1e-4); 1 in the report closure.
-fn fur_sphere_norm(mass: vec3<f32>) -> vec3<f32> {
-    if (fur_word(FUR_CLOSURE_WORD) != 1u) {
-        return vec3<f32>(1.0);
-    }
-    return vec3<f32>(1.0) / max(mass, vec3<f32>(FUR_MIN_SPHERE_MASS));
+// Byte offset of the 1/Z_g table (lut::LutResolution::norm_start): the end of the sampling
+// section, i.e. of its last density (the front-weighted N^s).
+fn fur_norm_start() -> u32 {
+    let d = fur_density(9u);
+    return d.prefix_at + 4u * d.rows * d.entries;
 }
 
-// Width of the pole slivers of the 1/cos^2 guard (model::POLE_SLIVER).
-const FUR_POLE_SLIVER: f32 = 0.010000167;
-
-// The pole sliver's loss s_c (11 M_0 + 28 M_half + M_1)/60 (BakedBcsdf::sphere_norms).
-fn fur_sliver(m0: vec3<f32>, m_half: vec3<f32>, m1: vec3<f32>) -> vec3<f32> {
-    return FUR_POLE_SLIVER * (1.0 / 60.0) * (11.0 * m0 + 28.0 * m_half + m1);
-}
-
-// M_g over tabulated M_g at theta_r (BakedBcsdf::sphere_norms): the interpolant's mass over
-// theta_i in [-pi/2, pi/2] less the pole slivers' loss.
+// The energy closure's factor M_g / (tabulated M_g) at theta_r (BakedBcsdf::sphere_norms):
+// 1/Z_g(theta_r) interpolated linearly in the LUT's 1/Z_g table (lut::norms, n_sum nodes over
+// theta_r in [-pi/2, pi/2], the three groups adjacent); 1 in the report closure.
 fn fur_sphere_norms(theta_r: f32) -> vec3<f32> {
     if (fur_word(FUR_CLOSURE_WORD) != 1u) {
         return vec3<f32>(1.0);
     }
-    let axis = fur_sum_axis();
-    let l_lo = fur_locate(axis, theta_r - FUR_HALF_PI);
-    let l_hi = fur_locate(axis, theta_r + FUR_HALF_PI);
-    let lo = fur_m_at(l_lo);
-    let hi = fur_m_at(l_hi);
-    let lo_half = fur_m_at(fur_shifted(axis, l_lo, 0.5 * FUR_POLE_SLIVER)).value;
-    let lo_end = fur_m_at(fur_shifted(axis, l_lo, FUR_POLE_SLIVER)).value;
-    let hi_half = fur_m_at(fur_shifted(axis, l_hi, -0.5 * FUR_POLE_SLIVER)).value;
-    let hi_end = fur_m_at(fur_shifted(axis, l_hi, -FUR_POLE_SLIVER)).value;
-    let loss = fur_sliver(lo.value, lo_half, lo_end) + fur_sliver(hi.value, hi_half, hi_end);
-    return fur_sphere_norm(hi.cdf - lo.cdf - loss);
+    let l = fur_locate(fur_axis(true, 1.0 / FUR_PI, fur_word(4u)), theta_r);
+    let at = fur_norm_start() + 12u * l.i;
+    var out = vec3<f32>(0.0);
+    for (var g = 0u; g < 3u; g = g + 1u) {
+        let z0 = fur_f32_at(at + 4u * g);
+        out[g] = z0 + (fur_f32_at(at + 12u + 4u * g) - z0) * l.w;
+    }
+    return out;
 }
 
 fn fur_row_total(d: FurDensity, l: FurLoc) -> f32 {
@@ -638,14 +726,15 @@ fn fur_parts(theta_r: f32) -> FurParts {
     let nr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, fur_word(5u)), abs(theta_r));
     let sr = fur_locate(fur_axis(true, 1.0 / FUR_PI, fur_word(8u)), theta_r);
     let nu_s = fur_row_total(fur_density(6u), nr);
+    let mu_s = fur_row_total(fur_density(9u), nr);
     // The mass of the evaluated M_g: the tabulated one times the closure's factor.
     let kept = mass * fur_sphere_norms(theta_r);
     let a = array<f32, 5>(
         fur_positive(2.0 * kept.x * fur_row_total(fur_density(3u), nr)),
         fur_positive(2.0 * kept.y * fur_row_total(fur_density(4u), nr)),
         fur_positive(2.0 * kept.z * fur_row_total(fur_density(5u), nr)),
-        fur_positive(fur_row_total(fur_density(7u), sr) * nu_s),
-        fur_positive(fur_row_total(fur_density(8u), sr) * nu_s),
+        fur_positive(2.0 * fur_row_total(fur_density(7u), sr) * (nu_s - mu_s)),
+        fur_positive(2.0 * fur_row_total(fur_density(8u), sr) * mu_s),
     );
     return FurParts(a, mass, lo);
 }
@@ -659,7 +748,9 @@ fn fur_density_of(l: FurLookups, w: f32, cos_theta_i: f32) -> f32 {
     let mean1 = (l.n[3] + l.n[4] + l.n[5]) * (1.0 / 3.0);
     let mean2 = (l.n[6] + l.n[7] + l.n[8]) * (1.0 / 3.0);
     let mean3 = (l.n[9] + l.n[10] + l.n[11]) * (1.0 / 3.0);
-    let p = l.m[0] * mean0 + l.m[1] * mean1 + l.m[2] * mean2 + 0.5 * (l.ms[0] + l.ms[1]) * mean3;
+    // M^s's blend exactly as fur_assemble forms it.
+    let ms = l.ms[0] + l.front * (l.ms[1] - l.ms[0]);
+    let p = l.m[0] * mean0 + l.m[1] * mean1 + l.m[2] * mean2 + ms * mean3;
     return fur_positive((p / w) / max(cos_theta_i, 1e-6));
 }
 
@@ -725,7 +816,10 @@ fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
     }
     let family = min(c, 3u);
     let nr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, fur_word(5u)), abs(theta_r));
-    let nrows = fur_rows(fur_density(3u + family), nr.i, nr.w, 0.0);
+    var nrows = fur_rows(fur_density(3u + family), nr.i, nr.w, 0.0);
+    if (c >= 3u) {
+        nrows = fur_rows_weighted(c - 2u, nr.i, nr.w);
+    }
     let abs_phi = clamp(fur_rows_invert_between(nrows, 0.0, fur_rows_total(nrows), u.z), 0.0, FUR_PI);
     let phi = fur_wrap_angle(select(abs_phi, -abs_phi, negative));
     let l = fur_lookups(theta_i, theta_r, phi);

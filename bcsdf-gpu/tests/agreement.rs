@@ -1,7 +1,7 @@
 //! The WGSL evaluator on a real Vulkan device (a GPU, or Mesa's llvmpipe) against
 //! `BakedBcsdf::eval_far`, for every preset: 2¹⁶ random directions plus edge cases (θ at
 //! ±89.9° and ±90°, φ at 0 and ±π, NaN and out-of-range angles the CPU maps to zero, grazing
-//! and degenerate vectors). Per channel and family: |gpu − cpu| ≤ 1e-5·max(cpu, 1e-3·peak),
+//! and degenerate vectors), in both closures (the energy closure reads the LUT's 1/Z_g table). Per channel and family: |gpu − cpu| ≤ 1e-5·max(cpu, 1e-3·peak),
 //! peak the largest value of that channel and family over the queries. A shader with one
 //! table index off by one must fail the same check.
 //!
@@ -14,22 +14,27 @@ use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
-use bcsdf_core::{presets, Angles, Bcsdf, FurParams};
+use bcsdf_core::{presets, Angles, Bcsdf, Closure, FurParams, FurParamsInput};
 use bcsdf_gpu::{GpuError, GpuFamilies, GpuLut};
 use std::f32::consts::{FRAC_PI_2, PI};
 use std::path::PathBuf;
 
 const RELATIVE: f32 = 1e-5;
 
-fn lut(name: &str) -> Vec<u8> {
+/// The preset's LUT in `closure` (the energy closure reads the LUT's 1/Z_g table).
+fn lut(name: &str, closure: Closure) -> Vec<u8> {
     let preset = presets::find(name).unwrap();
+    let input = FurParamsInput {
+        closure,
+        ..preset.input
+    };
     let opts = ProfileOptions {
         budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
         cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
         ..ProfileOptions::default()
     };
-    let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
-    bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT)
+    let (model, _) = build_model(FurParams::new(&input).unwrap(), &opts).unwrap();
+    bake::tables::bake(&model, &input, LutResolution::DEFAULT)
 }
 
 /// The GPU LUT, or None (after printing why) when the machine has no adapter and the GPU is
@@ -126,8 +131,12 @@ fn worst(cpu: &[GpuFamilies], gpu: &[GpuFamilies]) -> (f32, usize) {
 
 #[test]
 fn gpu_matches_cpu_for_every_preset() {
-    for preset in presets::PRESETS.iter() {
-        let bytes = lut(preset.name);
+    for (preset, closure) in presets::PRESETS
+        .iter()
+        .flat_map(|p| Closure::ALL.map(|c| (p, c)))
+    {
+        println!("{} in the {closure:?} closure:", preset.name);
+        let bytes = lut(preset.name, closure);
         let Some(g) = gpu(&bytes, FUR_BCSDF_WGSL) else {
             return;
         };
@@ -203,7 +212,7 @@ fn gpu_matches_cpu_for_every_preset() {
 
 #[test]
 fn an_off_by_one_table_index_is_caught() {
-    let bytes = lut("human-hair");
+    let bytes = lut("human-hair", Closure::Report);
     let wrong = FUR_BCSDF_WGSL.replace(
         "let b = fur_half(m0 + 3u * (lm.i + 1u) + ch);",
         "let b = fur_half(m0 + 3u * (lm.i + 2u) + ch);",
@@ -226,8 +235,12 @@ fn an_off_by_one_table_index_is_caught() {
 
 #[test]
 fn gpu_pdf_and_samples_match_cpu() {
-    for preset in presets::PRESETS.iter() {
-        let bytes = lut(preset.name);
+    for (preset, closure) in presets::PRESETS
+        .iter()
+        .flat_map(|p| Closure::ALL.map(|c| (p, c)))
+    {
+        println!("{} in the {closure:?} closure:", preset.name);
+        let bytes = lut(preset.name, closure);
         let Some(g) = gpu(&bytes, FUR_BCSDF_WGSL) else {
             return;
         };

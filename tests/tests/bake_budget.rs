@@ -2,7 +2,9 @@
 //!
 //! - every built-in preset (one test each; a test checks none is missing), baked at the
 //!   default resolution from its full-budget profiles, is within E1 ≤ 1 %, E_albedo ≤ 0.5 %,
-//!   E_peak ≤ 2 % of the analytic model on the shared metric set (`bake::metrics`);
+//!   E_peak ≤ 2 % of the analytic model on the shared metric set (`bake::metrics`), in the
+//!   preset's closure and, a second test each, in the energy closure (docs/model.md §12: the
+//!   LUT's 1/Z_g table against the analytic erf-renormalised lobes);
 //! - the same metrics flag a LUT whose azimuthal table is off by 3 % (so the budget test can
 //!   fail);
 //! - the baked blob and the metrics are the same bits across runs and thread counts.
@@ -16,7 +18,7 @@ use bake::tables;
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::{self, LutResolution, Table};
 use bcsdf_core::medulla::PhotonBudget;
-use bcsdf_core::{presets, FurParams};
+use bcsdf_core::{presets, Closure, FurParams, FurParamsInput};
 use std::path::PathBuf;
 
 fn cache_dir() -> PathBuf {
@@ -24,7 +26,11 @@ fn cache_dir() -> PathBuf {
 }
 
 fn model(name: &str, budget: PhotonBudget) -> OwnedModel {
-    let params = FurParams::new(&presets::find(name).unwrap().input).unwrap();
+    model_in(&presets::find(name).unwrap().input, budget)
+}
+
+fn model_in(input: &FurParamsInput, budget: PhotonBudget) -> OwnedModel {
+    let params = FurParams::new(input).unwrap();
     let opts = ProfileOptions {
         budget,
         cache_dir: Some(cache_dir()),
@@ -34,8 +40,19 @@ fn model(name: &str, budget: PhotonBudget) -> OwnedModel {
 }
 
 fn check_preset(name: &str) {
-    let m = model(name, PhotonBudget::DEFAULT);
-    let input = presets::find(name).unwrap().input;
+    check_preset_in(name, presets::find(name).unwrap().input.closure);
+}
+
+fn check_preset_energy(name: &str) {
+    check_preset_in(name, Closure::Energy);
+}
+
+fn check_preset_in(name: &str, closure: Closure) {
+    let input = FurParamsInput {
+        closure,
+        ..presets::find(name).unwrap().input
+    };
+    let m = model_in(&input, PhotonBudget::DEFAULT);
     let blob = tables::bake(&m, &input, LutResolution::DEFAULT);
     assert!(
         2 * LutResolution::DEFAULT.total_values() <= 256 * 1024,
@@ -43,9 +60,9 @@ fn check_preset(name: &str) {
     );
     let baked = BakedBcsdf::from_bytes(&blob).unwrap();
     let s = compare(&m.model(), &baked, &MetricSet::DEFAULT);
-    println!("{name}: {s:?}");
+    println!("{name} ({closure:?}): {s:?}");
     let exceeded = ErrorBudget::DEFAULT.check(&s);
-    assert!(exceeded.is_empty(), "{name}: {exceeded:?}");
+    assert!(exceeded.is_empty(), "{name} ({closure:?}): {exceeded:?}");
 }
 
 fur_tests::per_preset_tests! {
@@ -62,6 +79,22 @@ fur_tests::per_preset_tests! {
     budget_human_fur: "human-fur",
     budget_human_hair: "human-hair",
     budget_air_medulla: "air-medulla",
+}
+
+fur_tests::per_preset_tests! {
+    check_preset_energy, every_builtin_preset_has_an_energy_budget_test;
+    energy_budget_bobcat: "bobcat",
+    energy_budget_cat: "cat",
+    energy_budget_deer: "deer",
+    energy_budget_dog: "dog",
+    energy_budget_mouse: "mouse",
+    energy_budget_rabbit: "rabbit",
+    energy_budget_raccoon: "raccoon",
+    energy_budget_red_fox: "red-fox",
+    energy_budget_springbok: "springbok",
+    energy_budget_human_fur: "human-fur",
+    energy_budget_human_hair: "human-hair",
+    energy_budget_air_medulla: "air-medulla",
 }
 
 fn small_budget() -> PhotonBudget {

@@ -8,11 +8,13 @@
 //!   reaching the sphere — within 0.5 % at θ_r ∈ {0°, ±30°, ±60°, ±80°, ±85°, ±89°}, where the
 //!   report closure loses up to two thirds of it. ⟨A_p⟩_h is the f64 ray tracer's
 //!   (`fur_tests::furnace`), the furnace calls the evaluators as black boxes. Measured: analytic
-//!   within 3.0e-6 everywhere; baked (default resolution) within 4e-3 below 85°, but over by up
-//!   to 6.2e-3 at ±85° (human-fur) and 9.2e-3 at ±89° (human-hair), so at |θ_r| ≥ 80° the baked
-//!   check is held to 1 % only — not yet the 0.5 %. Where the excess comes from (the
-//!   LUT's θ_r interpolation, nodes 1.9° apart where Σ⟨A_p⟩ rises steeply toward grazing view,
-//!   or the pole-sliver estimate of the baked normalisation) is not yet established.
+//!   within 3.0e-6 everywhere; baked (default resolution, LUT format 4: 1/Z_g from the LUT's
+//!   table, the pole slivers integrated exactly) within 4e-3 below 85°, but over by up to
+//!   6.4e-3 at ±85° (human-fur) and 9.8e-3 at ±89° (human-fur), so at |θ_r| ≥ 80° the baked
+//!   check is held to 1 % only — not yet the 0.5 %. With format 3's per-query masses
+//!   and three-point sliver estimate it was 6.2e-3 and 9.2e-3: the normalisation is not the
+//!   cause; table `N`'s θ_r interpolation is (nodes 1.9° apart where Σ⟨A_p⟩ curves sharply
+//!   toward grazing view; docs/lut.md, "The 1/Z_g table").
 //! - `report_closure_keeps_todays_numbers`: the report closure's lossless ρ(θ_r), pinned.
 //! - `residual_furnace_*` (one per preset): the model with its residual (docs/model.md §12,
 //!   "Residual"), lossless, analytic far field, near field averaged over 48 offsets, and baked

@@ -1,9 +1,10 @@
 //! χ² goodness of fit of the samplers against their own `pdf` (docs/model.md §10), for every
-//! preset, analytic and baked, at θ_r ∈ {−60°, −20°, 0°, 30°, 70°}: 10⁶ samples in 64 θ × 128 φ
-//! bins, expected counts from `pdf` integrated over each bin, overall significance 0.01 with a
-//! Šidák correction over the 130 statistics (with the energy closure's analytic sampler, whose
-//! mixture has the residual as one more part, for bobcat, raccoon and human hair). A control
-//! shows the test rejects a density off by a 2 % tilt.
+//! preset, analytic and baked (the baked LUT in the preset's closure and in the energy
+//! closure; the energy closure's analytic sampler, whose mixture has the residual as one more
+//! part, for bobcat, raccoon and human hair), at θ_r ∈ {−60°, −20°, 0°, 30°, 70°}: 10⁶ samples
+//! in 64 θ × 128 φ bins, expected counts from `pdf` integrated over each bin, overall
+//! significance 0.01 with a Šidák correction over the 180 statistics. A control shows the test
+//! rejects a density off by a 2 % tilt.
 
 use bake::profiles::{build_model, scale_budget, OwnedModel, ProfileOptions};
 use bake::tables;
@@ -16,20 +17,16 @@ use fur_tests::chi2::{chi2_test, sidak, Chi2Outcome, Chi2Setup};
 use std::path::PathBuf;
 
 const THETA_R_DEG: [f32; 5] = [-60.0, -20.0, 0.0, 30.0, 70.0];
-/// Statistics in all: presets × θ_r × (analytic, baked) × (fine, coarse), and the energy
-/// closure's analytic sampler (with its residual part) for three presets.
-const TESTS: usize = 5 * 5 * 2 * 2 + 3 * 5 * 2;
+/// Statistics in all: presets × θ_r × (analytic, baked, baked energy) × (fine, coarse), and
+/// the energy closure's analytic sampler (with its residual part) for three presets.
+const TESTS: usize = 5 * 5 * 3 * 2 + 3 * 5 * 2;
 
 fn model(name: &str) -> OwnedModel {
-    model_in(name, Closure::Report)
+    model_in(&presets::find(name).unwrap().input)
 }
 
-fn model_in(name: &str, closure: Closure) -> OwnedModel {
-    let input = FurParamsInput {
-        closure,
-        ..presets::find(name).unwrap().input
-    };
-    let params = FurParams::new(&input).unwrap();
+fn model_in(input: &FurParamsInput) -> OwnedModel {
+    let params = FurParams::new(input).unwrap();
     let opts = ProfileOptions {
         budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
         cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
@@ -94,7 +91,11 @@ fn analytic(name: &str) {
 
 /// The energy closure's analytic sampler: the residual is one more mixture part.
 fn analytic_energy(name: &str) {
-    let m = model_in(name, Closure::Energy);
+    let input = FurParamsInput {
+        closure: Closure::Energy,
+        ..presets::find(name).unwrap().input
+    };
+    let m = model_in(&input);
     assert!(m.residual().is_some());
     check(name, "analytic energy", &m.model());
 }
@@ -115,11 +116,19 @@ fn chi2_analytic_energy_human_hair() {
 }
 
 fn baked(name: &str) {
-    let m = model(name);
-    let input = presets::find(name).unwrap().input;
-    let blob = tables::bake(&m, &input, LutResolution::DEFAULT);
-    let lut = BakedBcsdf::from_bytes(&blob).unwrap();
-    check(name, "baked", &lut);
+    let preset = presets::find(name).unwrap().input;
+    for closure in [preset.closure, Closure::Energy] {
+        let input = FurParamsInput { closure, ..preset };
+        let m = model_in(&input);
+        let blob = tables::bake(&m, &input, LutResolution::DEFAULT);
+        let lut = BakedBcsdf::from_bytes(&blob).unwrap();
+        let kind = if closure == Closure::Energy {
+            "baked energy"
+        } else {
+            "baked"
+        };
+        check(name, kind, &lut);
+    }
 }
 
 #[test]

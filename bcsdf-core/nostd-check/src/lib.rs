@@ -154,9 +154,11 @@ pub extern "C" fn fur_eval_baked_small(preset: usize, ti: f32, tr: f32, phi: f32
         n_ms_r: 2,
     };
     // Header, the three tables (f16), the sampling section (f32 prefix sums: M 3 × 2,
-    // N 4 families × 2 rows × 2, M_s 2 halves × 2 rows × 2).
+    // N 4 families × 2 rows × 2, M_s 2 halves × 2 rows × 2), the 1/Z_g table (f32: 2 nodes
+    // × 3 groups).
     const TABLES: usize = 2 * (2 * 3 + 4 * (2 * 2 * 3) + 2 * 2 * 2);
-    const LEN: usize = lut::HEADER_LEN + TABLES + 4 * (3 * 2 + 4 * 2 * 2 + 2 * 2 * 2);
+    const LEN: usize =
+        lut::HEADER_LEN + TABLES + 4 * (3 * 2 + 4 * 2 * 2 + 2 * 2 * 2) + 4 * (2 * 3);
     let Some(p) = presets::PRESETS.get(preset) else {
         return -1.0;
     };

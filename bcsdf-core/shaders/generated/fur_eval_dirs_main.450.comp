@@ -27,10 +27,6 @@ struct FurLookups {
     float front;
     float inv_cos2_;
 };
-struct FurMAt {
-    vec3 cdf;
-    vec3 value;
-};
 struct FurDensity {
     uint prefix_at;
     uint entries;
@@ -56,6 +52,11 @@ struct FurRows {
     uint r1_;
     float w;
     float origin;
+    uint weighting;
+};
+struct FurMAt {
+    vec3 cdf;
+    vec3 value;
 };
 struct FurParts {
     float a[5];
@@ -68,14 +69,12 @@ const float FUR_TAU = 6.2831855;
 const float FUR_MIN_COS2_ = 0.0001;
 const uint FUR_HEADER_HALVES = 80u;
 const uint FUR_CLOSURE_WORD = 26u;
-const float FUR_POLE_SLIVER = 0.010000167;
-const float FUR_MIN_SPHERE_MASS = 0.0001;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
-layout(std430) readonly buffer type_13_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_14_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_14_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_15_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -108,9 +107,9 @@ float fur_unbias(uint t) {
 float fur_cos_within_half_pi(float x_1) {
     float acc = -2.755732e-7;
     float acc_1 = 2.7557319e-6;
-    float a_2 = abs(x_1);
-    if ((a_2 <= 0.7853982)) {
-        float y_2 = (a_2 * a_2);
+    float a_3 = abs(x_1);
+    if ((a_3 <= 0.7853982)) {
+        float y_2 = (a_3 * a_3);
         float _e7 = acc;
         acc = ((_e7 * y_2) + 2.4801588e-5);
         float _e11 = acc;
@@ -122,8 +121,8 @@ float fur_cos_within_half_pi(float x_1) {
         float _e23 = acc;
         return ((_e23 * y_2) + 1.0);
     }
-    float r_6 = ((1.5707964 - a_2) + -4.371139e-8);
-    float y_3 = (r_6 * r_6);
+    float r_10 = ((1.5707964 - a_3) + -4.371139e-8);
+    float y_3 = (r_10 * r_10);
     float _e34 = acc_1;
     acc_1 = ((_e34 * y_3) - 0.0001984127);
     float _e38 = acc_1;
@@ -131,7 +130,7 @@ float fur_cos_within_half_pi(float x_1) {
     float _e42 = acc_1;
     acc_1 = ((_e42 * y_3) - 0.16666667);
     float _e46 = acc_1;
-    return (((_e46 * y_3) * r_6) + r_6);
+    return (((_e46 * y_3) * r_10) + r_10);
 }
 
 float fur_wrap_angle(float x_2) {
@@ -237,12 +236,6 @@ bool fur_valid(float theta_i, float theta_r, float phi) {
     return _e27;
 }
 
-FurAxis fur_sum_axis() {
-    uint _e3 = fur_word(4u);
-    FurAxis _e4 = fur_axis(true, 0.15915494, _e3);
-    return _e4;
-}
-
 uint fur_entries(uint nodes_1, uint block) {
     return (((((nodes_1 - 1u) + block) - 1u) / block) + 1u);
 }
@@ -272,128 +265,68 @@ FurDensity fur_density(uint d) {
     }
     uint _e74 = at;
     at = (_e74 + ((16u * _e4) * _e29));
-    uint x_7 = (d - 7u);
-    uint _e81 = at;
-    return FurDensity((_e81 + (((4u * x_7) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_7, 1u);
+    if ((d < 9u)) {
+        uint x_8 = (d - 7u);
+        uint _e83 = at;
+        return FurDensity((_e83 + (((4u * x_8) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_8, 1u);
+    }
+    uint _e98 = at;
+    at = (_e98 + ((8u * _e10) * _e31));
+    uint _e103 = at;
+    return FurDensity(_e103, _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, 9u, 3u);
 }
 
-float fur_node(FurDensity d_1, uint row, uint j) {
-    uint _e4 = fur_word(4u);
-    uint _e6 = fur_word(5u);
-    uint _e8 = fur_word(6u);
-    uint n0_ = (FUR_HEADER_HALVES + (3u * _e4));
-    uint s0_ = (n0_ + ((12u * _e8) * _e6));
-    uint starts[3] = uint[3](FUR_HEADER_HALVES, n0_, s0_);
-    uint chans[3] = uint[3](3u, 12u, 2u);
-    uint base = ((starts[d_1.table] + (((row * d_1.nodes) + j) * chans[d_1.table])) + d_1.first);
-    if ((d_1.channels == 3u)) {
-        float _e36 = fur_half(base);
-        float _e39 = fur_half((base + 1u));
-        float _e43 = fur_half((base + 2u));
-        float sum = ((_e36 + _e39) + _e43);
-        float _e46 = fur_unbias(d_1.table);
-        return (sum * (_e46 * 0.33333334));
-    }
-    float _e50 = fur_half(base);
-    float _e52 = fur_unbias(d_1.table);
-    return (_e50 * _e52);
+uint fur_norm_start() {
+    FurDensity _e1 = fur_density(9u);
+    return (_e1.prefix_at + ((4u * _e1.rows) * _e1.entries));
 }
 
 float fur_f32_at(uint byte) {
-    uint w_2 = (byte >> 2u);
+    uint w_3 = (byte >> 2u);
     if (((byte & 3u) == 0u)) {
-        uint _e9 = _group_0_binding_0_cs[w_2];
+        uint _e9 = _group_0_binding_0_cs[w_3];
         return uintBitsToFloat(_e9);
     }
-    uint _e13 = _group_0_binding_0_cs[w_2];
-    uint _e20 = _group_0_binding_0_cs[(w_2 + 1u)];
+    uint _e13 = _group_0_binding_0_cs[w_3];
+    uint _e20 = _group_0_binding_0_cs[(w_3 + 1u)];
     return uintBitsToFloat(((_e13 >> 16u) | (_e20 << 16u)));
 }
 
-float fur_linear_mass(float v0_, float v1_, float len) {
-    return ((0.5 * len) * (v0_ + v1_));
-}
-
-FurMAt fur_m_at(FurLoc l) {
-    FurMAt out_ = FurMAt(vec3(0.0), vec3(0.0));
+vec3 fur_sphere_norms(float theta_r_1) {
+    vec3 out_ = vec3(0.0);
     uint g = 0u;
-    FurDensity _e2 = fur_density(0u);
-    float off = (l.w * _e2.step_);
+    uint _e2 = fur_word(FUR_CLOSURE_WORD);
+    if ((_e2 != 1u)) {
+        return vec3(1.0);
+    }
+    uint _e10 = fur_word(4u);
+    FurAxis _e11 = fur_axis(true, 0.31830987, _e10);
+    FurLoc _e12 = fur_locate(_e11, theta_r_1);
+    uint _e13 = fur_norm_start();
+    uint at_1 = (_e13 + (12u * _e12.i));
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e45 = g;
-            g = (_e45 + 1u);
+            uint _e44 = g;
+            g = (_e44 + 1u);
         }
         loop_init = false;
-        uint _e14 = g;
-        if ((_e14 < 3u)) {
+        uint _e23 = g;
+        if ((_e23 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e17 = g;
-            FurDensity _e18 = fur_density(_e17);
-            float _e21 = fur_node(_e18, 0u, l.i);
-            float _e26 = fur_node(_e18, 0u, (l.i + 1u));
-            float at_1 = (_e21 + ((_e26 - _e21) * l.w));
-            uint _e32 = g;
-            float _e39 = fur_f32_at((_e18.prefix_at + (4u * l.i)));
-            float _e40 = fur_linear_mass(_e21, at_1, off);
-            out_.cdf[_e32] = (_e39 + _e40);
-            uint _e43 = g;
-            out_.value[_e43] = at_1;
+            uint _e27 = g;
+            float _e30 = fur_f32_at((at_1 + (4u * _e27)));
+            uint _e31 = g;
+            uint _e36 = g;
+            float _e39 = fur_f32_at(((at_1 + 12u) + (4u * _e36)));
+            out_[_e31] = (_e30 + ((_e39 - _e30) * _e12.w));
         }
     }
-    FurMAt _e48 = out_;
-    return _e48;
-}
-
-FurLoc fur_shifted(FurAxis a_1, FurLoc l_1, float dx) {
-    float u_5 = min(max(((float(l_1.i) + l_1.w) + (dx * a_1.inv_step)), 0.0), a_1.last);
-    uint i_1 = min(uint(floor(u_5)), (a_1.nodes - 2u));
-    return FurLoc(i_1, (u_5 - float(i_1)));
-}
-
-vec3 fur_sliver(vec3 m0_, vec3 m_half, vec3 m1_) {
-    return (0.00016666946 * (((11.0 * m0_) + (28.0 * m_half)) + m1_));
-}
-
-vec3 fur_sphere_norm(vec3 mass) {
-    uint _e2 = fur_word(FUR_CLOSURE_WORD);
-    if ((_e2 != 1u)) {
-        return vec3(1.0);
-    }
-    return (vec3(1.0) / max(mass, vec3(0.0001)));
-}
-
-vec3 fur_sphere_norms(float theta_r_1) {
-    uint _e2 = fur_word(FUR_CLOSURE_WORD);
-    if ((_e2 != 1u)) {
-        return vec3(1.0);
-    }
-    FurAxis _e7 = fur_sum_axis();
-    FurLoc _e10 = fur_locate(_e7, (theta_r_1 - FUR_HALF_PI));
-    FurLoc _e13 = fur_locate(_e7, (theta_r_1 + FUR_HALF_PI));
-    FurMAt _e14 = fur_m_at(_e10);
-    FurMAt _e15 = fur_m_at(_e13);
-    FurLoc _e17 = fur_shifted(_e7, _e10, 0.0050000837);
-    FurMAt _e18 = fur_m_at(_e17);
-    vec3 lo_half = _e18.value;
-    FurLoc _e21 = fur_shifted(_e7, _e10, FUR_POLE_SLIVER);
-    FurMAt _e22 = fur_m_at(_e21);
-    vec3 lo_end = _e22.value;
-    FurLoc _e25 = fur_shifted(_e7, _e13, -0.0050000837);
-    FurMAt _e26 = fur_m_at(_e25);
-    vec3 hi_half = _e26.value;
-    FurLoc _e29 = fur_shifted(_e7, _e13, -0.010000167);
-    FurMAt _e30 = fur_m_at(_e29);
-    vec3 hi_end = _e30.value;
-    vec3 _e33 = fur_sliver(_e14.value, lo_half, lo_end);
-    vec3 _e35 = fur_sliver(_e15.value, hi_half, hi_end);
-    vec3 loss = (_e33 + _e35);
-    vec3 _e41 = fur_sphere_norm(((_e15.cdf - _e14.cdf) - loss));
-    return _e41;
+    vec3 _e47 = out_;
+    return _e47;
 }
 
 FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
@@ -410,8 +343,8 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
     uint _e9 = fur_word(6u);
     uint _e11 = fur_word(7u);
     uint _e13 = fur_word(8u);
-    uint n0_1 = (FUR_HEADER_HALVES + (3u * _e5));
-    uint s0_1 = (n0_1 + ((12u * _e9) * _e7));
+    uint n0_ = (FUR_HEADER_HALVES + (3u * _e5));
+    uint s0_ = (n0_ + ((12u * _e9) * _e7));
     float abs_phi = abs(_e3);
     float _e23 = fur_cos_within_half_pi(theta_i_1);
     float inv_cos2_ = (1.0 / max((_e23 * _e23), FUR_MIN_COS2_));
@@ -489,13 +422,13 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
             }
             {
                 uint _e130 = ch_2;
-                float _e132 = fur_half(((s0_1 + (2u * i0_)) + _e130));
+                float _e132 = fur_half(((s0_ + (2u * i0_)) + _e130));
                 uint _e138 = ch_2;
-                float _e140 = fur_half(((s0_1 + (2u * (i0_ + 1u))) + _e138));
+                float _e140 = fur_half(((s0_ + (2u * (i0_ + 1u))) + _e138));
                 uint _e145 = ch_2;
-                float _e147 = fur_half(((s0_1 + (2u * (i0_ + _e11))) + _e145));
+                float _e147 = fur_half(((s0_ + (2u * (i0_ + _e11))) + _e145));
                 uint _e154 = ch_2;
-                float _e156 = fur_half(((s0_1 + (2u * ((i0_ + _e11) + 1u))) + _e154));
+                float _e156 = fur_half(((s0_ + (2u * ((i0_ + _e11) + 1u))) + _e154));
                 uint _e157 = ch_2;
                 ms[_e157] = ((((w0_ * _e132) + (w1_ * _e140)) + (w2_ * _e147)) + (w3_ * _e156));
             }
@@ -509,8 +442,8 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
     float _e183 = fur_unbias(1u);
     float ny0_ = ((1.0 - _e177.w) * _e183);
     float ny1_ = (_e177.w * _e183);
-    float v0_2 = (ny0_ * (1.0 - _e181.w));
-    float v1_2 = (ny0_ * _e181.w);
+    float v0_6 = (ny0_ * (1.0 - _e181.w));
+    float v1_6 = (ny0_ * _e181.w);
     float v2_ = (ny1_ * (1.0 - _e181.w));
     float v3_ = (ny1_ * _e181.w);
     uint j0_ = ((_e177.i * _e9) + _e181.i);
@@ -528,15 +461,15 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
         }
         {
             uint _e215 = ch_3;
-            float _e217 = fur_half(((n0_1 + (12u * j0_)) + _e215));
+            float _e217 = fur_half(((n0_ + (12u * j0_)) + _e215));
             uint _e223 = ch_3;
-            float _e225 = fur_half(((n0_1 + (12u * (j0_ + 1u))) + _e223));
+            float _e225 = fur_half(((n0_ + (12u * (j0_ + 1u))) + _e223));
             uint _e230 = ch_3;
-            float _e232 = fur_half(((n0_1 + (12u * (j0_ + _e9))) + _e230));
+            float _e232 = fur_half(((n0_ + (12u * (j0_ + _e9))) + _e230));
             uint _e239 = ch_3;
-            float _e241 = fur_half(((n0_1 + (12u * ((j0_ + _e9) + 1u))) + _e239));
+            float _e241 = fur_half(((n0_ + (12u * ((j0_ + _e9) + 1u))) + _e239));
             uint _e242 = ch_3;
-            n[_e242] = ((((v0_2 * _e217) + (v1_2 * _e225)) + (v2_ * _e232)) + (v3_ * _e241));
+            n[_e242] = ((((v0_6 * _e217) + (v1_6 * _e225)) + (v2_ * _e232)) + (v3_ * _e241));
         }
     }
     float _e254[3] = m;
@@ -545,11 +478,11 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
     return FurLookups(_e254, _e255, _e256, front_w, inv_cos2_);
 }
 
-FurFamilies fur_assemble(FurLookups l_2) {
+FurFamilies fur_assemble(FurLookups l) {
     vec3 f[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint k_1 = 0u;
-    float mss = (l_2.ms[0] + (l_2.front * (l_2.ms[1] - l_2.ms[0])));
-    float lon[4] = float[4](l_2.m[0], l_2.m[1], l_2.m[2], mss);
+    float mss = (l.ms[0] + (l.front * (l.ms[1] - l.ms[0])));
+    float lon[4] = float[4](l.m[0], l.m[1], l.m[2], mss);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
@@ -564,12 +497,12 @@ FurFamilies fur_assemble(FurLookups l_2) {
         }
         {
             uint _e24 = k_1;
-            float weight = (lon[_e24] * l_2.inv_cos2_);
+            float weight = (lon[_e24] * l.inv_cos2_);
             uint _e28 = k_1;
             uint _e32 = k_1;
             uint _e37 = k_1;
             uint _e44 = k_1;
-            f[_e28] = (vec3(l_2.n[(3u * _e32)], l_2.n[((3u * _e37) + 1u)], l_2.n[((3u * _e44) + 2u)]) * weight);
+            f[_e28] = (vec3(l.n[(3u * _e32)], l.n[((3u * _e37) + 1u)], l.n[((3u * _e44) + 2u)]) * weight);
         }
     }
     vec3 _e55 = f[0];
@@ -603,8 +536,8 @@ float fur_asin(float x_4) {
     float p45_ = ((-0.050174303 * ax) + 0.08897899);
     float p67_ = ((-0.2145988 * ax) + FUR_HALF_PI);
     float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
-    float r_7 = (FUR_HALF_PI - (sqrt((1.0 - ax)) * poly));
-    return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_7)) : abs(r_7));
+    float r_11 = (FUR_HALF_PI - (sqrt((1.0 - ax)) * poly));
+    return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_11)) : abs(r_11));
 }
 
 float fur_atan_poly(float t_1) {
@@ -621,10 +554,10 @@ float fur_atan2_(float y_1, float x_5) {
     float r = 0.0;
     float ax_1 = abs(x_5);
     float ay = abs(y_1);
-    float a_3 = (min(ax_1, ay) / max(max(ax_1, ay), 1.1754944e-38));
-    float t_4 = (a_3 * a_3);
-    float _e10 = fur_atan_poly(t_4);
-    r = (a_3 + (a_3 * (t_4 * _e10)));
+    float a_4 = (min(ax_1, ay) / max(max(ax_1, ay), 1.1754944e-38));
+    float t_6 = (a_4 * a_4);
+    float _e10 = fur_atan_poly(t_6);
+    r = (a_4 + (a_4 * (t_6 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_1) ? (FUR_HALF_PI - _e17) : _e15);
@@ -683,19 +616,46 @@ FurFamilies fur_eval_far_dirs(vec3 wi, vec3 wr, vec3 u) {
         return _e36;
     }
     vec3 un = (u * (1.0 / nu));
-    float a_4 = dot(wi, un);
-    float b = dot(wr, un);
-    float _e48 = fur_asin(clamp((a_4 * (1.0 / ni)), -1.0, 1.0));
-    float _e55 = fur_asin(clamp((b * (1.0 / nr)), -1.0, 1.0));
+    float a_5 = dot(wi, un);
+    float b_2 = dot(wr, un);
+    float _e48 = fur_asin(clamp((a_5 * (1.0 / ni)), -1.0, 1.0));
+    float _e55 = fur_asin(clamp((b_2 * (1.0 / nr)), -1.0, 1.0));
     float y_4 = dot(un, cross(wi, wr));
-    float x_8 = (dot(wi, wr) - (a_4 * b));
-    float _e61 = fur_atan2_(y_4, x_8);
+    float x_9 = (dot(wi, wr) - (a_5 * b_2));
+    float _e61 = fur_atan2_(y_4, x_9);
     FurFamilies _e63 = fur_eval_far(_e48, _e55, abs(_e61));
     return _e63;
 }
 
+float fur_node(FurDensity d_1, uint row, uint j) {
+    uint _e4 = fur_word(4u);
+    uint _e6 = fur_word(5u);
+    uint _e8 = fur_word(6u);
+    uint n0_1 = (FUR_HEADER_HALVES + (3u * _e4));
+    uint s0_1 = (n0_1 + ((12u * _e8) * _e6));
+    uint starts[3] = uint[3](FUR_HEADER_HALVES, n0_1, s0_1);
+    uint chans[3] = uint[3](3u, 12u, 2u);
+    uint base = ((starts[d_1.table] + (((row * d_1.nodes) + j) * chans[d_1.table])) + d_1.first);
+    if ((d_1.channels == 3u)) {
+        float _e36 = fur_half(base);
+        float _e39 = fur_half((base + 1u));
+        float _e43 = fur_half((base + 2u));
+        float sum = ((_e36 + _e39) + _e43);
+        float _e46 = fur_unbias(d_1.table);
+        return (sum * (_e46 * 0.33333334));
+    }
+    float _e50 = fur_half(base);
+    float _e52 = fur_unbias(d_1.table);
+    return (_e50 * _e52);
+}
+
 FurRows fur_rows(FurDensity d_2, uint row_1, float w, float origin) {
-    return FurRows(d_2, min(row_1, (d_2.rows - 1u)), min((row_1 + 1u), (d_2.rows - 1u)), w, origin);
+    return FurRows(d_2, min(row_1, (d_2.rows - 1u)), min((row_1 + 1u), (d_2.rows - 1u)), w, origin, 0u);
+}
+
+FurRows fur_rows_weighted(uint weighting, uint row_2, float w_1) {
+    FurDensity _e8 = fur_density(((weighting == 2u) ? 9u : 6u));
+    return FurRows(_e8, min(row_2, (_e8.rows - 1u)), min((row_2 + 1u), (_e8.rows - 1u)), w_1, 0.0, weighting);
 }
 
 float fur_rows_value(FurRows r_1, uint j_1) {
@@ -707,18 +667,32 @@ float fur_rows_value(FurRows r_1, uint j_1) {
     return (((1.0 - r_1.w) * _e4) + (r_1.w * _e10));
 }
 
-float fur_rows_prefix(FurRows r_2, uint k_2) {
-    float _e12 = fur_f32_at((r_2.d.prefix_at + (4u * ((r_2.r0_ * r_2.d.entries) + k_2))));
+float fur_blended_prefix(FurRows r_2, FurDensity d_3, uint k_2) {
+    float _e11 = fur_f32_at((d_3.prefix_at + (4u * ((r_2.r0_ * d_3.entries) + k_2))));
     if ((r_2.w == 0.0)) {
-        return _e12;
+        return _e11;
     }
-    float _e26 = fur_f32_at((r_2.d.prefix_at + (4u * ((r_2.r1_ * r_2.d.entries) + k_2))));
-    return (((1.0 - r_2.w) * _e12) + (r_2.w * _e26));
+    float _e23 = fur_f32_at((d_3.prefix_at + (4u * ((r_2.r1_ * d_3.entries) + k_2))));
+    return (((1.0 - r_2.w) * _e11) + (r_2.w * _e23));
 }
 
-float fur_rows_total(FurRows r_3) {
-    float _e5 = fur_rows_prefix(r_3, (r_3.d.entries - 1u));
+float fur_rows_prefix(FurRows r_3, uint k_3) {
+    float _e3 = fur_blended_prefix(r_3, r_3.d, k_3);
+    if ((r_3.weighting == 1u)) {
+        FurDensity _e8 = fur_density(9u);
+        float _e9 = fur_blended_prefix(r_3, _e8, k_3);
+        return (_e3 - _e9);
+    }
+    return _e3;
+}
+
+float fur_rows_total(FurRows r_4) {
+    float _e5 = fur_rows_prefix(r_4, (r_4.d.entries - 1u));
     return _e5;
+}
+
+float fur_linear_mass(float v0_, float v1_, float len) {
+    return ((0.5 * len) * (v0_ + v1_));
 }
 
 float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_2) {
@@ -762,6 +736,148 @@ float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_2) {
     return _e50;
 }
 
+float fur_weighted_linear_mass(float v0_2, float v1_2, float a_1, float b, float len_2) {
+    return ((len_2 * (((a_1 * v0_2) + (0.5 * ((a_1 * v1_2) + (b * v0_2)))) + (b * v1_2))) * 0.33333334);
+}
+
+float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, float len_3, float t_3) {
+    float x_6 = 0.5;
+    bool local_14 = false;
+    float lo = 0.0;
+    float hi = 1.0;
+    uint k_4 = 0u;
+    float next = 0.0;
+    bool local_15 = false;
+    bool local_16 = false;
+    bool local_17 = false;
+    if (!((len_3 > 0.0))) {
+        return 0.0;
+    }
+    float q0_ = (a_2 * v0_3);
+    float cb = ((a_2 * (v1_3 - v0_3)) + (v0_3 * (b_1 - a_2)));
+    float cc = ((b_1 - a_2) * (v1_3 - v0_3));
+    float q1_ = (b_1 * v1_3);
+    float goal = (t_3 / len_3);
+    float total_1 = ((q0_ + (0.5 * cb)) + (0.33333334 * cc));
+    float lin = (0.5 * (q0_ + q1_));
+    if ((total_1 > 0.0)) {
+        local_14 = (lin > 0.0);
+    } else {
+        local_14 = false;
+    }
+    bool _e39 = local_14;
+    if (_e39) {
+        float _e43 = fur_invert_linear(q0_, q1_, 1.0, (goal * (lin / total_1)));
+        x_6 = _e43;
+    }
+    bool loop_init_6 = true;
+    while(true) {
+        if (!loop_init_6) {
+            uint _e102 = k_4;
+            k_4 = (_e102 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e50 = k_4;
+        if ((_e50 < 8u)) {
+        } else {
+            break;
+        }
+        {
+            float _e53 = x_6;
+            float _e54 = x_6;
+            float _e57 = x_6;
+            float fx = ((_e53 * (q0_ + (_e54 * ((0.5 * cb) + ((_e57 * 0.33333334) * cc))))) - goal);
+            if ((fx > 0.0)) {
+                float _e68 = x_6;
+                hi = _e68;
+            } else {
+                float _e69 = x_6;
+                lo = _e69;
+            }
+            float _e70 = x_6;
+            float _e71 = x_6;
+            float d_5 = (q0_ + (_e70 * (cb + (_e71 * cc))));
+            float _e76 = lo;
+            float _e77 = hi;
+            next = (0.5 * (_e76 + _e77));
+            if ((d_5 > 0.0)) {
+                float _e84 = x_6;
+                float n_1 = (_e84 - (fx / d_5));
+                float _e87 = lo;
+                if ((n_1 >= _e87)) {
+                    float _e91 = hi;
+                    local_15 = (n_1 <= _e91);
+                } else {
+                    local_15 = false;
+                }
+                bool _e94 = local_15;
+                if (_e94) {
+                    next = n_1;
+                }
+            }
+            float _e95 = next;
+            float _e96 = x_6;
+            bool done = (abs((_e95 - _e96)) <= 1.2e-7);
+            float _e101 = next;
+            x_6 = _e101;
+            if (done) {
+                break;
+            }
+        }
+    }
+    float _e105 = x_6;
+    float s_1 = clamp((_e105 * len_3), 0.0, len_3);
+    float inset_1 = (len_3 * 9.536743e-7);
+    if ((q0_ <= 0.0)) {
+        local_16 = (s_1 < inset_1);
+    } else {
+        local_16 = false;
+    }
+    bool _e117 = local_16;
+    if (_e117) {
+        return inset_1;
+    }
+    if ((q1_ <= 0.0)) {
+        local_17 = (s_1 > (len_3 - inset_1));
+    } else {
+        local_17 = false;
+    }
+    bool _e125 = local_17;
+    if (_e125) {
+        return (len_3 - inset_1);
+    }
+    return s_1;
+}
+
+vec2 fur_rows_weights(FurRows r_5, uint j_2) {
+    float inv = (1.0 / float((r_5.d.nodes - 1u)));
+    vec2 ab = vec2((float(j_2) * inv), (float((j_2 + 1u)) * inv));
+    if ((r_5.weighting == 1u)) {
+        return vec2((1.0 - ab.x), (1.0 - ab.y));
+    }
+    return ab;
+}
+
+float fur_rows_segment_mass(FurRows r_6, uint j_3, float v0_4, float v1_4) {
+    if ((r_6.weighting == 0u)) {
+        float _e9 = fur_linear_mass(v0_4, v1_4, r_6.d.step_);
+        return _e9;
+    }
+    vec2 _e10 = fur_rows_weights(r_6, j_3);
+    float _e15 = fur_weighted_linear_mass(v0_4, v1_4, _e10.x, _e10.y, r_6.d.step_);
+    return _e15;
+}
+
+float fur_rows_invert_segment(FurRows r_7, uint j_4, float v0_5, float v1_5, float t_4) {
+    if ((r_7.weighting == 0u)) {
+        float _e10 = fur_invert_linear(v0_5, v1_5, r_7.d.step_, t_4);
+        return _e10;
+    }
+    vec2 _e11 = fur_rows_weights(r_7, j_4);
+    float _e16 = fur_invert_weighted_linear(v0_5, v1_5, _e11.x, _e11.y, r_7.d.step_, t_4);
+    return _e16;
+}
+
 float fur_unit(float u_1) {
     if ((u_1 > 0.0)) {
         return min(u_1, 0.99999994);
@@ -769,129 +885,177 @@ float fur_unit(float u_1) {
     return 0.0;
 }
 
-float fur_rows_invert(FurRows r_4, float t_3) {
-    uint lo = 0u;
-    uint len_2 = 0u;
+float fur_rows_invert(FurRows r_8, float t_5) {
+    uint lo_1 = 0u;
+    uint len_4 = 0u;
     float acc_2 = 0.0;
     float prev = 0.0;
     bool have_last = false;
     uint last_j = 0u;
     float last_v0_ = 0.0;
     float last_v1_ = 0.0;
-    uint j_2 = 0u;
-    len_2 = (r_4.d.entries - 1u);
+    float last_m = 0.0;
+    uint j_5 = 0u;
+    len_4 = (r_8.d.entries - 1u);
     while(true) {
-        uint _e9 = len_2;
+        uint _e9 = len_4;
         if ((_e9 <= 1u)) {
             break;
         }
-        uint _e12 = len_2;
+        uint _e12 = len_4;
         uint half_ = (_e12 / 2u);
-        uint _e15 = lo;
-        uint _e16 = lo;
-        uint _e18 = lo;
-        float _e20 = fur_rows_prefix(r_4, (_e18 + half_));
-        lo = ((_e20 < t_3) ? (_e16 + half_) : _e15);
-        uint _e23 = len_2;
-        len_2 = (_e23 - half_);
+        uint _e15 = lo_1;
+        uint _e16 = lo_1;
+        uint _e18 = lo_1;
+        float _e20 = fur_rows_prefix(r_8, (_e18 + half_));
+        lo_1 = ((_e20 < t_5) ? (_e16 + half_) : _e15);
+        uint _e23 = len_4;
+        len_4 = (_e23 - half_);
     }
-    uint _e25 = lo;
-    uint first = (_e25 * r_4.d.block);
-    uint end = min((first + r_4.d.block), (r_4.d.nodes - 1u));
-    uint _e37 = lo;
-    float _e38 = fur_rows_prefix(r_4, _e37);
+    uint _e25 = lo_1;
+    uint first = (_e25 * r_8.d.block);
+    uint end = min((first + r_8.d.block), (r_8.d.nodes - 1u));
+    uint _e37 = lo_1;
+    float _e38 = fur_rows_prefix(r_8, _e37);
     acc_2 = _e38;
-    float _e40 = fur_rows_value(r_4, first);
+    float _e40 = fur_rows_value(r_8, first);
     prev = _e40;
-    j_2 = first;
-    bool loop_init_6 = true;
+    j_5 = first;
+    bool loop_init_7 = true;
     while(true) {
-        if (!loop_init_6) {
-            uint _e85 = j_2;
-            j_2 = (_e85 + 1u);
+        if (!loop_init_7) {
+            uint _e85 = j_5;
+            j_5 = (_e85 + 1u);
         }
-        loop_init_6 = false;
-        uint _e51 = j_2;
-        if ((_e51 < end)) {
+        loop_init_7 = false;
+        uint _e53 = j_5;
+        if ((_e53 < end)) {
         } else {
             break;
         }
         {
-            uint _e53 = j_2;
-            float _e56 = fur_rows_value(r_4, (_e53 + 1u));
-            float _e57 = prev;
-            float _e60 = fur_linear_mass(_e57, _e56, r_4.d.step_);
-            if ((_e60 > 0.0)) {
-                float _e63 = acc_2;
-                if (((t_3 - _e63) <= _e60)) {
-                    float _e66 = prev;
+            uint _e55 = j_5;
+            float _e58 = fur_rows_value(r_8, (_e55 + 1u));
+            uint _e59 = j_5;
+            float _e60 = prev;
+            float _e61 = fur_rows_segment_mass(r_8, _e59, _e60, _e58);
+            if ((_e61 > 0.0)) {
+                float _e64 = acc_2;
+                if (((t_5 - _e64) <= _e61)) {
+                    uint _e67 = j_5;
+                    float _e68 = prev;
                     float _e69 = acc_2;
-                    float _e71 = fur_invert_linear(_e66, _e56, r_4.d.step_, (t_3 - _e69));
-                    uint _e73 = j_2;
-                    return ((r_4.origin + (float(_e73) * r_4.d.step_)) + _e71);
+                    float _e71 = fur_rows_invert_segment(r_8, _e67, _e68, _e58, (t_5 - _e69));
+                    uint _e73 = j_5;
+                    return ((r_8.origin + (float(_e73) * r_8.d.step_)) + _e71);
                 }
                 have_last = true;
-                uint _e81 = j_2;
+                uint _e81 = j_5;
                 last_j = _e81;
                 float _e82 = prev;
                 last_v0_ = _e82;
-                last_v1_ = _e56;
+                last_v1_ = _e58;
+                last_m = _e61;
             }
             float _e83 = acc_2;
-            acc_2 = (_e83 + _e60);
-            prev = _e56;
+            acc_2 = (_e83 + _e61);
+            prev = _e58;
         }
     }
     bool _e88 = have_last;
     if (_e88) {
-        float _e89 = last_v0_;
-        float _e90 = last_v1_;
-        float _e95 = last_v0_;
-        float _e96 = last_v1_;
-        float _e99 = fur_invert_linear(_e89, _e90, r_4.d.step_, (r_4.d.step_ * (_e95 + _e96)));
-        uint _e101 = last_j;
-        return ((r_4.origin + (float(_e101) * r_4.d.step_)) + _e99);
+        float _e89 = last_m;
+        float _e92 = last_v0_;
+        float _e93 = last_v1_;
+        float whole = ((r_8.weighting == 0u) ? (r_8.d.step_ * (_e92 + _e93)) : _e89);
+        uint _e100 = last_j;
+        float _e101 = last_v0_;
+        float _e102 = last_v1_;
+        float _e103 = fur_rows_invert_segment(r_8, _e100, _e101, _e102, whole);
+        uint _e105 = last_j;
+        return ((r_8.origin + (float(_e105) * r_8.d.step_)) + _e103);
     }
-    return (r_4.origin + (float(end) * r_4.d.step_));
+    return (r_8.origin + (float(end) * r_8.d.step_));
 }
 
-float fur_rows_invert_between(FurRows r_5, float t0_, float t1_, float u_2) {
-    float inset_1 = ((t1_ - t0_) * 9.536743e-7);
+float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_2) {
+    float inset_2 = ((t1_ - t0_) * 9.536743e-7);
     float _e7 = fur_unit(u_2);
-    float t_5 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_1), (t1_ - inset_1));
-    float _e14 = fur_rows_invert(r_5, t_5);
+    float t_7 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    float _e14 = fur_rows_invert(r_9, t_7);
     return _e14;
 }
 
-vec3 fur_m_cdf(float x_6) {
+FurAxis fur_sum_axis() {
+    uint _e3 = fur_word(4u);
+    FurAxis _e4 = fur_axis(true, 0.15915494, _e3);
+    return _e4;
+}
+
+FurMAt fur_m_at(FurLoc l_1) {
+    FurMAt out_1 = FurMAt(vec3(0.0), vec3(0.0));
+    uint g_1 = 0u;
+    FurDensity _e2 = fur_density(0u);
+    float off = (l_1.w * _e2.step_);
+    bool loop_init_8 = true;
+    while(true) {
+        if (!loop_init_8) {
+            uint _e45 = g_1;
+            g_1 = (_e45 + 1u);
+        }
+        loop_init_8 = false;
+        uint _e14 = g_1;
+        if ((_e14 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = g_1;
+            FurDensity _e18 = fur_density(_e17);
+            float _e21 = fur_node(_e18, 0u, l_1.i);
+            float _e26 = fur_node(_e18, 0u, (l_1.i + 1u));
+            float at_2 = (_e21 + ((_e26 - _e21) * l_1.w));
+            uint _e32 = g_1;
+            float _e39 = fur_f32_at((_e18.prefix_at + (4u * l_1.i)));
+            float _e40 = fur_linear_mass(_e21, at_2, off);
+            out_1.cdf[_e32] = (_e39 + _e40);
+            uint _e43 = g_1;
+            out_1.value[_e43] = at_2;
+        }
+    }
+    FurMAt _e48 = out_1;
+    return _e48;
+}
+
+vec3 fur_m_cdf(float x_7) {
     FurAxis _e1 = fur_sum_axis();
-    FurLoc _e2 = fur_locate(_e1, x_6);
+    FurLoc _e2 = fur_locate(_e1, x_7);
     FurMAt _e3 = fur_m_at(_e2);
     return _e3.cdf;
 }
 
-float fur_row_total(FurDensity d_3, FurLoc l_3) {
-    float _e17 = fur_f32_at((d_3.prefix_at + (4u * (((min(l_3.i, (d_3.rows - 1u)) * d_3.entries) + d_3.entries) - 1u))));
-    float _e35 = fur_f32_at((d_3.prefix_at + (4u * (((min((l_3.i + 1u), (d_3.rows - 1u)) * d_3.entries) + d_3.entries) - 1u))));
-    return (_e17 + ((_e35 - _e17) * l_3.w));
+float fur_row_total(FurDensity d_4, FurLoc l_2) {
+    float _e17 = fur_f32_at((d_4.prefix_at + (4u * (((min(l_2.i, (d_4.rows - 1u)) * d_4.entries) + d_4.entries) - 1u))));
+    float _e35 = fur_f32_at((d_4.prefix_at + (4u * (((min((l_2.i + 1u), (d_4.rows - 1u)) * d_4.entries) + d_4.entries) - 1u))));
+    return (_e17 + ((_e35 - _e17) * l_2.w));
 }
 
 float fur_positive(float v) {
-    bool local_14 = false;
+    bool local_18 = false;
     bool _e1 = fur_finite(v);
     if (_e1) {
-        local_14 = (v > 0.0);
+        local_18 = (v > 0.0);
     } else {
-        local_14 = false;
+        local_18 = false;
     }
-    bool _e7 = local_14;
+    bool _e7 = local_18;
     return (_e7 ? v : 0.0);
 }
 
 FurParts fur_parts(float theta_r_4) {
     vec3 _e3 = fur_m_cdf((theta_r_4 - FUR_HALF_PI));
     vec3 _e6 = fur_m_cdf((theta_r_4 + FUR_HALF_PI));
-    vec3 mass_1 = max((_e6 - _e3), vec3(0.0));
+    vec3 mass = max((_e6 - _e3), vec3(0.0));
     uint _e14 = fur_word(5u);
     FurAxis _e15 = fur_axis(false, 0.63661975, _e14);
     FurLoc _e17 = fur_locate(_e15, abs(theta_r_4));
@@ -900,38 +1064,41 @@ FurParts fur_parts(float theta_r_4) {
     FurLoc _e23 = fur_locate(_e22, theta_r_4);
     FurDensity _e25 = fur_density(6u);
     float _e26 = fur_row_total(_e25, _e17);
-    vec3 _e27 = fur_sphere_norms(theta_r_4);
-    vec3 kept = (mass_1 * _e27);
-    FurDensity _e33 = fur_density(3u);
-    float _e34 = fur_row_total(_e33, _e17);
-    float _e36 = fur_positive(((2.0 * kept.x) * _e34));
-    FurDensity _e41 = fur_density(4u);
-    float _e42 = fur_row_total(_e41, _e17);
-    float _e44 = fur_positive(((2.0 * kept.y) * _e42));
-    FurDensity _e49 = fur_density(5u);
-    float _e50 = fur_row_total(_e49, _e17);
-    float _e52 = fur_positive(((2.0 * kept.z) * _e50));
-    FurDensity _e54 = fur_density(7u);
-    float _e55 = fur_row_total(_e54, _e23);
-    float _e57 = fur_positive((_e55 * _e26));
-    FurDensity _e59 = fur_density(8u);
-    float _e60 = fur_row_total(_e59, _e23);
-    float _e62 = fur_positive((_e60 * _e26));
-    float a_5[5] = float[5](_e36, _e44, _e52, _e57, _e62);
-    return FurParts(a_5, mass_1, _e3);
+    FurDensity _e28 = fur_density(9u);
+    float _e29 = fur_row_total(_e28, _e17);
+    vec3 _e30 = fur_sphere_norms(theta_r_4);
+    vec3 kept = (mass * _e30);
+    FurDensity _e36 = fur_density(3u);
+    float _e37 = fur_row_total(_e36, _e17);
+    float _e39 = fur_positive(((2.0 * kept.x) * _e37));
+    FurDensity _e44 = fur_density(4u);
+    float _e45 = fur_row_total(_e44, _e17);
+    float _e47 = fur_positive(((2.0 * kept.y) * _e45));
+    FurDensity _e52 = fur_density(5u);
+    float _e53 = fur_row_total(_e52, _e17);
+    float _e55 = fur_positive(((2.0 * kept.z) * _e53));
+    FurDensity _e57 = fur_density(7u);
+    float _e58 = fur_row_total(_e57, _e23);
+    float _e63 = fur_positive(((2.0 * _e58) * (_e26 - _e29)));
+    FurDensity _e65 = fur_density(8u);
+    float _e66 = fur_row_total(_e65, _e23);
+    float _e70 = fur_positive(((2.0 * _e66) * _e29));
+    float a_6[5] = float[5](_e39, _e47, _e55, _e63, _e70);
+    return FurParts(a_6, mass, _e3);
 }
 
-float fur_density_of(FurLookups l_4, float w_1, float cos_theta_i) {
-    if (!((w_1 > 0.0))) {
+float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i) {
+    if (!((w_2 > 0.0))) {
         return 0.0;
     }
-    float mean0_ = (((l_4.n[0] + l_4.n[1]) + l_4.n[2]) * 0.33333334);
-    float mean1_ = (((l_4.n[3] + l_4.n[4]) + l_4.n[5]) * 0.33333334);
-    float mean2_ = (((l_4.n[6] + l_4.n[7]) + l_4.n[8]) * 0.33333334);
-    float mean3_ = (((l_4.n[9] + l_4.n[10]) + l_4.n[11]) * 0.33333334);
-    float p = ((((l_4.m[0] * mean0_) + (l_4.m[1] * mean1_)) + (l_4.m[2] * mean2_)) + ((0.5 * (l_4.ms[0] + l_4.ms[1])) * mean3_));
-    float _e71 = fur_positive(((p / w_1) / max(cos_theta_i, 1e-6)));
-    return _e71;
+    float mean0_ = (((l_3.n[0] + l_3.n[1]) + l_3.n[2]) * 0.33333334);
+    float mean1_ = (((l_3.n[3] + l_3.n[4]) + l_3.n[5]) * 0.33333334);
+    float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
+    float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
+    float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
+    float p = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
+    float _e74 = fur_positive(((p / w_2) / max(cos_theta_i, 1e-6)));
+    return _e74;
 }
 
 float fur_pdf_far(float theta_i_3, float theta_r_5, float phi_2) {
@@ -940,86 +1107,87 @@ float fur_pdf_far(float theta_i_3, float theta_r_5, float phi_2) {
         return 0.0;
     }
     FurParts _e6 = fur_parts(theta_r_5);
-    float w_3 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
+    float w_4 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
     FurLookups _e21 = fur_lookups(theta_i_3, theta_r_5, phi_2);
     float _e22 = fur_cos_within_half_pi(theta_i_3);
-    float _e23 = fur_density_of(_e21, w_3, _e22);
+    float _e23 = fur_density_of(_e21, w_4, _e22);
     return _e23;
 }
 
 FurSample fur_sample_far(float theta_r_6, vec3 u_3) {
-    FurSample out_1 = FurSample(0.0, 0.0, 0.0, vec3(0.0), 0u, false);
-    bool local_15 = false;
+    FurSample out_2 = FurSample(0.0, 0.0, 0.0, vec3(0.0), 0u, false);
+    bool local_19 = false;
     float total = 0.0;
-    uint k_3 = 0u;
+    uint k_5 = 0u;
     float acc_3 = 0.0;
     uint c = 5u;
     float u0_ = 0.0;
     uint last = 5u;
-    uint k_4 = 0u;
+    uint k_6 = 0u;
     float theta_i_4 = 0.0;
-    bool local_16 = false;
+    FurRows nrows = FurRows(FurDensity(0u, 0u, 0u, 0u, 0.0, 0u, 0u, 0u, 0u), 0u, 0u, 0.0, 0.0, 0u);
+    bool local_20 = false;
     bool _e11 = fur_finite(theta_r_6);
     if (_e11) {
-        local_15 = (abs(theta_r_6) <= FUR_HALF_PI);
+        local_19 = (abs(theta_r_6) <= FUR_HALF_PI);
     } else {
-        local_15 = false;
+        local_19 = false;
     }
-    bool _e18 = local_15;
+    bool _e18 = local_19;
     if (!(_e18)) {
-        FurSample _e20 = out_1;
+        FurSample _e20 = out_2;
         return _e20;
     }
     FurParts _e21 = fur_parts(theta_r_6);
-    bool loop_init_7 = true;
+    bool loop_init_9 = true;
     while(true) {
-        if (!loop_init_7) {
-            uint _e34 = k_3;
-            k_3 = (_e34 + 1u);
+        if (!loop_init_9) {
+            uint _e34 = k_5;
+            k_5 = (_e34 + 1u);
         }
-        loop_init_7 = false;
-        uint _e26 = k_3;
+        loop_init_9 = false;
+        uint _e26 = k_5;
         if ((_e26 < 5u)) {
         } else {
             break;
         }
         {
             float _e29 = total;
-            uint _e31 = k_3;
+            uint _e31 = k_5;
             total = (_e29 + _e21.a[_e31]);
         }
     }
     float _e37 = total;
     if (!((_e37 > 0.0))) {
-        FurSample _e41 = out_1;
+        FurSample _e41 = out_2;
         return _e41;
     }
     float _e43 = fur_unit(u_3.x);
     float _e44 = total;
     float target_mass = (_e43 * _e44);
-    bool loop_init_8 = true;
+    bool loop_init_10 = true;
     while(true) {
-        if (!loop_init_8) {
-            uint _e76 = k_4;
-            k_4 = (_e76 + 1u);
+        if (!loop_init_10) {
+            uint _e76 = k_6;
+            k_6 = (_e76 + 1u);
         }
-        loop_init_8 = false;
-        uint _e56 = k_4;
+        loop_init_10 = false;
+        uint _e56 = k_6;
         if ((_e56 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e60 = k_4;
+            uint _e60 = k_6;
             float wk = _e21.a[_e60];
             if (!((wk > 0.0))) {
                 continue;
             }
-            uint _e65 = k_4;
+            uint _e65 = k_6;
             last = _e65;
             float _e66 = acc_3;
             if ((target_mass < (_e66 + wk))) {
-                uint _e69 = k_4;
+                uint _e69 = k_6;
                 c = _e69;
                 float _e70 = acc_3;
                 float _e73 = fur_unit(((target_mass - _e70) / wk));
@@ -1067,60 +1235,69 @@ FurSample fur_sample_far(float theta_r_6, vec3 u_3) {
     FurLoc _e160 = fur_locate(_e158, abs(theta_r_6));
     FurDensity _e163 = fur_density((3u + family));
     FurRows _e167 = fur_rows(_e163, _e160.i, _e160.w, 0.0);
-    float _e169 = fur_rows_total(_e167);
-    float _e171 = fur_rows_invert_between(_e167, 0.0, _e169, u_3.z);
-    float abs_phi_1 = clamp(_e171, 0.0, FUR_PI);
-    float _e177 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
-    float _e178 = theta_i_4;
-    FurLookups _e179 = fur_lookups(_e178, theta_r_6, _e177);
-    float _e180 = theta_i_4;
-    float _e181 = fur_cos_within_half_pi(_e180);
-    float _e182 = fur_density_of(_e179, total_weight, _e181);
-    if ((_e182 > 0.0)) {
-        bool _e187 = fur_finite(_e182);
-        local_16 = _e187;
+    nrows = _e167;
+    uint _e169 = c;
+    if ((_e169 >= 3u)) {
+        uint _e172 = c;
+        FurRows _e177 = fur_rows_weighted((_e172 - 2u), _e160.i, _e160.w);
+        nrows = _e177;
+    }
+    FurRows _e178 = nrows;
+    FurRows _e180 = nrows;
+    float _e181 = fur_rows_total(_e180);
+    float _e183 = fur_rows_invert_between(_e178, 0.0, _e181, u_3.z);
+    float abs_phi_1 = clamp(_e183, 0.0, FUR_PI);
+    float _e189 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
+    float _e190 = theta_i_4;
+    FurLookups _e191 = fur_lookups(_e190, theta_r_6, _e189);
+    float _e192 = theta_i_4;
+    float _e193 = fur_cos_within_half_pi(_e192);
+    float _e194 = fur_density_of(_e191, total_weight, _e193);
+    if ((_e194 > 0.0)) {
+        bool _e199 = fur_finite(_e194);
+        local_20 = _e199;
     } else {
-        local_16 = false;
+        local_20 = false;
     }
-    bool _e189 = local_16;
-    if (!(_e189)) {
-        FurSample _e191 = out_1;
-        return _e191;
+    bool _e201 = local_20;
+    if (!(_e201)) {
+        FurSample _e203 = out_2;
+        return _e203;
     }
-    FurFamilies _e192 = fur_assemble(_e179);
-    float _e193 = theta_i_4;
-    float k_6 = (max(cos(_e193), 0.0) / _e182);
-    float _e198 = theta_i_4;
-    out_1 = FurSample(_e198, _e177, _e182, max((_e192.total * k_6), vec3(0.0)), family, true);
-    FurSample _e206 = out_1;
-    return _e206;
+    FurFamilies _e204 = fur_assemble(_e191);
+    float _e205 = theta_i_4;
+    float k_8 = (max(cos(_e205), 0.0) / _e194);
+    float _e210 = theta_i_4;
+    out_2 = FurSample(_e210, _e189, _e194, max((_e204.total * k_8), vec3(0.0)), family, true);
+    FurSample _e218 = out_2;
+    return _e218;
 }
 
 void fur_store(uint q, FurFamilies f_1) {
-    uint k_5 = 0u;
+    uint k_7 = 0u;
     uint base_1 = (16u * q);
     vec3 parts[5] = vec3[5](f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total);
-    bool loop_init_9 = true;
+    bool loop_init_11 = true;
     while(true) {
-        if (!loop_init_9) {
-            uint _e46 = k_5;
-            k_5 = (_e46 + 1u);
+        if (!loop_init_11) {
+            uint _e46 = k_7;
+            k_7 = (_e46 + 1u);
         }
-        loop_init_9 = false;
-        uint _e12 = k_5;
+        loop_init_11 = false;
+        uint _e12 = k_7;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_5;
-            uint _e21 = k_5;
+            uint _e17 = k_7;
+            uint _e21 = k_7;
             _group_0_binding_2_cs[(base_1 + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_5;
-            uint _e32 = k_5;
+            uint _e26 = k_7;
+            uint _e32 = k_7;
             _group_0_binding_2_cs[((base_1 + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_5;
-            uint _e43 = k_5;
+            uint _e37 = k_7;
+            uint _e43 = k_7;
             _group_0_binding_2_cs[((base_1 + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }

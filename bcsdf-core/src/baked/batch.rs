@@ -267,15 +267,15 @@ impl<M: Math> KernelOp<M> for Batch<'_> {
 
 /// [`Place`]s of one chunk, one array per field.
 struct Places {
-    index: [[u32; CHUNK]; 5],
-    weight: [[f32; CHUNK]; 14],
+    index: [[u32; CHUNK]; 4],
+    weight: [[f32; CHUNK]; 13],
 }
 
 impl Default for Places {
     fn default() -> Places {
         Places {
-            index: [[0; CHUNK]; 5],
-            weight: [[0.0; CHUNK]; 14],
+            index: [[0; CHUNK]; 4],
+            weight: [[0.0; CHUNK]; 13],
         }
     }
 }

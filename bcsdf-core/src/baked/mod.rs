@@ -57,15 +57,6 @@ impl Axis {
         }
     }
 
-    /// The location `dx` away from the location `at` (clamped to the axis ends): the same
-    /// node position arithmetic as [`Axis::locate`], u = j + w + dx·inv_step.
-    #[inline(always)]
-    pub(crate) fn shifted(&self, (j, w): (usize, f32), dx: f32) -> (usize, f32) {
-        let u = (j as f32 + w + dx * self.inv_step).max(0.0).min(self.last);
-        let i = (libm::floorf(u) as usize).min(self.nodes - 2);
-        (i, u - i as f32)
-    }
-
     /// Lower node index and weight of the upper node for `x` (clamped to the axis ends).
     #[inline(always)]
     pub(crate) fn locate(&self, x: f32) -> (usize, f32) {
@@ -142,6 +133,8 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) blob: &'a [u8],
     /// Byte offset of table `M` in the blob.
     m_start: usize,
+    /// Byte offset of the 1/Z_g table ([`lut::norms`]) in the blob.
+    norm_start: usize,
     /// The instruction set of the evaluation ([`Kernel`]), with the proof of its features.
     kernel: Isa,
     /// Table `N`'s scale for a kernel that decodes true half values (F16C), computed at
@@ -150,14 +143,16 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     /// ([`NKernel::TRUE_HALVES`]), a power-of-two rescaling: the same products bit for bit.
     n_scale_true: f32,
     /// Where each sampled density lives ([`Density::index`] order).
-    pub(crate) densities: [DensityLayout; 9],
+    pub(crate) densities: [DensityLayout; 10],
     pub(crate) sum: Axis,
     pub(crate) theta_r: Axis,
     pub(crate) phi: Axis,
     pub(crate) ms_i: Axis,
     pub(crate) ms_r: Axis,
-    /// The energy closure (docs/model.md §12): M_g is divided by its mass inside
-    /// θ_i ∈ [−π/2, π/2], from the sampling section's prefix sums.
+    /// θ_r ∈ [−π/2, π/2], the 1/Z_g table's axis.
+    pub(crate) norm: Axis,
+    /// The energy closure (docs/model.md §12): M_g is divided by its mass on the sphere,
+    /// read from the LUT's 1/Z_g table.
     pub(crate) energy: bool,
     _math: PhantomData<M>,
 }
@@ -179,28 +174,22 @@ pub(crate) struct Place {
     front: f32,
     /// 1/cos²θ_i, guarded.
     inv_cos2: f32,
-    /// The ends x = θ_r ∓ π/2 of the range of M_g on the `sum` axis (node, weight), for the
-    /// energy closure's mass (docs/model.md §12).
-    range: [(usize, f32); 2],
+    /// θ_r on the 1/Z_g table's axis (node, weight), for the energy closure's factor
+    /// (docs/model.md §12).
+    norm: (usize, f32),
 }
 
 impl Place {
-    /// The texel indices (`M`, `M_s`, `N`, the two range ends) and the fourteen floats, for
+    /// The texel indices (`M`, `M_s`, `N`, the 1/Z_g node) and the thirteen floats, for
     /// storage by field.
     #[inline(always)]
-    fn into_parts(self) -> ([u32; 5], [f32; 14]) {
+    fn into_parts(self) -> ([u32; 4], [f32; 13]) {
         let [a, b] = self.m_w;
         let [c, d, e, f] = self.ms_w;
         let [g, h, i, j] = self.n_w;
-        let [(lo, lo_w), (hi, hi_w)] = self.range;
+        let (norm, norm_w) = self.norm;
         (
-            [
-                self.m as u32,
-                self.ms as u32,
-                self.n as u32,
-                lo as u32,
-                hi as u32,
-            ],
+            [self.m as u32, self.ms as u32, self.n as u32, norm as u32],
             [
                 a,
                 b,
@@ -214,15 +203,14 @@ impl Place {
                 j,
                 self.front,
                 self.inv_cos2,
-                lo_w,
-                hi_w,
+                norm_w,
             ],
         )
     }
 
     /// The inverse of [`Place::into_parts`].
     #[inline(always)]
-    fn from_parts(index: [u32; 5], w: [f32; 14]) -> Place {
+    fn from_parts(index: [u32; 4], w: [f32; 13]) -> Place {
         Place {
             m: index[0] as usize,
             m_w: [w[0], w[1]],
@@ -232,7 +220,7 @@ impl Place {
             n_w: [w[6], w[7], w[8], w[9]],
             front: w[10],
             inv_cos2: w[11],
-            range: [(index[3] as usize, w[12]), (index[4] as usize, w[13])],
+            norm: (index[3] as usize, w[12]),
         }
     }
 }
@@ -292,6 +280,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             nodes: Nodes::new(bytes, res, header.scales),
             blob: bytes,
             m_start: res.byte_range(Table::M).start,
+            norm_start: res.norm_start(),
             kernel: Isa::best(),
             n_scale_true: unbias[Table::N as usize] * f32::from_bits((127 - 112) << 23),
             densities: Density::ALL.map(|d| res.density_layout(d)),
@@ -300,6 +289,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             phi: Axis::new(0.0, 1.0 / PI, res.n_phi),
             ms_i: Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_i),
             ms_r: Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_r),
+            norm: Axis::new(-PI / 2.0, 1.0 / PI, res.n_norm() as u32),
             energy: params.closure() == Closure::Energy,
             _math: PhantomData,
         })
@@ -365,14 +355,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             n_w,
             front: (abs_phi * (1.0 / PI)).min(1.0),
             inv_cos2: inv_cos2_theta_i(cos_within_half_pi(ti)),
-            // Only the energy closure reads the range (`sphere_norms`).
-            range: if self.energy {
-                [
-                    self.sum.locate(tr - PI / 2.0),
-                    self.sum.locate(tr + PI / 2.0),
-                ]
+            // Only the energy closure reads the 1/Z_g table (`sphere_norms`).
+            norm: if self.energy {
+                self.norm.locate(tr)
             } else {
-                [(0, 0.0); 2]
+                (0, 0.0)
             },
         }
     }
@@ -393,7 +380,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let res = &self.header.res;
         // Read from the blob: a pair is read as eight halves (table N follows M).
         let m = m_linear(self.blob, self.m_start, p.m, p.m_w[0], p.m_w[1]);
-        let norm = self.sphere_norms(p.range);
+        let norm = self.sphere_norms(p.norm);
         Lookups {
             m: core::array::from_fn(|g| m[g] * norm[g]),
             ms: ms_bilinear(

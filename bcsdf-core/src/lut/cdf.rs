@@ -10,16 +10,19 @@
 //! | [`Density::M`]`(g)` | `M` | the single row | channel g | n_sum over x = θ_i + θ_r ∈ [−π, π] | node ([`M_BLOCK`]) |
 //! | [`Density::N`]`(f)` | `N` | each \|θ_r\| row | mean of family f's R, G, B | n_phi over \|φ\| ∈ [0, π] | [`N_BLOCK`] nodes |
 //! | [`Density::MS`]`(x)` | `M_s` | each θ_r row | channel x (back, front) | n_ms_i over θ_i ∈ [−π/2, π/2] | [`MS_BLOCK`] nodes |
+//! | [`Density::Front`] | `N` | each \|θ_r\| row | N^s's mean channel, weighted by \|φ\|/π | n_phi over \|φ\| ∈ [0, π] | [`N_BLOCK`] nodes |
 //!
 //! Entry k of a row's prefix is ∫ of the density from the first node to node min(k·B, n − 1)
-//! (B the block), summed segment by segment in f32 as len·(v_j + v_{j+1})/2, in this order:
-//! `M` channels 0..3, then `N` families 0..4 × rows, then `M_s` halves 0..2 × rows. The last
-//! entry of a row is its total. The data is derived from the tables: [`super::seal`] writes
+//! (B the block), summed segment by segment in f32 as len·(v_j + v_{j+1})/2
+//! ([`Density::Front`]: the exact integral of (|φ|/π)·n_s, [`weighted_linear_mass`]), in this
+//! order: `M` channels 0..3, then `N` families 0..4 × rows, then `M_s` halves 0..2 × rows,
+//! then the front-weighted N^s rows (format version 4: the exact back/front blend of the
+//! scattered family, docs/model.md §10). The last entry of a row is its total. The data is derived from the tables: [`super::seal`] writes
 //! it and [`super::validate`] recomputes it and requires the same bits.
 
 use super::{f16_biased, LutResolution, Table, F16_UNBIAS, HEADER_LEN, TABLE_COUNT};
 use crate::math::PI;
-use crate::sampling::linear_mass;
+use crate::sampling::{linear_mass, weighted_linear_mass};
 use core::ops::Range;
 
 /// Nodes per prefix entry of the `M` densities (every node: the pdf needs the CDF at two
@@ -40,6 +43,10 @@ pub enum Density {
     N(usize),
     /// M^s_back (0) or M^s_front (1) over θ_i at one θ_r row.
     MS(usize),
+    /// The scattered family's N^s (the mean of its three channels) over |φ| at one |θ_r| row,
+    /// weighted by |φ|/π: the φ density of the front part of M^s's blend (the back part's is
+    /// [`Density::N`]`(3)` less this).
+    Front,
 }
 
 /// Number of prefix entries of a row of `nodes` nodes with blocks of `block` nodes.
@@ -54,7 +61,7 @@ impl Density {
     pub const fn table(self) -> Table {
         match self {
             Density::M(_) => Table::M,
-            Density::N(_) => Table::N,
+            Density::N(_) | Density::Front => Table::N,
             Density::MS(_) => Table::MS,
         }
     }
@@ -64,7 +71,7 @@ impl Density {
     pub const fn block(self) -> usize {
         match self {
             Density::M(_) => M_BLOCK,
-            Density::N(_) => N_BLOCK,
+            Density::N(_) | Density::Front => N_BLOCK,
             Density::MS(_) => MS_BLOCK,
         }
     }
@@ -75,21 +82,38 @@ impl Density {
             Density::M(g) => (g, 1),
             Density::N(f) => (3 * f, 3),
             Density::MS(x) => (x, 1),
+            Density::Front => (9, 3),
         }
     }
 
-    /// Index of the density in section order (`M` 0..3, `N` 3..7, `M_s` 7..9).
+    /// Index of the density in section order (`M` 0..3, `N` 3..7, `M_s` 7..9, `Front` 9).
     #[must_use]
     pub const fn index(self) -> usize {
         match self {
             Density::M(g) => g,
             Density::N(f) => 3 + f,
             Density::MS(x) => 7 + x,
+            Density::Front => 9,
+        }
+    }
+
+    /// The mass of segment j of a row of `nodes` nodes, node values `v0`, `v1`, spacing
+    /// `step`: len·(v0 + v1)/2, or for [`Density::Front`] the exact integral of the
+    /// |φ|/π-weighted linear interpolant.
+    #[inline(always)]
+    #[must_use]
+    pub fn segment_mass(self, j: usize, nodes: usize, v0: f32, v1: f32, step: f32) -> f32 {
+        match self {
+            Density::Front => {
+                let (a, b) = front_weights(j, nodes);
+                weighted_linear_mass(v0, v1, a, b, step)
+            }
+            _ => linear_mass(v0, v1, step),
         }
     }
 
     /// All densities in section order.
-    pub const ALL: [Density; 9] = [
+    pub const ALL: [Density; 10] = [
         Density::M(0),
         Density::M(1),
         Density::M(2),
@@ -99,7 +123,16 @@ impl Density {
         Density::N(3),
         Density::MS(0),
         Density::MS(1),
+        Density::Front,
     ];
+}
+
+/// The front weight |φ|/π at nodes j and j + 1 of an |φ| ∈ [0, π] row of `nodes` nodes.
+#[inline(always)]
+#[must_use]
+pub fn front_weights(j: usize, nodes: usize) -> (f32, f32) {
+    let inv = 1.0 / (nodes - 1) as f32;
+    (j as f32 * inv, (j + 1) as f32 * inv)
 }
 
 impl LutResolution {
@@ -116,7 +149,7 @@ impl LutResolution {
         let (_, nodes) = self.density_dims(d);
         let span = match d {
             Density::M(_) => 2.0 * PI,
-            Density::N(_) | Density::MS(_) => PI,
+            Density::N(_) | Density::MS(_) | Density::Front => PI,
         };
         span / (nodes - 1) as f32
     }
@@ -275,7 +308,7 @@ impl<'a> Nodes<'a> {
                 let mut prev = self.value(d, row, 0);
                 for j in 1..nodes {
                     let v = self.value(d, row, j);
-                    acc += linear_mass(prev, v, step);
+                    acc += d.segment_mass(j - 1, nodes, prev, v, step);
                     prev = v;
                     if j % block == 0 || j == nodes - 1 {
                         sink(index, acc);

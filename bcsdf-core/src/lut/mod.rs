@@ -3,7 +3,8 @@
 //! sampler needs (docs/model.md §10), and the little-endian byte layout
 //! the core reads in place (from `include_bytes!`, a memory map or a loaded file).
 //!
-//! The header codec is in `header.rs`, the sampling section in [`cdf`].
+//! The header codec is in `header.rs`, the sampling section in [`cdf`], the energy
+//! closure's 1/Z_g table in [`norms`].
 //!
 //! The far field is
 //!
@@ -52,9 +53,11 @@
 //! | 152 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
 //! | 160 | table data (u16 halves) |
 //! | [`LutResolution::sampling_start`] | sampling section (f32 prefix sums, [`cdf`]) |
+//! | [`LutResolution::norm_start`] | 1/Z_g(θ_r) table (f32, [`norms`]) |
 
 pub mod cdf;
 mod header;
+pub mod norms;
 
 use crate::medulla::{PhotonBudget, Resolution};
 use crate::params::{FurParamsInput, ParamError};
@@ -65,8 +68,9 @@ use core::ops::Range;
 pub const MAGIC: [u8; 8] = *b"FURLUT\0\0";
 
 /// Version of this layout; a blob of another version is rejected. Version 2 added the
-/// sampling section ([`cdf`]); version 3 the `closure` parameter (docs/model.md §12).
-pub const FORMAT_VERSION: u32 = 3;
+/// sampling section ([`cdf`]); version 3 the `closure` parameter (docs/model.md §12); version
+/// 4 the energy closure's 1/Z_g table ([`norms`]).
+pub const FORMAT_VERSION: u32 = 4;
 
 /// Length of the fixed header in bytes.
 pub const HEADER_LEN: usize = 160;
@@ -240,10 +244,10 @@ impl LutResolution {
         start..start + 2 * self.values(table)
     }
 
-    /// Length of the whole blob in bytes: header, tables and sampling section.
+    /// Length of the whole blob in bytes: header, tables, sampling section and 1/Z_g table.
     #[must_use]
     pub fn blob_len(&self) -> usize {
-        self.sampling_start() + 4 * self.sampling_values()
+        self.norm_start() + 4 * self.norm_values()
     }
 }
 
@@ -337,9 +341,11 @@ pub enum LutError {
         /// Field name.
         field: &'static str,
     },
-    /// The sampling section does not hold the prefix sums of the tables.
+    /// The derived data (the sampling section's prefix sums, then the 1/Z_g table) does not
+    /// match the tables.
     Sampling {
-        /// Index of the first wrong entry in the section.
+        /// Index of the first wrong f32 entry, counted from the start of the sampling
+        /// section (the 1/Z_g table's entries follow the prefix sums').
         entry: usize,
     },
     /// The checksum does not match: the data was changed after baking.
@@ -447,12 +453,13 @@ pub fn checksum(blob: &[u8]) -> u64 {
     fnv1a64_continue(fnv1a64(head), tail)
 }
 
-/// Writes the sampling section of a blob whose header and tables are filled in, derived
-/// from the tables ([`cdf`]); the checksum is left as it is. A blob whose header does not
-/// decode is left alone.
+/// Writes the derived data of a blob whose header and tables are filled in: the sampling
+/// section ([`cdf`]), then the 1/Z_g table ([`norms`], which reads the former); the checksum
+/// is left as it is. A blob whose header does not decode is left alone.
 pub fn write_sampling(blob: &mut [u8]) {
     if let Ok(header) = LutHeader::decode(blob) {
         cdf::write(blob, header.res, header.scales);
+        norms::write(blob, header.res, header.scales);
     }
 }
 
@@ -468,8 +475,8 @@ pub fn seal(blob: &mut [u8]) {
 }
 
 /// Checks a whole blob: header ([`LutHeader::decode`]), checksum, that every stored value
-/// is a non-negative finite half, and that the sampling section holds exactly the prefix
-/// sums of the tables.
+/// is a non-negative finite half, that the sampling section holds exactly the prefix sums of
+/// the tables and the 1/Z_g table exactly the values they give.
 pub fn validate(bytes: &[u8]) -> Result<LutHeader, LutError> {
     let header = LutHeader::decode(bytes)?;
     let stored = u64::from_le_bytes(bytes[CHECKSUM].try_into().unwrap_or([0; 8]));
@@ -491,5 +498,8 @@ pub fn validate(bytes: &[u8]) -> Result<LutHeader, LutError> {
         }
     }
     cdf::check(bytes, header.res, header.scales).map_err(|entry| LutError::Sampling { entry })?;
+    norms::check(bytes, header.res, header.scales).map_err(|i| LutError::Sampling {
+        entry: header.res.sampling_values() + i,
+    })?;
     Ok(header)
 }

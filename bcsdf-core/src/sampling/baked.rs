@@ -8,163 +8,33 @@
 //! | part c | θ_i density | φ density | weight A_c(θ_r) |
 //! |---|---|---|---|
 //! | g = R, TT, TRT | M_g(θ_i + θ_r)/m_g, θ_i ∈ [−π/2, π/2] | n_g(\|φ\|)/(2 ν_g) | 2·m_g·ν_g |
-//! | scattered back, front | M^s_x(θ_i, θ_r)/s_x | n_s(\|φ\|)/(2 ν_s) | s_x·ν_s |
+//! | scattered back | M^s_back(θ_i, θ_r)/s_back | (1 − \|φ\|/π)·n_s(\|φ\|)/(2 (ν_s − μ_s)) | 2·s_back·(ν_s − μ_s) |
+//! | scattered front | M^s_front(θ_i, θ_r)/s_front | (\|φ\|/π)·n_s(\|φ\|)/(2 μ_s) | 2·s_front·μ_s |
 //!
-//! with n_f the mean of family f's three N channels, ν_f = ∫₀^π n_f, m_g = ∫ M_g over the
-//! restricted range (in the energy closure M_g is divided by its tabulated mass there, so its
-//! mass is then 1, docs/model.md §12) and s_x = ∫ M^s_x dθ_i (all exact integrals of the interpolants, from
-//! the LUT's prefix sums). The mixture density per unit solid angle is then
+//! with n_f the mean of family f's three N channels, ν_f = ∫₀^π n_f, μ_s = ∫₀^π (φ/π)·n_s,
+//! m_g = ∫ M_g over the restricted range (in the energy closure M_g is multiplied by the
+//! LUT's 1/Z_g, docs/model.md §12) and s_x = ∫ M^s_x dθ_i (all exact integrals of the
+//! interpolants, from the LUT's prefix sums). The two scattered parts are the two separable
+//! products of the exact blend M^s = (1 − |φ|/π)·M^s_back + (|φ|/π)·M^s_front. The mixture
+//! density per unit solid angle is then
 //!
-//! p_ω = [Σ_g M_g·n_g + ½(M^s_back + M^s_front)·n_s] / (W·cos θ_i),   W = Σ_c A_c,
+//! p_ω = [Σ_g M_g·n_g + M^s·n_s] / (W·cos θ_i),   W = Σ_c A_c,
 //!
-//! which costs one evaluation's lookups plus six prefix reads.
+//! the mean channel of S·cos θ_i over W: for a grey fiber the weight S·cos θ_i/p_ω is W at
+//! every direction. It costs one evaluation's lookups plus seven prefix reads.
 
-use super::{choose, invert_linear, linear_mass, unit};
-use crate::baked::{Axis, BakedBcsdf, Lookups};
+use super::choose;
+use crate::baked::{BakedBcsdf, Lookups};
 use crate::bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection};
 use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
-use crate::lut::cdf::{Density, NodeRow};
+use crate::lut::cdf::Density;
 use crate::math::{Math, PI};
+use rows::Rows;
 pub use view::BakedView;
 
+mod rows;
 mod view;
-
-/// Two adjacent rows of one density blended with weights (1 − w, w): itself a piecewise-
-/// linear function on the rows' nodes, with prefix sums blended the same way. The rows'
-/// nodes and prefix entries are located once, in [`Rows::new`].
-struct Rows<'a> {
-    /// The two rows' nodes.
-    values: (NodeRow<'a>, NodeRow<'a>),
-    /// The two rows' prefix entries (little-endian f32).
-    prefixes: (&'a [u8], &'a [u8]),
-    w: f32,
-    /// Axis origin and node spacing.
-    origin: f32,
-    step: f32,
-    nodes: usize,
-    entries: usize,
-    block: usize,
-}
-
-impl<'a> Rows<'a> {
-    #[inline]
-    fn new<M: Math>(
-        lut: &BakedBcsdf<'a, M>,
-        density: Density,
-        axis: &Axis,
-        (row, w): (usize, f32),
-    ) -> Self {
-        let l = &lut.densities[density.index()];
-        let rows = (row.min(l.rows - 1), (row + 1).min(l.rows - 1));
-        let prefix = |r: usize| {
-            let at = l.prefix_at + 4 * r * l.entries;
-            lut.blob.get(at..at + 4 * l.entries).unwrap_or(&[])
-        };
-        Rows {
-            values: (
-                lut.nodes.row(density, rows.0),
-                lut.nodes.row(density, rows.1),
-            ),
-            prefixes: (prefix(rows.0), prefix(rows.1)),
-            w,
-            origin: axis.lo,
-            step: l.step,
-            nodes: l.nodes,
-            entries: l.entries,
-            block: l.block,
-        }
-    }
-
-    #[inline(always)]
-    fn value(&self, j: usize) -> f32 {
-        let v0 = self.values.0.value(j);
-        if self.w == 0.0 {
-            return v0;
-        }
-        let v1 = self.values.1.value(j);
-        (1.0 - self.w) * v0 + self.w * v1
-    }
-
-    /// Prefix entry k of one row (0 past its end).
-    #[inline(always)]
-    fn stored(row: &[u8], k: usize) -> f32 {
-        match row.get(4 * k..4 * k + 4) {
-            Some(b) => f32::from_le_bytes([b[0], b[1], b[2], b[3]]),
-            None => 0.0,
-        }
-    }
-
-    /// Blended prefix entry k: ∫ from the first node to node min(k·block, nodes − 1).
-    #[inline(always)]
-    fn prefix(&self, k: usize) -> f32 {
-        let p0 = Self::stored(self.prefixes.0, k);
-        if self.w == 0.0 {
-            return p0;
-        }
-        (1.0 - self.w) * p0 + self.w * Self::stored(self.prefixes.1, k)
-    }
-
-    /// ∫ over the whole axis.
-    #[inline(always)]
-    fn total(&self) -> f32 {
-        self.prefix(self.entries - 1)
-    }
-
-    /// The axis position where the running integral reaches t0 + u·(t1 − t0), with the
-    /// target kept 2⁻²⁰ of the span inside (t0, t1), so that the ends of u never fall on a
-    /// stretch of zero density before or after the mass (mass moved: below 2⁻²⁰).
-    #[inline(always)]
-    fn invert_between(&self, t0: f32, t1: f32, u: f32) -> f32 {
-        let inset = (t1 - t0) * (1.0 / 1_048_576.0);
-        let t = (t0 + unit(u) * (t1 - t0)).clamp(t0 + inset, t1 - inset);
-        self.invert(t)
-    }
-
-    /// The axis position where the running integral reaches `t` (0 ≤ t ≤ total).
-    fn invert(&self, t: f32) -> f32 {
-        // Last prefix entry strictly below t among entries 0 ..= entries − 2 (0 when t is 0):
-        // the block where the running integral crosses t, also when the integral is flat
-        // (zero density) before or after. A branch-free binary search.
-        let mut lo = 0usize;
-        let mut len = self.entries - 1;
-        while len > 1 {
-            let half = len / 2;
-            lo = if self.prefix(lo + half) < t {
-                lo + half
-            } else {
-                lo
-            };
-            len -= half;
-        }
-        let first = lo * self.block;
-        let end = (first + self.block).min(self.nodes - 1);
-        let mut acc = self.prefix(lo);
-        let mut prev = self.value(first);
-        // The last segment of positive mass seen, for a t that rounding put past the block.
-        let mut last = None;
-        for j in first..end {
-            let v = self.value(j + 1);
-            let m = linear_mass(prev, v, self.step);
-            if m > 0.0 {
-                if t - acc <= m {
-                    let s = invert_linear(prev, v, self.step, t - acc);
-                    return self.origin + j as f32 * self.step + s;
-                }
-                last = Some((j, prev, v));
-            }
-            acc += m;
-            prev = v;
-        }
-        match last {
-            Some((j, v0, v1)) => {
-                let s = invert_linear(v0, v1, self.step, self.step * (v0 + v1));
-                self.origin + j as f32 * self.step + s
-            }
-            None => self.origin + end as f32 * self.step,
-        }
-    }
-}
 
 impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// M_g restricted to θ_i ∈ [−π/2, π/2], i.e. x = θ_i + θ_r ∈ [θ_r − π/2, θ_r + π/2].
@@ -199,11 +69,6 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         t0 + (self.f32_at(at(row + 1)) - t0) * w
     }
 
-    fn n_rows(&self, family: usize, theta_r: f32) -> Rows<'a> {
-        let at = self.theta_r.locate(theta_r.abs());
-        Rows::new(self, Density::N(family), &self.phi, at)
-    }
-
     fn ms_rows(&self, half: usize, theta_r: f32) -> Rows<'a> {
         let at = self.ms_r.locate(theta_r);
         Rows::new(self, Density::MS(half), &self.ms_i, at)
@@ -217,16 +82,16 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let nr = self.theta_r.locate(theta_r.abs());
         let sr = self.ms_r.locate(theta_r);
         let nu_s = self.row_total(Density::N(3), nr);
+        let mu_s = self.row_total(Density::Front, nr);
         // The mass of the evaluated M_g: the tabulated one times the closure's factor.
-        let ends = [PI / 2.0, -PI / 2.0].map(|h| self.sum.locate(theta_r - h));
-        let norm = self.sphere_norms(ends);
+        let norm = self.sphere_norms(self.norm.locate(theta_r));
         let mass = |g: usize| m[g].0 * norm[g];
         let a = [
             2.0 * mass(0) * self.row_total(Density::N(0), nr),
             2.0 * mass(1) * self.row_total(Density::N(1), nr),
             2.0 * mass(2) * self.row_total(Density::N(2), nr),
-            self.row_total(Density::MS(0), sr) * nu_s,
-            self.row_total(Density::MS(1), sr) * nu_s,
+            2.0 * self.row_total(Density::MS(0), sr) * (nu_s - mu_s),
+            2.0 * self.row_total(Density::MS(1), sr) * mu_s,
         ];
         (a.map(|v| if v.is_finite() && v > 0.0 { v } else { 0.0 }), m)
     }
@@ -237,10 +102,10 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             return 0.0;
         }
         let mean = |f: usize| (l.n[3 * f] + l.n[3 * f + 1] + l.n[3 * f + 2]) * (1.0 / 3.0);
-        let p = l.m[0] * mean(0)
-            + l.m[1] * mean(1)
-            + l.m[2] * mean(2)
-            + 0.5 * (l.ms[0] + l.ms[1]) * mean(3);
+        // M^s's blend exactly as `assemble` forms it.
+        let [back, front] = l.ms;
+        let ms = back + l.front * (front - back);
+        let p = l.m[0] * mean(0) + l.m[1] * mean(1) + l.m[2] * mean(2) + ms * mean(3);
         let v = solid_angle_pdf(p / total_weight, cos_theta_i);
         if v.is_finite() && v > 0.0 {
             v
@@ -270,7 +135,12 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
                 .clamp(-PI / 2.0, PI / 2.0)
         };
         let family = if c < 3 { c } else { 3 };
-        let rows = self.n_rows(family, theta_r);
+        let at = self.theta_r.locate(theta_r.abs());
+        let rows = match c {
+            3 => Rows::back(self, &self.phi, at),
+            4 => Rows::new(self, Density::Front, &self.phi, at),
+            _ => Rows::new(self, Density::N(family), &self.phi, at),
+        };
         let abs_phi = rows.invert_between(0.0, rows.total(), u[2]).clamp(0.0, PI);
         let phi = if negative { -abs_phi } else { abs_phi };
         let angles = Angles::new(theta_i, theta_r, phi).ok()?;
@@ -327,13 +197,17 @@ impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
 
 #[cfg(test)]
 mod tests {
+    extern crate std;
+
     use super::*;
     use crate::baked::tests::random as blob;
 
-    /// ∫ of the rows' interpolant from the first node to x, segment by segment (the exact
-    /// integral of a linear function), written independently of `Rows`.
-    fn integral(rows: &Rows<'_>, x: f32) -> f64 {
+    /// ∫ of the rows' interpolant times `weight` (a function of the axis position) from the
+    /// first node to x, segment by segment by Simpson's rule (exact for the product of two
+    /// linear functions), written independently of `Rows`.
+    fn integral(rows: &Rows<'_>, x: f32, weight: impl Fn(f64) -> f64) -> f64 {
         let u = f64::from((x - rows.origin) / rows.step);
+        let h = f64::from(rows.step);
         let mut acc = 0.0f64;
         for j in 0..rows.nodes - 1 {
             let (v0, v1) = (f64::from(rows.value(j)), f64::from(rows.value(j + 1)));
@@ -341,10 +215,34 @@ mod tests {
             if len <= 0.0 {
                 break;
             }
-            let at = v0 + (v1 - v0) * len;
-            acc += 0.5 * len * (v0 + at) * f64::from(rows.step);
+            let at = |t: f64| {
+                let pos = f64::from(rows.origin) + (j as f64 + t) * h;
+                (v0 + (v1 - v0) * t) * weight(pos)
+            };
+            acc += len * h / 6.0 * (at(0.0) + 4.0 * at(0.5 * len) + at(len));
         }
         acc
+    }
+
+    /// Checks `r.invert` against [`integral`] at 41 targets; returns the count.
+    fn check_inversion(r: &Rows<'_>, what: &str, weight: impl Fn(f64) -> f64 + Copy) -> usize {
+        let total = r.total();
+        let end = r.origin + r.step * (r.nodes - 1) as f32;
+        let exact = integral(r, end, weight);
+        assert!(
+            (f64::from(total) - exact).abs() <= 1e-5 * exact + 1e-12,
+            "{what}: total {total} vs {exact}"
+        );
+        for k in 0..=40 {
+            let t = total * k as f32 / 40.0;
+            let x = r.invert(t);
+            let got = integral(r, x, weight);
+            assert!(
+                (got - f64::from(t)).abs() <= 2e-5 * exact + 1e-12,
+                "{what}: ∫ to {x} = {got}, wanted {t}"
+            );
+        }
+        41
     }
 
     #[test]
@@ -352,29 +250,33 @@ mod tests {
         let b = blob();
         let lut = BakedBcsdf::from_bytes(&b).unwrap();
         let mut checked = 0;
+        let n_theta_r = lut.header.res.n_theta_r as usize;
+        let front = |phi: f64| phi / core::f64::consts::PI;
         for d in Density::ALL {
             let (axis, rows) = match d {
                 Density::M(_) => (&lut.sum, 1),
-                Density::N(_) => (&lut.phi, lut.header.res.n_theta_r as usize),
+                Density::N(_) | Density::Front => (&lut.phi, n_theta_r),
                 Density::MS(_) => (&lut.ms_i, lut.header.res.n_ms_r as usize),
             };
             for row in 0..rows {
                 for w in [0.0f32, 0.3, 0.77] {
                     let r = Rows::new(&lut, d, axis, (row, w));
-                    let total = r.total();
-                    let exact = integral(&r, axis.lo + r.step * (r.nodes - 1) as f32);
-                    assert!((f64::from(total) - exact).abs() <= 1e-5 * exact, "{d:?}");
-                    for k in 0..=40 {
-                        let t = total * k as f32 / 40.0;
-                        let x = r.invert(t);
-                        let got = integral(&r, x);
-                        assert!(
-                            (got - f64::from(t)).abs() <= 2e-5 * exact + 1e-12,
-                            "{d:?} row {row} w {w}: ∫ to {x} = {got}, wanted {t}"
-                        );
-                        checked += 1;
-                    }
+                    let what = std::format!("{d:?} row {row} w {w}");
+                    checked += if d == Density::Front {
+                        check_inversion(&r, &what, front)
+                    } else {
+                        check_inversion(&r, &what, |_| 1.0)
+                    };
                 }
+            }
+        }
+        // The back part of the scattered blend: weighted by 1 − |φ|/π.
+        for row in 0..n_theta_r {
+            for w in [0.0f32, 0.3, 0.77] {
+                let r = Rows::back(&lut, &lut.phi, (row, w));
+                checked += check_inversion(&r, &std::format!("back row {row} w {w}"), |phi| {
+                    1.0 - front(phi)
+                });
             }
         }
         assert!(checked > 1000);

@@ -99,6 +99,74 @@ pub fn invert_linear(v0: f32, v1: f32, len: f32, t: f32) -> f32 {
     }
 }
 
+/// Mass of a linear density going from `v0` to `v1` over a length `len`, weighted by a
+/// factor going linearly from `a` to `b` over the same length (the |φ|/π or 1 − |φ|/π of the
+/// scattered family's back/front blend, docs/model.md §10). With τ ∈ [0, 1] along the
+/// segment the product is the quadratic a·v0·(1 − τ)² + (a·v1 + b·v0)·τ(1 − τ) + b·v1·τ²,
+/// whose Bernstein terms each integrate to 1/3: len·(a·v0 + (a·v1 + b·v0)/2 + b·v1)/3.
+#[inline]
+#[must_use]
+pub fn weighted_linear_mass(v0: f32, v1: f32, a: f32, b: f32, len: f32) -> f32 {
+    len * (a * v0 + 0.5 * (a * v1 + b * v0) + b * v1) * (1.0 / 3.0)
+}
+
+/// Inverts [`weighted_linear_mass`] over one segment: the offset s ∈ [0, len] at which the
+/// integral of the weighted density from the segment start is `t`. The integral is the cubic
+/// F(τ) = len·(Aτ + Bτ²/2 + Cτ³/3), τ = s/len, with A = a·v0, B = a·(v1 − v0) + v0·(b − a),
+/// C = (b − a)·(v1 − v0), increasing (its derivative, the density, is ≥ 0); it is solved by
+/// Newton steps kept inside a shrinking bracket, from the linear density's inversion, at
+/// most eight, until a step moves τ by at most 1.2e-7 (F is a cubic: the steps converge
+/// quadratically, and the bracket halves on any step that would leave it). As [`invert_linear`], an end where the density
+/// is 0 is never returned (s is kept 2⁻²⁰·len inside it).
+#[inline]
+#[must_use]
+pub fn invert_weighted_linear(v0: f32, v1: f32, a: f32, b: f32, len: f32, t: f32) -> f32 {
+    if !(len > 0.0) {
+        return 0.0;
+    }
+    let (ca, cb, cc) = (a * v0, a * (v1 - v0) + v0 * (b - a), (b - a) * (v1 - v0));
+    let (q0, q1) = (ca, b * v1);
+    let target = t / len;
+    let f = |x: f32| x * (ca + x * (0.5 * cb + x * (1.0 / 3.0) * cc)) - target;
+    let total = ca + 0.5 * cb + (1.0 / 3.0) * cc;
+    // Start: the density taken linear from q0 to q1, its mass rescaled to the segment's.
+    let linear_mass = 0.5 * (q0 + q1);
+    let mut x = if total > 0.0 && linear_mass > 0.0 {
+        invert_linear(q0, q1, 1.0, target * (linear_mass / total))
+    } else {
+        0.5
+    };
+    let (mut lo, mut hi) = (0.0f32, 1.0f32);
+    for _ in 0..8 {
+        let fx = f(x);
+        if fx > 0.0 {
+            hi = x;
+        } else {
+            lo = x;
+        }
+        let d = ca + x * (cb + x * cc);
+        let mut next = if d > 0.0 { x - fx / d } else { f32::NAN };
+        if !(next >= lo && next <= hi) {
+            next = 0.5 * (lo + hi);
+        }
+        // Converged: the step is below f32's resolution of τ near 1 (2⁻²³ ≈ 1.2e-7).
+        let done = (next - x).abs() <= 1.2e-7;
+        x = next;
+        if done {
+            break;
+        }
+    }
+    let s = (x * len).clamp(0.0, len);
+    let inset = len * (1.0 / 1_048_576.0);
+    if q0 <= 0.0 && s < inset {
+        inset
+    } else if q1 <= 0.0 && s > len - inset {
+        len - inset
+    } else {
+        s
+    }
+}
+
 /// Draws x from the normalised Gaussian G(x; β) restricted to [lo, hi], by inverting its
 /// CDF: Newton steps on erf inside a shrinking bracket, in f64 (f32's erf has no precision
 /// left in the tails). The density of the result is G(x; β)/[`gaussian_mass`]`(β, lo, hi)`.
@@ -165,6 +233,54 @@ mod tests {
                 let t = s * v0 + (v1 - v0) * s * s / (2.0 * len);
                 let back = invert_linear(v0, v1, len, t);
                 assert!((back - s).abs() < 2e-5, "{v0} {v1} {s} {back}");
+            }
+        }
+    }
+
+    #[test]
+    fn weighted_linear_inversion_round_trips() {
+        // (v0, v1, a, b): densities and weights rising, falling, zero at an end.
+        let cases: [(f32, f32, f32, f32); 5] = [
+            (1.0, 1.0, 0.0, 0.1),
+            (0.0, 2.0, 0.5, 0.6),
+            (2.0, 0.0, 0.9, 1.0),
+            (0.3, 5.0, 1.0, 0.9),
+            (5.0, 0.3, 0.2, 0.0),
+        ];
+        for (v0, v1, a, b) in cases {
+            let len = 0.05;
+            // The mass against a fine midpoint sum of the product.
+            let n = 4000;
+            let mid: f64 = (0..n)
+                .map(|k| {
+                    let x = (k as f64 + 0.5) / n as f64;
+                    let (a, b, v0, v1) = (f64::from(a), f64::from(b), f64::from(v0), f64::from(v1));
+                    (a + (b - a) * x) * (v0 + (v1 - v0) * x) * f64::from(len) / n as f64
+                })
+                .sum();
+            let mass = weighted_linear_mass(v0, v1, a, b, len);
+            assert!(
+                (f64::from(mass) - mid).abs() < 1e-6 * mid.max(1e-3),
+                "{mass} {mid}"
+            );
+            // The integral from the segment start to s, in f64.
+            let to = |s: f64| {
+                let x = s / f64::from(len);
+                let (a, b, v0, v1) = (f64::from(a), f64::from(b), f64::from(v0), f64::from(v1));
+                let (ca, cb, cc) = (a * v0, a * (v1 - v0) + v0 * (b - a), (b - a) * (v1 - v0));
+                f64::from(len) * x * (ca + x * (0.5 * cb + x * cc / 3.0))
+            };
+            for k in 0..=20 {
+                let t = mass * k as f32 / 20.0;
+                let back = invert_weighted_linear(v0, v1, a, b, len, t);
+                assert!((0.0..=len).contains(&back));
+                // The mass reached, to f32 rounding of the target (a position error can be
+                // larger where the density vanishes at an end: the mass grows quadratically).
+                let got = to(f64::from(back));
+                assert!(
+                    (got - f64::from(t)).abs() < 1e-6 * f64::from(mass),
+                    "{v0} {v1} {a} {b} {t} {back} {got}"
+                );
             }
         }
     }

@@ -1,0 +1,127 @@
+//! The baked sampler is perfect importance sampling for grey fibers (docs/model.md §10,
+//! issue 20 item 5): every preset made lossless (σ_ca = σ_ma = 0, so the three channels are
+//! equal), baked (profiles at 2 % of the default budget, cached), in both closures, at fixed
+//! θ_r ∈ {−70°, −30°, 0°, 45°, 80°}, 4 000 samples each:
+//!
+//! - the weights S·cos θ_i/pdf are one constant to 1e-3 (outside the pole slivers, below);
+//! - that constant is the LUT's own ∫ S·max(cos²θ_i, 10⁻⁴) dθ_i dφ — the directional albedo
+//!   ρ(θ_r) = ∫ S·cos²θ_i dθ_i dφ with S's pole guard undone — to 1e-3, integrated by a dense
+//!   midpoint rule over (θ_i, φ) independent of the sampler (not 1: without the residual lobe
+//!   ρ < 1 even in the energy closure).
+//!
+//! Not yet (issue 20 item 5's pole slivers): within `POLE_SLIVER` of θ_i = ±90° S's
+//! 1/max(cos²θ_i, 10⁻⁴) holds S·cos²θ_i below M·N while the sampler's density does not, so
+//! samples there weigh less than the constant and the constant exceeds ρ itself by the
+//! slivers' share — up to 1.6 % at θ_r = 80°, where 1–3 % of the samples land in them. The
+//! test counts those samples, prints ρ beside the constant, and checks the constancy outside
+//! the slivers only.
+use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bake::tables;
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::model::POLE_SLIVER;
+use bcsdf_core::rng::{cell_stream, Pcg32};
+use bcsdf_core::{presets, Angles, Bcsdf, Closure, FurParams, FurParamsInput, Pigment, Rgb};
+use fur_tests::per_preset_tests;
+use std::f64::consts::{FRAC_PI_2, PI};
+use std::path::PathBuf;
+
+const THETA_R_DEG: [f32; 5] = [-70.0, -30.0, 0.0, 45.0, 80.0];
+const DRAWS: u64 = 4_000;
+
+/// The preset made lossless and grey, in `closure`.
+fn lossless(name: &str, closure: Closure) -> FurParamsInput {
+    FurParamsInput {
+        pigment: Pigment::Absorption(Rgb::ZERO),
+        sigma_ma: 0.0,
+        closure,
+        ..presets::find(name).unwrap().input
+    }
+}
+
+fn bake(input: &FurParamsInput) -> Vec<u8> {
+    let params = FurParams::new(input).unwrap();
+    let opts = ProfileOptions {
+        budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
+        cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
+        ..ProfileOptions::default()
+    };
+    let model = build_model(params, &opts).unwrap().0;
+    tables::bake(&model, input, LutResolution::DEFAULT)
+}
+
+/// (ρ(θ_r), ∫ S·max(cos²θ_i, 10⁻⁴)) of the LUT, first channel: midpoint rule, 2 048 θ_i ×
+/// 1 024 φ cells.
+fn albedo(lut: &BakedBcsdf, theta_r: f32) -> (f64, f64) {
+    let (n_t, n_p) = (2048, 1024);
+    let (dt, dp) = (PI / n_t as f64, 2.0 * PI / n_p as f64);
+    let (mut rho, mut unguarded) = (0.0, 0.0);
+    for i in 0..n_t {
+        let ti = -FRAC_PI_2 + dt * (i as f64 + 0.5);
+        let c2 = ti.cos().powi(2);
+        for j in 0..n_p {
+            let phi = -PI + dp * (j as f64 + 0.5);
+            let a = Angles::new(ti as f32, theta_r, phi as f32).unwrap();
+            let s = f64::from(lut.eval(&a).total().0[0]);
+            rho += c2 * s;
+            unguarded += c2.max(1e-4) * s;
+        }
+    }
+    (rho * dt * dp, unguarded * dt * dp)
+}
+
+fn check(name: &str) {
+    for closure in Closure::ALL {
+        let input = lossless(name, closure);
+        let blob = bake(&input);
+        let lut = BakedBcsdf::from_bytes(&blob).unwrap();
+        for tr_deg in THETA_R_DEG {
+            let tr = tr_deg.to_radians();
+            let (rho, unguarded) = albedo(&lut, tr);
+            let (mut lo, mut hi) = (f64::MAX, 0.0f64);
+            let mut in_slivers = 0;
+            for i in 0..DRAWS {
+                let mut rng = Pcg32::new(cell_stream(20, 1, i), cell_stream(20, 2, i));
+                let u = [rng.uniform(), rng.uniform(), rng.uniform()];
+                let Some(s) = lut.sample(tr, u) else {
+                    panic!("{name} {closure:?} θ_r {tr_deg}: no sample")
+                };
+                if s.angles.theta_i().abs() > std::f32::consts::FRAC_PI_2 - POLE_SLIVER {
+                    in_slivers += 1;
+                    continue;
+                }
+                let w = f64::from(s.weight.0[0]);
+                lo = lo.min(w);
+                hi = hi.max(w);
+            }
+            println!(
+                "{name} {closure:?} θ_r {tr_deg}°: weights {lo:.6} – {hi:.6}, unguarded ρ \
+                 {unguarded:.6}, ρ {rho:.6} ({in_slivers} of {DRAWS} in the pole slivers)"
+            );
+            assert!(
+                hi - lo <= 1e-3 * hi,
+                "{name} {closure:?} θ_r {tr_deg}°: weights {lo} – {hi} not constant"
+            );
+            assert!(
+                (hi - unguarded).abs() <= 1e-3 * unguarded,
+                "{name} {closure:?} θ_r {tr_deg}°: weight {hi} vs the LUT's unguarded ρ {unguarded}"
+            );
+        }
+    }
+}
+
+per_preset_tests!(check, every_preset_is_checked;
+    bobcat: "bobcat",
+    cat: "cat",
+    deer: "deer",
+    dog: "dog",
+    mouse: "mouse",
+    rabbit: "rabbit",
+    raccoon: "raccoon",
+    red_fox: "red-fox",
+    springbok: "springbok",
+    human_fur: "human-fur",
+    human_hair: "human-hair",
+    air_medulla: "air-medulla",
+);

@@ -215,11 +215,12 @@ fn full_nodes(model: &FurBcsdf, theta_r: f32) -> Vec<(f64, f64)> {
     theta_i_nodes_with(f64::from(theta_r), &group_shapes_of(p), &kinks, 0.1)
 }
 
-/// φ nodes for a model with a residual: [`n_phi`] rounded up to a multiple of the residual's
-/// 2·n_phi bins over the circle, so that the trapezoid rule puts the same number of nodes in
-/// every bin of the piecewise-constant D_res and integrates it exactly.
+/// φ nodes for a model with a residual: [`n_phi`] rounded up to a multiple of twice the
+/// residual's 2·n_phi bins over the circle, so that the midpoint rule puts an even number of
+/// nodes in every bin: D_res is linear between the bins' centres (its kinks), which are then
+/// boundaries of the rule's intervals, and is integrated exactly.
 fn n_phi_residual(model: &FurBcsdf) -> usize {
-    let bins = 2 * model.residual().map_or(1, |t| t.layout().n_phi);
+    let bins = 4 * model.residual().map_or(1, |t| t.layout().n_phi);
     n_phi(model.params()).div_ceil(bins) * bins
 }
 

@@ -128,9 +128,10 @@ fn check_absorbing(name: &str) {
         Some(prof) => m_s_kinks(&p, prof.layout()),
         None => Vec::new(),
     };
-    // φ spacing at most β_n/1.5 and a multiple of the residual's 2·n_phi bins (D_res is
-    // piecewise constant: the trapezoid rule then integrates it exactly).
-    let bins = 2 * model.residual().unwrap().layout().n_phi;
+    // φ spacing at most β_n/1.5 and an even number of nodes in each of the residual's 2·n_phi
+    // bins over the circle (D_res is linear between the bins' centres, which are then
+    // boundaries of the midpoint rule's intervals: it is integrated exactly).
+    let bins = 4 * model.residual().unwrap().layout().n_phi;
     let n_phi = ((TAU / (f64::from(p.beta_n()) / 1.5)).ceil() as usize)
         .max(48)
         .div_ceil(bins)

@@ -472,14 +472,49 @@ impl<'a> ResidualTable<'a> {
         at(a) * (1.0 - w) + at(b) * w
     }
 
-    /// D_res(θ_r, |φ|): piecewise constant in |φ| (its bins), linear in θ_r; unit integral
-    /// over φ ∈ (−π, π] per channel.
+    /// D_res(θ_r, |φ|): linear in |φ| between the centres of its bins (flat from 0 to the first
+    /// centre and from the last to π), linear in θ_r; unit integral over φ ∈ (−π, π] per
+    /// channel. (The interpolant through the centres, flat at the ends, has each bin's mass:
+    /// a bin keeps ¾ of its own value and gets ⅛ of each neighbour's, and gives the same
+    /// back. Unlike the histogram itself it has no jumps, which a baked table's linear
+    /// interpolation could not follow: piecewise constant, mouse's baked E_peak in the energy
+    /// closure was 2.45 % at any φ resolution.)
     #[must_use]
     pub fn density(&self, theta_r: f32, phi: f32) -> Rgb {
         let (a, b, w) = self.rows(theta_r);
-        let k = self.bin(phi);
+        let n = self.layout.n_phi;
+        let x =
+            (crate::math::wrap_angle(phi).abs() / PI * n as f32 - 0.5).clamp(0.0, (n - 1) as f32);
+        let (k, v) = if x.is_finite() {
+            let k = (x as usize).min(n - 2);
+            (k, x - k as f32)
+        } else {
+            (0, 0.0)
+        };
         let off = self.layout.n_h + 1;
-        Self::rgb(a, off + k) * (1.0 - w) + Self::rgb(b, off + k) * w
+        let at =
+            |row: &[f32]| Self::rgb(row, off + k) * (1.0 - v) + Self::rgb(row, off + k + 1) * v;
+        at(a) * (1.0 - w) + at(b) * w
+    }
+
+    /// The channel mean of bin `k` of D_res at θ_r (linear in θ_r).
+    fn bin_mean(&self, theta_r: f32, k: usize) -> f32 {
+        let (a, b, w) = self.rows(theta_r);
+        let off = self.layout.n_h + 1;
+        let d = (Self::rgb(a, off + k) * (1.0 - w) + Self::rgb(b, off + k) * w).0;
+        (d[0] + d[1] + d[2]) * (1.0 / 3.0)
+    }
+
+    /// The weight of bin `k` in the analytic sampler's φ density: the largest channel-mean
+    /// bin value among `k` and its neighbours, so that the density is positive wherever
+    /// [`ResidualTable::density`] is (which reaches half a bin into a neighbour).
+    fn sampling_weight(&self, theta_r: f32, k: usize) -> f32 {
+        let n = self.layout.n_phi;
+        let lo = k.saturating_sub(1);
+        let hi = (k + 1).min(n - 1);
+        (lo..=hi)
+            .map(|j| self.bin_mean(theta_r, j))
+            .fold(0.0, f32::max)
     }
 
     /// The |φ| bin of φ.
@@ -493,22 +528,32 @@ impl<'a> ResidualTable<'a> {
         }
     }
 
-    /// The channel mean of D_res(θ_r, |φ|): the φ density the analytic sampler draws the
-    /// residual part from (unit integral over φ ∈ (−π, π]).
+    /// The φ density the analytic sampler draws the residual part from (unit integral over
+    /// φ ∈ (−π, π]): piecewise constant in |φ|, bin k weighted by
+    /// [`ResidualTable::sampling_weight`] (uniform where every bin is empty).
     #[must_use]
     pub fn phi_density(&self, theta_r: f32, phi: f32) -> f32 {
-        let d = self.density(theta_r, phi).0;
-        (d[0] + d[1] + d[2]) * (1.0 / 3.0)
+        let n = self.layout.n_phi;
+        let width = PI / n as f32;
+        let total: f32 = (0..n).map(|k| self.sampling_weight(theta_r, k)).sum();
+        if total > 0.0 && total.is_finite() {
+            self.sampling_weight(theta_r, self.bin(phi)) / (2.0 * width * total)
+        } else {
+            1.0 / (2.0 * PI)
+        }
     }
 
     /// Draws |φ| ∈ [0, π] with density 2·[`ResidualTable::phi_density`] from `u` ∈ [0, 1):
-    /// a bin by its mass, then uniformly inside it.
+    /// a bin by its weight, then uniformly inside it.
     #[must_use]
     pub fn sample_abs_phi(&self, theta_r: f32, u: f32) -> f32 {
         let n = self.layout.n_phi;
         let width = PI / n as f32;
-        let mass = |k: usize| self.phi_density(theta_r, (k as f32 + 0.5) * width);
+        let mass = |k: usize| self.sampling_weight(theta_r, k);
         let total: f32 = (0..n).map(mass).sum();
+        if !(total > 0.0 && total.is_finite()) {
+            return u.clamp(0.0, 1.0) * PI;
+        }
         let target = u.clamp(0.0, 1.0) * total;
         let mut acc = 0.0f32;
         for k in 0..n {

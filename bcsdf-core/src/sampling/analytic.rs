@@ -17,8 +17,10 @@
 //!   branch, density C^M_x·|dθ'/dθ_i| / Z_x; h uniform over the h that enter the medulla,
 //!   ψ from the interpolated C^N row at (σ_N, h_m), φ = ±(π + Φ^s_k(h) + ψ);
 //! - the residual (energy closure with a residual table, docs/model.md §12): θ_i from TRT's
-//!   M as for the TRT paths, |φ| from the channel mean of D_res(θ_r, ·) (piecewise constant:
-//!   a bin by its mass, uniform inside), sign uniform; proxy ⟨A_res⟩_h.
+//!   M as for the TRT paths, |φ| piecewise constant over D_res's bins, each weighted by the
+//!   largest channel-mean value of itself and its neighbours (`ResidualTable::phi_density`:
+//!   positive wherever D_res, linear between the bins' centres, is), sign uniform; proxy
+//!   ⟨A_res⟩_h.
 //!
 //! The 1/cos²θ_i of S, the Fresnel and absorption factors, μ and F_t, and the back/front
 //! blend of M^s are left to the weight. `pdf` is the full mixture and costs about one

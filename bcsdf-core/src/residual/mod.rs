@@ -529,8 +529,9 @@ impl<'a> ResidualTable<'a> {
     }
 
     /// The φ density the analytic sampler draws the residual part from (unit integral over
-    /// φ ∈ (−π, π]): piecewise constant in |φ|, bin k weighted by
-    /// [`ResidualTable::sampling_weight`] (uniform where every bin is empty).
+    /// φ ∈ (−π, π]): piecewise constant in |φ|, bin k weighted by the largest channel-mean
+    /// value of bins k − 1, k, k + 1 (positive wherever [`ResidualTable::density`] is; uniform
+    /// where every bin is empty).
     #[must_use]
     pub fn phi_density(&self, theta_r: f32, phi: f32) -> f32 {
         let n = self.layout.n_phi;

@@ -2,12 +2,16 @@
 //! list of 256 directions over θ_i, θ_r ∈ ±80°, φ ∈ (−180°, 180°]):
 //!
 //! - `far_field_analytic/<preset>`: `FurBcsdf::eval_far(..).total()`, the full model (eight
-//!   unscattered paths and the scattered lobes);
+//!   unscattered paths, the scattered lobes and, in the presets' energy closure, the lobes'
+//!   sphere normalisation and the residual);
+//! - `far_field_analytic_report/<preset>`: the same parameters in the report closure (no
+//!   normalisation, no residual), so that the energy closure's analytic cost is a ratio
+//!   measured in one run (docs/model.md §12);
 //! - `far_field_baked/<preset>`: `BakedBcsdf::eval_far(..).total()` on the LUT of the same
-//!   model at the default resolution (the preset's closure: report);
-//! - `far_field_baked_energy/<preset>`: the same LUT with its header's closure set to energy
-//!   (the tables do not depend on it), i.e. with the energy closure's normalisation of M
-//!   (docs/model.md §12), so that the normalisation's cost is a ratio measured in one run.
+//!   model at the default resolution (the preset's closure: energy);
+//! - `far_field_baked_report/<preset>`: the same LUT with its header's closure set to report
+//!   (the lookups do not depend on the tables' values), i.e. without the energy closure's 1/Z_g
+//!   lookup, so that its cost is a ratio measured in one run.
 //!
 //! - `far_field_baked_reference/<preset>`: a copy of the scalar baked path as it was before
 //!   issue 12 (`reference` below), so that the speed-up is a ratio measured in one run;
@@ -235,16 +239,20 @@ fn bench(c: &mut Criterion) {
         let (model, _) = build_model(params, &opts).unwrap();
         let blob = tables::bake(&model, &preset.input, LutResolution::DEFAULT);
         let baked = BakedBcsdf::from_bytes(&blob).unwrap();
-        // The presets use the report closure; the same tables in the energy closure: header
-        // word 26 (after g) is the closure.
-        assert_eq!(baked.params().closure(), bcsdf_core::Closure::Report);
-        let report = &baked;
-        let mut energy_blob = blob.clone();
-        energy_blob[104..108].copy_from_slice(&1u32.to_le_bytes());
-        bcsdf_core::lut::seal(&mut energy_blob);
-        let energy = BakedBcsdf::from_bytes(&energy_blob).unwrap();
-        assert_eq!(energy.params().closure(), bcsdf_core::Closure::Energy);
+        // The presets use the energy closure; the same tables in the report closure (header
+        // word 26, after g, is the closure) measure what the energy closure's 1/Z_g lookup
+        // costs, with nothing else different.
+        assert_eq!(baked.params().closure(), bcsdf_core::Closure::Energy);
+        let mut report_blob = blob.clone();
+        report_blob[104..108].copy_from_slice(&0u32.to_le_bytes());
+        bcsdf_core::lut::seal(&mut report_blob);
+        let report = BakedBcsdf::from_bytes(&report_blob).unwrap();
+        assert_eq!(report.params().closure(), bcsdf_core::Closure::Report);
         let analytic = model.model();
+        // The report closure's analytic model: no sphere normalisation, no residual.
+        let (report_model, _) =
+            build_model(params.with_closure(bcsdf_core::Closure::Report), &opts).unwrap();
+        let analytic_report = report_model.model();
 
         let mut i = 0usize;
         c.bench_function(&format!("far_field_analytic/{name}"), |b| {
@@ -254,7 +262,15 @@ fn bench(c: &mut Criterion) {
                 black_box(analytic.eval_far(black_box(a)).total())
             })
         });
-        let reference = reference::Lut::new(&blob);
+        let mut i = 0usize;
+        c.bench_function(&format!("far_field_analytic_report/{name}"), |b| {
+            b.iter(|| {
+                let a = &qs[i & 255];
+                i += 1;
+                black_box(analytic_report.eval_far(black_box(a)).total())
+            })
+        });
+        let reference = reference::Lut::new(&report_blob);
         let (ti, tr, ph): (Vec<f32>, Vec<f32>, Vec<f32>) = {
             let cycle = || qs.iter().chain(&qs);
             (
@@ -263,7 +279,7 @@ fn bench(c: &mut Criterion) {
                 cycle().map(Angles::phi).collect(),
             )
         };
-        for lut in [&baked, &energy] {
+        for lut in [&baked, &report] {
             let mut batch_out = vec![Rgb::ZERO; 256];
             lut.eval_far_batch(&ti[..256], &tr[..256], &ph[..256], &mut batch_out)
                 .unwrap();
@@ -297,11 +313,11 @@ fn bench(c: &mut Criterion) {
             })
         });
         let mut i = 0usize;
-        c.bench_function(&format!("far_field_baked_energy/{name}"), |b| {
+        c.bench_function(&format!("far_field_baked_report/{name}"), |b| {
             b.iter(|| {
                 let a = &qs[i & 255];
                 i += 1;
-                black_box(energy.eval_far(black_box(a)).total())
+                black_box(report.eval_far(black_box(a)).total())
             })
         });
         let mut i = 0usize;

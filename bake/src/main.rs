@@ -291,6 +291,9 @@ fn run(cli: Cli) -> Result<u8, Failure> {
         if let Some(note) = report.cache.as_ref().and_then(|c| c.note()) {
             eprintln!("note: {note}");
         }
+        if let Some(note) = &report.residual_note {
+            eprintln!("note: {note}");
+        }
         reports.push(report);
     }
     print_summary(&reports, &budget, &opts.res, &opts.out_dir);

@@ -75,7 +75,8 @@ pub struct BakeReport {
     pub blob_bytes: usize,
     /// Bytes of the EXR file.
     pub exr_bytes: u64,
-    /// Seconds spent on profiles (generation or cache load).
+    /// Seconds spent on profiles and, in the energy closure, the residual table (generation
+    /// or cache load).
     pub profile_seconds: f64,
     /// Seconds spent sampling and encoding the tables.
     pub table_seconds: f64,
@@ -85,6 +86,8 @@ pub struct BakeReport {
     pub errors: Option<ErrorSummary>,
     /// What the profile cache did (`None`: the preset needs no profiles).
     pub cache: Option<CacheOutcome>,
+    /// Why the residual's cache file was rejected, when it was (and regenerated).
+    pub residual_note: Option<String>,
 }
 
 impl BakeReport {
@@ -210,5 +213,6 @@ pub fn bake_preset(
         metric_seconds,
         errors,
         cache,
+        residual_note: model.residual_cache_note().map(str::to_owned),
     })
 }

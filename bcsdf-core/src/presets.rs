@@ -43,7 +43,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 1.69,
             sigma_ma: 0.17,
             g: 0.44,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -61,7 +61,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 2.47,
             sigma_ma: 0.12,
             g: 0.60,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -79,7 +79,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 2.51,
             sigma_ma: 0.09,
             g: 0.46,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -97,7 +97,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 2.44,
             sigma_ma: 0.00,
             g: 0.26,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -115,7 +115,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 1.34,
             sigma_ma: 0.06,
             g: 0.36,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -133,7 +133,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 0.78,
             sigma_ma: 0.10,
             g: 0.12,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -151,7 +151,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 2.30,
             sigma_ma: 0.14,
             g: 0.08,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -169,7 +169,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 3.15,
             sigma_ma: 0.21,
             g: 0.79,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -187,7 +187,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 2.45,
             sigma_ma: 0.31,
             g: 0.19,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -205,7 +205,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 3.49,
             sigma_ma: 0.00,
             g: 0.28,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -226,7 +226,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 0.0,
             sigma_ma: 0.0,
             g: 0.0,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
     Preset {
@@ -247,7 +247,7 @@ pub const PRESETS: [Preset; 12] = [
             sigma_ms: 2.0,
             sigma_ma: 0.1,
             g: 0.6,
-            closure: crate::params::Closure::Report,
+            closure: crate::params::Closure::Energy,
         },
     },
 ];

@@ -128,7 +128,7 @@ fn closure_takes_its_names_and_nothing_else() {
     let parsed = presets::parse(base, "c.toml").unwrap();
     assert_eq!(
         parsed[0].input.closure,
-        bcsdf_core::Closure::Report,
+        bcsdf_core::Closure::Energy,
         "the default (docs/model.md §12 Status)"
     );
     for bad in ["closure = \"both\"", "closure = 1"] {

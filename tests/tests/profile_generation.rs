@@ -11,6 +11,7 @@ use bake::profiles::{
     CacheOutcome, Error, OwnedModel, OwnedProfiles, ProfileKey, ProfileOptions,
 };
 use bcsdf_core::medulla::{self, PhotonBudget, ProfileError, ProfileLayout, Resolution};
+use bcsdf_core::residual::{ResidualLayout, ResidualTable};
 use bcsdf_core::{presets, Angles, FurBcsdf, FurParams};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -579,7 +580,13 @@ fn build_model_uses_profiles_only_when_the_medulla_scatters() {
     ));
     let prof = m.profiles().unwrap();
     assert!(prof.layout().matches(&p));
-    let direct: FurBcsdf = FurBcsdf::new(p, prof.view()).unwrap();
+    // bobcat is in the energy closure: the direct model carries the same residual table.
+    let residual = m.residual().expect("energy closure: a residual table");
+    let table = ResidualTable::new(p, ResidualLayout::DEFAULT, residual).unwrap();
+    let direct: FurBcsdf = FurBcsdf::new(p, prof.view())
+        .unwrap()
+        .with_residual(table)
+        .unwrap();
     let got = m.model().eval_far_lobes(&a);
     assert_eq!(got, direct.eval_far_lobes(&a));
     assert!(got.get(bcsdf_core::Lobe::TttTs).max_channel() > 0.0);

@@ -156,6 +156,9 @@ pub fn preset_model(
     if let Some(note) = outcome.as_ref().and_then(CacheOutcome::note) {
         let _ = writeln!(io::stderr().lock(), "note: {note}");
     }
+    if let Some(note) = model.residual_cache_note() {
+        let _ = writeln!(io::stderr().lock(), "note: {note}");
+    }
     Ok(model)
 }
 

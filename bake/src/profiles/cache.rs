@@ -31,7 +31,7 @@
 //! the table lengths, and finally every value through [`MedullaProfiles::new`]. The first
 //! failure is a [`CacheError`] with a one-line message.
 //!
-//! Files are written atomically ([`AtomicWriter`]): to a temporary file in the cache
+//! Files are written atomically ([`crate::fsutil::AtomicWriter`]): to a temporary file in the cache
 //! directory, flushed to disk, then renamed over the final name, so a reader sees the old file
 //! or the new one, never a half-written one; a write that fails or is interrupted leaves any
 //! existing file untouched (a crash can at worst leave a stray `.medulla-*.partial` file
@@ -64,15 +64,15 @@
 
 use super::generate::generate_parallel;
 use super::{Error, OwnedProfiles};
-use crate::fsutil::{output_path, AtomicWriter, OutputNameError, TEMP_SUFFIX};
+use crate::fsutil::{output_path, OutputNameError, TEMP_SUFFIX};
 use bcsdf_core::medulla::{
     PhotonBudget, ProfileError, ProfileLayout, Resolution, GENERATOR_VERSION,
 };
 use bcsdf_core::FurParams;
-use fs4::FileExt;
+use entry::{load_or_make, EntryPaths};
 use std::fmt;
 use std::fs;
-use std::io::{self, Write};
+use std::io;
 use std::path::{Path, PathBuf};
 
 /// Version of the cache file format described in the module documentation.
@@ -152,7 +152,14 @@ impl ProfileKey {
     /// The name of this key's cache entry: `medulla-<hash>` (16 hex digits), a valid name
     /// ([`bcsdf_core::params::check_name`]); the cache file and its lock add an extension.
     pub fn stem(&self) -> String {
-        format!("medulla-{:016x}", fnv1a64(&self.to_bytes()))
+        format!("medulla-{:016x}", self.id())
+    }
+
+    /// FNV-1a 64 of the key bytes (format and generator versions included): the hash in
+    /// [`ProfileKey::stem`], and what a cache entry derived from these profiles (the residual
+    /// table's, [`crate::profiles::residual`]) records of them.
+    pub fn id(&self) -> u64 {
+        fnv1a64(&self.to_bytes())
     }
 
     /// The cache file name of this key: `medulla-<hash>.furprof`.
@@ -177,7 +184,7 @@ impl ProfileKey {
 pub enum CacheError {
     /// The file exists but cannot be read.
     Read(io::Error),
-    /// The file is not a profile cache (wrong magic).
+    /// The file is not a cache file of the expected kind (wrong magic).
     BadMagic,
     /// The file is shorter (truncated) or longer than its header announces.
     Length {
@@ -220,7 +227,9 @@ impl fmt::Display for CacheError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             CacheError::Read(e) => write!(f, "unreadable: {e}"),
-            CacheError::BadMagic => f.write_str("corrupt: not a profile cache file (bad magic)"),
+            CacheError::BadMagic => {
+                f.write_str("corrupt: not a cache file of this kind (bad magic)")
+            }
             CacheError::Length { expected, found } if found < expected => write!(
                 f,
                 "corrupt: truncated ({found} bytes, the header announces {expected})"
@@ -234,10 +243,12 @@ impl fmt::Display for CacheError {
                 f,
                 "corrupt: checksum mismatch (stored {stored:016x}, contents {computed:016x})"
             ),
-            CacheError::FormatVersion(v) => write!(
-                f,
-                "stale: cache format version {v}, this build reads version {FORMAT_VERSION}"
-            ),
+            CacheError::FormatVersion(v) => {
+                write!(
+                    f,
+                    "stale: cache format version {v}, not the one this build reads"
+                )
+            }
             CacheError::GeneratorVersion(v) => write!(
                 f,
                 "stale: made by profile generator version {v}, this build is version \
@@ -274,11 +285,11 @@ pub fn encode(profiles: &OwnedProfiles) -> Vec<u8> {
     out
 }
 
-fn u32_at(b: &[u8], at: usize) -> u32 {
+pub(crate) fn u32_at(b: &[u8], at: usize) -> u32 {
     u32::from_le_bytes(b[at..at + 4].try_into().expect("4 bytes"))
 }
 
-fn u64_at(b: &[u8], at: usize) -> u64 {
+pub(crate) fn u64_at(b: &[u8], at: usize) -> u64 {
     u64::from_le_bytes(b[at..at + 8].try_into().expect("8 bytes"))
 }
 
@@ -392,7 +403,7 @@ impl CacheOutcome {
     pub fn note(&self) -> Option<String> {
         match self {
             CacheOutcome::Regenerated { path, reason } => Some(format!(
-                "medulla profile cache {} was {reason}; regenerated and rewritten",
+                "cache file {} was {reason}; regenerated and rewritten",
                 path.display()
             )),
             _ => None,
@@ -400,21 +411,11 @@ impl CacheOutcome {
     }
 }
 
-/// Reads the cache file at `path` for `key`: `Ok(Some)` for valid profiles, `Ok(None)` when
-/// there is no file, `Err` with the reason a file was rejected.
-fn read_entry(path: &Path, key: &ProfileKey) -> Result<Option<OwnedProfiles>, CacheError> {
-    match fs::read(path) {
-        Ok(bytes) => decode(&bytes, key).map(Some),
-        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
-        Err(e) => Err(CacheError::Read(e)),
-    }
-}
-
 /// Removes the temporary files a killed writer of the cache file `path` left behind
 /// (`.<file name>.*.partial`, [`AtomicWriter`]'s names). Call only with the entry's lock held:
 /// then no other bake is writing one. Best effort (a file that cannot be removed is left; it
 /// is never read).
-fn remove_stray_partials(dir: &Path, path: &Path) {
+pub(crate) fn remove_stray_partials(dir: &Path, path: &Path) {
     let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
         return;
     };
@@ -459,52 +460,17 @@ pub fn load_or_generate(
         budget,
         seed,
     };
-    let path = key.path_in(dir).map_err(Error::CacheName)?;
-    // A valid file needs no lock: it is only ever replaced whole (renamed over).
-    if let Ok(Some(p)) = read_entry(&path, &key) {
-        return Ok((p, CacheOutcome::Hit { path }));
-    }
-    // Creating the lock file also checks, before the work, that the directory is writable.
-    let dir_error = |source| Error::CacheDir {
-        dir: dir.to_path_buf(),
-        source,
+    let paths = EntryPaths {
+        dir,
+        file: key.path_in(dir).map_err(Error::CacheName)?,
+        lock: key.lock_path_in(dir).map_err(Error::CacheName)?,
     };
-    fs::create_dir_all(dir).map_err(dir_error)?;
-    let lock_path = key.lock_path_in(dir).map_err(Error::CacheName)?;
-    let lock = fs::OpenOptions::new()
-        .read(true)
-        .write(true)
-        .create(true)
-        .truncate(false)
-        .open(&lock_path)
-        .map_err(dir_error)?;
-    // Blocks while another bake generates this entry; the system releases the lock when its
-    // holder exits, however it exits. Released when `lock` is dropped, on every path below.
-    FileExt::lock(&lock).map_err(|source| Error::CacheLock {
-        path: lock_path.clone(),
-        source,
-    })?;
-    // Another bake may have written the file while this one waited.
-    let rejected = match read_entry(&path, &key) {
-        Ok(Some(p)) => return Ok((p, CacheOutcome::Hit { path })),
-        Ok(None) => None,
-        Err(e) => Some(e),
-    };
-    remove_stray_partials(dir, &path);
-    let mut writer = AtomicWriter::new(&path).map_err(dir_error)?;
-    let profiles = generate_parallel(&layout, &budget, seed, threads)?;
-    let write_error = |source| Error::CacheWrite {
-        path: path.clone(),
-        source,
-    };
-    writer.write_all(&encode(&profiles)).map_err(write_error)?;
-    writer.commit().map_err(write_error)?;
-    drop(lock);
-    let outcome = match rejected {
-        Some(reason) => CacheOutcome::Regenerated { path, reason },
-        None => CacheOutcome::Generated { path: Some(path) },
-    };
-    Ok((profiles, outcome))
+    load_or_make(
+        paths,
+        |bytes| decode(bytes, &key),
+        || generate_parallel(&layout, &budget, seed, threads),
+        encode,
+    )
 }
 
 /// The default cache directory: `$FUR_BCSDF_CACHE` if set (and not empty), else
@@ -522,6 +488,8 @@ pub fn default_cache_dir() -> Option<PathBuf> {
     }
     var("HOME").map(|home| PathBuf::from(home).join(".cache").join("fur-bcsdf"))
 }
+
+pub(crate) mod entry;
 
 #[cfg(test)]
 mod tests;

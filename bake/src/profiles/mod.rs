@@ -42,7 +42,10 @@ pub use cache::{
 };
 pub use generate::{generate_parallel, scale_budget};
 pub use model::{build_model, needs_profiles, OwnedModel, ProfileOptions};
-pub use residual::generate_residual;
+pub use residual::{
+    decode_residual, encode_residual, generate_residual, load_or_generate_residual, ResidualKey,
+    RESIDUAL_EXTENSION, RESIDUAL_FORMAT_VERSION, RESIDUAL_MAGIC,
+};
 
 use bcsdf_core::medulla::{MedullaProfiles, PhotonBudget, ProfileError, ProfileLayout};
 use std::fmt;

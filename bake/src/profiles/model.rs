@@ -3,7 +3,7 @@
 //! [`FurBcsdf`] over them.
 
 use super::cache::load_or_generate;
-use super::residual::generate_residual;
+use super::residual::load_or_generate_residual;
 use super::{Error, OwnedProfiles, DEFAULT_SEED};
 use bcsdf_core::medulla::{PhotonBudget, ProfileError, Resolution};
 use bcsdf_core::residual::{ResidualLayout, ResidualTable};
@@ -51,6 +51,7 @@ pub struct OwnedModel {
     params: FurParams,
     profiles: Option<OwnedProfiles>,
     residual: Option<Vec<f32>>,
+    residual_note: Option<String>,
 }
 
 impl OwnedModel {
@@ -71,17 +72,24 @@ impl OwnedModel {
             params,
             profiles,
             residual: None,
+            residual_note: None,
         })
     }
 
     /// This model with the residual table `data` ([`ResidualLayout::DEFAULT`], generated for
-    /// these parameters by [`generate_residual`]); checked like [`ResidualTable::new`].
+    /// these parameters by [`super::residual::generate_residual`]); checked like [`ResidualTable::new`].
     pub fn with_residual(self, data: Vec<f32>) -> Result<OwnedModel, ProfileError> {
         ResidualTable::new(self.params, ResidualLayout::DEFAULT, &data)?;
         Ok(OwnedModel {
             residual: Some(data),
             ..self
         })
+    }
+
+    /// Why [`build_model`] did not use the residual's cache file, when it rejected one
+    /// ([`super::CacheOutcome::note`]).
+    pub fn residual_cache_note(&self) -> Option<&str> {
+        self.residual_note.as_deref()
     }
 
     /// The residual table, when the model has one.
@@ -128,8 +136,10 @@ impl OwnedModel {
 
 /// The model for `params`: profiles from [`load_or_generate`] with `opts` when
 /// [`needs_profiles`], none otherwise (the outcome is then `None` and nothing is generated
-/// or cached); in the energy closure also the residual table ([`generate_residual`] at
-/// [`ResidualLayout::DEFAULT`] with `opts.seed`), for every parameter set.
+/// or cached); in the energy closure also the residual table ([`load_or_generate_residual`]
+/// at [`ResidualLayout::DEFAULT`] with `opts.seed`, cached in `opts.cache_dir` beside the
+/// profiles), for every parameter set. The profiles' cache outcome is returned; a rejected
+/// residual cache file leaves its note in [`OwnedModel::residual_cache_note`].
 pub fn build_model(
     params: FurParams,
     opts: &ProfileOptions,
@@ -150,11 +160,14 @@ pub fn build_model(
     if params.closure() != Closure::Energy {
         return Ok((model, outcome));
     }
-    let (data, _) = generate_residual(
-        &model.model_without_residual::<Libm>(),
-        &ResidualLayout::DEFAULT,
+    let (data, residual_outcome) = load_or_generate_residual(
+        &model,
+        ResidualLayout::DEFAULT,
         opts.seed,
+        opts.cache_dir.as_deref(),
         opts.threads,
     )?;
-    Ok((model.with_residual(data)?, outcome))
+    let mut model = model.with_residual(data)?;
+    model.residual_note = residual_outcome.note();
+    Ok((model, outcome))
 }

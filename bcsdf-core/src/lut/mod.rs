@@ -176,7 +176,7 @@ impl LutResolution {
     /// The default resolution (docs/lut.md gives the error it was chosen by).
     pub const DEFAULT: LutResolution = LutResolution {
         n_sum: 1024,
-        n_theta_r: 48,
+        n_theta_r: 64,
         n_phi: 128,
         n_ms_i: 96,
         n_ms_r: 96,

@@ -2,18 +2,19 @@
 
 use core::fmt;
 
-/// `closure`, a choice of the model (docs/model.md §12): [`Closure::Report`] (the default, for
-/// now) evaluates the report's equations as written; [`Closure::Energy`] normalises every
-/// longitudinal lobe on the sphere of directions, θ_i ∈ [−π/2, π/2]. Energy becomes the
-/// default once its baked cost is within budget and its residual term exists (docs/model.md
-/// §12, "Status").
+/// `closure`, a choice of the model (docs/model.md §12): [`Closure::Energy`] (the default)
+/// normalises every longitudinal lobe on the sphere of directions, θ_i ∈ [−π/2, π/2], and adds
+/// the residual of the paths the report leaves out, so that a lossless fiber keeps all the
+/// light; [`Closure::Report`] evaluates the report's equations as written (kept bit for bit,
+/// for checking against the report and the authors' code).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 #[repr(u8)]
 pub enum Closure {
     /// The report's model, bit for bit: Gaussian M_p normalised on the whole line.
-    #[default]
     Report = 0,
-    /// Energy-keeping: M_p renormalised by its mass inside [−π/2, π/2] (docs/model.md §12).
+    /// Energy-keeping, the default: M_p renormalised by its mass inside [−π/2, π/2] and the
+    /// residual lobe (docs/model.md §12).
+    #[default]
     Energy = 1,
 }
 

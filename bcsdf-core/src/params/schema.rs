@@ -284,8 +284,9 @@ pub const SCHEMA: [ParamSpec; 14] = [
         unit: "",
         meaning: "energy closure: report (as published) or energy (lobes normalised on the sphere)",
         domain: Domain::closed(0.0, 1.0),
-        // report until the energy closure's baked cost is within its budget (docs/model.md §12).
-        default: ParamDefault::Value(0.0),
+        // energy: the fiber keeps the light it should (docs/model.md §12); `report` is kept
+        // for checking against the report's equations.
+        default: ParamDefault::Value(1.0),
         choices: &Closure::NAMES,
     },
 ];

@@ -24,13 +24,14 @@
 //! every direction. It costs one evaluation's lookups plus seven prefix reads.
 
 use super::choose;
+use super::sliver::pole_keep;
 use crate::baked::{BakedBcsdf, Lookups};
 use crate::bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection};
 use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
 use crate::lut::cdf::Density;
 use crate::math::{Math, PI};
-use rows::Rows;
+use rows::{Range, Rows};
 pub use view::BakedView;
 
 mod rows;
@@ -75,25 +76,37 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     }
 
     /// Mixture weights A_c(θ_r) of the five parts (R, TT, TRT, scattered back, front) and
-    /// the CDF offsets of the M ranges.
+    /// their θ_i ranges, every mass with S's pole factor g (docs/model.md §10).
     #[inline(always)]
-    fn parts(&self, theta_r: f32) -> ([f32; 5], [(f32, f32); 3]) {
+    fn parts(&self, theta_r: f32) -> ([f32; 5], [Range; 5]) {
         let m = self.m_masses(theta_r);
         let nr = self.theta_r.locate(theta_r.abs());
-        let sr = self.ms_r.locate(theta_r);
         let nu_s = self.row_total(Density::N(3), nr);
         let mu_s = self.row_total(Density::Front, nr);
+        // The θ_i ranges: M_g over x = θ_i + θ_r ∈ [θ_r − π/2, θ_r + π/2], M^s_x over θ_i.
+        let (lo, hi) = (theta_r - PI / 2.0, theta_r + PI / 2.0);
+        let ranges: [Range; 5] = core::array::from_fn(|c| {
+            if c < 3 {
+                self.m_rows(c).range(lo, hi, m[c].1, m[c].0)
+            } else {
+                let rows = self.ms_rows(c - 3, theta_r);
+                rows.range(-PI / 2.0, PI / 2.0, 0.0, rows.total())
+            }
+        });
         // The mass of the evaluated M_g: the tabulated one times the closure's factor.
         let norm = self.sphere_norms(self.norm.locate(theta_r));
-        let mass = |g: usize| m[g].0 * norm[g];
+        let mass = |g: usize| ranges[g].kept() * norm[g];
         let a = [
             2.0 * mass(0) * self.row_total(Density::N(0), nr),
             2.0 * mass(1) * self.row_total(Density::N(1), nr),
             2.0 * mass(2) * self.row_total(Density::N(2), nr),
-            2.0 * self.row_total(Density::MS(0), sr) * (nu_s - mu_s),
-            2.0 * self.row_total(Density::MS(1), sr) * mu_s,
+            2.0 * ranges[3].kept() * (nu_s - mu_s),
+            2.0 * ranges[4].kept() * mu_s,
         ];
-        (a.map(|v| if v.is_finite() && v > 0.0 { v } else { 0.0 }), m)
+        (
+            a.map(|v| if v.is_finite() && v > 0.0 { v } else { 0.0 }),
+            ranges,
+        )
     }
 
     /// The mixture density of the lookups per unit solid angle, given W.
@@ -106,6 +119,8 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let [back, front] = l.ms;
         let ms = back + l.front * (front - back);
         let p = l.m[0] * mean(0) + l.m[1] * mean(1) + l.m[2] * mean(2) + ms * mean(3);
+        // S's pole factor g: S·cos²θ_i = (Σ M·N)·g (exactly 1 outside the slivers).
+        let p = p * pole_keep(cos_theta_i);
         let v = solid_angle_pdf(p / total_weight, cos_theta_i);
         if v.is_finite() && v > 0.0 {
             v
@@ -114,24 +129,22 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// Draws (θ_i, φ) given a valid θ_r and its [`BakedBcsdf::parts`] `(a, m)` from three
-    /// uniform numbers (docs/model.md §10).
+    /// Draws (θ_i, φ) given a valid θ_r and its [`BakedBcsdf::parts`] `(a, ranges)` from
+    /// three uniform numbers (docs/model.md §10).
     fn draw(
         &self,
         theta_r: f32,
-        (a, m): ([f32; 5], [(f32, f32); 3]),
+        (a, ranges): ([f32; 5], [Range; 5]),
         u: [f32; 3],
     ) -> Option<SampledDirection> {
         let (c, u0) = choose(&a, u[0])?;
         let negative = u0 < 0.5;
         let theta_i = if c < 3 {
-            let rows = self.m_rows(c);
-            let (mass, lo) = m[c];
-            let x = rows.invert_between(lo, lo + mass, u[1]);
+            let x = self.m_rows(c).invert_kept(&ranges[c], u[1]);
             (x - theta_r).clamp(-PI / 2.0, PI / 2.0)
         } else {
-            let rows = self.ms_rows(c - 3, theta_r);
-            rows.invert_between(0.0, rows.total(), u[1])
+            self.ms_rows(c - 3, theta_r)
+                .invert_kept(&ranges[c], u[1])
                 .clamp(-PI / 2.0, PI / 2.0)
         };
         let family = if c < 3 { c } else { 3 };

@@ -8,6 +8,7 @@
 //! `eval_with_pdf` and `sample` from them. The [`Bcsdf`](crate::Bcsdf) methods of
 //! [`BakedBcsdf`] go through a view too, so both give the same bits.
 
+use super::rows::Range;
 use crate::baked::BakedBcsdf;
 use crate::bcsdf::{finish, Sample, SampledDirection};
 use crate::frame::Angles;
@@ -38,8 +39,8 @@ pub struct BakedView<'l, 'a, M: Math> {
     theta_r: f32,
     /// A_c(θ_r) of the five parts (R, TT, TRT, scattered back, front).
     weights: [f32; 5],
-    /// (∫ M_g over θ_i ∈ [−π/2, π/2], CDF at the range start), g = R, TT, TRT.
-    masses: [(f32, f32); 3],
+    /// The five parts' θ_i ranges and their masses with S's pole factor.
+    ranges: [Range; 5],
     /// W = Σ_c A_c.
     total_weight: f32,
 }
@@ -53,13 +54,13 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         if !(theta_r.is_finite() && theta_r.abs() <= PI / 2.0) {
             return None;
         }
-        let (weights, masses) = self.parts(theta_r);
+        let (weights, ranges) = self.parts(theta_r);
         let [a, b, c, d, e] = weights;
         Some(BakedView {
             lut: self,
             theta_r,
             weights,
-            masses,
+            ranges,
             total_weight: a + b + c + d + e,
         })
     }
@@ -95,7 +96,7 @@ impl<M: Math> BakedView<'_, '_, M> {
     /// [`Bcsdf::sample_direction`](crate::Bcsdf::sample_direction).
     #[must_use]
     pub fn sample_direction(&self, u: [f32; 3]) -> Option<SampledDirection> {
-        self.lut.draw(self.theta_r, (self.weights, self.masses), u)
+        self.lut.draw(self.theta_r, (self.weights, self.ranges), u)
     }
 
     /// Importance-samples ω_i from three uniform numbers: direction, density, weight, as

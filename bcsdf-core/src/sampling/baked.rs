@@ -1,27 +1,30 @@
 //! Sampling the baked tables (docs/model.md §10, docs/lut.md "Sampling data").
 //!
-//! The baked far field is S·cos²θ_i = Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s,
-//! every factor piecewise linear along its axis. The sampler is a mixture of five separable
-//! parts, each drawing θ_i and φ from one interpolated table row, exactly as `eval`
-//! interpolates it:
+//! The baked far field is S·cos²θ_i = [Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s]·g(θ_i),
+//! every factor piecewise linear along its axis and g = min(1, cos²θ_i/10⁻⁴) the factor S's
+//! pole guard 1/max(cos²θ_i, 10⁻⁴) leaves (1 except within s_c = 0.573° of θ_i = ±90°,
+//! [`super::sliver`]). The sampler is a mixture of five separable parts, each drawing θ_i
+//! and φ from one interpolated table row, exactly as `eval` interpolates it:
 //!
 //! | part c | θ_i density | φ density | weight A_c(θ_r) |
 //! |---|---|---|---|
-//! | g = R, TT, TRT | M_g(θ_i + θ_r)/m_g, θ_i ∈ [−π/2, π/2] | n_g(\|φ\|)/(2 ν_g) | 2·m_g·ν_g |
-//! | scattered back | M^s_back(θ_i, θ_r)/s_back | (1 − \|φ\|/π)·n_s(\|φ\|)/(2 (ν_s − μ_s)) | 2·s_back·(ν_s − μ_s) |
-//! | scattered front | M^s_front(θ_i, θ_r)/s_front | (\|φ\|/π)·n_s(\|φ\|)/(2 μ_s) | 2·s_front·μ_s |
+//! | g = R, TT, TRT | M_g(θ_i + θ_r)·g(θ_i)/m_g, θ_i ∈ [−π/2, π/2] | n_g(\|φ\|)/(2 ν_g) | 2·m_g·ν_g |
+//! | scattered back | M^s_back(θ_i, θ_r)·g(θ_i)/s_back | (1 − \|φ\|/π)·n_s(\|φ\|)/(2 (ν_s − μ_s)) | 2·s_back·(ν_s − μ_s) |
+//! | scattered front | M^s_front(θ_i, θ_r)·g(θ_i)/s_front | (\|φ\|/π)·n_s(\|φ\|)/(2 μ_s) | 2·s_front·μ_s |
 //!
 //! with n_f the mean of family f's three N channels, ν_f = ∫₀^π n_f, μ_s = ∫₀^π (φ/π)·n_s,
-//! m_g = ∫ M_g over the restricted range (in the energy closure M_g is multiplied by the
-//! LUT's 1/Z_g, docs/model.md §12) and s_x = ∫ M^s_x dθ_i (all exact integrals of the
-//! interpolants, from the LUT's prefix sums). The two scattered parts are the two separable
+//! m_g = ∫ M_g·g over the restricted range (in the energy closure M_g is multiplied by the
+//! LUT's 1/Z_g, docs/model.md §12) and s_x = ∫ M^s_x·g dθ_i: exact integrals of the
+//! interpolants, from the LUT's prefix sums outside the pole slivers and in closed form
+//! within them (`rows::Range`, [`super::sliver`]). The two scattered parts are the two separable
 //! products of the exact blend M^s = (1 − |φ|/π)·M^s_back + (|φ|/π)·M^s_front. The mixture
 //! density per unit solid angle is then
 //!
-//! p_ω = [Σ_g M_g·n_g + M^s·n_s] / (W·cos θ_i),   W = Σ_c A_c,
+//! p_ω = [Σ_g M_g·n_g + M^s·n_s]·g(θ_i) / (W·cos θ_i),   W = Σ_c A_c,
 //!
 //! the mean channel of S·cos θ_i over W: for a grey fiber the weight S·cos θ_i/p_ω is W at
-//! every direction. It costs one evaluation's lookups plus seven prefix reads.
+//! every direction, and W is the directional albedo ρ(θ_r). It costs one evaluation's lookups
+//! plus seven prefix reads, and per view the ten slivers' pieces.
 
 use super::choose;
 use super::sliver::pole_keep;

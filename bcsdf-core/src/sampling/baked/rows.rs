@@ -64,6 +64,8 @@ pub(super) struct Rows<'a> {
     fronts: (&'a [u8], &'a [u8]),
     weighting: Weighting,
     w: f32,
+    /// The rows' axis (its node location, for the pole slivers).
+    axis: Axis,
     /// Axis origin and node spacing.
     pub(super) origin: f32,
     pub(super) step: f32,
@@ -127,6 +129,7 @@ impl<'a> Rows<'a> {
             fronts,
             weighting,
             w,
+            axis: *axis,
             origin: axis.lo,
             step: l.step,
             nodes: l.nodes,
@@ -212,47 +215,38 @@ impl<'a> Rows<'a> {
         invert_weighted_linear(v0, v1, a, b, self.step, t)
     }
 
-    /// Calls `f(start, length, value at the start, value at the end)` on the pieces of
-    /// [a, b] between the rows' nodes, in axis order, until it returns true (and then
-    /// returns true).
+    /// Calls `f(offset from a, length, value at the start, value at the end)` on the pieces
+    /// of [a, b] between the rows' nodes, in axis order, until it returns true. The pieces
+    /// are found where `eval` finds them: by the axis's own location of a and b
+    /// ([`Axis::locate`], which the WGSL twin forms with the same roundings), lengths as
+    /// differences of node weights times the node spacing (no division).
     #[inline(always)]
-    fn pieces(&self, a: f32, b: f32, mut f: impl FnMut(f32, f32, f32, f32) -> bool) -> bool {
-        let last = self.nodes.saturating_sub(2);
-        let node = |x: f32| {
-            let u = ((x - self.origin) / self.step).max(0.0);
-            (libm::floorf(u) as usize).min(last)
-        };
-        let at = |j: usize, x: f32| {
-            let (v0, v1) = (self.value(j), self.value(j + 1));
-            let w = ((x - self.origin) / self.step - j as f32).clamp(0.0, 1.0);
-            v0 + (v1 - v0) * w
-        };
-        let end = node(b);
-        let mut x = a;
-        for j in node(a)..=end {
-            let next = if j == end {
-                b
-            } else {
-                (self.origin + (j + 1) as f32 * self.step).min(b)
-            };
-            if next > x {
-                if f(x, next - x, at(j, x), at(j, next)) {
-                    return true;
+    fn pieces(&self, a: f32, b: f32, mut f: impl FnMut(f32, f32, f32, f32) -> bool) {
+        let ((ja, wa), (jb, wb)) = (self.axis.locate(a), self.axis.locate(b));
+        let mut off = 0.0;
+        for j in ja..=jb {
+            let w0 = if j == ja { wa } else { 0.0 };
+            let w1 = if j == jb { wb } else { 1.0 };
+            if w1 > w0 {
+                let (v0, v1) = (self.value(j), self.value(j + 1));
+                let len = (w1 - w0) * self.step;
+                if f(off, len, v0 + (v1 - v0) * w0, v0 + (v1 - v0) * w1) {
+                    return;
                 }
-                x = next;
+                off += len;
             }
         }
-        false
     }
 
-    /// The sliver [a, b] (one end at `pole`): its raw mass and its mass times g (the pieces
-    /// between the nodes, [`sliver_piece_mass`]).
+    /// The sliver [a, b] (one end at `pole`, a or b): its raw mass and its mass times g (the
+    /// pieces between the nodes, [`sliver_piece_mass`], at distances (a − pole) + offset).
     #[inline]
     pub(super) fn sliver(&self, a: f32, b: f32, pole: f32) -> Sliver {
         let mut out = Sliver::default();
-        self.pieces(a, b, |x, len, v0, v1| {
+        let at = a - pole;
+        self.pieces(a, b, |off, len, v0, v1| {
             out.raw += linear_mass(v0, v1, len);
-            out.kept += sliver_piece_mass(v0, v1, len, x, pole, len);
+            out.kept += sliver_piece_mass(v0, v1, len, at + off, 0.0, len);
             false
         });
         out
@@ -261,12 +255,12 @@ impl<'a> Rows<'a> {
     /// The position in the sliver [a, b] (one end at `pole`) where its running mass times g
     /// from a reaches t (b if t is past its mass).
     fn invert_sliver(&self, a: f32, b: f32, pole: f32, t: f32) -> f32 {
-        let mut acc = 0.0;
-        let mut out = b;
-        self.pieces(a, b, |x, len, v0, v1| {
-            let m = sliver_piece_mass(v0, v1, len, x, pole, len);
+        let (mut acc, mut out) = (0.0, b);
+        let at = a - pole;
+        self.pieces(a, b, |off, len, v0, v1| {
+            let m = sliver_piece_mass(v0, v1, len, at + off, 0.0, len);
             if m > 0.0 && t - acc <= m {
-                out = x + invert_sliver_piece(v0, v1, len, x, pole, t - acc);
+                out = a + (off + invert_sliver_piece(v0, v1, len, at + off, 0.0, t - acc));
                 return true;
             }
             acc += m;

@@ -3,8 +3,8 @@
 //!
 //! A path tracer asks, at each bounce, for one sample and the density of one or more other
 //! directions (the lights', for multiple importance sampling), all for the same ω_r. The
-//! mixture weights A_c(θ_r), their total W and the CDF offsets of the M_g ranges depend on
-//! θ_r only; [`BakedBcsdf::view`] computes them once and [`BakedView`] answers `pdf`,
+//! mixture weights A_c(θ_r), their total W and the parts' θ_i ranges with their pole
+//! slivers' masses depend on θ_r only; [`BakedBcsdf::view`] computes them once and [`BakedView`] answers `pdf`,
 //! `eval_with_pdf` and `sample` from them. The [`Bcsdf`](crate::Bcsdf) methods of
 //! [`BakedBcsdf`] go through a view too, so both give the same bits.
 
@@ -16,7 +16,8 @@ use crate::lobes::Families;
 use crate::math::{cos_within_half_pi, Math, PI};
 
 /// The baked sampler at one view direction θ_r ([`BakedBcsdf::view`]): the mixture weights
-/// and M_g range masses of docs/model.md §10, computed once; `pdf`, `eval_with_pdf` and
+/// and the parts' θ_i range masses (with S's pole factor, including the pole slivers) of
+/// docs/model.md §10, computed once; `pdf`, `eval_with_pdf` and
 /// `sample` then cost the table lookups of one direction (and, for `sample`, the row
 /// inversions).
 ///

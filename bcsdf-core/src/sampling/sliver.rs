@@ -39,7 +39,7 @@ pub fn pole_keep(cos_theta_i: f32) -> f32 {
     (c * c * (1.0 / MIN_COS2_THETA_I)).min(1.0)
 }
 
-/// k(s) = (s² − s⁴/3)/10⁻⁴: g at distance s ∈ [0, s_c] from a pole, sin²s by its Taylor
+/// k(s) = (s² − s⁴/3)/10⁻⁴ (docs/model.md §10): g at distance s ∈ [0, s_c] from a pole, sin²s by its Taylor
 /// polynomial to s⁴ (relative error below 4.5e-10, module documentation); 1 beyond s_c.
 #[inline(always)]
 #[must_use]
@@ -60,9 +60,9 @@ const GAUSS3: [(f32, f32); 3] = [
     (0.887_298_3, 5.0 / 18.0),
 ];
 
-/// ∫ v(x)·k(|x − pole|) dx over [x0, x0 + len], v going linearly from `v0` at x0 to `v1` at
+/// (docs/model.md §10) ∫ v(x)·k(|x − pole|) dx over [x0, x0 + len], v going linearly from `v0` at x0 to `v1` at
 /// x0 + `len0` (the piece's own length, ≥ len): the mass of the first `len` of a linear
-/// piece inside a sliver, exactly (k·v has degree 5: [`GAUSS3`]).
+/// piece inside a sliver, exactly (k·v has degree 5: three-point Gauss–Legendre).
 #[inline]
 #[must_use]
 pub fn sliver_piece_mass(v0: f32, v1: f32, len0: f32, x0: f32, pole: f32, len: f32) -> f32 {
@@ -79,7 +79,7 @@ pub fn sliver_piece_mass(v0: f32, v1: f32, len0: f32, x0: f32, pole: f32, len: f
 }
 
 /// The offset d ∈ [0, len] at which [`sliver_piece_mass`]`(v0, v1, len, x0, pole, d)` = `t`,
-/// for v ≥ 0 on the piece: Newton steps inside a shrinking bracket from the offset that a
+/// for v ≥ 0 on the piece (docs/model.md §10): Newton steps inside a shrinking bracket from the offset that a
 /// uniform density would give, at most sixteen, until a step moves d by at most 1.2e-7 of
 /// len (the mass is increasing; its derivative v·k vanishes only at the pole, where the
 /// bracket's bisection takes over).

@@ -27,6 +27,8 @@ const FUR_HALF_PI: f32 = 1.57079637;
 const FUR_TAU: f32 = 6.28318548;
 // cos^2(theta_i) floor of the 1/cos^2 factor (model::MIN_COS2_THETA_I).
 const FUR_MIN_COS2: f32 = 1e-4;
+// Width of the pole slivers where that floor acts (model::POLE_SLIVER).
+const FUR_POLE_SLIVER: f32 = 0.010000167;
 // Halves before the first table: the 160-byte header.
 const FUR_HEADER_HALVES: u32 = 80u;
 
@@ -644,6 +646,147 @@ fn fur_rows_invert_between(r: FurRows, t0: f32, t1: f32, u: f32) -> f32 {
     return fur_rows_invert(r, t);
 }
 
+// ---- The pole slivers (sampling::sliver, docs/model.md §10) ----
+
+// sampling::sliver::pole_keep: g = min(1, cos^2/1e-4), cos kept at or above 1e-6.
+fn fur_pole_keep(cos_theta_i: f32) -> f32 {
+    let c = max(cos_theta_i, 1e-6);
+    return min(c * c * (1.0 / FUR_MIN_COS2), 1.0);
+}
+
+// sampling::sliver::sliver_keep: (s^2 - s^4/3)/1e-4 within a sliver, 1 beyond.
+fn fur_sliver_keep(s_in: f32) -> f32 {
+    let s = abs(s_in);
+    if (!(s < FUR_POLE_SLIVER)) {
+        return 1.0;
+    }
+    let s2 = s * s;
+    return min(s2 * (1.0 - s2 * (1.0 / 3.0)) * (1.0 / FUR_MIN_COS2), 1.0);
+}
+
+// sampling::sliver::sliver_piece_mass: three-point Gauss-Legendre of v * keep over the first
+// len of a linear piece of length len0 starting at x0.
+fn fur_sliver_piece_mass(v0: f32, v1: f32, len0: f32, x0: f32, pole: f32, len: f32) -> f32 {
+    if (!(len > 0.0 && len0 > 0.0)) {
+        return 0.0;
+    }
+    let slope = (v1 - v0) / len0;
+    let t = array<f32, 3>(0.11270166, 0.5, 0.8872983);
+    let w = array<f32, 3>(5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0);
+    var acc = 0.0;
+    for (var k = 0u; k < 3u; k = k + 1u) {
+        let d = t[k] * len;
+        acc = acc + w[k] * (v0 + slope * d) * fur_sliver_keep((x0 - pole) + d);
+    }
+    return acc * len;
+}
+
+// sampling::sliver::invert_sliver_piece: bracketed Newton steps, at most sixteen.
+fn fur_invert_sliver_piece(v0: f32, v1: f32, len: f32, x0: f32, pole: f32, t: f32) -> f32 {
+    let total = fur_sliver_piece_mass(v0, v1, len, x0, pole, len);
+    if (!(total > 0.0) || !(t > 0.0)) {
+        return 0.0;
+    }
+    if (!(t < total)) {
+        return len;
+    }
+    let slope = (v1 - v0) / len;
+    var lo = 0.0;
+    var hi = len;
+    var d = len * (t / total);
+    for (var k = 0u; k < 16u; k = k + 1u) {
+        let f = fur_sliver_piece_mass(v0, v1, len, x0, pole, d) - t;
+        if (f > 0.0) {
+            hi = d;
+        } else {
+            lo = d;
+        }
+        let dens = (v0 + slope * d) * fur_sliver_keep((x0 - pole) + d);
+        var next = 0.5 * (lo + hi);
+        if (dens > 0.0) {
+            let n = d - f / dens;
+            if (n >= lo && n <= hi) {
+                next = n;
+            }
+        }
+        let done = abs(next - d) <= 1.2e-7 * len;
+        d = next;
+        if (done) {
+            break;
+        }
+    }
+    return clamp(d, 0.0, len);
+}
+
+// Rows::sliver: (raw mass, mass times g) of the sliver [a, b] with a pole at a or b, or, with
+// t >= 0 (Rows::invert_sliver), in .z the position where the mass times g from a reaches t
+// (b past its mass). The pieces between the nodes as Rows::pieces finds them: by the axis's
+// location of a and b, lengths from node weights times the spacing.
+fn fur_rows_sliver(r: FurRows, ax: FurAxis, a: f32, b: f32, pole: f32, t: f32) -> vec3<f32> {
+    let la = fur_locate(ax, a);
+    let lb = fur_locate(ax, b);
+    let at = a - pole;
+    var off = 0.0;
+    var out = vec3<f32>(0.0, 0.0, b);
+    for (var j = la.i; j <= lb.i; j = j + 1u) {
+        let w0 = select(0.0, la.w, j == la.i);
+        let w1 = select(1.0, lb.w, j == lb.i);
+        if (w1 > w0) {
+            let n0 = fur_rows_value(r, j);
+            let n1 = fur_rows_value(r, j + 1u);
+            let len = (w1 - w0) * r.d.step;
+            let v0 = n0 + (n1 - n0) * w0;
+            let v1 = n0 + (n1 - n0) * w1;
+            let m = fur_sliver_piece_mass(v0, v1, len, at + off, 0.0, len);
+            if (t >= 0.0 && m > 0.0 && t - out.y <= m) {
+                out.z = a + (off + fur_invert_sliver_piece(v0, v1, len, at + off, 0.0, t - out.y));
+                return out;
+            }
+            out.x = out.x + fur_linear_mass(v0, v1, len);
+            out.y = out.y + m;
+            off = off + len;
+        }
+    }
+    return out;
+}
+
+// Rows::range: a part's theta_i range [lo, hi] and its masses; slivers (raw, kept) at lo
+// (.xy of s) and hi (.zw).
+struct FurRange {
+    lo: f32,
+    hi: f32,
+    start: f32,
+    raw: f32,
+    s: vec4<f32>,
+}
+
+fn fur_rows_range(r: FurRows, ax: FurAxis, lo: f32, hi: f32, start: f32, raw: f32) -> FurRange {
+    let a = fur_rows_sliver(r, ax, lo, lo + FUR_POLE_SLIVER, lo, -1.0);
+    let b = fur_rows_sliver(r, ax, hi - FUR_POLE_SLIVER, hi, hi, -1.0);
+    return FurRange(lo, hi, start, raw, vec4<f32>(a.x, a.y, b.x, b.y));
+}
+
+// Range::kept.
+fn fur_range_kept(g: FurRange) -> f32 {
+    return max(g.raw - g.s.x - g.s.z, 0.0) + g.s.y + g.s.w;
+}
+
+// Rows::invert_kept.
+fn fur_rows_invert_kept(r: FurRows, ax: FurAxis, g: FurRange, u: f32) -> f32 {
+    let total = fur_range_kept(g);
+    let inset = total * (1.0 / 1048576.0);
+    let t0 = clamp(fur_unit(u) * total, inset, total - inset);
+    if (t0 < g.s.y) {
+        return fur_rows_sliver(r, ax, g.lo, g.lo + FUR_POLE_SLIVER, g.lo, t0).z;
+    }
+    let mid = max(g.raw - g.s.x - g.s.z, 0.0);
+    let t = t0 - g.s.y;
+    if (t <= mid || !(g.s.w > 0.0)) {
+        return fur_rows_invert(r, g.start + g.s.x + min(t, mid));
+    }
+    return fur_rows_sliver(r, ax, g.hi - FUR_POLE_SLIVER, g.hi, g.hi, t - mid).z;
+}
+
 // The three M CDFs and interpolated values at a location on the sum axis, from one texel
 // pair (BakedBcsdf::m_cdf_and_value).
 struct FurMAt {
@@ -712,31 +855,51 @@ fn fur_positive(v: f32) -> f32 {
     return select(0.0, v, fur_finite(v) && v > 0.0);
 }
 
-// Mixture weights A_c(theta_r) and the M masses and range starts (BakedBcsdf::parts).
+// Mixture weights A_c(theta_r) and the parts' theta_i ranges, every mass with S's pole factor
+// g (BakedBcsdf::parts).
 struct FurParts {
     a: array<f32, 5>,
-    mass: vec3<f32>,
-    lo: vec3<f32>,
+    ranges: array<FurRange, 5>,
+}
+
+// The M^s theta_i axis (baked::BakedBcsdf's ms_i).
+fn fur_ms_i_axis() -> FurAxis {
+    return fur_axis(true, 1.0 / FUR_PI, fur_word(7u));
+}
+
+fn fur_ms_rows(half: u32, theta_r: f32) -> FurRows {
+    let sr = fur_locate(fur_axis(true, 1.0 / FUR_PI, fur_word(8u)), theta_r);
+    return fur_rows(fur_density(7u + half), sr.i, sr.w, -FUR_HALF_PI);
 }
 
 fn fur_parts(theta_r: f32) -> FurParts {
-    let lo = fur_m_cdf(theta_r - FUR_HALF_PI);
-    let hi = fur_m_cdf(theta_r + FUR_HALF_PI);
+    let lo_x = theta_r - FUR_HALF_PI;
+    let hi_x = theta_r + FUR_HALF_PI;
+    let lo = fur_m_cdf(lo_x);
+    let hi = fur_m_cdf(hi_x);
     let mass = max(hi - lo, vec3<f32>(0.0));
     let nr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, fur_word(5u)), abs(theta_r));
-    let sr = fur_locate(fur_axis(true, 1.0 / FUR_PI, fur_word(8u)), theta_r);
     let nu_s = fur_row_total(fur_density(6u), nr);
     let mu_s = fur_row_total(fur_density(9u), nr);
+    var ranges: array<FurRange, 5>;
+    for (var g = 0u; g < 3u; g = g + 1u) {
+        let rows = fur_rows(fur_density(g), 0u, 0.0, -FUR_PI);
+        ranges[g] = fur_rows_range(rows, fur_sum_axis(), lo_x, hi_x, lo[g], mass[g]);
+    }
+    for (var x = 0u; x < 2u; x = x + 1u) {
+        let rows = fur_ms_rows(x, theta_r);
+        ranges[3u + x] = fur_rows_range(rows, fur_ms_i_axis(), -FUR_HALF_PI, FUR_HALF_PI, 0.0, fur_rows_total(rows));
+    }
     // The mass of the evaluated M_g: the tabulated one times the closure's factor.
-    let kept = mass * fur_sphere_norms(theta_r);
+    let kept = vec3<f32>(fur_range_kept(ranges[0]), fur_range_kept(ranges[1]), fur_range_kept(ranges[2])) * fur_sphere_norms(theta_r);
     let a = array<f32, 5>(
         fur_positive(2.0 * kept.x * fur_row_total(fur_density(3u), nr)),
         fur_positive(2.0 * kept.y * fur_row_total(fur_density(4u), nr)),
         fur_positive(2.0 * kept.z * fur_row_total(fur_density(5u), nr)),
-        fur_positive(2.0 * fur_row_total(fur_density(7u), sr) * (nu_s - mu_s)),
-        fur_positive(2.0 * fur_row_total(fur_density(8u), sr) * mu_s),
+        fur_positive(2.0 * fur_range_kept(ranges[3]) * (nu_s - mu_s)),
+        fur_positive(2.0 * fur_range_kept(ranges[4]) * mu_s),
     );
-    return FurParts(a, mass, lo);
+    return FurParts(a, ranges);
 }
 
 // The mixture density per unit solid angle from the lookups and W (BakedBcsdf::density).
@@ -751,7 +914,9 @@ fn fur_density_of(l: FurLookups, w: f32, cos_theta_i: f32) -> f32 {
     // M^s's blend exactly as fur_assemble forms it.
     let ms = l.ms[0] + l.front * (l.ms[1] - l.ms[0]);
     let p = l.m[0] * mean0 + l.m[1] * mean1 + l.m[2] * mean2 + ms * mean3;
-    return fur_positive((p / w) / max(cos_theta_i, 1e-6));
+    // S's pole factor g (exactly 1 outside the slivers).
+    let pg = p * fur_pole_keep(cos_theta_i);
+    return fur_positive((pg / w) / max(cos_theta_i, 1e-6));
 }
 
 // Density per unit solid angle with which fur_sample_far draws omega_i (Bcsdf::pdf); 0 for
@@ -807,12 +972,11 @@ fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
     var theta_i = 0.0;
     if (c < 3u) {
         let rows = fur_rows(fur_density(c), 0u, 0.0, -FUR_PI);
-        let x = fur_rows_invert_between(rows, p.lo[c], p.lo[c] + p.mass[c], u.y);
+        let x = fur_rows_invert_kept(rows, fur_sum_axis(), p.ranges[c], u.y);
         theta_i = clamp(x - theta_r, -FUR_HALF_PI, FUR_HALF_PI);
     } else {
-        let sr = fur_locate(fur_axis(true, 1.0 / FUR_PI, fur_word(8u)), theta_r);
-        let rows = fur_rows(fur_density(7u + c - 3u), sr.i, sr.w, -FUR_HALF_PI);
-        theta_i = clamp(fur_rows_invert_between(rows, 0.0, fur_rows_total(rows), u.y), -FUR_HALF_PI, FUR_HALF_PI);
+        let rows = fur_ms_rows(c - 3u, theta_r);
+        theta_i = clamp(fur_rows_invert_kept(rows, fur_ms_i_axis(), p.ranges[c], u.y), -FUR_HALF_PI, FUR_HALF_PI);
     }
     let family = min(c, 3u);
     let nr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, fur_word(5u)), abs(theta_r));

@@ -317,7 +317,12 @@ fn gpu_pdf_and_samples_match_cpu() {
                 && c.family as u32 == s.family;
             if same_dir {
                 close += 1;
-                let e = (c.pdf - s.pdf).abs() / c.pdf;
+                // The GPU's density against the CPU's `pdf` of the GPU's own direction: near
+                // grazing and in a lobe's far tail, a last-bit difference in a row
+                // inversion's target moves the direction by a few ulps (6e-7 rad at θ_i =
+                // 1.553, where p/cos θ_i turns that into 2e-5), which is not a pdf error.
+                let at_gpu = Angles::new(s.theta_i, *tr, s.phi).map_or(0.0, |a| cpu_lut.pdf(&a));
+                let e = (at_gpu - s.pdf).abs() / at_gpu;
                 if c.angles.theta_i().abs() > FRAC_PI_2 - 1e-2 {
                     worst_pole_pdf = worst_pole_pdf.max(e);
                 } else {

@@ -56,27 +56,34 @@ struct FurRows {
     float origin;
     uint weighting;
 };
+struct FurRange {
+    float lo;
+    float hi;
+    float start;
+    float raw;
+    vec4 s;
+};
 struct FurMAt {
     vec3 cdf;
     vec3 value;
 };
 struct FurParts {
     float a[5];
-    vec3 mass;
-    vec3 lo;
+    FurRange ranges[5];
 };
 const float FUR_PI = 3.1415927;
 const float FUR_HALF_PI = 1.5707964;
 const float FUR_TAU = 6.2831855;
 const float FUR_MIN_COS2_ = 0.0001;
+const float FUR_POLE_SLIVER = 0.010000167;
 const uint FUR_HEADER_HALVES = 80u;
 const uint FUR_CLOSURE_WORD = 26u;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
-layout(std430) readonly buffer type_14_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_15_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_15_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_16_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -85,9 +92,9 @@ FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
 }
 
 FurLoc fur_locate(FurAxis a, float x) {
-    float u_4 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
-    int i = min(int(u_4), (int(a.nodes) - 2));
-    return FurLoc(uint(i), (u_4 - float(i)));
+    float u_5 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
+    int i = min(int(u_5), (int(a.nodes) - 2));
+    return FurLoc(uint(i), (u_5 - float(i)));
 }
 
 uint fur_word(uint k) {
@@ -109,9 +116,9 @@ float fur_unbias(uint t) {
 float fur_cos_within_half_pi(float x_1) {
     float acc = -2.755732e-7;
     float acc_1 = 2.7557319e-6;
-    float a_3 = abs(x_1);
-    if ((a_3 <= 0.7853982)) {
-        float y_2 = (a_3 * a_3);
+    float a_4 = abs(x_1);
+    if ((a_4 <= 0.7853982)) {
+        float y_2 = (a_4 * a_4);
         float _e7 = acc;
         acc = ((_e7 * y_2) + 2.4801588e-5);
         float _e11 = acc;
@@ -123,8 +130,8 @@ float fur_cos_within_half_pi(float x_1) {
         float _e23 = acc;
         return ((_e23 * y_2) + 1.0);
     }
-    float r_10 = ((1.5707964 - a_3) + -4.371139e-8);
-    float y_3 = (r_10 * r_10);
+    float r_13 = ((1.5707964 - a_4) + -4.371139e-8);
+    float y_3 = (r_13 * r_13);
     float _e34 = acc_1;
     acc_1 = ((_e34 * y_3) - 0.0001984127);
     float _e38 = acc_1;
@@ -132,7 +139,7 @@ float fur_cos_within_half_pi(float x_1) {
     float _e42 = acc_1;
     acc_1 = ((_e42 * y_3) - 0.16666667);
     float _e46 = acc_1;
-    return (((_e46 * y_3) * r_10) + r_10);
+    return (((_e46 * y_3) * r_13) + r_13);
 }
 
 float fur_wrap_angle(float x_2) {
@@ -268,9 +275,9 @@ FurDensity fur_density(uint d) {
     uint _e74 = at;
     at = (_e74 + ((16u * _e4) * _e29));
     if ((d < 9u)) {
-        uint x_8 = (d - 7u);
+        uint x_9 = (d - 7u);
         uint _e83 = at;
-        return FurDensity((_e83 + (((4u * x_8) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_8, 1u);
+        return FurDensity((_e83 + (((4u * x_9) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_9, 1u);
     }
     uint _e98 = at;
     at = (_e98 + ((8u * _e10) * _e31));
@@ -444,8 +451,8 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
     float _e183 = fur_unbias(1u);
     float ny0_ = ((1.0 - _e177.w) * _e183);
     float ny1_ = (_e177.w * _e183);
-    float v0_6 = (ny0_ * (1.0 - _e181.w));
-    float v1_6 = (ny0_ * _e181.w);
+    float v0_8 = (ny0_ * (1.0 - _e181.w));
+    float v1_8 = (ny0_ * _e181.w);
     float v2_ = (ny1_ * (1.0 - _e181.w));
     float v3_ = (ny1_ * _e181.w);
     uint j0_ = ((_e177.i * _e9) + _e181.i);
@@ -471,7 +478,7 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in) {
             uint _e239 = ch_3;
             float _e241 = fur_half(((n0_ + (12u * ((j0_ + _e9) + 1u))) + _e239));
             uint _e242 = ch_3;
-            n[_e242] = ((((v0_6 * _e217) + (v1_6 * _e225)) + (v2_ * _e232)) + (v3_ * _e241));
+            n[_e242] = ((((v0_8 * _e217) + (v1_8 * _e225)) + (v2_ * _e232)) + (v3_ * _e241));
         }
     }
     float _e254[3] = m;
@@ -530,16 +537,16 @@ FurFamilies fur_eval_far(float theta_i_2, float theta_r_3, float phi_1) {
 }
 
 float fur_asin(float x_4) {
-    float ax = min(abs(x_4), 1.0);
-    float x2_ = (ax * ax);
+    float ax_3 = min(abs(x_4), 1.0);
+    float x2_ = (ax_3 * ax_3);
     float x4_ = (x2_ * x2_);
-    float p01_ = ((-0.001262491 * ax) + 0.00667009);
-    float p23_ = ((-0.017088126 * ax) + 0.03089188);
-    float p45_ = ((-0.050174303 * ax) + 0.08897899);
-    float p67_ = ((-0.2145988 * ax) + FUR_HALF_PI);
+    float p01_ = ((-0.001262491 * ax_3) + 0.00667009);
+    float p23_ = ((-0.017088126 * ax_3) + 0.03089188);
+    float p45_ = ((-0.050174303 * ax_3) + 0.08897899);
+    float p67_ = ((-0.2145988 * ax_3) + FUR_HALF_PI);
     float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
-    float r_11 = (FUR_HALF_PI - (sqrt((1.0 - ax)) * poly));
-    return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_11)) : abs(r_11));
+    float r_14 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
+    return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_14)) : abs(r_14));
 }
 
 float fur_atan_poly(float t_1) {
@@ -554,15 +561,15 @@ float fur_atan_poly(float t_1) {
 
 float fur_atan2_(float y_1, float x_5) {
     float r = 0.0;
-    float ax_1 = abs(x_5);
+    float ax_4 = abs(x_5);
     float ay = abs(y_1);
-    float a_4 = (min(ax_1, ay) / max(max(ax_1, ay), 1.1754944e-38));
-    float t_6 = (a_4 * a_4);
-    float _e10 = fur_atan_poly(t_6);
-    r = (a_4 + (a_4 * (t_6 * _e10)));
+    float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
+    float t_8 = (a_5 * a_5);
+    float _e10 = fur_atan_poly(t_8);
+    r = (a_5 + (a_5 * (t_8 * _e10)));
     float _e15 = r;
     float _e17 = r;
-    r = ((ay > ax_1) ? (FUR_HALF_PI - _e17) : _e15);
+    r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
     float _e21 = r;
     float _e23 = r;
     r = ((x_5 < 0.0) ? (FUR_PI - _e23) : _e21);
@@ -618,13 +625,13 @@ FurFamilies fur_eval_far_dirs(vec3 wi, vec3 wr, vec3 u) {
         return _e36;
     }
     vec3 un = (u * (1.0 / nu));
-    float a_5 = dot(wi, un);
-    float b_2 = dot(wr, un);
-    float _e48 = fur_asin(clamp((a_5 * (1.0 / ni)), -1.0, 1.0));
-    float _e55 = fur_asin(clamp((b_2 * (1.0 / nr)), -1.0, 1.0));
+    float a_6 = dot(wi, un);
+    float b_3 = dot(wr, un);
+    float _e48 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
+    float _e55 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_4 = dot(un, cross(wi, wr));
-    float x_9 = (dot(wi, wr) - (a_5 * b_2));
-    float _e61 = fur_atan2_(y_4, x_9);
+    float x_10 = (dot(wi, wr) - (a_6 * b_3));
+    float _e61 = fur_atan2_(y_4, x_10);
     FurFamilies _e63 = fur_eval_far(_e48, _e55, abs(_e61));
     return _e63;
 }
@@ -798,13 +805,13 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
             }
             float _e70 = x_6;
             float _e71 = x_6;
-            float d_5 = (q0_ + (_e70 * (cb + (_e71 * cc))));
+            float d_6 = (q0_ + (_e70 * (cb + (_e71 * cc))));
             float _e76 = lo;
             float _e77 = hi;
             next = (0.5 * (_e76 + _e77));
-            if ((d_5 > 0.0)) {
+            if ((d_6 > 0.0)) {
                 float _e84 = x_6;
-                float n_1 = (_e84 - (fx / d_5));
+                float n_1 = (_e84 - (fx / d_6));
                 float _e87 = lo;
                 if ((n_1 >= _e87)) {
                     float _e91 = hi;
@@ -905,14 +912,14 @@ float fur_rows_invert(FurRows r_8, float t_5) {
             break;
         }
         uint _e12 = len_4;
-        uint half_ = (_e12 / 2u);
+        uint half_1 = (_e12 / 2u);
         uint _e15 = lo_1;
         uint _e16 = lo_1;
         uint _e18 = lo_1;
-        float _e20 = fur_rows_prefix(r_8, (_e18 + half_));
-        lo_1 = ((_e20 < t_5) ? (_e16 + half_) : _e15);
+        float _e20 = fur_rows_prefix(r_8, (_e18 + half_1));
+        lo_1 = ((_e20 < t_5) ? (_e16 + half_1) : _e15);
         uint _e23 = len_4;
-        len_4 = (_e23 - half_);
+        len_4 = (_e23 - half_1);
     }
     uint _e25 = lo_1;
     uint first = (_e25 * r_8.d.block);
@@ -983,9 +990,257 @@ float fur_rows_invert(FurRows r_8, float t_5) {
 float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_2) {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
     float _e7 = fur_unit(u_2);
-    float t_7 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    float _e14 = fur_rows_invert(r_9, t_7);
+    float t_9 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    float _e14 = fur_rows_invert(r_9, t_9);
     return _e14;
+}
+
+float fur_pole_keep(float cos_theta_i) {
+    float c_1 = max(cos_theta_i, 1e-6);
+    return min(((c_1 * c_1) * 10000.0), 1.0);
+}
+
+float fur_sliver_keep(float s_in) {
+    float s_2 = abs(s_in);
+    if (!((s_2 < FUR_POLE_SLIVER))) {
+        return 1.0;
+    }
+    float s2_ = (s_2 * s_2);
+    return min(((s2_ * (1.0 - (s2_ * 0.33333334))) * 10000.0), 1.0);
+}
+
+float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, float pole, float len_5) {
+    bool local_18 = false;
+    float acc_3 = 0.0;
+    uint k_5 = 0u;
+    if ((len_5 > 0.0)) {
+        local_18 = (len0_ > 0.0);
+    } else {
+        local_18 = false;
+    }
+    bool _e13 = local_18;
+    if (!(_e13)) {
+        return 0.0;
+    }
+    float slope = ((v1_6 - v0_6) / len0_);
+    float t_10[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float w_4[3] = float[3](0.2777778, 0.44444445, 0.2777778);
+    bool loop_init_8 = true;
+    while(true) {
+        if (!loop_init_8) {
+            uint _e47 = k_5;
+            k_5 = (_e47 + 1u);
+        }
+        loop_init_8 = false;
+        uint _e30 = k_5;
+        if ((_e30 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e33 = k_5;
+            float d_7 = (t_10[_e33] * len_5);
+            float _e36 = acc_3;
+            uint _e37 = k_5;
+            float _e44 = fur_sliver_keep(((x0_ - pole) + d_7));
+            acc_3 = (_e36 + ((w_4[_e37] * (v0_6 + (slope * d_7))) * _e44));
+        }
+    }
+    float _e50 = acc_3;
+    return (_e50 * len_5);
+}
+
+float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, float pole_1, float t_6) {
+    bool local_19 = false;
+    float lo_2 = 0.0;
+    float hi_1 = 0.0;
+    float d_4 = 0.0;
+    uint k_6 = 0u;
+    float next_1 = 0.0;
+    bool local_20 = false;
+    float _e6 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, len_6);
+    if (!(!((_e6 > 0.0)))) {
+        local_19 = !((t_6 > 0.0));
+    } else {
+        local_19 = true;
+    }
+    bool _e17 = local_19;
+    if (_e17) {
+        return 0.0;
+    }
+    if (!((t_6 < _e6))) {
+        return len_6;
+    }
+    float slope_1 = ((v1_7 - v0_7) / len_6);
+    hi_1 = len_6;
+    d_4 = (len_6 * (t_6 / _e6));
+    bool loop_init_9 = true;
+    while(true) {
+        if (!loop_init_9) {
+            uint _e76 = k_6;
+            k_6 = (_e76 + 1u);
+        }
+        loop_init_9 = false;
+        uint _e31 = k_6;
+        if ((_e31 < 16u)) {
+        } else {
+            break;
+        }
+        {
+            float _e34 = d_4;
+            float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
+            float f_3 = (_e35 - t_6);
+            if ((f_3 > 0.0)) {
+                float _e39 = d_4;
+                hi_1 = _e39;
+            } else {
+                float _e40 = d_4;
+                lo_2 = _e40;
+            }
+            float _e41 = d_4;
+            float _e45 = d_4;
+            float _e47 = fur_sliver_keep(((x0_1 - pole_1) + _e45));
+            float dens = ((v0_7 + (slope_1 * _e41)) * _e47);
+            float _e49 = lo_2;
+            float _e50 = hi_1;
+            next_1 = (0.5 * (_e49 + _e50));
+            if ((dens > 0.0)) {
+                float _e57 = d_4;
+                float n_2 = (_e57 - (f_3 / dens));
+                float _e60 = lo_2;
+                if ((n_2 >= _e60)) {
+                    float _e64 = hi_1;
+                    local_20 = (n_2 <= _e64);
+                } else {
+                    local_20 = false;
+                }
+                bool _e67 = local_20;
+                if (_e67) {
+                    next_1 = n_2;
+                }
+            }
+            float _e68 = next_1;
+            float _e69 = d_4;
+            bool done_1 = (abs((_e68 - _e69)) <= (1.2e-7 * len_6));
+            float _e75 = next_1;
+            d_4 = _e75;
+            if (done_1) {
+                break;
+            }
+        }
+    }
+    float _e79 = d_4;
+    return clamp(_e79, 0.0, len_6);
+}
+
+vec3 fur_rows_sliver(FurRows r_10, FurAxis ax, float a_3, float b_2, float pole_2, float t_7) {
+    float off = 0.0;
+    vec3 out_1 = vec3(0.0);
+    uint j_6 = 0u;
+    bool local_21 = false;
+    bool local_22 = false;
+    FurLoc _e6 = fur_locate(ax, a_3);
+    FurLoc _e7 = fur_locate(ax, b_2);
+    float at_2 = (a_3 - pole_2);
+    out_1 = vec3(0.0, 0.0, b_2);
+    j_6 = _e6.i;
+    bool loop_init_10 = true;
+    while(true) {
+        if (!loop_init_10) {
+            uint _e92 = j_6;
+            j_6 = (_e92 + 1u);
+        }
+        loop_init_10 = false;
+        uint _e17 = j_6;
+        if ((_e17 <= _e7.i)) {
+        } else {
+            break;
+        }
+        {
+            uint _e21 = j_6;
+            float w0_1 = ((_e21 == _e6.i) ? _e6.w : 0.0);
+            uint _e27 = j_6;
+            float w1_1 = ((_e27 == _e7.i) ? _e7.w : 1.0);
+            if ((w1_1 > w0_1)) {
+                uint _e33 = j_6;
+                float _e34 = fur_rows_value(r_10, _e33);
+                uint _e35 = j_6;
+                float _e38 = fur_rows_value(r_10, (_e35 + 1u));
+                float len_7 = ((w1_1 - w0_1) * r_10.d.step_);
+                float v0_9 = (_e34 + ((_e38 - _e34) * w0_1));
+                float v1_9 = (_e34 + ((_e38 - _e34) * w1_1));
+                float _e49 = off;
+                float _e52 = fur_sliver_piece_mass(v0_9, v1_9, len_7, (at_2 + _e49), 0.0, len_7);
+                if ((t_7 >= 0.0)) {
+                    local_21 = (_e52 > 0.0);
+                } else {
+                    local_21 = false;
+                }
+                bool _e60 = local_21;
+                if (_e60) {
+                    float _e64 = out_1.y;
+                    local_22 = ((t_7 - _e64) <= _e52);
+                } else {
+                    local_22 = false;
+                }
+                bool _e68 = local_22;
+                if (_e68) {
+                    float _e70 = off;
+                    float _e71 = off;
+                    float _e75 = out_1.y;
+                    float _e77 = fur_invert_sliver_piece(v0_9, v1_9, len_7, (at_2 + _e71), 0.0, (t_7 - _e75));
+                    out_1.z = (a_3 + (_e70 + _e77));
+                    vec3 _e80 = out_1;
+                    return _e80;
+                }
+                float _e83 = out_1.x;
+                float _e84 = fur_linear_mass(v0_9, v1_9, len_7);
+                out_1.x = (_e83 + _e84);
+                float _e88 = out_1.y;
+                out_1.y = (_e88 + _e52);
+                float _e90 = off;
+                off = (_e90 + len_7);
+            }
+        }
+    }
+    vec3 _e95 = out_1;
+    return _e95;
+}
+
+FurRange fur_rows_range(FurRows r_11, FurAxis ax_1, float lo_3, float hi_2, float start, float raw) {
+    vec3 _e9 = fur_rows_sliver(r_11, ax_1, lo_3, (lo_3 + FUR_POLE_SLIVER), lo_3, -1.0);
+    vec3 _e13 = fur_rows_sliver(r_11, ax_1, (hi_2 - FUR_POLE_SLIVER), hi_2, hi_2, -1.0);
+    return FurRange(lo_3, hi_2, start, raw, vec4(_e9.x, _e9.y, _e13.x, _e13.y));
+}
+
+float fur_range_kept(FurRange g_1) {
+    return ((max(((g_1.raw - g_1.s.x) - g_1.s.z), 0.0) + g_1.s.y) + g_1.s.w);
+}
+
+float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_3) {
+    bool local_23 = false;
+    float _e4 = fur_range_kept(g_2);
+    float inset_3 = (_e4 * 9.536743e-7);
+    float _e7 = fur_unit(u_3);
+    float t0_1 = clamp((_e7 * _e4), inset_3, (_e4 - inset_3));
+    if ((t0_1 < g_2.s.y)) {
+        vec3 _e19 = fur_rows_sliver(r_12, ax_2, g_2.lo, (g_2.lo + FUR_POLE_SLIVER), g_2.lo, t0_1);
+        return _e19.z;
+    }
+    float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
+    float t_11 = (t0_1 - g_2.s.y);
+    if (!((t_11 <= mid))) {
+        local_23 = !((g_2.s.w > 0.0));
+    } else {
+        local_23 = true;
+    }
+    bool _e43 = local_23;
+    if (_e43) {
+        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_11, mid)));
+        return _e50;
+    }
+    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_11 - mid));
+    return _e57.z;
 }
 
 FurAxis fur_sum_axis() {
@@ -995,37 +1250,37 @@ FurAxis fur_sum_axis() {
 }
 
 FurMAt fur_m_at(FurLoc l_1) {
-    FurMAt out_1 = FurMAt(vec3(0.0), vec3(0.0));
-    uint g_1 = 0u;
+    FurMAt out_2 = FurMAt(vec3(0.0), vec3(0.0));
+    uint g_3 = 0u;
     FurDensity _e2 = fur_density(0u);
-    float off = (l_1.w * _e2.step_);
-    bool loop_init_8 = true;
+    float off_1 = (l_1.w * _e2.step_);
+    bool loop_init_11 = true;
     while(true) {
-        if (!loop_init_8) {
-            uint _e45 = g_1;
-            g_1 = (_e45 + 1u);
+        if (!loop_init_11) {
+            uint _e45 = g_3;
+            g_3 = (_e45 + 1u);
         }
-        loop_init_8 = false;
-        uint _e14 = g_1;
+        loop_init_11 = false;
+        uint _e14 = g_3;
         if ((_e14 < 3u)) {
         } else {
             break;
         }
         {
-            uint _e17 = g_1;
+            uint _e17 = g_3;
             FurDensity _e18 = fur_density(_e17);
             float _e21 = fur_node(_e18, 0u, l_1.i);
             float _e26 = fur_node(_e18, 0u, (l_1.i + 1u));
-            float at_2 = (_e21 + ((_e26 - _e21) * l_1.w));
-            uint _e32 = g_1;
+            float at_3 = (_e21 + ((_e26 - _e21) * l_1.w));
+            uint _e32 = g_3;
             float _e39 = fur_f32_at((_e18.prefix_at + (4u * l_1.i)));
-            float _e40 = fur_linear_mass(_e21, at_2, off);
-            out_1.cdf[_e32] = (_e39 + _e40);
-            uint _e43 = g_1;
-            out_1.value[_e43] = at_2;
+            float _e40 = fur_linear_mass(_e21, at_3, off_1);
+            out_2.cdf[_e32] = (_e39 + _e40);
+            uint _e43 = g_3;
+            out_2.value[_e43] = at_3;
         }
     }
-    FurMAt _e48 = out_1;
+    FurMAt _e48 = out_2;
     return _e48;
 }
 
@@ -1036,60 +1291,130 @@ vec3 fur_m_cdf(float x_7) {
     return _e3.cdf;
 }
 
-float fur_row_total(FurDensity d_4, FurLoc l_2) {
-    float _e17 = fur_f32_at((d_4.prefix_at + (4u * (((min(l_2.i, (d_4.rows - 1u)) * d_4.entries) + d_4.entries) - 1u))));
-    float _e35 = fur_f32_at((d_4.prefix_at + (4u * (((min((l_2.i + 1u), (d_4.rows - 1u)) * d_4.entries) + d_4.entries) - 1u))));
+float fur_row_total(FurDensity d_5, FurLoc l_2) {
+    float _e17 = fur_f32_at((d_5.prefix_at + (4u * (((min(l_2.i, (d_5.rows - 1u)) * d_5.entries) + d_5.entries) - 1u))));
+    float _e35 = fur_f32_at((d_5.prefix_at + (4u * (((min((l_2.i + 1u), (d_5.rows - 1u)) * d_5.entries) + d_5.entries) - 1u))));
     return (_e17 + ((_e35 - _e17) * l_2.w));
 }
 
 float fur_positive(float v) {
-    bool local_18 = false;
+    bool local_24 = false;
     bool _e1 = fur_finite(v);
     if (_e1) {
-        local_18 = (v > 0.0);
+        local_24 = (v > 0.0);
     } else {
-        local_18 = false;
+        local_24 = false;
     }
-    bool _e7 = local_18;
+    bool _e7 = local_24;
     return (_e7 ? v : 0.0);
 }
 
-FurParts fur_parts(float theta_r_4) {
-    vec3 _e3 = fur_m_cdf((theta_r_4 - FUR_HALF_PI));
-    vec3 _e6 = fur_m_cdf((theta_r_4 + FUR_HALF_PI));
-    vec3 mass = max((_e6 - _e3), vec3(0.0));
-    uint _e14 = fur_word(5u);
-    FurAxis _e15 = fur_axis(false, 0.63661975, _e14);
-    FurLoc _e17 = fur_locate(_e15, abs(theta_r_4));
-    uint _e21 = fur_word(8u);
-    FurAxis _e22 = fur_axis(true, 0.31830987, _e21);
-    FurLoc _e23 = fur_locate(_e22, theta_r_4);
-    FurDensity _e25 = fur_density(6u);
-    float _e26 = fur_row_total(_e25, _e17);
-    FurDensity _e28 = fur_density(9u);
-    float _e29 = fur_row_total(_e28, _e17);
-    vec3 _e30 = fur_sphere_norms(theta_r_4);
-    vec3 kept = (mass * _e30);
-    FurDensity _e36 = fur_density(3u);
-    float _e37 = fur_row_total(_e36, _e17);
-    float _e39 = fur_positive(((2.0 * kept.x) * _e37));
-    FurDensity _e44 = fur_density(4u);
-    float _e45 = fur_row_total(_e44, _e17);
-    float _e47 = fur_positive(((2.0 * kept.y) * _e45));
-    FurDensity _e52 = fur_density(5u);
-    float _e53 = fur_row_total(_e52, _e17);
-    float _e55 = fur_positive(((2.0 * kept.z) * _e53));
-    FurDensity _e57 = fur_density(7u);
-    float _e58 = fur_row_total(_e57, _e23);
-    float _e63 = fur_positive(((2.0 * _e58) * (_e26 - _e29)));
-    FurDensity _e65 = fur_density(8u);
-    float _e66 = fur_row_total(_e65, _e23);
-    float _e70 = fur_positive(((2.0 * _e66) * _e29));
-    float a_6[5] = float[5](_e39, _e47, _e55, _e63, _e70);
-    return FurParts(a_6, mass, _e3);
+FurAxis fur_ms_i_axis() {
+    uint _e3 = fur_word(7u);
+    FurAxis _e4 = fur_axis(true, 0.31830987, _e3);
+    return _e4;
 }
 
-float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i) {
+FurRows fur_ms_rows(uint half_, float theta_r_4) {
+    uint _e5 = fur_word(8u);
+    FurAxis _e6 = fur_axis(true, 0.31830987, _e5);
+    FurLoc _e7 = fur_locate(_e6, theta_r_4);
+    FurDensity _e10 = fur_density((7u + half_));
+    FurRows _e14 = fur_rows(_e10, _e7.i, _e7.w, -1.5707964);
+    return _e14;
+}
+
+FurParts fur_parts(float theta_r_5) {
+    FurRange ranges[5] = FurRange[5](FurRange(0.0, 0.0, 0.0, 0.0, vec4(0.0)), FurRange(0.0, 0.0, 0.0, 0.0, vec4(0.0)), FurRange(0.0, 0.0, 0.0, 0.0, vec4(0.0)), FurRange(0.0, 0.0, 0.0, 0.0, vec4(0.0)), FurRange(0.0, 0.0, 0.0, 0.0, vec4(0.0)));
+    uint g_4 = 0u;
+    uint x_8 = 0u;
+    float lo_x = (theta_r_5 - FUR_HALF_PI);
+    float hi_x = (theta_r_5 + FUR_HALF_PI);
+    vec3 _e5 = fur_m_cdf(lo_x);
+    vec3 _e6 = fur_m_cdf(hi_x);
+    vec3 mass = max((_e6 - _e5), vec3(0.0));
+    uint _e14 = fur_word(5u);
+    FurAxis _e15 = fur_axis(false, 0.63661975, _e14);
+    FurLoc _e17 = fur_locate(_e15, abs(theta_r_5));
+    FurDensity _e19 = fur_density(6u);
+    float _e20 = fur_row_total(_e19, _e17);
+    FurDensity _e22 = fur_density(9u);
+    float _e23 = fur_row_total(_e22, _e17);
+    bool loop_init_12 = true;
+    while(true) {
+        if (!loop_init_12) {
+            uint _e44 = g_4;
+            g_4 = (_e44 + 1u);
+        }
+        loop_init_12 = false;
+        uint _e27 = g_4;
+        if ((_e27 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e30 = g_4;
+            FurDensity _e31 = fur_density(_e30);
+            FurRows _e35 = fur_rows(_e31, 0u, 0.0, -3.1415927);
+            uint _e36 = g_4;
+            FurAxis _e38 = fur_sum_axis();
+            uint _e39 = g_4;
+            uint _e41 = g_4;
+            FurRange _e43 = fur_rows_range(_e35, _e38, lo_x, hi_x, _e5[_e39], mass[_e41]);
+            ranges[_e36] = _e43;
+        }
+    }
+    bool loop_init_13 = true;
+    while(true) {
+        if (!loop_init_13) {
+            uint _e64 = x_8;
+            x_8 = (_e64 + 1u);
+        }
+        loop_init_13 = false;
+        uint _e49 = x_8;
+        if ((_e49 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e52 = x_8;
+            FurRows _e53 = fur_ms_rows(_e52, theta_r_5);
+            uint _e55 = x_8;
+            FurAxis _e58 = fur_ms_i_axis();
+            float _e62 = fur_rows_total(_e53);
+            FurRange _e63 = fur_rows_range(_e53, _e58, -1.5707964, FUR_HALF_PI, 0.0, _e62);
+            ranges[(3u + _e55)] = _e63;
+        }
+    }
+    FurRange _e68 = ranges[0];
+    float _e69 = fur_range_kept(_e68);
+    FurRange _e71 = ranges[1];
+    float _e72 = fur_range_kept(_e71);
+    FurRange _e74 = ranges[2];
+    float _e75 = fur_range_kept(_e74);
+    vec3 _e77 = fur_sphere_norms(theta_r_5);
+    vec3 kept = (vec3(_e69, _e72, _e75) * _e77);
+    FurDensity _e83 = fur_density(3u);
+    float _e84 = fur_row_total(_e83, _e17);
+    float _e86 = fur_positive(((2.0 * kept.x) * _e84));
+    FurDensity _e91 = fur_density(4u);
+    float _e92 = fur_row_total(_e91, _e17);
+    float _e94 = fur_positive(((2.0 * kept.y) * _e92));
+    FurDensity _e99 = fur_density(5u);
+    float _e100 = fur_row_total(_e99, _e17);
+    float _e102 = fur_positive(((2.0 * kept.z) * _e100));
+    FurRange _e104 = ranges[3];
+    float _e105 = fur_range_kept(_e104);
+    float _e110 = fur_positive(((2.0 * _e105) * (_e20 - _e23)));
+    FurRange _e112 = ranges[4];
+    float _e113 = fur_range_kept(_e112);
+    float _e117 = fur_positive(((2.0 * _e113) * _e23));
+    float a_7[5] = float[5](_e86, _e94, _e102, _e110, _e117);
+    FurRange _e119[5] = ranges;
+    return FurParts(a_7, _e119);
+}
+
+float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
     if (!((w_2 > 0.0))) {
         return 0.0;
     }
@@ -1099,105 +1424,107 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i) {
     float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
     float p = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
-    float _e74 = fur_positive(((p / w_2) / max(cos_theta_i, 1e-6)));
-    return _e74;
+    float _e70 = fur_pole_keep(cos_theta_i_1);
+    float pg = (p * _e70);
+    float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
+    return _e76;
 }
 
-float fur_pdf_far(float theta_i_3, float theta_r_5, float phi_2) {
-    bool _e3 = fur_valid(theta_i_3, theta_r_5, phi_2);
+float fur_pdf_far(float theta_i_3, float theta_r_6, float phi_2) {
+    bool _e3 = fur_valid(theta_i_3, theta_r_6, phi_2);
     if (!(_e3)) {
         return 0.0;
     }
-    FurParts _e6 = fur_parts(theta_r_5);
-    float w_4 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
-    FurLookups _e21 = fur_lookups(theta_i_3, theta_r_5, phi_2);
+    FurParts _e6 = fur_parts(theta_r_6);
+    float w_5 = ((((_e6.a[0] + _e6.a[1]) + _e6.a[2]) + _e6.a[3]) + _e6.a[4]);
+    FurLookups _e21 = fur_lookups(theta_i_3, theta_r_6, phi_2);
     float _e22 = fur_cos_within_half_pi(theta_i_3);
-    float _e23 = fur_density_of(_e21, w_4, _e22);
+    float _e23 = fur_density_of(_e21, w_5, _e22);
     return _e23;
 }
 
-FurSample fur_sample_far(float theta_r_6, vec3 u_3) {
-    FurSample out_2 = FurSample(0.0, 0.0, 0.0, vec3(0.0), 0u, false);
-    bool local_19 = false;
+FurSample fur_sample_far(float theta_r_7, vec3 u_4) {
+    FurSample out_3 = FurSample(0.0, 0.0, 0.0, vec3(0.0), 0u, false);
+    bool local_25 = false;
     float total = 0.0;
-    uint k_5 = 0u;
-    float acc_3 = 0.0;
+    uint k_7 = 0u;
+    float acc_4 = 0.0;
     uint c = 5u;
     float u0_ = 0.0;
     uint last = 5u;
-    uint k_6 = 0u;
+    uint k_8 = 0u;
     float theta_i_4 = 0.0;
     FurRows nrows = FurRows(FurDensity(0u, 0u, 0u, 0u, 0.0, 0u, 0u, 0u, 0u), 0u, 0u, 0.0, 0.0, 0u);
-    bool local_20 = false;
-    bool _e11 = fur_finite(theta_r_6);
+    bool local_26 = false;
+    bool _e11 = fur_finite(theta_r_7);
     if (_e11) {
-        local_19 = (abs(theta_r_6) <= FUR_HALF_PI);
+        local_25 = (abs(theta_r_7) <= FUR_HALF_PI);
     } else {
-        local_19 = false;
+        local_25 = false;
     }
-    bool _e18 = local_19;
+    bool _e18 = local_25;
     if (!(_e18)) {
-        FurSample _e20 = out_2;
+        FurSample _e20 = out_3;
         return _e20;
     }
-    FurParts _e21 = fur_parts(theta_r_6);
-    bool loop_init_9 = true;
+    FurParts _e21 = fur_parts(theta_r_7);
+    bool loop_init_14 = true;
     while(true) {
-        if (!loop_init_9) {
-            uint _e34 = k_5;
-            k_5 = (_e34 + 1u);
+        if (!loop_init_14) {
+            uint _e34 = k_7;
+            k_7 = (_e34 + 1u);
         }
-        loop_init_9 = false;
-        uint _e26 = k_5;
+        loop_init_14 = false;
+        uint _e26 = k_7;
         if ((_e26 < 5u)) {
         } else {
             break;
         }
         {
             float _e29 = total;
-            uint _e31 = k_5;
+            uint _e31 = k_7;
             total = (_e29 + _e21.a[_e31]);
         }
     }
     float _e37 = total;
     if (!((_e37 > 0.0))) {
-        FurSample _e41 = out_2;
+        FurSample _e41 = out_3;
         return _e41;
     }
-    float _e43 = fur_unit(u_3.x);
+    float _e43 = fur_unit(u_4.x);
     float _e44 = total;
     float target_mass = (_e43 * _e44);
-    bool loop_init_10 = true;
+    bool loop_init_15 = true;
     while(true) {
-        if (!loop_init_10) {
-            uint _e76 = k_6;
-            k_6 = (_e76 + 1u);
+        if (!loop_init_15) {
+            uint _e76 = k_8;
+            k_8 = (_e76 + 1u);
         }
-        loop_init_10 = false;
-        uint _e56 = k_6;
+        loop_init_15 = false;
+        uint _e56 = k_8;
         if ((_e56 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e60 = k_6;
+            uint _e60 = k_8;
             float wk = _e21.a[_e60];
             if (!((wk > 0.0))) {
                 continue;
             }
-            uint _e65 = k_6;
+            uint _e65 = k_8;
             last = _e65;
-            float _e66 = acc_3;
+            float _e66 = acc_4;
             if ((target_mass < (_e66 + wk))) {
-                uint _e69 = k_6;
+                uint _e69 = k_8;
                 c = _e69;
-                float _e70 = acc_3;
+                float _e70 = acc_4;
                 float _e73 = fur_unit(((target_mass - _e70) / wk));
                 u0_ = _e73;
                 break;
             }
-            float _e74 = acc_3;
-            acc_3 = (_e74 + wk);
+            float _e74 = acc_4;
+            acc_4 = (_e74 + wk);
         }
     }
     uint _e79 = c;
@@ -1214,92 +1541,88 @@ FurSample fur_sample_far(float theta_r_6, vec3 u_3) {
         uint _e106 = c;
         FurDensity _e107 = fur_density(_e106);
         FurRows _e111 = fur_rows(_e107, 0u, 0.0, -3.1415927);
-        uint _e113 = c;
-        uint _e116 = c;
-        uint _e119 = c;
-        float _e123 = fur_rows_invert_between(_e111, _e21.lo[_e113], (_e21.lo[_e116] + _e21.mass[_e119]), u_3.y);
-        theta_i_4 = clamp((_e123 - theta_r_6), -1.5707964, FUR_HALF_PI);
+        FurAxis _e112 = fur_sum_axis();
+        uint _e114 = c;
+        float _e117 = fur_rows_invert_kept(_e111, _e112, _e21.ranges[_e114], u_4.y);
+        theta_i_4 = clamp((_e117 - theta_r_7), -1.5707964, FUR_HALF_PI);
     } else {
-        uint _e131 = fur_word(8u);
-        FurAxis _e132 = fur_axis(true, 0.31830987, _e131);
-        FurLoc _e133 = fur_locate(_e132, theta_r_6);
-        uint _e135 = c;
-        FurDensity _e139 = fur_density(((7u + _e135) - 3u));
-        FurRows _e143 = fur_rows(_e139, _e133.i, _e133.w, -1.5707964);
-        float _e145 = fur_rows_total(_e143);
-        float _e147 = fur_rows_invert_between(_e143, 0.0, _e145, u_3.y);
-        theta_i_4 = clamp(_e147, -1.5707964, FUR_HALF_PI);
+        uint _e122 = c;
+        FurRows _e125 = fur_ms_rows((_e122 - 3u), theta_r_7);
+        FurAxis _e126 = fur_ms_i_axis();
+        uint _e128 = c;
+        float _e131 = fur_rows_invert_kept(_e125, _e126, _e21.ranges[_e128], u_4.y);
+        theta_i_4 = clamp(_e131, -1.5707964, FUR_HALF_PI);
     }
-    uint _e151 = c;
-    uint family = min(_e151, 3u);
-    uint _e157 = fur_word(5u);
-    FurAxis _e158 = fur_axis(false, 0.63661975, _e157);
-    FurLoc _e160 = fur_locate(_e158, abs(theta_r_6));
-    FurDensity _e163 = fur_density((3u + family));
-    FurRows _e167 = fur_rows(_e163, _e160.i, _e160.w, 0.0);
-    nrows = _e167;
-    uint _e169 = c;
-    if ((_e169 >= 3u)) {
-        uint _e172 = c;
-        FurRows _e177 = fur_rows_weighted((_e172 - 2u), _e160.i, _e160.w);
-        nrows = _e177;
+    uint _e135 = c;
+    uint family = min(_e135, 3u);
+    uint _e141 = fur_word(5u);
+    FurAxis _e142 = fur_axis(false, 0.63661975, _e141);
+    FurLoc _e144 = fur_locate(_e142, abs(theta_r_7));
+    FurDensity _e147 = fur_density((3u + family));
+    FurRows _e151 = fur_rows(_e147, _e144.i, _e144.w, 0.0);
+    nrows = _e151;
+    uint _e153 = c;
+    if ((_e153 >= 3u)) {
+        uint _e156 = c;
+        FurRows _e161 = fur_rows_weighted((_e156 - 2u), _e144.i, _e144.w);
+        nrows = _e161;
     }
-    FurRows _e178 = nrows;
-    FurRows _e180 = nrows;
-    float _e181 = fur_rows_total(_e180);
-    float _e183 = fur_rows_invert_between(_e178, 0.0, _e181, u_3.z);
-    float abs_phi_1 = clamp(_e183, 0.0, FUR_PI);
-    float _e189 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
-    float _e190 = theta_i_4;
-    FurLookups _e191 = fur_lookups(_e190, theta_r_6, _e189);
-    float _e192 = theta_i_4;
-    float _e193 = fur_cos_within_half_pi(_e192);
-    float _e194 = fur_density_of(_e191, total_weight, _e193);
-    if ((_e194 > 0.0)) {
-        bool _e199 = fur_finite(_e194);
-        local_20 = _e199;
+    FurRows _e162 = nrows;
+    FurRows _e164 = nrows;
+    float _e165 = fur_rows_total(_e164);
+    float _e167 = fur_rows_invert_between(_e162, 0.0, _e165, u_4.z);
+    float abs_phi_1 = clamp(_e167, 0.0, FUR_PI);
+    float _e173 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
+    float _e174 = theta_i_4;
+    FurLookups _e175 = fur_lookups(_e174, theta_r_7, _e173);
+    float _e176 = theta_i_4;
+    float _e177 = fur_cos_within_half_pi(_e176);
+    float _e178 = fur_density_of(_e175, total_weight, _e177);
+    if ((_e178 > 0.0)) {
+        bool _e183 = fur_finite(_e178);
+        local_26 = _e183;
     } else {
-        local_20 = false;
+        local_26 = false;
     }
-    bool _e201 = local_20;
-    if (!(_e201)) {
-        FurSample _e203 = out_2;
-        return _e203;
+    bool _e185 = local_26;
+    if (!(_e185)) {
+        FurSample _e187 = out_3;
+        return _e187;
     }
-    FurFamilies _e204 = fur_assemble(_e191);
-    float _e205 = theta_i_4;
-    float k_8 = (max(cos(_e205), 0.0) / _e194);
-    float _e210 = theta_i_4;
-    out_2 = FurSample(_e210, _e189, _e194, max((_e204.total * k_8), vec3(0.0)), family, true);
-    FurSample _e218 = out_2;
-    return _e218;
+    FurFamilies _e188 = fur_assemble(_e175);
+    float _e189 = theta_i_4;
+    float k_10 = (max(cos(_e189), 0.0) / _e178);
+    float _e194 = theta_i_4;
+    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_10), vec3(0.0)), family, true);
+    FurSample _e202 = out_3;
+    return _e202;
 }
 
 void fur_store(uint q, FurFamilies f_1) {
-    uint k_7 = 0u;
+    uint k_9 = 0u;
     uint base_1 = (16u * q);
     vec3 parts[5] = vec3[5](f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total);
-    bool loop_init_11 = true;
+    bool loop_init_16 = true;
     while(true) {
-        if (!loop_init_11) {
-            uint _e46 = k_7;
-            k_7 = (_e46 + 1u);
+        if (!loop_init_16) {
+            uint _e46 = k_9;
+            k_9 = (_e46 + 1u);
         }
-        loop_init_11 = false;
-        uint _e12 = k_7;
+        loop_init_16 = false;
+        uint _e12 = k_9;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_7;
-            uint _e21 = k_7;
+            uint _e17 = k_9;
+            uint _e21 = k_9;
             _group_0_binding_2_cs[(base_1 + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_7;
-            uint _e32 = k_7;
+            uint _e26 = k_9;
+            uint _e32 = k_9;
             _group_0_binding_2_cs[((base_1 + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_7;
-            uint _e43 = k_7;
+            uint _e37 = k_9;
+            uint _e43 = k_9;
             _group_0_binding_2_cs[((base_1 + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1313,8 +1636,8 @@ void main() {
     if ((q_1 >= uint(_group_0_binding_1_cs.length()))) {
         return;
     }
-    vec4 a_7 = _group_0_binding_1_cs[q_1];
-    FurSample _e10 = fur_sample_far(a_7.x, a_7.yzw);
+    vec4 a_8 = _group_0_binding_1_cs[q_1];
+    FurSample _e10 = fur_sample_far(a_8.x, a_8.yzw);
     uint base_2 = (16u * q_1);
     _group_0_binding_2_cs[base_2] = _e10.theta_i;
     _group_0_binding_2_cs[(base_2 + 1u)] = _e10.phi;

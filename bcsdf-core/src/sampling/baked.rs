@@ -1,36 +1,40 @@
 //! Sampling the baked tables (docs/model.md §10, docs/lut.md "Sampling data").
 //!
-//! The baked far field is S·cos²θ_i = Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s,
-//! every factor piecewise linear along its axis. The sampler is a mixture of five separable
-//! parts, each drawing θ_i and φ from one interpolated table row, exactly as `eval`
-//! interpolates it:
+//! The baked far field is S·cos²θ_i = [Σ_g M_g(θ_i + θ_r)·N_g(|θ_r|, |φ|) + M^s(θ_i, θ_r, |φ|)·N^s]·g(θ_i),
+//! every factor piecewise linear along its axis and g = min(1, cos²θ_i/10⁻⁴) the factor S's
+//! pole guard 1/max(cos²θ_i, 10⁻⁴) leaves (1 except within s_c = 0.573° of θ_i = ±90°,
+//! [`super::sliver`]). The sampler is a mixture of five separable parts, each drawing θ_i
+//! and φ from one interpolated table row, exactly as `eval` interpolates it:
 //!
 //! | part c | θ_i density | φ density | weight A_c(θ_r) |
 //! |---|---|---|---|
-//! | g = R, TT, TRT | M_g(θ_i + θ_r)/m_g, θ_i ∈ [−π/2, π/2] | n_g(\|φ\|)/(2 ν_g) | 2·m_g·ν_g |
-//! | scattered back | M^s_back(θ_i, θ_r)/s_back | (1 − \|φ\|/π)·n_s(\|φ\|)/(2 (ν_s − μ_s)) | 2·s_back·(ν_s − μ_s) |
-//! | scattered front | M^s_front(θ_i, θ_r)/s_front | (\|φ\|/π)·n_s(\|φ\|)/(2 μ_s) | 2·s_front·μ_s |
+//! | g = R, TT, TRT | M_g(θ_i + θ_r)·g(θ_i)/m_g, θ_i ∈ [−π/2, π/2] | n_g(\|φ\|)/(2 ν_g) | 2·m_g·ν_g |
+//! | scattered back | M^s_back(θ_i, θ_r)·g(θ_i)/s_back | (1 − \|φ\|/π)·n_s(\|φ\|)/(2 (ν_s − μ_s)) | 2·s_back·(ν_s − μ_s) |
+//! | scattered front | M^s_front(θ_i, θ_r)·g(θ_i)/s_front | (\|φ\|/π)·n_s(\|φ\|)/(2 μ_s) | 2·s_front·μ_s |
 //!
 //! with n_f the mean of family f's three N channels, ν_f = ∫₀^π n_f, μ_s = ∫₀^π (φ/π)·n_s,
-//! m_g = ∫ M_g over the restricted range (in the energy closure M_g is multiplied by the
-//! LUT's 1/Z_g, docs/model.md §12) and s_x = ∫ M^s_x dθ_i (all exact integrals of the
-//! interpolants, from the LUT's prefix sums). The two scattered parts are the two separable
+//! m_g = ∫ M_g·g over the restricted range (in the energy closure M_g is multiplied by the
+//! LUT's 1/Z_g, docs/model.md §12) and s_x = ∫ M^s_x·g dθ_i: exact integrals of the
+//! interpolants, from the LUT's prefix sums outside the pole slivers and in closed form
+//! within them (`rows::Range`, [`super::sliver`]). The two scattered parts are the two separable
 //! products of the exact blend M^s = (1 − |φ|/π)·M^s_back + (|φ|/π)·M^s_front. The mixture
 //! density per unit solid angle is then
 //!
-//! p_ω = [Σ_g M_g·n_g + M^s·n_s] / (W·cos θ_i),   W = Σ_c A_c,
+//! p_ω = [Σ_g M_g·n_g + M^s·n_s]·g(θ_i) / (W·cos θ_i),   W = Σ_c A_c,
 //!
 //! the mean channel of S·cos θ_i over W: for a grey fiber the weight S·cos θ_i/p_ω is W at
-//! every direction. It costs one evaluation's lookups plus seven prefix reads.
+//! every direction, and W is the directional albedo ρ(θ_r). It costs one evaluation's lookups
+//! plus seven prefix reads, and per view the ten slivers' pieces.
 
 use super::choose;
+use super::sliver::pole_keep;
 use crate::baked::{BakedBcsdf, Lookups};
 use crate::bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection};
 use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
 use crate::lut::cdf::Density;
 use crate::math::{Math, PI};
-use rows::Rows;
+use rows::{Range, Rows};
 pub use view::BakedView;
 
 mod rows;
@@ -75,25 +79,37 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     }
 
     /// Mixture weights A_c(θ_r) of the five parts (R, TT, TRT, scattered back, front) and
-    /// the CDF offsets of the M ranges.
+    /// their θ_i ranges, every mass with S's pole factor g (docs/model.md §10).
     #[inline(always)]
-    fn parts(&self, theta_r: f32) -> ([f32; 5], [(f32, f32); 3]) {
+    fn parts(&self, theta_r: f32) -> ([f32; 5], [Range; 5]) {
         let m = self.m_masses(theta_r);
         let nr = self.theta_r.locate(theta_r.abs());
-        let sr = self.ms_r.locate(theta_r);
         let nu_s = self.row_total(Density::N(3), nr);
         let mu_s = self.row_total(Density::Front, nr);
+        // The θ_i ranges: M_g over x = θ_i + θ_r ∈ [θ_r − π/2, θ_r + π/2], M^s_x over θ_i.
+        let (lo, hi) = (theta_r - PI / 2.0, theta_r + PI / 2.0);
+        let ranges: [Range; 5] = core::array::from_fn(|c| {
+            if c < 3 {
+                self.m_rows(c).range(lo, hi, m[c].1, m[c].0)
+            } else {
+                let rows = self.ms_rows(c - 3, theta_r);
+                rows.range(-PI / 2.0, PI / 2.0, 0.0, rows.total())
+            }
+        });
         // The mass of the evaluated M_g: the tabulated one times the closure's factor.
         let norm = self.sphere_norms(self.norm.locate(theta_r));
-        let mass = |g: usize| m[g].0 * norm[g];
+        let mass = |g: usize| ranges[g].kept() * norm[g];
         let a = [
             2.0 * mass(0) * self.row_total(Density::N(0), nr),
             2.0 * mass(1) * self.row_total(Density::N(1), nr),
             2.0 * mass(2) * self.row_total(Density::N(2), nr),
-            2.0 * self.row_total(Density::MS(0), sr) * (nu_s - mu_s),
-            2.0 * self.row_total(Density::MS(1), sr) * mu_s,
+            2.0 * ranges[3].kept() * (nu_s - mu_s),
+            2.0 * ranges[4].kept() * mu_s,
         ];
-        (a.map(|v| if v.is_finite() && v > 0.0 { v } else { 0.0 }), m)
+        (
+            a.map(|v| if v.is_finite() && v > 0.0 { v } else { 0.0 }),
+            ranges,
+        )
     }
 
     /// The mixture density of the lookups per unit solid angle, given W.
@@ -106,6 +122,8 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let [back, front] = l.ms;
         let ms = back + l.front * (front - back);
         let p = l.m[0] * mean(0) + l.m[1] * mean(1) + l.m[2] * mean(2) + ms * mean(3);
+        // S's pole factor g: S·cos²θ_i = (Σ M·N)·g (exactly 1 outside the slivers).
+        let p = p * pole_keep(cos_theta_i);
         let v = solid_angle_pdf(p / total_weight, cos_theta_i);
         if v.is_finite() && v > 0.0 {
             v
@@ -114,24 +132,22 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         }
     }
 
-    /// Draws (θ_i, φ) given a valid θ_r and its [`BakedBcsdf::parts`] `(a, m)` from three
-    /// uniform numbers (docs/model.md §10).
+    /// Draws (θ_i, φ) given a valid θ_r and its [`BakedBcsdf::parts`] `(a, ranges)` from
+    /// three uniform numbers (docs/model.md §10).
     fn draw(
         &self,
         theta_r: f32,
-        (a, m): ([f32; 5], [(f32, f32); 3]),
+        (a, ranges): ([f32; 5], [Range; 5]),
         u: [f32; 3],
     ) -> Option<SampledDirection> {
         let (c, u0) = choose(&a, u[0])?;
         let negative = u0 < 0.5;
         let theta_i = if c < 3 {
-            let rows = self.m_rows(c);
-            let (mass, lo) = m[c];
-            let x = rows.invert_between(lo, lo + mass, u[1]);
+            let x = self.m_rows(c).invert_kept(&ranges[c], u[1]);
             (x - theta_r).clamp(-PI / 2.0, PI / 2.0)
         } else {
-            let rows = self.ms_rows(c - 3, theta_r);
-            rows.invert_between(0.0, rows.total(), u[1])
+            self.ms_rows(c - 3, theta_r)
+                .invert_kept(&ranges[c], u[1])
                 .clamp(-PI / 2.0, PI / 2.0)
         };
         let family = if c < 3 { c } else { 3 };

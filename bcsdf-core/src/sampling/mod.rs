@@ -10,6 +10,7 @@
 
 pub mod analytic;
 pub mod baked;
+pub mod sliver;
 
 use crate::gaussian::erf_mass;
 pub use crate::gaussian::gaussian_mass;

@@ -2,10 +2,12 @@
 //! §10, docs/lut.md "Sampling data"): the rows of the baked sampler's parts, including the
 //! scattered family's |φ| rows weighted by the back/front blend of M^s.
 
+use super::super::sliver::{invert_sliver_piece, sliver_piece_mass};
 use super::super::{invert_linear, invert_weighted_linear, linear_mass, unit};
 use crate::baked::{Axis, BakedBcsdf};
 use crate::lut::cdf::{front_weights, Density, NodeRow};
 use crate::math::Math;
+use crate::model::POLE_SLIVER;
 use crate::sampling::weighted_linear_mass;
 
 /// The factor a row's density is weighted by along its axis: the back/front blend of the
@@ -18,6 +20,35 @@ pub(super) enum Weighting {
     Back,
     /// Times |φ|/π (prefix sums: [`Density::Front`]'s).
     Front,
+}
+
+/// One pole sliver of a part's θ_i range (docs/model.md §10): the row's mass over it as
+/// stored (`raw`) and as S weighs it, times g = min(1, cos²θ_i/10⁻⁴) (`kept`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct Sliver {
+    pub(crate) raw: f32,
+    pub(crate) kept: f32,
+}
+
+/// A part's θ_i range on its row's axis, [lo, hi] with a pole at each end (hi − lo = π),
+/// and its masses: `start` the row's running integral at lo, `raw` its integral over the
+/// range, `slivers` the pieces within s_c of lo and of hi.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct Range {
+    pub(crate) lo: f32,
+    pub(crate) hi: f32,
+    pub(crate) start: f32,
+    pub(crate) raw: f32,
+    pub(crate) slivers: [Sliver; 2],
+}
+
+impl Range {
+    /// The range's mass with g: the raw mass outside the slivers plus their kept masses.
+    #[inline(always)]
+    pub(crate) fn kept(&self) -> f32 {
+        let [a, b] = self.slivers;
+        (self.raw - a.raw - b.raw).max(0.0) + a.kept + b.kept
+    }
 }
 
 /// Two adjacent rows of one density blended with weights (1 − w, w): itself a piecewise-
@@ -33,6 +64,8 @@ pub(super) struct Rows<'a> {
     fronts: (&'a [u8], &'a [u8]),
     weighting: Weighting,
     w: f32,
+    /// The rows' axis (its node location, for the pole slivers).
+    axis: Axis,
     /// Axis origin and node spacing.
     pub(super) origin: f32,
     pub(super) step: f32,
@@ -96,6 +129,7 @@ impl<'a> Rows<'a> {
             fronts,
             weighting,
             w,
+            axis: *axis,
             origin: axis.lo,
             step: l.step,
             nodes: l.nodes,
@@ -179,6 +213,96 @@ impl<'a> Rows<'a> {
         }
         let (a, b) = self.weights(j);
         invert_weighted_linear(v0, v1, a, b, self.step, t)
+    }
+
+    /// Calls `f(offset from a, length, value at the start, value at the end)` on the pieces
+    /// of [a, b] between the rows' nodes, in axis order, until it returns true. The pieces
+    /// are found where `eval` finds them: by the axis's own location of a and b
+    /// ([`Axis::locate`], which the WGSL twin forms with the same roundings), lengths as
+    /// differences of node weights times the node spacing (no division).
+    #[inline(always)]
+    fn pieces(&self, a: f32, b: f32, mut f: impl FnMut(f32, f32, f32, f32) -> bool) {
+        let ((ja, wa), (jb, wb)) = (self.axis.locate(a), self.axis.locate(b));
+        let mut off = 0.0;
+        for j in ja..=jb {
+            let w0 = if j == ja { wa } else { 0.0 };
+            let w1 = if j == jb { wb } else { 1.0 };
+            if w1 > w0 {
+                let (v0, v1) = (self.value(j), self.value(j + 1));
+                let len = (w1 - w0) * self.step;
+                if f(off, len, v0 + (v1 - v0) * w0, v0 + (v1 - v0) * w1) {
+                    return;
+                }
+                off += len;
+            }
+        }
+    }
+
+    /// The sliver [a, b] (one end at `pole`, a or b): its raw mass and its mass times g (the
+    /// pieces between the nodes, [`sliver_piece_mass`], at distances (a − pole) + offset).
+    #[inline]
+    pub(super) fn sliver(&self, a: f32, b: f32, pole: f32) -> Sliver {
+        let mut out = Sliver::default();
+        let at = a - pole;
+        self.pieces(a, b, |off, len, v0, v1| {
+            out.raw += linear_mass(v0, v1, len);
+            out.kept += sliver_piece_mass(v0, v1, len, at + off, 0.0, len);
+            false
+        });
+        out
+    }
+
+    /// The position in the sliver [a, b] (one end at `pole`) where its running mass times g
+    /// from a reaches t (b if t is past its mass).
+    fn invert_sliver(&self, a: f32, b: f32, pole: f32, t: f32) -> f32 {
+        let (mut acc, mut out) = (0.0, b);
+        let at = a - pole;
+        self.pieces(a, b, |off, len, v0, v1| {
+            let m = sliver_piece_mass(v0, v1, len, at + off, 0.0, len);
+            if m > 0.0 && t - acc <= m {
+                out = a + (off + invert_sliver_piece(v0, v1, len, at + off, 0.0, t - acc));
+                return true;
+            }
+            acc += m;
+            false
+        });
+        out
+    }
+
+    /// The range's masses ([`Range`]), given the running integral at its start.
+    #[inline]
+    pub(super) fn range(&self, lo: f32, hi: f32, start: f32, raw: f32) -> Range {
+        Range {
+            lo,
+            hi,
+            start,
+            raw,
+            slivers: [
+                self.sliver(lo, lo + POLE_SLIVER, lo),
+                self.sliver(hi - POLE_SLIVER, hi, hi),
+            ],
+        }
+    }
+
+    /// The position in `r` where the running mass times g (docs/model.md §10) reaches the
+    /// fraction u of [`Range::kept`], the target kept 2⁻²⁰ of the mass inside its ends as
+    /// [`Rows::invert_between`] does: in a sliver by [`invert_sliver_piece`], elsewhere by
+    /// the row's own inversion at the raw mass it corresponds to.
+    #[inline]
+    pub(super) fn invert_kept(&self, r: &Range, u: f32) -> f32 {
+        let total = r.kept();
+        let inset = total * (1.0 / 1_048_576.0);
+        let t = (unit(u) * total).clamp(inset, total - inset);
+        let [low, high] = r.slivers;
+        if t < low.kept {
+            return self.invert_sliver(r.lo, r.lo + POLE_SLIVER, r.lo, t);
+        }
+        let mid = (r.raw - low.raw - high.raw).max(0.0);
+        let t = t - low.kept;
+        if t <= mid || !(high.kept > 0.0) {
+            return self.invert(r.start + low.raw + t.min(mid));
+        }
+        self.invert_sliver(r.hi - POLE_SLIVER, r.hi, r.hi, t - mid)
     }
 
     /// The axis position where the running integral reaches t0 + u·(t1 − t0), with the

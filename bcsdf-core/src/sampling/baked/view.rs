@@ -3,11 +3,12 @@
 //!
 //! A path tracer asks, at each bounce, for one sample and the density of one or more other
 //! directions (the lights', for multiple importance sampling), all for the same ω_r. The
-//! mixture weights A_c(θ_r), their total W and the CDF offsets of the M_g ranges depend on
-//! θ_r only; [`BakedBcsdf::view`] computes them once and [`BakedView`] answers `pdf`,
+//! mixture weights A_c(θ_r), their total W and the parts' θ_i ranges with their pole
+//! slivers' masses depend on θ_r only; [`BakedBcsdf::view`] computes them once and [`BakedView`] answers `pdf`,
 //! `eval_with_pdf` and `sample` from them. The [`Bcsdf`](crate::Bcsdf) methods of
 //! [`BakedBcsdf`] go through a view too, so both give the same bits.
 
+use super::rows::Range;
 use crate::baked::BakedBcsdf;
 use crate::bcsdf::{finish, Sample, SampledDirection};
 use crate::frame::Angles;
@@ -15,7 +16,8 @@ use crate::lobes::Families;
 use crate::math::{cos_within_half_pi, Math, PI};
 
 /// The baked sampler at one view direction θ_r ([`BakedBcsdf::view`]): the mixture weights
-/// and M_g range masses of docs/model.md §10, computed once; `pdf`, `eval_with_pdf` and
+/// and the parts' θ_i range masses (with S's pole factor, including the pole slivers) of
+/// docs/model.md §10, computed once; `pdf`, `eval_with_pdf` and
 /// `sample` then cost the table lookups of one direction (and, for `sample`, the row
 /// inversions).
 ///
@@ -38,8 +40,8 @@ pub struct BakedView<'l, 'a, M: Math> {
     theta_r: f32,
     /// A_c(θ_r) of the five parts (R, TT, TRT, scattered back, front).
     weights: [f32; 5],
-    /// (∫ M_g over θ_i ∈ [−π/2, π/2], CDF at the range start), g = R, TT, TRT.
-    masses: [(f32, f32); 3],
+    /// The five parts' θ_i ranges and their masses with S's pole factor.
+    ranges: [Range; 5],
     /// W = Σ_c A_c.
     total_weight: f32,
 }
@@ -53,13 +55,13 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         if !(theta_r.is_finite() && theta_r.abs() <= PI / 2.0) {
             return None;
         }
-        let (weights, masses) = self.parts(theta_r);
+        let (weights, ranges) = self.parts(theta_r);
         let [a, b, c, d, e] = weights;
         Some(BakedView {
             lut: self,
             theta_r,
             weights,
-            masses,
+            ranges,
             total_weight: a + b + c + d + e,
         })
     }
@@ -95,7 +97,7 @@ impl<M: Math> BakedView<'_, '_, M> {
     /// [`Bcsdf::sample_direction`](crate::Bcsdf::sample_direction).
     #[must_use]
     pub fn sample_direction(&self, u: [f32; 3]) -> Option<SampledDirection> {
-        self.lut.draw(self.theta_r, (self.weights, self.masses), u)
+        self.lut.draw(self.theta_r, (self.weights, self.ranges), u)
     }
 
     /// Importance-samples ω_i from three uniform numbers: direction, density, weight, as

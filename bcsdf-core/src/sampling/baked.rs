@@ -88,8 +88,19 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let mu_s = self.row_total(Density::Front, nr);
         // The θ_i ranges: M_g over x = θ_i + θ_r ∈ [θ_r − π/2, θ_r + π/2], M^s_x over θ_i.
         let (lo, hi) = (theta_r - PI / 2.0, theta_r + PI / 2.0);
+        let n = [
+            self.row_total(Density::N(0), nr),
+            self.row_total(Density::N(1), nr),
+            self.row_total(Density::N(2), nr),
+            nu_s - mu_s,
+            mu_s,
+        ];
         let ranges: [Range; 5] = core::array::from_fn(|c| {
-            if c < 3 {
+            // A part whose azimuthal row is empty has weight 0 whatever its θ_i range holds
+            // (and is never drawn): its range, pole slivers included, is not computed.
+            if !(n[c] > 0.0) {
+                Range::default()
+            } else if c < 3 {
                 self.m_rows(c).range(lo, hi, m[c].1, m[c].0)
             } else {
                 let rows = self.ms_rows(c - 3, theta_r);
@@ -100,11 +111,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let norm = self.sphere_norms(self.norm.locate(theta_r));
         let mass = |g: usize| ranges[g].kept() * norm[g];
         let a = [
-            2.0 * mass(0) * self.row_total(Density::N(0), nr),
-            2.0 * mass(1) * self.row_total(Density::N(1), nr),
-            2.0 * mass(2) * self.row_total(Density::N(2), nr),
-            2.0 * ranges[3].kept() * (nu_s - mu_s),
-            2.0 * ranges[4].kept() * mu_s,
+            2.0 * mass(0) * n[0],
+            2.0 * mass(1) * n[1],
+            2.0 * mass(2) * n[2],
+            2.0 * ranges[3].kept() * n[3],
+            2.0 * ranges[4].kept() * n[4],
         ];
         (
             a.map(|v| if v.is_finite() && v > 0.0 { v } else { 0.0 }),

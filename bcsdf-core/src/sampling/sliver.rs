@@ -66,14 +66,20 @@ const GAUSS3: [(f32, f32); 3] = [
 #[inline]
 #[must_use]
 pub fn sliver_piece_mass(v0: f32, v1: f32, len0: f32, x0: f32, pole: f32, len: f32) -> f32 {
-    if !(len > 0.0 && len0 > 0.0) {
+    // A zero piece (a lobe's tail rounded to 0 near the pole) has no mass: no work.
+    if !(len > 0.0 && len0 > 0.0) || (v0 == 0.0 && v1 == 0.0) {
         return 0.0;
     }
-    let slope = (v1 - v0) / len0;
+    // v's rise over [x0, x0 + len]; no division for a whole piece (the per-view case).
+    let rise = if len == len0 {
+        v1 - v0
+    } else {
+        (v1 - v0) * (len / len0)
+    };
+    let s0 = x0 - pole;
     let mut acc = 0.0;
     for (t, w) in GAUSS3 {
-        let d = t * len;
-        acc += w * (v0 + slope * d) * sliver_keep((x0 - pole) + d);
+        acc += w * (v0 + rise * t) * sliver_keep(s0 + t * len);
     }
     acc * len
 }

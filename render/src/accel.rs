@@ -162,6 +162,37 @@ impl FiberAccel {
         found
     }
 
+    /// The number of distinct fibers with a segment on the ray in (t_min, t_max), `skip`
+    /// applied as in [`FiberAccel::closest`]: the strand count an engine reads from its deep
+    /// opacity map (docs/model.md §13). A fiber met by several of its segments counts once.
+    #[must_use]
+    pub fn count_fibers(
+        &self,
+        origin: &Vector3<f32>,
+        dir: &Vector3<f32>,
+        t_min: f32,
+        t_max: f32,
+        skip: Skip,
+    ) -> u32 {
+        if self.segments.is_empty() {
+            return 0;
+        }
+        let query = SegmentQuery::new(origin, dir, t_max);
+        let mut ids: Vec<u32> = Vec::new();
+        self.walk(&query, |seg| {
+            match seg.intersect(origin, dir, t_min, t_max) {
+                Some(hit) if !(skip.fiber == Some(seg.fiber) && hit.t < skip.dist) => {
+                    ids.push(seg.fiber);
+                }
+                _ => {}
+            }
+            Visit::Continue
+        });
+        ids.sort_unstable();
+        ids.dedup();
+        ids.len() as u32
+    }
+
     /// Calls `leaf` for the segments whose leaves the ray reaches within the query's
     /// (shrinking) t_max, nearer subtrees first; the order is fixed by the tree and the ray.
     fn walk<'a>(&'a self, query: &SegmentQuery, mut leaf: impl FnMut(&'a FiberSegment) -> Visit) {

@@ -35,6 +35,62 @@ pub const MAX_DENSITY: f32 = 4.0;
 /// is a numerical zero width, not a physical one.
 pub const MIN_VARIANCE: f32 = 3.0e-6;
 
+/// How light is attenuated on its way through the fibers between the light and the shading
+/// point (docs/model.md §13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Attenuation {
+    /// Zinke et al. 2008: T_f = ā_f^n, light reaches the point by forward scattering only.
+    Forward,
+    /// A two-stream stack of n identical layers, each transmitting ā_f and reflecting ā_b
+    /// (light scattered back by one fiber and forward again by the one before it is kept),
+    /// one layer added at a time (the adding method): T_{k+1} = ā_f T_k/(1 − ā_b R_k),
+    /// R_{k+1} = ā_b + ā_f² R_k/(1 − ā_b R_k), T_0 = 1, R_0 = 0. For fibers whose medulla scatters broadly (ā_b ≈ ā_f) this is the
+    /// diffusive transport the path tracer shows; n is clamped to [`MAX_STACK`] here.
+    TwoStream,
+}
+
+/// Largest fiber count of the two-stream recursion ([`Attenuation::TwoStream`]).
+pub const MAX_STACK: u32 = 4096;
+
+/// Transmittance of a stack of `n` fibers (n ≥ 0, fractional n geometric between the
+/// neighbouring integers) of forward fraction `t` and backward fraction `r`, per
+/// [`Attenuation`].
+#[must_use]
+pub fn transmittance(attenuation: Attenuation, t: f32, r: f32, n: f32) -> f32 {
+    let t = if t > 0.0 { t.min(1.0) } else { 0.0 };
+    let r = if r > 0.0 { r.min(1.0 - t) } else { 0.0 };
+    if !(n > 0.0) {
+        return 1.0;
+    }
+    match attenuation {
+        Attenuation::Forward => libm::powf(t, n.min(MAX_FIBERS)),
+        Attenuation::TwoStream => {
+            let n = n.min(MAX_STACK as f32);
+            let whole = n as u32; // n ≥ 0, ≤ MAX_STACK
+            let frac = n - whole as f32;
+            let (mut tk, mut rk) = (1.0f32, 0.0f32);
+            for _ in 0..whole {
+                if tk < 1e-12 {
+                    return 0.0;
+                }
+                let denom = 1.0 - rk * r;
+                let (t1, r1) = (tk * t / denom, r + t * t * rk / denom);
+                tk = t1;
+                rk = r1.min(1.0);
+            }
+            if frac > 0.0 {
+                let next = tk * t / (1.0 - rk * r);
+                tk *= libm::powf(next / tk.max(1e-30), frac);
+            }
+            if tk.is_finite() {
+                tk.clamp(0.0, 1.0)
+            } else {
+                0.0
+            }
+        }
+    }
+}
+
 /// Zinke's density factors d_f (forward, the spread term) and d_b (local backscatter),
 /// docs/model.md §13. [`eval`] maps NaN and negative values to 0 and clamps to
 /// [`MAX_DENSITY`].
@@ -255,13 +311,20 @@ fn gauss(x: f32, variance: f32) -> f32 {
 /// shading is S·V + this term, which is
 ///
 /// V·d_b·f_back(σ_f² = 0) + (T_f − V)·d_f·[f_s^scatter + d_b·f_back](σ_f²),
-/// T_f = ā_f(−θ_i)^n, σ_f² = n·β_f²(−θ_i).
+/// T_f = [`transmittance`] of n fibers of ā_f(−θ_i), ā_b(−θ_i) (ā_f^n for
+/// [`Attenuation::Forward`]), σ_f² = n·β_f²(−θ_i).
 ///
 /// Contract: `fibers` NaN or below 0 is 0 (unoccluded), above [`MAX_FIBERS`] (or +∞) is
 /// [`MAX_FIBERS`]; the density factors as in [`Density`]. The result is finite and ≥ 0 for
 /// every input; nothing panics or allocates.
 #[must_use]
-pub fn eval(tables: &DualTables, angles: &Angles, fibers: f32, density: Density) -> Rgb {
+pub fn eval(
+    tables: &DualTables,
+    angles: &Angles,
+    fibers: f32,
+    density: Density,
+    attenuation: Attenuation,
+) -> Rgb {
     let n = if fibers > 0.0 {
         fibers.min(MAX_FIBERS)
     } else {
@@ -283,10 +346,10 @@ pub fn eval(tables: &DualTables, angles: &Angles, fibers: f32, density: Density)
     };
     let mut out = [0.0f32; 3];
     for c in 0..3 {
-        let af = along.a_f[c].clamp(0.0, 1.0);
-        let t_f = if n > 0.0 { libm::powf(af, n) } else { 1.0 };
+        let t_f = transmittance(attenuation, along.a_f[c], along.a_b[c], n);
         let sigma2_f = n * along.beta2_f[c].max(0.0);
-        let sigma_b = (1.0 + d_b * here.a_f[c].clamp(0.0, 1.0).powi(2)) * here.sigma_b0[c];
+        let af_here = here.a_f[c].clamp(0.0, 1.0);
+        let sigma_b = (1.0 + d_b * af_here * af_here) * here.sigma_b0[c];
         let f_back = |s2f: f32| {
             here.big_a_b[c].max(0.0)
                 * gauss(x - here.delta_b[c], sigma_b * sigma_b + s2f)

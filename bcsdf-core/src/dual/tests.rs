@@ -160,21 +160,25 @@ fn unoccluded_light_gets_only_the_local_backscatter() {
     let none = Density { d_f: 0.7, d_b: 0.0 };
     // n = 0 (and NaN, negative): the spread term vanishes; with d_b = 0 nothing is left.
     for n in [0.0, -3.0, f32::NAN, f32::NEG_INFINITY] {
-        assert_eq!(eval(&t, &a, n, none), Rgb::ZERO, "n = {n}");
+        assert_eq!(
+            eval(&t, &a, n, none, Attenuation::Forward),
+            Rgb::ZERO,
+            "n = {n}"
+        );
     }
     let d = Density { d_f: 0.7, d_b: 0.5 };
-    let b0 = eval(&t, &a, 0.0, d);
+    let b0 = eval(&t, &a, 0.0, d, Attenuation::Forward);
     assert!(b0.0.iter().all(|&v| v > 0.0), "{b0:?}");
-    assert_eq!(eval(&t, &a, -1.0, d), b0);
-    assert_eq!(eval(&t, &a, f32::NAN, d), b0);
+    assert_eq!(eval(&t, &a, -1.0, d, Attenuation::Forward), b0);
+    assert_eq!(eval(&t, &a, f32::NAN, d, Attenuation::Forward), b0);
     // Continuous as the first fiber comes in.
-    let b1 = eval(&t, &a, 1e-4, d);
+    let b1 = eval(&t, &a, 1e-4, d, Attenuation::Forward);
     for c in 0..3 {
         assert!((b1[c] - b0[c]).abs() < 1e-3 * b0[c] + 1e-6, "{b0:?} {b1:?}");
     }
     // The front half gets no local backscatter.
     let front = Angles::new(0.3, -0.2, 2.5).unwrap();
-    assert_eq!(eval(&t, &front, 0.0, d), Rgb::ZERO);
+    assert_eq!(eval(&t, &front, 0.0, d, Attenuation::Forward), Rgb::ZERO);
 }
 
 #[test]
@@ -182,27 +186,38 @@ fn occluded_light_fades_with_the_fiber_count() {
     let t = absorbing_tables();
     let a = Angles::new(0.25, -0.2, 2.8).unwrap();
     let d = Density::DEFAULT;
-    let mut last = eval(&t, &a, 1.0, d);
+    let mut last = eval(&t, &a, 1.0, d, Attenuation::Forward);
     assert!(last.0.iter().all(|&v| v > 0.0), "{last:?}");
     for n in [2.0, 4.0, 8.0, 16.0] {
-        let v = eval(&t, &a, n, d);
+        let v = eval(&t, &a, n, d, Attenuation::Forward);
         for c in 0..3 {
             assert!(v[c] < last[c], "n = {n}: {v:?} !< {last:?}");
         }
         last = v;
     }
     // Blue (ā_f = 0.2) fades fastest.
-    let v = eval(&t, &a, 4.0, d);
+    let v = eval(&t, &a, 4.0, d, Attenuation::Forward);
     assert!(v[2] < v[1] && v[1] < v[0], "{v:?}");
     // The spread term is linear in d_f.
     let no_b = |d_f| Density { d_f, d_b: 0.0 };
-    let (x, y) = (eval(&t, &a, 3.0, no_b(0.35)), eval(&t, &a, 3.0, no_b(0.7)));
+    let (x, y) = (
+        eval(&t, &a, 3.0, no_b(0.35), Attenuation::Forward),
+        eval(&t, &a, 3.0, no_b(0.7), Attenuation::Forward),
+    );
     for c in 0..3 {
         assert!((2.0 * x[c] - y[c]).abs() <= 1e-6 * y[c]);
     }
+    // With backscatter kept (two-stream) more light gets through than forward alone.
+    let ts = eval(&t, &a, 4.0, d, Attenuation::TwoStream);
+    for c in 0..3 {
+        assert!(ts[c] > v[c], "{ts:?} vs {v:?}");
+    }
     // Many fibers: nothing gets through.
-    assert_eq!(eval(&t, &a, 1e5, d), Rgb::ZERO);
-    assert_eq!(eval(&t, &a, f32::INFINITY, d), Rgb::ZERO);
+    assert_eq!(eval(&t, &a, 1e5, d, Attenuation::Forward), Rgb::ZERO);
+    assert_eq!(
+        eval(&t, &a, f32::INFINITY, d, Attenuation::Forward),
+        Rgb::ZERO
+    );
 }
 
 #[test]
@@ -214,8 +229,20 @@ fn the_term_is_even_in_phi() {
         (-0.4, 0.3, 2.0, 3.0),
         (0.0, 0.0, 1.2, 1.0),
     ] {
-        let p = eval(&t, &Angles::new(ti, tr, phi).unwrap(), n, d);
-        let m = eval(&t, &Angles::new(ti, tr, -phi).unwrap(), n, d);
+        let p = eval(
+            &t,
+            &Angles::new(ti, tr, phi).unwrap(),
+            n,
+            d,
+            Attenuation::TwoStream,
+        );
+        let m = eval(
+            &t,
+            &Angles::new(ti, tr, -phi).unwrap(),
+            n,
+            d,
+            Attenuation::TwoStream,
+        );
         assert_eq!(p, m);
     }
 }
@@ -256,8 +283,10 @@ fn degenerate_input_stays_finite() {
             for &n in &counts {
                 for &d_f in &dens {
                     for &d_b in &dens {
-                        let v = eval(t, a, n, Density { d_f, d_b });
-                        assert!(v.0.iter().all(|x| x.is_finite() && *x >= 0.0), "{v:?}");
+                        for att in [Attenuation::Forward, Attenuation::TwoStream] {
+                            let v = eval(t, a, n, Density { d_f, d_b }, att);
+                            assert!(v.0.iter().all(|x| x.is_finite() && *x >= 0.0), "{v:?}");
+                        }
                     }
                 }
             }
@@ -299,4 +328,39 @@ fn the_local_backscatter_is_zinkes_series() {
     assert!(backscatter(1.0, 1.0, 0.1, 0.1, 0.01, 0.01)
         .iter()
         .all(|v| v.is_finite()));
+}
+
+#[test]
+fn the_two_stream_stack_has_the_classic_closed_forms() {
+    // Lossless layers (t + r = 1): T_n = 1/(1 + n·r/t).
+    for (t, r) in [(0.54f32, 0.46f32), (0.9, 0.1), (0.3, 0.7)] {
+        for n in [1u32, 2, 5, 17, 100] {
+            let got = transmittance(Attenuation::TwoStream, t, r, n as f32);
+            let want = 1.0 / (1.0 + n as f32 * r / t);
+            assert!(
+                (got - want).abs() < 1e-4 * want,
+                "t {t} n {n}: {got} vs {want}"
+            );
+        }
+    }
+    // No backscatter: the forward product ā_f^n.
+    for n in [1.0f32, 3.0, 7.0] {
+        let a = transmittance(Attenuation::TwoStream, 0.6, 0.0, n);
+        assert!((a - 0.6f32.powf(n)).abs() < 1e-6, "{a}");
+        assert_eq!(
+            transmittance(Attenuation::Forward, 0.6, 0.3, n),
+            0.6f32.powf(n)
+        );
+    }
+    // Monotone in n, 1 at n = 0, between the integers.
+    let mut last = 1.0;
+    for k in 1..40 {
+        let v = transmittance(Attenuation::TwoStream, 0.5, 0.3, k as f32 * 0.25);
+        assert!(v < last && v > 0.0, "{k}: {v} !< {last}");
+        last = v;
+    }
+    for n in [0.0, -1.0, f32::NAN] {
+        assert_eq!(transmittance(Attenuation::TwoStream, 0.5, 0.3, n), 1.0);
+    }
+    assert!(transmittance(Attenuation::TwoStream, 1.0, 0.0, f32::INFINITY) <= 1.0);
 }

@@ -1,0 +1,273 @@
+//! Dual scattering judged against the path tracer (issue 23, docs/model.md §13,
+//! docs/accuracy.md "Dual scattering"): for a light preset (dog) and a dark one (deer), in the
+//! energy closure, `ball` and `patch` under their key (rim) light, the `dual` image against a
+//! converged-enough `path` image: mean luminance within 10 % and relative RMSE over 16×16
+//! tiles ≤ 20 %; `single` printed beside them and, for the light preset, darker than `path`.
+//!
+//! Metrics (luminance, Rec. 709): mean error = mean(dual)/mean(path) − 1 over the whole
+//! image; tile RMSE = √(mean over tiles of (L_dual − L_path)²) / mean over tiles of L_path,
+//! L the tile's mean luminance. The same numbers restricted to the fur (pixels whose centre's
+//! camera ray first meets a fiber) are printed beside them.
+
+mod common;
+
+use bcsdf_core::dual::{Attenuation, Density, DualTables, Quadrature};
+use bcsdf_core::{presets, Closure, FurBcsdf};
+use render::scatter::One;
+use render::scene::{HitKind, Scene};
+use render::{render_method, scenes, Image, Method, SceneKind, SceneOptions, Settings};
+
+const SIDE: u32 = 48;
+const TILE: u32 = 16;
+
+fn scene(kind: SceneKind) -> Scene {
+    scenes::build(&SceneOptions {
+        kind,
+        fibers: None,
+        seed: 3,
+        aspect: 1.0,
+    })
+}
+
+fn lum(p: &[f32; 3]) -> f64 {
+    0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2])
+}
+
+/// Pixels whose centre's camera ray first meets a fiber.
+fn fur_mask(scene: &Scene) -> Vec<bool> {
+    (0..SIDE * SIDE)
+        .map(|i| {
+            let (x, y) = (i % SIDE, i / SIDE);
+            let (o, d) = scene.camera.ray(x as f32 + 0.5, y as f32 + 0.5, SIDE, SIDE);
+            matches!(
+                scene.intersect(&o, &d, None).map(|h| h.kind),
+                Some(HitKind::Fiber { .. })
+            )
+        })
+        .collect()
+}
+
+/// (mean error, tile relative RMSE) of `a` against the reference `r`, over the pixels of
+/// `mask` (all when `None`).
+fn metrics(a: &Image, r: &Image, mask: Option<&[bool]>) -> (f64, f64) {
+    let keep = |i: usize| mask.is_none_or(|m| m[i]);
+    let (mut sa, mut sr) = (0.0, 0.0);
+    let (mut se, mut sp, mut tiles) = (0.0, 0.0, 0.0);
+    for ty in (0..SIDE).step_by(TILE as usize) {
+        for tx in (0..SIDE).step_by(TILE as usize) {
+            let (mut ta, mut tr, mut n) = (0.0, 0.0, 0.0);
+            for y in ty..ty + TILE {
+                for x in tx..tx + TILE {
+                    let i = (y * SIDE + x) as usize;
+                    if keep(i) {
+                        ta += lum(&a.mean[i]);
+                        tr += lum(&r.mean[i]);
+                        n += 1.0;
+                    }
+                }
+            }
+            sa += ta;
+            sr += tr;
+            if n > 0.0 {
+                se += (ta / n - tr / n).powi(2);
+                sp += tr / n;
+                tiles += 1.0;
+            }
+        }
+    }
+    (sa / sr - 1.0, (se / tiles).sqrt() / (sp / tiles))
+}
+
+struct Row {
+    preset: &'static str,
+    scene: SceneKind,
+    mean_dual: f64,
+    rmse_dual: f64,
+    mean_single: f64,
+    rmse_single: f64,
+}
+
+fn measure(
+    model: &FurBcsdf<'_>,
+    tables: &DualTables,
+    kind: SceneKind,
+    density: Density,
+    attenuation: Attenuation,
+    path_spp: u32,
+) -> ((f64, f64), (f64, f64)) {
+    let scene = scene(kind);
+    let settings = |spp| Settings {
+        seed: 23,
+        ..Settings::new(SIDE, SIDE, spp)
+    };
+    let fiber = One(model);
+    let path = render_method(&scene, &fiber, &settings(path_spp), &Method::Path).unwrap();
+    let dual = render_method(
+        &scene,
+        &fiber,
+        &settings(32),
+        &Method::Dual {
+            tables,
+            density,
+            attenuation,
+        },
+    )
+    .unwrap();
+    let single = render_method(&scene, &fiber, &settings(32), &Method::Single).unwrap();
+    let mask = fur_mask(&scene);
+    let (d, s) = (
+        metrics(&dual.image, &path.image, None),
+        metrics(&single.image, &path.image, None),
+    );
+    let (df, sf) = (
+        metrics(&dual.image, &path.image, Some(&mask)),
+        metrics(&single.image, &path.image, Some(&mask)),
+    );
+    println!(
+        "  {kind}: path {:.2} s ({path_spp} spp), dual {:.2} s, single {:.2} s; fur only: dual \
+         mean {:+.1} % tiles {:.1} %, single mean {:+.1} % tiles {:.1} %",
+        path.seconds,
+        dual.seconds,
+        single.seconds,
+        100.0 * df.0,
+        100.0 * df.1,
+        100.0 * sf.0,
+        100.0 * sf.1
+    );
+    (d, s)
+}
+
+fn with_tables<R>(name: &str, f: impl FnOnce(&FurBcsdf<'_>, &DualTables) -> R) -> R {
+    let mut input = presets::find(name).unwrap().input;
+    input.closure = Closure::Energy;
+    common::with_model(&input, |model| {
+        let mut tables = Box::new(DualTables::ZERO);
+        let t = std::time::Instant::now();
+        tables.compute(
+            model,
+            Quadrature {
+                theta_steps: 96,
+                phi_steps: 64,
+            },
+        );
+        println!("{name}: tables in {:.2} s", t.elapsed().as_secs_f64());
+        f(model, &tables)
+    })
+}
+
+#[test]
+fn dual_scattering_is_within_the_bounds_of_the_path_tracer() {
+    let mut rows = Vec::new();
+    for preset in ["dog", "deer"] {
+        with_tables(preset, |model, tables| {
+            for kind in [SceneKind::Ball, SceneKind::Patch] {
+                let ((md, rd), (ms, rs)) = measure(
+                    model,
+                    tables,
+                    kind,
+                    Density::DEFAULT,
+                    Attenuation::TwoStream,
+                    16,
+                );
+                rows.push(Row {
+                    preset,
+                    scene: kind,
+                    mean_dual: md,
+                    rmse_dual: rd,
+                    mean_single: ms,
+                    rmse_single: rs,
+                });
+            }
+        });
+    }
+    println!("preset  scene  dual: mean  tiles | single: mean  tiles");
+    for r in &rows {
+        println!(
+            "{:7} {:6} {:+9.1} % {:5.1} % | {:+10.1} % {:5.1} %",
+            r.preset,
+            r.scene.name(),
+            100.0 * r.mean_dual,
+            100.0 * r.rmse_dual,
+            100.0 * r.mean_single,
+            100.0 * r.rmse_single
+        );
+    }
+    for r in &rows {
+        assert!(
+            r.mean_dual.abs() <= 0.10 && r.rmse_dual <= 0.20,
+            "{} {}: dual mean {:+.3}, tiles {:.3}",
+            r.preset,
+            r.scene,
+            r.mean_dual,
+            r.rmse_dual
+        );
+        if r.preset == "dog" {
+            assert!(
+                r.mean_single < 0.0,
+                "single is not darker than path for dog"
+            );
+        }
+    }
+}
+
+/// The grid search of d_f, d_b (docs/accuracy.md): `cargo test -p render --test dual --
+/// --ignored --nocapture fit`. One `path` image per preset and scene, a `dual` image per
+/// grid point.
+#[test]
+#[ignore = "a grid search, minutes; its table is in docs/accuracy.md"]
+fn fit_density() {
+    let grid_f = [0.35f32, 0.7, 1.0, 1.5, 2.0, 4.0];
+    let grid_b = [0.0f32, 0.7, 1.5];
+    let presets: Vec<String> = std::env::var("DUAL_FIT_PRESETS")
+        .unwrap_or_else(|_| "dog,deer".into())
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    for preset in &presets {
+        with_tables(preset, |model, tables| {
+            let f = &tables.fiber[32];
+            println!(
+                "{preset} θ = {:.3}: {f:?}",
+                bcsdf_core::dual::theta_node(32)
+            );
+            for kind in [SceneKind::Ball, SceneKind::Patch] {
+                let scene = scene(kind);
+                let settings = |spp| Settings {
+                    seed: 23,
+                    ..Settings::new(SIDE, SIDE, spp)
+                };
+                let fiber = One(model);
+                let path = render_method(&scene, &fiber, &settings(32), &Method::Path).unwrap();
+                let single = render_method(&scene, &fiber, &settings(32), &Method::Single).unwrap();
+                let (ms, rs) = metrics(&single.image, &path.image, None);
+                println!(
+                    "FIT {preset} {kind} single: mean {:+.2} % tiles {:.2} %",
+                    100.0 * ms,
+                    100.0 * rs
+                );
+                for &d_f in &grid_f {
+                    for &d_b in &grid_b {
+                        let density = Density { d_f, d_b };
+                        let dual = render_method(
+                            &scene,
+                            &fiber,
+                            &settings(32),
+                            &Method::Dual {
+                                tables,
+                                density,
+                                attenuation,
+                            },
+                        )
+                        .unwrap();
+                        let (md, rd) = metrics(&dual.image, &path.image, None);
+                        println!(
+                            "FIT {preset} {kind} d_f {d_f} d_b {d_b}: mean {:+.2} % tiles {:.2} %",
+                            100.0 * md,
+                            100.0 * rd
+                        );
+                    }
+                }
+            }
+        });
+    }
+}

@@ -45,7 +45,10 @@ pub enum Attenuation {
     /// (light scattered back by one fiber and forward again by the one before it is kept),
     /// one layer added at a time (the adding method): T_{k+1} = ā_f T_k/(1 − ā_b R_k),
     /// R_{k+1} = ā_b + ā_f² R_k/(1 − ā_b R_k), T_0 = 1, R_0 = 0. For fibers whose medulla scatters broadly (ā_b ≈ ā_f) this is the
-    /// diffusive transport the path tracer shows; n is clamped to [`MAX_STACK`] here.
+    /// diffusive transport the path tracer shows; n is clamped to [`MAX_STACK`] here. The
+    /// local backscatter's energy is then the same stack's: A_b = R_∞ − ā_b
+    /// ([`semi_infinite_reflectance`] less the single backscatter S already holds), in place
+    /// of Zinke's two-term series.
     TwoStream,
 }
 
@@ -91,6 +94,26 @@ pub fn transmittance(attenuation: Attenuation, t: f32, r: f32, n: f32) -> f32 {
     }
 }
 
+/// Reflectance of a semi-infinite two-stream stack of layers transmitting `t` and reflecting
+/// `r` (the fixed point of R = r + t²R/(1 − rR)):
+/// R_∞ = [1 + r² − t² − √((1 + r² − t²)² − 4r²)]/(2r); 1 for lossless layers (t + r = 1).
+#[must_use]
+pub fn semi_infinite_reflectance(t: f32, r: f32) -> f32 {
+    let t = if t > 0.0 { t.min(1.0) } else { 0.0 };
+    let r = if r > 0.0 { r.min(1.0 - t) } else { 0.0 };
+    if r < 1e-7 {
+        return r;
+    }
+    let b = 1.0 + r * r - t * t;
+    let disc = (b * b - 4.0 * r * r).max(0.0);
+    let v = (b - libm::sqrtf(disc)) / (2.0 * r);
+    if v.is_finite() {
+        v.clamp(0.0, 1.0)
+    } else {
+        0.0
+    }
+}
+
 /// Zinke's density factors d_f (forward, the spread term) and d_b (local backscatter),
 /// docs/model.md §13. [`eval`] maps NaN and negative values to 0 and clamps to
 /// [`MAX_DENSITY`].
@@ -103,9 +126,10 @@ pub struct Density {
 }
 
 impl Density {
-    /// The default shipped (docs/model.md §13, fitted against the path tracer in
-    /// docs/accuracy.md).
-    pub const DEFAULT: Density = Density { d_f: 0.7, d_b: 0.7 };
+    /// The default shipped, with [`Attenuation::TwoStream`]: d_f = d_b = 1, the best of the
+    /// grid d ≤ 1 for every preset and scene measured against the path tracer (larger values
+    /// fit better and have no physical reading; docs/model.md §13, docs/accuracy.md).
+    pub const DEFAULT: Density = Density { d_f: 1.0, d_b: 1.0 };
 
     fn sanitized(self) -> (f32, f32) {
         let clean = |d: f32| {
@@ -350,11 +374,14 @@ pub fn eval(
         let sigma2_f = n * along.beta2_f[c].max(0.0);
         let af_here = here.a_f[c].clamp(0.0, 1.0);
         let sigma_b = (1.0 + d_b * af_here * af_here) * here.sigma_b0[c];
+        let big_a_b = match attenuation {
+            Attenuation::Forward => here.big_a_b[c].max(0.0),
+            Attenuation::TwoStream => (semi_infinite_reflectance(here.a_f[c], here.a_b[c])
+                - here.a_b[c].max(0.0))
+            .max(0.0),
+        };
         let f_back = |s2f: f32| {
-            here.big_a_b[c].max(0.0)
-                * gauss(x - here.delta_b[c], sigma_b * sigma_b + s2f)
-                * back_half
-                * inv_cos2
+            big_a_b * gauss(x - here.delta_b[c], sigma_b * sigma_b + s2f) * back_half * inv_cos2
         };
         let mut value = direct * d_b * f_back(0.0);
         let spread = (t_f - direct).max(0.0);

@@ -363,4 +363,19 @@ fn the_two_stream_stack_has_the_classic_closed_forms() {
         assert_eq!(transmittance(Attenuation::TwoStream, 0.5, 0.3, n), 1.0);
     }
     assert!(transmittance(Attenuation::TwoStream, 1.0, 0.0, f32::INFINITY) <= 1.0);
+    // The semi-infinite stack's reflectance is the limit of the recursion's R_n.
+    for (t, r) in [(0.54f32, 0.46f32), (0.5, 0.3), (0.2, 0.1), (0.9, 0.05)] {
+        let (mut tk, mut rk) = (1.0f32, 0.0f32);
+        for _ in 0..200_000 {
+            let d = 1.0 - rk * r;
+            (tk, rk) = (tk * t / d, r + t * t * rk / d);
+        }
+        let closed = semi_infinite_reflectance(t, r);
+        let tol = if t + r > 0.999 { 2e-3 } else { 1e-5 };
+        assert!(
+            (closed - rk).abs() < tol,
+            "t {t} r {r}: {closed} vs {rk} ({tk})"
+        );
+    }
+    assert_eq!(semi_infinite_reflectance(0.5, 0.0), 0.0);
 }

@@ -14,7 +14,7 @@ mod tables;
 #[cfg(test)]
 mod tests;
 
-pub use tables::Quadrature;
+pub use tables::{Quadrature, MAX_PHI_STEPS};
 
 use crate::frame::Angles;
 use crate::gaussian::Gaussian;
@@ -62,7 +62,7 @@ pub const MAX_STACK: u32 = 4096;
 pub fn transmittance(attenuation: Attenuation, t: f32, r: f32, n: f32) -> f32 {
     let t = if t > 0.0 { t.min(1.0) } else { 0.0 };
     let r = if r > 0.0 { r.min(1.0 - t) } else { 0.0 };
-    if !(n > 0.0) {
+    if n.is_nan() || n <= 0.0 {
         return 1.0;
     }
     match attenuation {
@@ -334,7 +334,7 @@ fn gauss(x: f32, variance: f32) -> f32 {
 /// V = clamp(1 − fibers, 0, 1) the fraction of direct light (what a shadow ray gives), the
 /// shading is S·V + this term, which is
 ///
-/// V·d_b·f_back(σ_f² = 0) + (T_f − V)·d_f·[f_s^scatter + d_b·f_back](σ_f²),
+/// V·d_b·f_back(σ_f² = 0) + (T_f − V)·d_f·(f_s^scatter + d_b·f_back)(σ_f²),
 /// T_f = [`transmittance`] of n fibers of ā_f(−θ_i), ā_b(−θ_i) (ā_f^n for
 /// [`Attenuation::Forward`]), σ_f² = n·β_f²(−θ_i).
 ///
@@ -369,7 +369,7 @@ pub fn eval(
         0.0
     };
     let mut out = [0.0f32; 3];
-    for c in 0..3 {
+    for (c, slot) in out.iter_mut().enumerate() {
         let t_f = transmittance(attenuation, along.a_f[c], along.a_b[c], n);
         let sigma2_f = n * along.beta2_f[c].max(0.0);
         let af_here = here.a_f[c].clamp(0.0, 1.0);
@@ -394,7 +394,7 @@ pub fn eval(
             }
             value += spread * d_f * (f_s * inv_cos2 + d_b * f_back(sigma2_f));
         }
-        out[c] = if value.is_finite() && value > 0.0 {
+        *slot = if value.is_finite() && value > 0.0 {
             value
         } else {
             0.0

@@ -344,4 +344,41 @@ mod tests {
         }
         assert!(hits > 500 && misses > 500, "{hits} hits, {misses} misses");
     }
+
+    /// `count_fibers` counts distinct fibers: brute force over every segment, a fiber met
+    /// by several of its segments once, and the skipped fiber not at all.
+    #[test]
+    fn count_fibers_counts_each_fiber_once() {
+        let mut rng = Pcg32::new(11, 3);
+        let segments = coat(&mut rng);
+        let accel = FiberAccel::new(segments.clone());
+        let mut several = 0;
+        for _ in 0..2000 {
+            let o = Vector3::new(rng.uniform(), rng.uniform(), rng.uniform());
+            let d = direction(&mut rng);
+            let skip = Skip {
+                fiber: Some(0),
+                dist: 0.04,
+            };
+            let mut ids: Vec<u32> = segments
+                .iter()
+                .filter_map(|s| {
+                    let h = s.intersect(&o, &d, 1e-4, f32::INFINITY)?;
+                    (!(skip.fiber == Some(s.fiber) && h.t < skip.dist)).then_some(s.fiber)
+                })
+                .collect();
+            let hits = ids.len();
+            ids.sort_unstable();
+            ids.dedup();
+            if hits > ids.len() {
+                several += 1;
+            }
+            assert_eq!(
+                accel.count_fibers(&o, &d, 1e-4, f32::INFINITY, skip),
+                ids.len() as u32
+            );
+        }
+        // Rays that met one fiber through several segments were part of the sample.
+        assert!(several > 10, "{several}");
+    }
 }

@@ -83,6 +83,7 @@
 #![deny(clippy::undocumented_unsafe_blocks)]
 
 pub mod baked;
+pub mod dual;
 pub mod lut;
 pub mod medulla;
 pub mod params;

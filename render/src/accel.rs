@@ -162,6 +162,37 @@ impl FiberAccel {
         found
     }
 
+    /// The number of distinct fibers with a segment on the ray in (t_min, t_max), `skip`
+    /// applied as in [`FiberAccel::closest`]: the strand count an engine reads from its deep
+    /// opacity map (docs/model.md §13). A fiber met by several of its segments counts once.
+    #[must_use]
+    pub fn count_fibers(
+        &self,
+        origin: &Vector3<f32>,
+        dir: &Vector3<f32>,
+        t_min: f32,
+        t_max: f32,
+        skip: Skip,
+    ) -> u32 {
+        if self.segments.is_empty() {
+            return 0;
+        }
+        let query = SegmentQuery::new(origin, dir, t_max);
+        let mut ids: Vec<u32> = Vec::new();
+        self.walk(&query, |seg| {
+            match seg.intersect(origin, dir, t_min, t_max) {
+                Some(hit) if !(skip.fiber == Some(seg.fiber) && hit.t < skip.dist) => {
+                    ids.push(seg.fiber);
+                }
+                _ => {}
+            }
+            Visit::Continue
+        });
+        ids.sort_unstable();
+        ids.dedup();
+        ids.len() as u32
+    }
+
     /// Calls `leaf` for the segments whose leaves the ray reaches within the query's
     /// (shrinking) t_max, nearer subtrees first; the order is fixed by the tree and the ray.
     fn walk<'a>(&'a self, query: &SegmentQuery, mut leaf: impl FnMut(&'a FiberSegment) -> Visit) {
@@ -312,5 +343,42 @@ mod tests {
             );
         }
         assert!(hits > 500 && misses > 500, "{hits} hits, {misses} misses");
+    }
+
+    /// `count_fibers` counts distinct fibers: brute force over every segment, a fiber met
+    /// by several of its segments once, and the skipped fiber not at all.
+    #[test]
+    fn count_fibers_counts_each_fiber_once() {
+        let mut rng = Pcg32::new(11, 3);
+        let segments = coat(&mut rng);
+        let accel = FiberAccel::new(segments.clone());
+        let mut several = 0;
+        for _ in 0..2000 {
+            let o = Vector3::new(rng.uniform(), rng.uniform(), rng.uniform());
+            let d = direction(&mut rng);
+            let skip = Skip {
+                fiber: Some(0),
+                dist: 0.04,
+            };
+            let mut ids: Vec<u32> = segments
+                .iter()
+                .filter_map(|s| {
+                    let h = s.intersect(&o, &d, 1e-4, f32::INFINITY)?;
+                    (!(skip.fiber == Some(s.fiber) && h.t < skip.dist)).then_some(s.fiber)
+                })
+                .collect();
+            let hits = ids.len();
+            ids.sort_unstable();
+            ids.dedup();
+            if hits > ids.len() {
+                several += 1;
+            }
+            assert_eq!(
+                accel.count_fibers(&o, &d, 1e-4, f32::INFINITY, skip),
+                ids.len() as u32
+            );
+        }
+        // Rays that met one fiber through several segments were part of the sample.
+        assert!(several > 10, "{several}");
     }
 }

@@ -18,6 +18,7 @@
 //! numbers and the image is the same bits for any thread count.
 
 use crate::film::{Image, Render};
+use crate::method::Method;
 use crate::sampler::Sampler;
 use crate::scatter::Scatterer;
 use crate::scene::{HitKind, Scene};
@@ -157,11 +158,22 @@ struct Row {
     rays: u64,
 }
 
-/// Renders `scene` with scatterer `fiber` (see [`crate::scatter`]).
+/// Renders `scene` with scatterer `fiber` (see [`crate::scatter`]) by path tracing.
 pub fn render<S: Scatterer>(
     scene: &Scene,
     fiber: &S,
     settings: &Settings,
+) -> Result<Render, SettingsError> {
+    render_method(scene, fiber, settings, &Method::Path)
+}
+
+/// Renders `scene` with scatterer `fiber` including the light paths `method` includes
+/// ([`crate::method`], docs/model.md §13).
+pub fn render_method<S: Scatterer>(
+    scene: &Scene,
+    fiber: &S,
+    settings: &Settings,
+    method: &Method<'_>,
 ) -> Result<Render, SettingsError> {
     settings.validate()?;
     let pool = rayon::ThreadPoolBuilder::new()
@@ -184,7 +196,7 @@ pub fn render<S: Scatterer>(
         (0..settings.height)
             .into_par_iter()
             .map(|y| {
-                let row = render_row(scene, fiber, settings, y);
+                let row = render_row(scene, fiber, settings, method, y);
                 bar.inc(1);
                 row
             })
@@ -226,7 +238,13 @@ pub fn render<S: Scatterer>(
     })
 }
 
-fn render_row<S: Scatterer>(scene: &Scene, fiber: &S, settings: &Settings, y: u32) -> Row {
+fn render_row<S: Scatterer>(
+    scene: &Scene,
+    fiber: &S,
+    settings: &Settings,
+    method: &Method<'_>,
+    y: u32,
+) -> Row {
     let w = settings.width as usize;
     let mut row = Row {
         mean: Vec::with_capacity(w),
@@ -241,7 +259,15 @@ fn render_row<S: Scatterer>(scene: &Scene, fiber: &S, settings: &Settings, y: u3
         let mut sum = [0.0f64; 3];
         let mut sum_sq = [0.0f64; 3];
         for _ in 0..settings.spp {
-            let l = trace(scene, fiber, settings, x, y, &mut sampler, &mut row);
+            let l = trace(
+                scene,
+                fiber,
+                settings,
+                method,
+                (x, y),
+                &mut sampler,
+                &mut row,
+            );
             for c in 0..3 {
                 sum[c] += l[c];
                 sum_sq[c] += l[c] * l[c];
@@ -282,8 +308,8 @@ fn trace<S: Scatterer>(
     scene: &Scene,
     fiber: &S,
     settings: &Settings,
-    x: u32,
-    y: u32,
+    method: &Method<'_>,
+    (x, y): (u32, u32),
     sampler: &mut Sampler,
     row: &mut Row,
 ) -> [f64; 3] {
@@ -345,6 +371,25 @@ fn trace<S: Scatterer>(
                 }
             }
         };
+
+        // `single` and `dual` at a fiber: light sampling with a counted shadow ray, and the
+        // path ends (crate::method).
+        if let (HitKind::Fiber { tangent, .. }, false) = (hit.kind, matches!(method, Method::Path))
+        {
+            if let Some(wl) = lights.sample(u_pick, u_light) {
+                let p_light = lights.pdf(&wl);
+                if p_light > 0.0 {
+                    row.rays += 1;
+                    if let Some(n) = scene.fibers_crossed(&next_origin, &wl, next_from) {
+                        let f = method.fiber_light(fiber, &wl, &wr, &tangent, n);
+                        let le = lights.radiance(&wl);
+                        let value: [f32; 3] = core::array::from_fn(|c| f[c] * le[c]);
+                        add(&mut l, &mut row.orders, order, &beta, &value, 1.0 / p_light);
+                    }
+                }
+            }
+            break;
+        }
 
         // 1. Next-event estimation.
         if settings.strategy != Strategy::Bcsdf {

@@ -14,6 +14,8 @@
 //! - [`scatter`]: what the integrator asks of a fiber; [`scatter::One`] wraps any `Bcsdf`
 //!   (the analytic `FurBcsdf` or the baked `BakedBcsdf`), [`scatter::Guided`] evaluates one
 //!   and samples with another.
+//! - [`method`]: `path`, and the engine approximations `single` and `dual` (dual scattering,
+//!   docs/model.md §13) judged against it.
 //! - [`film`], [`output`]: the image with per-pixel standard errors, bounce-order energies,
 //!   and the EXR/PNG bytes.
 //!
@@ -41,6 +43,7 @@ pub mod fiber;
 pub mod film;
 pub mod integrator;
 pub mod light;
+pub mod method;
 pub mod output;
 pub mod sampler;
 pub mod scatter;
@@ -49,5 +52,6 @@ pub mod scenes;
 pub mod surface;
 
 pub use film::{Estimate, Image, Render};
-pub use integrator::{render, Settings, SettingsError, Strategy};
+pub use integrator::{render, render_method, Settings, SettingsError, Strategy};
+pub use method::{Method, MethodKind};
 pub use scenes::{SceneKind, SceneOptions};

@@ -133,6 +133,27 @@ impl Scene {
             .any(origin, dir, self.epsilon, f32::INFINITY, self.skip(from))
     }
 
+    /// The fibers the unit ray leaving `origin` (from fiber `from`) crosses on its way to
+    /// infinity, or `None` when a surface (skin, ground: opaque) blocks it (docs/model.md §13).
+    #[must_use]
+    pub fn fibers_crossed(
+        &self,
+        origin: &Vector3<f32>,
+        dir: &Vector3<f32>,
+        from: Option<u32>,
+    ) -> Option<u32> {
+        if self.surfaces.iter().any(|s| {
+            s.intersect(origin, dir, self.epsilon, f32::INFINITY)
+                .is_some()
+        }) {
+            return None;
+        }
+        Some(
+            self.fibers
+                .count_fibers(origin, dir, self.epsilon, f32::INFINITY, self.skip(from)),
+        )
+    }
+
     fn skip(&self, from: Option<u32>) -> Skip {
         Skip {
             fiber: from,

@@ -131,11 +131,17 @@ pub enum Evaluator {
     Baked,
 }
 
-/// The light transport method of `viewer render` (one for now).
+/// The light transport method of `viewer render` (docs/model.md §11, §13).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Method {
-    /// Unidirectional path tracing with next-event estimation and MIS.
+    /// Unidirectional path tracing with next-event estimation and MIS (the reference).
     Path,
+    /// Single scattering at fibers with shadow rays that count the fibers they cross, plus
+    /// the dual-scattering term (tables computed from the evaluator first).
+    Dual,
+    /// Single scattering at fibers: light sampling with a binary shadow ray, no bounce off a
+    /// fiber (skin and ground path traced as in `path`).
+    Single,
 }
 
 /// `viewer render` arguments.
@@ -168,6 +174,14 @@ pub struct RenderArgs {
     /// Light transport method.
     #[arg(long, value_enum, default_value = "path")]
     pub method: Method,
+
+    /// Dual scattering's forward density factor d_f (docs/model.md §13).
+    #[arg(long, value_name = "D", default_value_t = bcsdf_core::dual::Density::DEFAULT.d_f)]
+    pub d_f: f32,
+
+    /// Dual scattering's backward density factor d_b (docs/model.md §13).
+    #[arg(long, value_name = "D", default_value_t = bcsdf_core::dual::Density::DEFAULT.d_b)]
+    pub d_b: f32,
 
     /// Samples (camera paths) per pixel.
     #[arg(long, value_name = "N")]

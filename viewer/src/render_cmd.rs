@@ -2,16 +2,17 @@
 //! render.exr, render.png and render.json through `bake::fsutil` (docs/model.md §11).
 
 use crate::catalog;
-use crate::cli::{Evaluator, PresetsArgs, ProfileArgs, RenderArgs};
+use crate::cli::{Evaluator, Method as MethodArg, PresetsArgs, ProfileArgs, RenderArgs};
 use crate::error::Error;
 use crate::json;
 use crate::source::{preset_model, read_lut};
 use bake::fsutil;
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::dual::{Attenuation, Density, DualTables, Quadrature};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::{Bcsdf, FurParamsInput};
 use render::scatter::One;
-use render::{integrator, output, scenes, Render, SceneKind, SceneOptions, Settings};
+use render::{integrator, output, scenes, Method, Render, SceneKind, SceneOptions, Settings};
 use serde_json::json;
 use std::io::Write;
 
@@ -40,6 +41,14 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
             args.exposure
         )));
     }
+    for (flag, d) in [("d-f", args.d_f), ("d-b", args.d_b)] {
+        if !(d.is_finite() && (0.0..=bcsdf_core::dual::MAX_DENSITY).contains(&d)) {
+            return Err(Error::input(format!(
+                "--{flag} {d} must be 0 to {}",
+                bcsdf_core::dual::MAX_DENSITY
+            )));
+        }
+    }
     let evaluator = match (args.evaluator, &args.lut) {
         (Some(Evaluator::Analytic), Some(_)) => {
             return Err(Error::input(
@@ -64,7 +73,7 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
             .map_err(|e| Error::input(format!("{}: {e}", path.display())))?;
         (
             path.display().to_string(),
-            trace(&scene, &baked, &settings)?,
+            trace(&scene, &baked, &settings, args)?,
         )
     } else {
         // clap requires --preset without --lut.
@@ -78,13 +87,13 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         };
         let model = preset_model(preset, &args.presets, &args.set, &profile_args)?;
         let r = match evaluator {
-            Evaluator::Analytic => trace(&scene, &model.model(), &settings)?,
+            Evaluator::Analytic => trace(&scene, &model.model(), &settings, args)?,
             Evaluator::Baked => {
                 let input = preset_input(preset, &args.presets, &args.set)?;
                 let blob = bake::tables::bake(&model, &input, LutResolution::DEFAULT);
                 let baked = BakedBcsdf::from_bytes(&blob)
                     .map_err(|e| Error::Failure(format!("the LUT baked in memory: {e}")))?;
-                trace(&scene, &baked, &settings)?
+                trace(&scene, &baked, &settings, args)?
             }
         };
         (preset.to_string(), r)
@@ -101,7 +110,9 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         "preset": name,
         "set": args.set,
         "evaluator": match evaluator { Evaluator::Analytic => "analytic", Evaluator::Baked => "baked" },
-        "method": "path",
+        "method": method_name(args.method),
+        "d_f": args.d_f,
+        "d_b": args.d_b,
         "width": args.width,
         "height": args.height,
         "spp": args.spp,
@@ -125,8 +136,9 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
     }
     let _ = writeln!(
         std::io::stdout().lock(),
-        "{} {}x{} {} spp: {:.2} s, {:.3} M rays/s, mean radiance [{:.4}, {:.4}, {:.4}] -> {}",
+        "{} {} {}x{} {} spp: {:.2} s, {:.3} M rays/s, mean radiance [{:.4}, {:.4}, {:.4}] -> {}",
         kind.name(),
+        method_name(args.method),
         args.width,
         args.height,
         args.spp,
@@ -140,13 +152,40 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
     Ok(())
 }
 
-/// Renders with one evaluator.
+fn method_name(m: MethodArg) -> &'static str {
+    match m {
+        MethodArg::Path => "path",
+        MethodArg::Dual => "dual",
+        MethodArg::Single => "single",
+    }
+}
+
+/// Renders with one evaluator and the method of `args` (for `dual`, the tables are computed
+/// from that evaluator first, docs/model.md §13).
 fn trace<B: Bcsdf + Sync>(
     scene: &render::scene::Scene,
     bcsdf: &B,
     settings: &Settings,
+    args: &RenderArgs,
 ) -> Result<Render, Error> {
-    integrator::render(scene, &One(bcsdf), settings).map_err(|e| Error::input(e.to_string()))
+    let mut tables = Box::new(DualTables::ZERO);
+    let method = match args.method {
+        MethodArg::Path => Method::Path,
+        MethodArg::Single => Method::Single,
+        MethodArg::Dual => {
+            tables.compute(bcsdf, Quadrature::DEFAULT);
+            Method::Dual {
+                tables: &tables,
+                density: Density {
+                    d_f: args.d_f,
+                    d_b: args.d_b,
+                },
+                attenuation: Attenuation::TwoStream,
+            }
+        }
+    };
+    integrator::render_method(scene, &One(bcsdf), settings, &method)
+        .map_err(|e| Error::input(e.to_string()))
 }
 
 /// The flag a settings error is about, with the message.

@@ -1,0 +1,133 @@
+//! What light paths a render includes (docs/model.md §13): the reference `path`, and the
+//! two engine approximations judged against it, `single` and `dual`.
+//!
+//! - [`Method::Path`]: full path tracing (docs/model.md §11).
+//! - [`Method::Single`]: at a fiber the path ends after next-event estimation with a binary
+//!   shadow ray (any fiber or surface blocks): only light that scatters once in the coat
+//!   reaches the camera through fibers. Skin and ground are path traced as in `path` (a ray
+//!   bounced off them that meets a fiber is shaded the same way), so the two methods differ
+//!   only in light that scatters off a fiber more than once or off a fiber and then a surface.
+//! - [`Method::Dual`]: `single`, but the shadow ray counts the fibers it crosses (n; a surface
+//!   still blocks it) and the fiber adds the dual-scattering term of
+//!   [`bcsdf_core::dual::eval`] with that n: S·V + D with V = 1 when n = 0 and 0 otherwise.
+//!
+//! At a fiber both approximations use light sampling alone (weight 1, whatever the
+//! [`crate::Strategy`]); the random numbers drawn per vertex are those of `path`, so a
+//! render is the same bits for any thread count.
+
+use crate::scatter::Scatterer;
+use bcsdf_core::dual::{self, Attenuation, Density, DualTables};
+use bcsdf_core::{Angles, Libm};
+use core::fmt;
+use core::str::FromStr;
+use nalgebra::Vector3;
+
+/// Which light paths a render includes, with what the `dual` method needs.
+#[derive(Clone, Copy, Debug)]
+pub enum Method<'a> {
+    /// Full path tracing, the reference.
+    Path,
+    /// Single scattering at fibers (binary shadow rays).
+    Single,
+    /// Single scattering with counted shadow rays plus the dual-scattering term.
+    Dual {
+        /// The fiber's tables ([`DualTables::compute`] of the rendered BCSDF).
+        tables: &'a DualTables,
+        /// d_f, d_b.
+        density: Density,
+        /// How the counted fibers attenuate the light.
+        attenuation: Attenuation,
+    },
+}
+
+/// The method's name without its data (the command line's `--method`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MethodKind {
+    /// [`Method::Path`].
+    Path,
+    /// [`Method::Single`].
+    Single,
+    /// [`Method::Dual`].
+    Dual,
+}
+
+impl MethodKind {
+    /// Every method, in the order `--help` lists them.
+    pub const ALL: [MethodKind; 3] = [MethodKind::Path, MethodKind::Dual, MethodKind::Single];
+
+    /// The name on the command line.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            MethodKind::Path => "path",
+            MethodKind::Single => "single",
+            MethodKind::Dual => "dual",
+        }
+    }
+}
+
+impl fmt::Display for MethodKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for MethodKind {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<MethodKind, String> {
+        MethodKind::ALL
+            .into_iter()
+            .find(|k| k.name() == s)
+            .ok_or_else(|| format!("unknown method `{s}` (expected path, dual or single)"))
+    }
+}
+
+impl Method<'_> {
+    /// The kind of this method.
+    #[must_use]
+    pub fn kind(&self) -> MethodKind {
+        match self {
+            Method::Path => MethodKind::Path,
+            Method::Single => MethodKind::Single,
+            Method::Dual { .. } => MethodKind::Dual,
+        }
+    }
+
+    /// What a fiber returns toward `wr` for unit radiance from `wi` when the shadow ray
+    /// crossed `fibers` fibers: S·cos θ_i·V, plus D·cos θ_i for `dual` (RGB, ≥ 0, finite).
+    pub(crate) fn fiber_light<S: Scatterer>(
+        &self,
+        fiber: &S,
+        wi: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+        fibers: u32,
+    ) -> [f32; 3] {
+        let mut value = if fibers == 0 {
+            fiber.eval(wi, wr, tangent).0
+        } else {
+            [0.0; 3]
+        };
+        if let Method::Dual {
+            tables,
+            density,
+            attenuation,
+        } = self
+        {
+            if let Ok(a) =
+                Angles::from_directions::<Libm>((*wi).into(), (*wr).into(), (*tangent).into())
+            {
+                let cos = a.theta_i().cos().max(0.0);
+                let d = dual::eval(tables, &a, fibers as f32, *density, *attenuation);
+                for c in 0..3 {
+                    let v = d[c] * cos;
+                    if v.is_finite() && v > 0.0 {
+                        value[c] += v;
+                    }
+                }
+            }
+        }
+        value
+    }
+}

@@ -1,0 +1,363 @@
+//! Dual scattering judged against the path tracer (issue 23, docs/model.md §13,
+//! docs/accuracy.md "Dual scattering"): for a light preset (dog) and a dark one (deer), in the
+//! energy closure, `ball` and `patch` under their key (rim) light, the `dual` image against a
+//! converged-enough `path` image: mean luminance within 10 % and relative RMSE over 16×16
+//! tiles ≤ 20 %; `single` printed beside them and, for the light preset, darker than `path`.
+//!
+//! Metrics (luminance, Rec. 709): mean error = mean(dual)/mean(path) − 1 over the whole
+//! image; tile RMSE = √(mean over tiles of (L_dual − L_path)²) / mean over tiles of L_path,
+//! L the tile's mean luminance. The same numbers restricted to the fur (pixels whose centre's
+//! camera ray first meets a fiber) are printed beside them.
+
+mod common;
+
+use bcsdf_core::dual::{Attenuation, Density, DualTables, Quadrature};
+use bcsdf_core::{presets, Closure, FurBcsdf};
+use render::scatter::One;
+use render::scene::{HitKind, Scene};
+use render::{render_method, scenes, Image, Method, SceneKind, SceneOptions, Settings};
+
+const SIDE: u32 = 48;
+const TILE: u32 = 16;
+
+fn scene(kind: SceneKind) -> Scene {
+    scenes::build(&SceneOptions {
+        kind,
+        fibers: None,
+        seed: 3,
+        aspect: 1.0,
+    })
+}
+
+fn lum(p: &[f32; 3]) -> f64 {
+    0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2])
+}
+
+/// Pixels whose centre's camera ray first meets a fiber.
+fn fur_mask(scene: &Scene) -> Vec<bool> {
+    (0..SIDE * SIDE)
+        .map(|i| {
+            let (x, y) = (i % SIDE, i / SIDE);
+            let (o, d) = scene.camera.ray(x as f32 + 0.5, y as f32 + 0.5, SIDE, SIDE);
+            matches!(
+                scene.intersect(&o, &d, None).map(|h| h.kind),
+                Some(HitKind::Fiber { .. })
+            )
+        })
+        .collect()
+}
+
+/// Mean number of fibers the key light's shadow ray crosses from the first fiber each pixel
+/// centre sees (the dual term's n), and the fraction of those points with n = 0.
+fn mean_fibers_to_key(scene: &Scene) -> (f64, f64) {
+    let Some(key) = scene.lights.sample(0.0, [0.5, 0.5]) else {
+        return (0.0, 0.0);
+    };
+    let (mut sum, mut zero, mut count) = (0.0f64, 0.0f64, 0.0f64);
+    for i in 0..SIDE * SIDE {
+        let (x, y) = (i % SIDE, i / SIDE);
+        let (o, d) = scene.camera.ray(x as f32 + 0.5, y as f32 + 0.5, SIDE, SIDE);
+        if let Some(h) = scene.intersect(&o, &d, None) {
+            if let HitKind::Fiber { fiber, .. } = h.kind {
+                if let Some(n) = scene.fibers_crossed(&h.point, &key, Some(fiber)) {
+                    sum += f64::from(n);
+                    zero += f64::from(u8::from(n == 0));
+                }
+                count += 1.0;
+            }
+        }
+    }
+    (sum / count.max(1.0), zero / count.max(1.0))
+}
+
+/// (mean error, tile relative RMSE) of `a` against the reference `r`, over the pixels of
+/// `mask` (all when `None`).
+fn metrics(a: &Image, r: &Image, mask: Option<&[bool]>) -> (f64, f64) {
+    let keep = |i: usize| mask.is_none_or(|m| m[i]);
+    let (mut sa, mut sr) = (0.0, 0.0);
+    let (mut se, mut sp, mut tiles) = (0.0, 0.0, 0.0);
+    for ty in (0..SIDE).step_by(TILE as usize) {
+        for tx in (0..SIDE).step_by(TILE as usize) {
+            let (mut ta, mut tr, mut n) = (0.0, 0.0, 0.0);
+            for y in ty..ty + TILE {
+                for x in tx..tx + TILE {
+                    let i = (y * SIDE + x) as usize;
+                    if keep(i) {
+                        ta += lum(&a.mean[i]);
+                        tr += lum(&r.mean[i]);
+                        n += 1.0;
+                    }
+                }
+            }
+            sa += ta;
+            sr += tr;
+            if n > 0.0 {
+                se += (ta / n - tr / n).powi(2);
+                sp += tr / n;
+                tiles += 1.0;
+            }
+        }
+    }
+    (sa / sr - 1.0, (se / tiles).sqrt() / (sp / tiles))
+}
+
+struct Row {
+    preset: &'static str,
+    scene: SceneKind,
+    mean_dual: f64,
+    rmse_dual: f64,
+    mean_single: f64,
+    rmse_single: f64,
+}
+
+fn measure(
+    model: &FurBcsdf<'_>,
+    tables: &DualTables,
+    kind: SceneKind,
+    density: Density,
+    attenuation: Attenuation,
+    path_spp: u32,
+) -> ((f64, f64), (f64, f64)) {
+    let scene = scene(kind);
+    let settings = |spp| Settings {
+        seed: 23,
+        ..Settings::new(SIDE, SIDE, spp)
+    };
+    let fiber = One(model);
+    let path = render_method(&scene, &fiber, &settings(path_spp), &Method::Path).unwrap();
+    let dual = render_method(
+        &scene,
+        &fiber,
+        &settings(32),
+        &Method::Dual {
+            tables,
+            density,
+            attenuation,
+        },
+    )
+    .unwrap();
+    let single = render_method(&scene, &fiber, &settings(32), &Method::Single).unwrap();
+    let mask = fur_mask(&scene);
+    let (n_mean, n_zero) = mean_fibers_to_key(&scene);
+    println!(
+        "  {kind}: fibers toward the key from the visible fur: mean {n_mean:.1}, {:.0} % unoccluded \
+         (surface-blocked rays counted as occluded, not in the mean)",
+        100.0 * n_zero
+    );
+    let (d, s) = (
+        metrics(&dual.image, &path.image, None),
+        metrics(&single.image, &path.image, None),
+    );
+    let (df, sf) = (
+        metrics(&dual.image, &path.image, Some(&mask)),
+        metrics(&single.image, &path.image, Some(&mask)),
+    );
+    println!(
+        "  {kind}: path {:.2} s ({path_spp} spp), dual {:.2} s, single {:.2} s; fur only: dual \
+         mean {:+.1} % tiles {:.1} %, single mean {:+.1} % tiles {:.1} %",
+        path.seconds,
+        dual.seconds,
+        single.seconds,
+        100.0 * df.0,
+        100.0 * df.1,
+        100.0 * sf.0,
+        100.0 * sf.1
+    );
+    (d, s)
+}
+
+fn with_tables<R>(name: &str, f: impl FnOnce(&FurBcsdf<'_>, &DualTables) -> R) -> R {
+    let mut input = presets::find(name).unwrap().input;
+    input.closure = Closure::Energy;
+    common::with_model(&input, |model| {
+        let mut tables = Box::new(DualTables::ZERO);
+        let t = std::time::Instant::now();
+        tables.compute(
+            model,
+            Quadrature {
+                theta_steps: 96,
+                phi_steps: 64,
+            },
+        );
+        println!("{name}: tables in {:.2} s", t.elapsed().as_secs_f64());
+        f(model, &tables)
+    })
+}
+
+/// The shipped method and default: two-stream attenuation, d_f = d_b = 1.
+const SHIPPED: (Density, Attenuation) = (Density::DEFAULT, Attenuation::TwoStream);
+
+fn rows(scenes_: &[SceneKind], path_spp: u32) -> Vec<Row> {
+    let mut rows = Vec::new();
+    for preset in ["dog", "deer"] {
+        with_tables(preset, |model, tables| {
+            for &kind in scenes_ {
+                let ((md, rd), (ms, rs)) =
+                    measure(model, tables, kind, SHIPPED.0, SHIPPED.1, path_spp);
+                rows.push(Row {
+                    preset,
+                    scene: kind,
+                    mean_dual: md,
+                    rmse_dual: rd,
+                    mean_single: ms,
+                    rmse_single: rs,
+                });
+            }
+        });
+    }
+    println!("preset  scene  dual: mean  tiles | single: mean  tiles");
+    for r in &rows {
+        println!(
+            "{:7} {:6} {:+9.1} % {:5.1} % | {:+10.1} % {:5.1} %",
+            r.preset,
+            r.scene.name(),
+            100.0 * r.mean_dual,
+            100.0 * r.rmse_dual,
+            100.0 * r.mean_single,
+            100.0 * r.rmse_single
+        );
+    }
+    rows
+}
+
+/// What holds today (issue 23's first slice): on `ball`, for a light and a dark preset, the
+/// dual term brings the image closer to `path` than `single` (mean and tiles), never past
+/// it, and `single` is darker than `path`.
+#[test]
+fn dual_scattering_recovers_part_of_what_single_scattering_misses() {
+    for r in rows(&[SceneKind::Ball], 16) {
+        assert!(
+            r.mean_single < 0.0,
+            "{}: single not darker than path",
+            r.preset
+        );
+        assert!(
+            r.mean_dual > r.mean_single + 0.01 && r.mean_dual < 0.0,
+            "{}: dual mean {:+.3} against single {:+.3}",
+            r.preset,
+            r.mean_dual,
+            r.mean_single
+        );
+        assert!(r.rmse_dual < r.rmse_single, "{}: tiles", r.preset);
+    }
+}
+
+/// Issue 23's bounds: mean luminance within 10 %, tile RMSE ≤ 20 %. NOT MET: the measured
+/// rows are in docs/accuracy.md ("Dual scattering"), with the cause.
+#[test]
+#[ignore = "issue 23's bounds are not met yet (docs/accuracy.md, Dual scattering)"]
+fn dual_scattering_is_within_the_bounds_of_the_path_tracer() {
+    let rows = rows(&[SceneKind::Ball, SceneKind::Patch], 16);
+    for r in &rows {
+        assert!(
+            r.mean_dual.abs() <= 0.10 && r.rmse_dual <= 0.20,
+            "{} {}: dual mean {:+.3}, tiles {:.3}",
+            r.preset,
+            r.scene,
+            r.mean_dual,
+            r.rmse_dual
+        );
+    }
+}
+
+/// `dual` and `single` are the same bits on one and on two threads.
+#[test]
+fn dual_renders_are_deterministic() {
+    let mut input = presets::find("human-hair").unwrap().input;
+    input.closure = Closure::Energy;
+    common::with_model(&input, |model| {
+        let mut tables = Box::new(DualTables::ZERO);
+        tables.compute(
+            model,
+            Quadrature {
+                theta_steps: 32,
+                phi_steps: 16,
+            },
+        );
+        let scene = scenes::build(&SceneOptions {
+            kind: SceneKind::Patch,
+            fibers: Some(800),
+            seed: 2,
+            aspect: 1.0,
+        });
+        for method in [
+            Method::Single,
+            Method::Dual {
+                tables: &tables,
+                density: SHIPPED.0,
+                attenuation: SHIPPED.1,
+            },
+        ] {
+            let run = |threads| {
+                let settings = Settings {
+                    threads: Some(threads),
+                    ..Settings::new(16, 16, 4)
+                };
+                render_method(&scene, &One(model), &settings, &method).unwrap()
+            };
+            let (a, b) = (run(1), run(2));
+            assert!(a.image.mean.iter().flatten().any(|&v| v > 0.0));
+            assert_eq!(a.image.mean, b.image.mean, "{:?}", method.kind());
+        }
+    });
+}
+
+/// The grid search of d_f, d_b (docs/accuracy.md): `cargo test -p render --test dual --
+/// --ignored --nocapture fit`. One `path` image per preset and scene, a `dual` image per
+/// grid point.
+#[test]
+#[ignore = "a grid search, minutes; its table is in docs/accuracy.md"]
+fn fit_density() {
+    let grid_f = [0.35f32, 0.7, 1.0, 2.0];
+    let grid_b = [0.1f32, 0.3, 0.7, 1.0];
+    let presets: Vec<String> = std::env::var("DUAL_FIT_PRESETS")
+        .unwrap_or_else(|_| "dog,deer".into())
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    for preset in &presets {
+        with_tables(preset, |model, tables| {
+            let f = &tables.fiber[32];
+            println!(
+                "{preset} θ = {:.3}: {f:?}",
+                bcsdf_core::dual::theta_node(32)
+            );
+            for kind in [SceneKind::Ball, SceneKind::Patch] {
+                let scene = scene(kind);
+                let settings = |spp| Settings {
+                    seed: 23,
+                    ..Settings::new(SIDE, SIDE, spp)
+                };
+                let fiber = One(model);
+                let path = render_method(&scene, &fiber, &settings(32), &Method::Path).unwrap();
+                let single = render_method(&scene, &fiber, &settings(32), &Method::Single).unwrap();
+                let (ms, rs) = metrics(&single.image, &path.image, None);
+                println!(
+                    "FIT {preset} {kind} single: mean {:+.2} % tiles {:.2} %",
+                    100.0 * ms,
+                    100.0 * rs
+                );
+                for attenuation in [Attenuation::TwoStream] {
+                    for &d_f in &grid_f {
+                        for &d_b in &grid_b {
+                            let method = Method::Dual {
+                                tables,
+                                density: Density { d_f, d_b },
+                                attenuation,
+                            };
+                            let dual =
+                                render_method(&scene, &fiber, &settings(16), &method).unwrap();
+                            let (md, rd) = metrics(&dual.image, &path.image, None);
+                            println!(
+                                "FIT {preset} {kind} {attenuation:?} d_f {d_f} d_b {d_b}: \
+                                 mean {:+.2} % tiles {:.2} %",
+                                100.0 * md,
+                                100.0 * rd
+                            );
+                        }
+                    }
+                }
+            }
+        });
+    }
+}

@@ -133,8 +133,9 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) blob: &'a [u8],
     /// Byte offset of table `M` in the blob.
     m_start: usize,
-    /// Byte offset of the 1/Z_g table ([`lut::norms`]) in the blob.
-    norm_start: usize,
+    /// The 1/Z_g table ([`lut::norms`]): little-endian f32, three per node (empty unless the
+    /// blob holds the whole section, which `lut::validate` checks).
+    norms: &'a [u8],
     /// The instruction set of the evaluation ([`Kernel`]), with the proof of its features.
     kernel: Isa,
     /// Table `N`'s scale for a kernel that decodes true half values (F16C), computed at
@@ -280,7 +281,9 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             nodes: Nodes::new(bytes, res, header.scales),
             blob: bytes,
             m_start: res.byte_range(Table::M).start,
-            norm_start: res.norm_start(),
+            norms: bytes
+                .get(res.norm_start()..res.norm_start() + 4 * res.norm_values())
+                .unwrap_or(&[]),
             kernel: Isa::best(),
             n_scale_true: unbias[Table::N as usize] * f32::from_bits((127 - 112) << 23),
             densities: Density::ALL.map(|d| res.density_layout(d)),

@@ -70,6 +70,11 @@ fn profile_column(stdout: &str) -> Vec<String> {
 fn cache_entries(dir: &Path) -> (Vec<String>, Vec<String>, Vec<String>) {
     let (mut prof, mut lock, mut other) = (vec![], vec![], vec![]);
     for name in tree(dir) {
+        // The energy closure's residual tables (one per parameter set, with their own locks)
+        // share the directory; these tests count the medulla profiles' entries.
+        if name.starts_with("residual-") {
+            continue;
+        }
         if name.ends_with(".furprof") {
             prof.push(name);
         } else if name.ends_with(".lock") {

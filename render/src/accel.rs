@@ -88,6 +88,15 @@ pub struct Skip {
     pub dist: f32,
 }
 
+impl Skip {
+    /// Whether a hit at distance `t` on fiber `fiber` is one to ignore.
+    #[inline]
+    #[must_use]
+    pub fn ignores(&self, fiber: u32, t: f32) -> bool {
+        self.fiber == Some(fiber) && t < self.dist
+    }
+}
+
 impl FiberAccel {
     /// Builds the BVH (SAH, single-threaded: the tree is the same for any thread count).
     #[must_use]
@@ -125,7 +134,7 @@ impl FiberAccel {
         let mut best = None;
         self.walk(&query, |seg| {
             if let Some(hit) = seg.intersect(origin, dir, t_min, query.t_max.get()) {
-                if !(skip.fiber == Some(seg.fiber) && hit.t < skip.dist) {
+                if !skip.ignores(seg.fiber, hit.t) {
                     best = Some((seg, hit));
                     query.t_max.set(hit.t);
                 }
@@ -152,7 +161,7 @@ impl FiberAccel {
         let mut found = false;
         self.walk(&query, |seg| {
             match seg.intersect(origin, dir, t_min, t_max) {
-                Some(hit) if !(skip.fiber == Some(seg.fiber) && hit.t < skip.dist) => {
+                Some(hit) if !skip.ignores(seg.fiber, hit.t) => {
                     found = true;
                     Visit::Stop
                 }
@@ -181,7 +190,7 @@ impl FiberAccel {
         let mut ids: Vec<u32> = Vec::new();
         self.walk(&query, |seg| {
             match seg.intersect(origin, dir, t_min, t_max) {
-                Some(hit) if !(skip.fiber == Some(seg.fiber) && hit.t < skip.dist) => {
+                Some(hit) if !skip.ignores(seg.fiber, hit.t) => {
                     ids.push(seg.fiber);
                 }
                 _ => {}

@@ -293,12 +293,20 @@ pub(crate) fn u64_at(b: &[u8], at: usize) -> u64 {
     u64::from_le_bytes(b[at..at + 8].try_into().expect("8 bytes"))
 }
 
-/// Reads a cache file's bytes, accepting them only if they hold profiles for exactly
-/// `expected` made by this generator (checks in the order of the module documentation).
-pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, CacheError> {
-    let min = (HEADER_LEN + CHECKSUM_LEN) as u64;
+/// The checks every cache file kind shares, in the order of the module documentation: the
+/// kind's magic, its format version, the length the header announces (`header_len`, then as
+/// many f32 as the u64 counts at byte offsets `count_at` say, then the checksum), and the
+/// FNV-1a checksum of everything before it. Returns the length of the checksummed body.
+pub(crate) fn check_container(
+    bytes: &[u8],
+    magic: &[u8; 8],
+    format_version: u32,
+    header_len: usize,
+    count_at: &[usize],
+) -> Result<usize, CacheError> {
+    let min = (header_len + CHECKSUM_LEN) as u64;
     let found = bytes.len() as u64;
-    if bytes.len() < MAGIC.len() || bytes[..MAGIC.len()] != MAGIC {
+    if bytes.len() < magic.len() || bytes[..magic.len()] != *magic {
         return Err(CacheError::BadMagic);
     }
     if bytes.len() < 12 {
@@ -308,7 +316,7 @@ pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, Cach
         });
     }
     let format = u32_at(bytes, 8);
-    if format != FORMAT_VERSION {
+    if format != format_version {
         return Err(CacheError::FormatVersion(format));
     }
     if found < min {
@@ -317,11 +325,12 @@ pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, Cach
             found,
         });
     }
-    let lens = [u64_at(bytes, KEY_END), u64_at(bytes, KEY_END + 8)];
-    let announced = lens
+    let announced = count_at
         .iter()
-        .try_fold(min, |acc, n| {
-            n.checked_mul(4).and_then(|b| acc.checked_add(b))
+        .try_fold(min, |acc, &at| {
+            u64_at(bytes, at)
+                .checked_mul(4)
+                .and_then(|b| acc.checked_add(b))
         })
         .unwrap_or(u64::MAX);
     if announced != found {
@@ -331,11 +340,24 @@ pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, Cach
         });
     }
     let body = bytes.len() - CHECKSUM_LEN;
-    let stored = u64_at(bytes, body);
-    let computed = fnv1a64(&bytes[..body]);
+    let (stored, computed) = (u64_at(bytes, body), fnv1a64(&bytes[..body]));
     if stored != computed {
         return Err(CacheError::Checksum { stored, computed });
     }
+    Ok(body)
+}
+
+/// Reads a cache file's bytes, accepting them only if they hold profiles for exactly
+/// `expected` made by this generator (checks in the order of the module documentation).
+pub fn decode(bytes: &[u8], expected: &ProfileKey) -> Result<OwnedProfiles, CacheError> {
+    check_container(
+        bytes,
+        &MAGIC,
+        FORMAT_VERSION,
+        HEADER_LEN,
+        &[KEY_END, KEY_END + 8],
+    )?;
+    let lens = [u64_at(bytes, KEY_END), u64_at(bytes, KEY_END + 8)];
     let generator = u32_at(bytes, 12);
     if generator != GENERATOR_VERSION {
         return Err(CacheError::GeneratorVersion(generator));

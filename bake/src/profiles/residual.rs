@@ -33,7 +33,7 @@
 //! [`ResidualTable::new`]. Each failure is a [`CacheError`] with one line.
 
 use super::cache::entry::{load_or_make, EntryPaths};
-use super::cache::{fnv1a64, u32_at, u64_at, CacheError, CacheOutcome};
+use super::cache::{check_container, fnv1a64, CacheError, CacheOutcome};
 use super::{Error, OwnedModel, ProfileKey};
 use crate::fsutil::output_path;
 use bcsdf_core::params::HEADER_FIELDS;
@@ -202,36 +202,13 @@ fn field_at(at: usize) -> &'static str {
 /// Reads a residual cache file's bytes, accepting them only if they hold the table of exactly
 /// `expected` (checks in the order of the module documentation).
 pub fn decode_residual(bytes: &[u8], expected: &ResidualKey) -> Result<Vec<f32>, CacheError> {
-    let min = (HEADER_LEN + 8) as u64;
-    let found = bytes.len() as u64;
-    if bytes.len() < 8 || bytes[..8] != RESIDUAL_MAGIC {
-        return Err(CacheError::BadMagic);
-    }
-    if found < min {
-        return Err(CacheError::Length {
-            expected: min,
-            found,
-        });
-    }
-    let format = u32_at(bytes, 8);
-    if format != RESIDUAL_FORMAT_VERSION {
-        return Err(CacheError::FormatVersion(format));
-    }
-    let announced = u64_at(bytes, KEY_END)
-        .checked_mul(4)
-        .and_then(|b| b.checked_add(min))
-        .unwrap_or(u64::MAX);
-    if announced != found {
-        return Err(CacheError::Length {
-            expected: announced,
-            found,
-        });
-    }
-    let body = bytes.len() - 8;
-    let (stored, computed) = (u64_at(bytes, body), fnv1a64(&bytes[..body]));
-    if stored != computed {
-        return Err(CacheError::Checksum { stored, computed });
-    }
+    let body = check_container(
+        bytes,
+        &RESIDUAL_MAGIC,
+        RESIDUAL_FORMAT_VERSION,
+        HEADER_LEN,
+        &[KEY_END],
+    )?;
     let want = expected.to_bytes();
     if let Some(i) = (0..want.len()).find(|&i| want[i] != bytes[8 + i]) {
         return Err(CacheError::KeyMismatch(field_at(8 + i)));

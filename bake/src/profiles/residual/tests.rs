@@ -1,6 +1,7 @@
 //! Unit tests of the residual cache (`super`).
 
 use super::*;
+use crate::profiles::cache::{u32_at, u64_at};
 use bcsdf_core::{presets, Closure, FurParamsInput, Rgb};
 
 /// Human hair in the energy closure: no profiles, so its residual (beams only) is quick.

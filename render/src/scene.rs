@@ -125,12 +125,10 @@ impl Scene {
     /// Whether the unit ray leaving `origin` (from fiber `from`) escapes to infinity.
     #[must_use]
     pub fn escapes(&self, origin: &Vector3<f32>, dir: &Vector3<f32>, from: Option<u32>) -> bool {
-        !self.surfaces.iter().any(|s| {
-            s.intersect(origin, dir, self.epsilon, f32::INFINITY)
-                .is_some()
-        }) && !self
-            .fibers
-            .any(origin, dir, self.epsilon, f32::INFINITY, self.skip(from))
+        !self.surface_blocks(origin, dir)
+            && !self
+                .fibers
+                .any(origin, dir, self.epsilon, f32::INFINITY, self.skip(from))
     }
 
     /// The fibers the unit ray leaving `origin` (from fiber `from`) crosses on its way to
@@ -142,16 +140,21 @@ impl Scene {
         dir: &Vector3<f32>,
         from: Option<u32>,
     ) -> Option<u32> {
-        if self.surfaces.iter().any(|s| {
-            s.intersect(origin, dir, self.epsilon, f32::INFINITY)
-                .is_some()
-        }) {
+        if self.surface_blocks(origin, dir) {
             return None;
         }
         Some(
             self.fibers
                 .count_fibers(origin, dir, self.epsilon, f32::INFINITY, self.skip(from)),
         )
+    }
+
+    /// Whether a surface (opaque) lies on the unit ray leaving `origin`.
+    fn surface_blocks(&self, origin: &Vector3<f32>, dir: &Vector3<f32>) -> bool {
+        self.surfaces.iter().any(|s| {
+            s.intersect(origin, dir, self.epsilon, f32::INFINITY)
+                .is_some()
+        })
     }
 
     fn skip(&self, from: Option<u32>) -> Skip {

@@ -325,10 +325,19 @@ fn trace<S: Scatterer>(
     let mut beta = [1.0f32; 3];
     // Density of the direction `dir` was drawn with; 0 for the camera ray (no MIS there).
     let mut pdf_prev = 0.0f32;
+    // `single` and `dual`: the ray being traced left a fiber and goes through fibers to the
+    // first surface (crate::method).
+    let mut through_fibers = false;
+    let approximate = !matches!(method, Method::Path);
     let lights = &scene.lights;
     for depth in 0..=settings.max_depth {
         row.rays += 1;
-        let Some(hit) = scene.intersect(&origin, &dir, from) else {
+        let hit = if through_fibers {
+            scene.intersect_surfaces(&origin, &dir)
+        } else {
+            scene.intersect(&origin, &dir, from)
+        };
+        let Some(hit) = hit else {
             let le = lights.radiance(&dir);
             let weight = match (depth, settings.strategy) {
                 (0, _) | (_, Strategy::Bcsdf) => 1.0,
@@ -372,10 +381,9 @@ fn trace<S: Scatterer>(
             }
         };
 
-        // `single` and `dual` at a fiber: light sampling with a counted shadow ray, and the
-        // path ends (crate::method).
-        if let (HitKind::Fiber { tangent, .. }, false) = (hit.kind, matches!(method, Method::Path))
-        {
+        // `single` and `dual` at a fiber: light sampling with a counted shadow ray; the path
+        // goes on only through the fibers to a surface (crate::method).
+        let approximated = if let (HitKind::Fiber { tangent, .. }, true) = (hit.kind, approximate) {
             if let Some(wl) = lights.sample(u_pick, u_light) {
                 let p_light = lights.pdf(&wl);
                 if p_light > 0.0 {
@@ -388,11 +396,13 @@ fn trace<S: Scatterer>(
                     }
                 }
             }
-            break;
-        }
+            Some(tangent)
+        } else {
+            None
+        };
 
         // 1. Next-event estimation.
-        if settings.strategy != Strategy::Bcsdf {
+        if settings.strategy != Strategy::Bcsdf && approximated.is_none() {
             if let Some(wl) = lights.sample(u_pick, u_light) {
                 let p_light = lights.pdf(&wl);
                 let (f_cos, p_scatter) = eval(&wl);
@@ -433,7 +443,20 @@ fn trace<S: Scatterer>(
             }
         };
         let Some(s) = scattered else { break };
-        for (b, w) in beta.iter_mut().zip(s.weight) {
+        let weight = match approximated {
+            None => s.weight,
+            Some(tangent) => {
+                // Light from the first surface behind n fibers: S·V + D(n) (crate::method);
+                // with no surface there the light came by light sampling alone.
+                row.rays += 1;
+                let Some(n) = scene.fibers_before_surface(&next_origin, &s.wi, next_from) else {
+                    break;
+                };
+                let f = method.fiber_light(fiber, &s.wi, &wr, &tangent, n);
+                f.map(|v| v / s.pdf)
+            }
+        };
+        for (b, w) in beta.iter_mut().zip(weight) {
             *b *= w;
         }
         if !beta.iter().any(|&b| b > 0.0) || !beta.iter().all(|b| b.is_finite()) {
@@ -443,6 +466,7 @@ fn trace<S: Scatterer>(
         from = next_from;
         dir = s.wi;
         pdf_prev = s.pdf;
+        through_fibers = approximated.is_some();
 
         // 3. Russian roulette.
         if order as u32 >= settings.rr_depth {

@@ -91,6 +91,27 @@ impl Scene {
         dir: &Vector3<f32>,
         from: Option<u32>,
     ) -> Option<Hit> {
+        let mut best = self.intersect_surfaces(origin, dir);
+        let t_max = best.as_ref().map_or(f32::INFINITY, |h| h.t);
+        if let Some((seg, hit)) =
+            self.fibers
+                .closest(origin, dir, self.epsilon, t_max, self.skip(from))
+        {
+            best = Some(Hit {
+                t: hit.t,
+                point: origin + dir * hit.t,
+                kind: HitKind::Fiber {
+                    tangent: seg.tangent(),
+                    fiber: seg.fiber,
+                },
+            });
+        }
+        best
+    }
+
+    /// The closest surface (skin, ground) along the unit ray leaving `origin`, fibers ignored.
+    #[must_use]
+    pub fn intersect_surfaces(&self, origin: &Vector3<f32>, dir: &Vector3<f32>) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut t_max = f32::INFINITY;
         for s in &self.surfaces {
@@ -106,20 +127,24 @@ impl Scene {
                 });
             }
         }
-        if let Some((seg, hit)) =
-            self.fibers
-                .closest(origin, dir, self.epsilon, t_max, self.skip(from))
-        {
-            best = Some(Hit {
-                t: hit.t,
-                point: origin + dir * hit.t,
-                kind: HitKind::Fiber {
-                    tangent: seg.tangent(),
-                    fiber: seg.fiber,
-                },
-            });
-        }
         best
+    }
+
+    /// The fibers the unit ray leaving `origin` (from fiber `from`) crosses before it meets
+    /// a surface, or `None` when it meets none (docs/model.md §13: how `single` and `dual`
+    /// carry light from surfaces to a fiber).
+    #[must_use]
+    pub fn fibers_before_surface(
+        &self,
+        origin: &Vector3<f32>,
+        dir: &Vector3<f32>,
+        from: Option<u32>,
+    ) -> Option<u32> {
+        let surface = self.intersect_surfaces(origin, dir)?;
+        Some(
+            self.fibers
+                .count_fibers(origin, dir, self.epsilon, surface.t, self.skip(from)),
+        )
     }
 
     /// Whether the unit ray leaving `origin` (from fiber `from`) escapes to infinity.

@@ -180,7 +180,7 @@ fn trace<B: Bcsdf + Sync>(
                     d_f: args.d_f,
                     d_b: args.d_b,
                 },
-                attenuation: Attenuation::TwoStream,
+                attenuation: Attenuation::Coat,
             }
         }
     };

@@ -50,6 +50,14 @@ pub enum Attenuation {
     /// ([`semi_infinite_reflectance`] less the single backscatter S already holds), in place
     /// of Zinke's two-term series.
     TwoStream,
+    /// The n fibers between the shading point and the light as [`Attenuation::TwoStream`]'s
+    /// stack, lying on the rest of the coat, taken as a semi-infinite stack of the same
+    /// layers (reflectance R_∞, [`semi_infinite_reflectance`]): light the coat below sends
+    /// back up and the n fibers above send down again reaches the shading point too. The
+    /// downward flux there is D_n = T_n/(1 − R_n R_∞) (the adding method with the coat below;
+    /// 1 at every depth for lossless fibers, where T_n alone falls as 1/(1 + n ā_b/ā_f)).
+    /// The local backscatter is [`Attenuation::TwoStream`]'s, A_b = R_∞ − ā_b.
+    Coat,
 }
 
 /// Largest fiber count of the two-stream recursion ([`Attenuation::TwoStream`]).
@@ -67,7 +75,15 @@ pub fn transmittance(attenuation: Attenuation, t: f32, r: f32, n: f32) -> f32 {
     }
     match attenuation {
         Attenuation::Forward => libm::powf(t, n.min(MAX_FIBERS)),
-        Attenuation::TwoStream => {
+        Attenuation::TwoStream | Attenuation::Coat => {
+            let below = if attenuation == Attenuation::Coat {
+                semi_infinite_reflectance(t, r)
+            } else {
+                0.0
+            };
+            // The downward flux under a stack of transmittance tk and reflectance rk lying on
+            // a stack of reflectance `below`.
+            let down = |tk: f32, rk: f32| tk / (1.0 - rk * below).max(1e-6);
             let n = n.min(MAX_STACK as f32);
             let whole = n as u32; // n ≥ 0, ≤ MAX_STACK
             let frac = n - whole as f32;
@@ -81,12 +97,14 @@ pub fn transmittance(attenuation: Attenuation, t: f32, r: f32, n: f32) -> f32 {
                 tk = t1;
                 rk = r1.min(1.0);
             }
+            let mut flux = down(tk, rk);
             if frac > 0.0 {
-                let next = tk * t / (1.0 - rk * r);
-                tk *= libm::powf(next / tk.max(1e-30), frac);
+                let denom = 1.0 - rk * r;
+                let next = down(tk * t / denom, (r + t * t * rk / denom).min(1.0));
+                flux *= libm::powf(next / flux.max(1e-30), frac);
             }
-            if tk.is_finite() {
-                tk.clamp(0.0, 1.0)
+            if flux.is_finite() {
+                flux.clamp(0.0, 1.0)
             } else {
                 0.0
             }
@@ -316,6 +334,38 @@ pub fn backscatter(a_f: f32, a_b: f32, alpha_f: f32, alpha_b: f32, b2f: f32, b2b
     [finite(a1 + a3), finite(delta), finite(sigma)]
 }
 
+/// The local backscatter's energy (toward the back half |φ| < π/2, toward the front half) at
+/// a fiber of forward and backward fractions `a_f`, `a_b` (docs/model.md §13), per unit of
+/// light reaching the fiber from the light's side:
+///
+/// - [`Attenuation::Forward`]: Zinke's A_b (`zinke_a_b`, [`backscatter`]), back half only;
+/// - [`Attenuation::TwoStream`]: A_b = R_∞ − ā_b, back half only;
+/// - [`Attenuation::Coat`]: the light the coat below sends up to the fiber,
+///   U = R_∞ ā_f/(1 − ā_b R_∞) (through the fiber, reflected by the coat below, with the
+///   inter-reflections between the two), scattered by the fiber: forward through it,
+///   ā_f U = R_∞ − ā_b, toward the back half, and back, ā_b U, toward the front half.
+#[must_use]
+pub fn local_backscatter(
+    attenuation: Attenuation,
+    zinke_a_b: f32,
+    a_f: f32,
+    a_b: f32,
+) -> (f32, f32) {
+    let t = if a_f > 0.0 { a_f.min(1.0) } else { 0.0 };
+    let r = if a_b > 0.0 { a_b.min(1.0 - t) } else { 0.0 };
+    let r_inf = semi_infinite_reflectance(t, r);
+    let (back, front) = match attenuation {
+        Attenuation::Forward => (zinke_a_b, 0.0),
+        Attenuation::TwoStream => (r_inf - r, 0.0),
+        Attenuation::Coat => {
+            let up = r_inf * t / (1.0 - r * r_inf).max(1e-6);
+            (t * up, r * up)
+        }
+    };
+    let clean = |v: f32| if v.is_finite() && v > 0.0 { v } else { 0.0 };
+    (clean(back), clean(front))
+}
+
 /// G(x; √variance), with the variance kept at or above [`MIN_VARIANCE`].
 fn gauss(x: f32, variance: f32) -> f32 {
     let v = if variance > MIN_VARIANCE {
@@ -363,26 +413,20 @@ pub fn eval(
     // θ ≈ −θ_i, the fixed direction of the tables' energy balance.
     let along = tables.fiber_at(-ti);
     let here = tables.fiber_at(tr);
-    let back_half = if crate::math::wrap_angle(phi).abs() < 0.5 * PI {
-        1.0 / PI
-    } else {
-        0.0
-    };
+    let back_half = crate::math::wrap_angle(phi).abs() < 0.5 * PI;
     let mut out = [0.0f32; 3];
     for (c, slot) in out.iter_mut().enumerate() {
         let t_f = transmittance(attenuation, along.a_f[c], along.a_b[c], n);
         let sigma2_f = n * along.beta2_f[c].max(0.0);
         let af_here = here.a_f[c].clamp(0.0, 1.0);
         let sigma_b = (1.0 + d_b * af_here * af_here) * here.sigma_b0[c];
-        let big_a_b = match attenuation {
-            Attenuation::Forward => here.big_a_b[c].max(0.0),
-            Attenuation::TwoStream => (semi_infinite_reflectance(here.a_f[c], here.a_b[c])
-                - here.a_b[c].max(0.0))
-            .max(0.0),
-        };
-        let f_back = |s2f: f32| {
-            big_a_b * gauss(x - here.delta_b[c], sigma_b * sigma_b + s2f) * back_half * inv_cos2
-        };
+        // The local backscatter: its energy toward the back half (|φ| < π/2) and the front
+        // half, and its longitudinal Gaussian.
+        let (back, front) =
+            local_backscatter(attenuation, here.big_a_b[c], here.a_f[c], here.a_b[c]);
+        let half = if back_half { back } else { front };
+        let f_back =
+            |s2f: f32| half * gauss(x - here.delta_b[c], sigma_b * sigma_b + s2f) * inv_cos2 / PI;
         let mut value = direct * d_b * f_back(0.0);
         let spread = (t_f - direct).max(0.0);
         if spread > 0.0 {

@@ -16,6 +16,8 @@
 //!   and samples with another.
 //! - [`method`]: `path`, and the engine approximations `single` and `dual` (dual scattering,
 //!   docs/model.md §13) judged against it.
+//! - [`compare`]: an approximation's image against the reference (issue 23's mean and tile
+//!   metrics) and the side-by-side pictures of `viewer render --compare`.
 //! - [`film`], [`output`]: the image with per-pixel standard errors, bounce-order energies,
 //!   and the EXR/PNG bytes.
 //!
@@ -39,6 +41,7 @@
 
 pub mod accel;
 pub mod camera;
+pub mod compare;
 pub mod fiber;
 pub mod film;
 pub mod integrator;

@@ -2,18 +2,22 @@
 //! two engine approximations judged against it, `single` and `dual`.
 //!
 //! - [`Method::Path`]: full path tracing (docs/model.md §11).
-//! - [`Method::Single`]: at a fiber the path ends after next-event estimation with a binary
-//!   shadow ray (any fiber or surface blocks): only light that scatters once in the coat
-//!   reaches the camera through fibers. Skin and ground are path traced as in `path` (a ray
-//!   bounced off them that meets a fiber is shaded the same way), so the two methods differ
-//!   only in light that scatters off a fiber more than once or off a fiber and then a surface.
-//! - [`Method::Dual`]: `single`, but the shadow ray counts the fibers it crosses (n; a surface
-//!   still blocks it) and the fiber adds the dual-scattering term of
-//!   [`bcsdf_core::dual::eval`] with that n: S·V + D with V = 1 when n = 0 and 0 otherwise.
+//! - [`Method::Single`]: no fiber→fiber step. At a fiber, next-event estimation with a binary
+//!   shadow ray (any fiber or surface blocks); the path then goes on, by sampling the fiber,
+//!   only to the first surface behind the fibers on its way, and only if it crosses none
+//!   (V = 1): light from skin and ground reaches a fiber as it does in `path` (an engine's
+//!   indirect lighting), light from other fibers never does. Skin and ground are path traced
+//!   as in `path` (a ray bounced off them that meets a fiber is shaded the same way).
+//! - [`Method::Dual`]: `single`, but every ray toward a fiber's light — the shadow ray to a
+//!   light and the sampled ray to a surface — counts the fibers it crosses (n; a surface
+//!   still blocks a shadow ray) and the fiber's weight is S·V + D(n), the dual-scattering
+//!   term of [`bcsdf_core::dual::eval`] with V = 1 when n = 0 and 0 otherwise: the
+//!   fiber→fiber steps `single` leaves out, stood in for by D, for direct and indirect light
+//!   alike.
 //!
-//! At a fiber both approximations use light sampling alone (weight 1, whatever the
-//! [`crate::Strategy`]); the random numbers drawn per vertex are those of `path`, so a
-//! render is the same bits for any thread count.
+//! At a fiber both approximations use light sampling alone for lights (weight 1, whatever
+//! the [`crate::Strategy`]; a sampled ray that escapes adds nothing); the random numbers
+//! drawn per vertex are those of `path`, so a render is the same bits for any thread count.
 
 use crate::scatter::Scatterer;
 use bcsdf_core::dual::{self, Attenuation, Density, DualTables};
@@ -94,8 +98,9 @@ impl Method<'_> {
         }
     }
 
-    /// What a fiber returns toward `wr` for unit radiance from `wi` when the shadow ray
-    /// crossed `fibers` fibers: S·cos θ_i·V, plus D·cos θ_i for `dual` (RGB, ≥ 0, finite).
+    /// What a fiber returns toward `wr` for unit radiance from `wi` when the ray toward the
+    /// light (or surface) crossed `fibers` fibers: S·cos θ_i·V, plus D·cos θ_i for `dual`
+    /// (RGB, ≥ 0, finite).
     pub(crate) fn fiber_light<S: Scatterer>(
         &self,
         fiber: &S,

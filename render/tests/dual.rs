@@ -5,21 +5,21 @@
 //! tiles ≤ 20 %; `single` printed beside them and, for the light preset, far darker than
 //! `path`. Every preset's table and the density grid search are `#[ignore]`d runs.
 //!
-//! Metrics (luminance, Rec. 709): mean error = mean(dual)/mean(path) − 1 over the whole
-//! image; tile RMSE = √(mean over tiles of (L_dual − L_path)²) / mean over tiles of L_path,
-//! L the tile's mean luminance. The same numbers restricted to the fur (pixels whose centre's
-//! camera ray first meets a fiber) are printed beside them.
+//! Metrics (`render::compare`, luminance): mean error = mean(dual)/mean(path) − 1 over the
+//! whole image; tile RMSE over a 16 × 16 arrangement of tiles, relative to path's mean tile.
+//! The same numbers restricted to the fur (pixels whose centre's camera ray first meets a
+//! fiber) are printed beside them.
 
 mod common;
 
 use bcsdf_core::dual::{Attenuation, Density, DualTables, Quadrature};
 use bcsdf_core::{presets, Closure, FurBcsdf};
+use render::compare::{self, TILE_GRID};
 use render::scatter::One;
 use render::scene::{HitKind, Scene};
 use render::{render_method, scenes, Image, Method, SceneKind, SceneOptions, Settings};
 
-const SIDE: u32 = 48;
-const TILE: u32 = 16;
+const SIDE: u32 = 64;
 
 fn scene(kind: SceneKind) -> Scene {
     scenes::build(&SceneOptions {
@@ -28,24 +28,6 @@ fn scene(kind: SceneKind) -> Scene {
         seed: 3,
         aspect: 1.0,
     })
-}
-
-fn lum(p: &[f32; 3]) -> f64 {
-    0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2])
-}
-
-/// Pixels whose centre's camera ray first meets a fiber.
-fn fur_mask(scene: &Scene) -> Vec<bool> {
-    (0..SIDE * SIDE)
-        .map(|i| {
-            let (x, y) = (i % SIDE, i / SIDE);
-            let (o, d) = scene.camera.ray(x as f32 + 0.5, y as f32 + 0.5, SIDE, SIDE);
-            matches!(
-                scene.intersect(&o, &d, None).map(|h| h.kind),
-                Some(HitKind::Fiber { .. })
-            )
-        })
-        .collect()
 }
 
 /// Mean number of fibers the key light's shadow ray crosses from the first fiber each pixel
@@ -71,35 +53,19 @@ fn mean_fibers_to_key(scene: &Scene) -> (f64, f64) {
     (sum / count.max(1.0), zero / count.max(1.0))
 }
 
-/// (mean error, tile relative RMSE) of `a` against the reference `r`, over the pixels of
-/// `mask` (all when `None`).
+/// (mean error, tile relative RMSE) of `a` against the reference `r` (render::compare, a
+/// [`TILE_GRID`] × [`TILE_GRID`] arrangement of tiles), over the pixels of `mask` (all when
+/// `None`).
 fn metrics(a: &Image, r: &Image, mask: Option<&[bool]>) -> (f64, f64) {
-    let keep = |i: usize| mask.is_none_or(|m| m[i]);
-    let (mut sa, mut sr) = (0.0, 0.0);
-    let (mut se, mut sp, mut tiles) = (0.0, 0.0, 0.0);
-    for ty in (0..SIDE).step_by(TILE as usize) {
-        for tx in (0..SIDE).step_by(TILE as usize) {
-            let (mut ta, mut tr, mut n) = (0.0, 0.0, 0.0);
-            for y in ty..ty + TILE {
-                for x in tx..tx + TILE {
-                    let i = (y * SIDE + x) as usize;
-                    if keep(i) {
-                        ta += lum(&a.mean[i]);
-                        tr += lum(&r.mean[i]);
-                        n += 1.0;
-                    }
-                }
-            }
-            sa += ta;
-            sr += tr;
-            if n > 0.0 {
-                se += (ta / n - tr / n).powi(2);
-                sp += tr / n;
-                tiles += 1.0;
-            }
-        }
+    let m = compare::metrics(a, r, TILE_GRID, mask);
+    if mask.is_none() {
+        println!(
+            "    (tile RMSE {:.1} %, of which sampling noise alone {:.1} %)",
+            100.0 * m.tiles,
+            100.0 * m.noise
+        );
     }
-    (sa / sr - 1.0, (se / tiles).sqrt() / (sp / tiles))
+    (m.mean, m.tiles)
 }
 
 struct Row {
@@ -138,7 +104,7 @@ fn measure(
     )
     .unwrap();
     let single = render_method(&scene, &fiber, &settings(32), &Method::Single).unwrap();
-    let mask = fur_mask(&scene);
+    let mask = compare::fur_mask(&scene, SIDE, SIDE);
     let (n_mean, n_zero) = mean_fibers_to_key(&scene);
     println!(
         "  {kind}: fibers toward the key from the visible fur: mean {n_mean:.1}, {:.0} % unoccluded \
@@ -185,7 +151,7 @@ fn with_tables<R>(name: &str, f: impl FnOnce(&FurBcsdf<'_>, &DualTables) -> R) -
     })
 }
 
-/// The shipped method and default: two-stream attenuation, d_f = d_b = 1.
+/// The shipped method and default: the coat's attenuation, d_f = d_b = 1.
 const SHIPPED: (Density, Attenuation) = (Density::DEFAULT, Attenuation::Coat);
 
 fn rows(presets_: &[&'static str], scenes_: &[SceneKind], path_spp: u32) -> Vec<Row> {
@@ -227,7 +193,7 @@ fn rows(presets_: &[&'static str], scenes_: &[SceneKind], path_spp: u32) -> Vec<
 /// darker than `path`, and for the light preset by far (more than 30 %).
 #[test]
 fn dual_scattering_is_within_the_bounds_of_the_path_tracer() {
-    let rows = rows(&["dog", "deer"], &[SceneKind::Ball, SceneKind::Patch], 16);
+    let rows = rows(&["dog", "deer"], &[SceneKind::Ball, SceneKind::Patch], 32);
     for r in &rows {
         assert!(
             r.mean_dual.abs() <= 0.10 && r.rmse_dual <= 0.20,
@@ -245,7 +211,7 @@ fn dual_scattering_is_within_the_bounds_of_the_path_tracer() {
 }
 
 /// The table of docs/accuracy.md ("Dual scattering"): every preset, `ball` and `patch`,
-/// `path` at 64 spp. `cargo test -p render --test dual -- --ignored --nocapture every_preset`.
+/// `path` at 32 spp. `cargo test -p render --test dual -- --ignored --nocapture every_preset`.
 #[test]
 #[ignore = "every preset, minutes; its table is in docs/accuracy.md"]
 fn every_preset_against_the_path_tracer() {
@@ -253,7 +219,7 @@ fn every_preset_against_the_path_tracer() {
         .iter()
         .map(|p| p.name)
         .collect();
-    let rows = rows(&names, &[SceneKind::Ball, SceneKind::Patch], 64);
+    let rows = rows(&names, &[SceneKind::Ball, SceneKind::Patch], 32);
     let worst = rows
         .iter()
         .map(|r| r.mean_dual.abs())

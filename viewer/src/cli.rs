@@ -136,11 +136,11 @@ pub enum Evaluator {
 pub enum Method {
     /// Unidirectional path tracing with next-event estimation and MIS (the reference).
     Path,
-    /// Single scattering at fibers with shadow rays that count the fibers they cross, plus
-    /// the dual-scattering term (tables computed from the evaluator first).
+    /// `single`, with rays toward a fiber's lights and surfaces that count the fibers they
+    /// cross, plus the dual-scattering term (tables computed from the evaluator first).
     Dual,
-    /// Single scattering at fibers: light sampling with a binary shadow ray, no bounce off a
-    /// fiber (skin and ground path traced as in `path`).
+    /// No fiber-to-fiber light: at a fiber, light sampling with a binary shadow ray and a
+    /// bounce only to a surface no fiber hides (skin and ground path traced as in `path`).
     Single,
 }
 
@@ -174,6 +174,12 @@ pub struct RenderArgs {
     /// Light transport method.
     #[arg(long, value_enum, default_value = "path")]
     pub method: Method,
+
+    /// Render path, dual and single, and write them side by side with |dual − path|
+    /// (compare.png, compare.exr) and issue 23's numbers (compare.json, stdout) instead of
+    /// one render (docs/model.md §13).
+    #[arg(long, conflicts_with = "method")]
+    pub compare: bool,
 
     /// Dual scattering's forward density factor d_f (docs/model.md §13).
     #[arg(long, value_name = "D", default_value_t = bcsdf_core::dual::Density::DEFAULT.d_f)]

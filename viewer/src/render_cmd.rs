@@ -1,5 +1,7 @@
 //! `viewer render`: path-traces a built-in scene with the `render` crate and writes
-//! render.exr, render.png and render.json through `bake::fsutil` (docs/model.md §11).
+//! render.exr, render.png and render.json through `bake::fsutil` (docs/model.md §11); with
+//! `--compare`, path, dual and single side by side with the difference and issue 23's
+//! numbers (compare.png, compare.exr, compare.json; docs/model.md §13).
 
 use crate::catalog;
 use crate::cli::{Evaluator, Method as MethodArg, PresetsArgs, ProfileArgs, RenderArgs};
@@ -12,7 +14,9 @@ use bcsdf_core::dual::{Attenuation, Density, DualTables, Quadrature};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::{Bcsdf, FurParamsInput};
 use render::scatter::One;
-use render::{integrator, output, scenes, Method, Render, SceneKind, SceneOptions, Settings};
+use render::{
+    compare, integrator, output, scenes, Method, Render, SceneKind, SceneOptions, Settings,
+};
 use serde_json::json;
 use std::io::Write;
 
@@ -99,6 +103,10 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         (preset.to_string(), r)
     };
 
+    if args.compare {
+        return write_comparison(&scene, &name, kind, evaluator, &r, args);
+    }
+    let r = &r[0].1;
     let exr = output::exr_bytes(&r.image).map_err(|e| Error::Failure(e.to_string()))?;
     let png =
         output::png_bytes(&r.image, args.exposure).map_err(|e| Error::Failure(e.to_string()))?;
@@ -109,7 +117,7 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         "segments": scene.segment_count(),
         "preset": name,
         "set": args.set,
-        "evaluator": match evaluator { Evaluator::Analytic => "analytic", Evaluator::Baked => "baked" },
+        "evaluator": evaluator_name(evaluator),
         "method": method_name(args.method),
         "d_f": args.d_f,
         "d_b": args.d_b,
@@ -152,6 +160,125 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
     Ok(())
 }
 
+/// `--compare`: path | dual | single | |dual − path| in compare.png and compare.exr, the
+/// numbers (render::compare, over the whole image and over the fur) in compare.json and on
+/// stdout.
+fn write_comparison(
+    scene: &render::scene::Scene,
+    name: &str,
+    kind: SceneKind,
+    evaluator: Evaluator,
+    renders: &[(MethodArg, Render)],
+    args: &RenderArgs,
+) -> Result<(), Error> {
+    let image = |m: MethodArg| {
+        renders
+            .iter()
+            .find(|(k, _)| *k == m)
+            .map(|(_, r)| &r.image)
+            .ok_or_else(|| Error::Failure(format!("no {} render", method_name(m))))
+    };
+    let (path, dual, single) = (
+        image(MethodArg::Path)?,
+        image(MethodArg::Dual)?,
+        image(MethodArg::Single)?,
+    );
+    let diff = compare::difference(dual, path);
+    let strip = compare::side_by_side(&[path, dual, single, &diff]);
+    let mask = compare::fur_mask(scene, args.width, args.height);
+    let numbers = |img: &render::Image| {
+        let (all, fur) = (
+            compare::metrics(img, path, compare::TILE_GRID, None),
+            compare::metrics(img, path, compare::TILE_GRID, Some(&mask)),
+        );
+        (all, fur)
+    };
+    let mut methods = serde_json::Map::new();
+    let mut lines = Vec::new();
+    for (m, img) in [(MethodArg::Dual, dual), (MethodArg::Single, single)] {
+        let (all, fur) = numbers(img);
+        methods.insert(
+            method_name(m).into(),
+            json!({
+                "mean_error": all.mean,
+                "tile_rmse": all.tiles,
+                "tile_rmse_from_noise": all.noise,
+                "fur_mean_error": fur.mean,
+                "fur_tile_rmse": fur.tiles,
+            }),
+        );
+        lines.push(format!(
+            "  {:6} mean {:+6.1} %  tiles {:5.1} % (noise {:4.1} %) | fur only: mean {:+6.1} %  tiles {:5.1} %",
+            method_name(m),
+            100.0 * all.mean,
+            100.0 * all.tiles,
+            100.0 * all.noise,
+            100.0 * fur.mean,
+            100.0 * fur.tiles
+        ));
+    }
+    let seconds: serde_json::Map<String, serde_json::Value> = renders
+        .iter()
+        .map(|(m, r)| (method_name(*m).to_string(), json!(r.seconds)))
+        .collect();
+    let report = json!({
+        "scene": kind.name(),
+        "fibers": args.fibers.unwrap_or(kind.default_fibers()),
+        "preset": name,
+        "set": args.set,
+        "evaluator": evaluator_name(evaluator),
+        "d_f": args.d_f,
+        "d_b": args.d_b,
+        "width": args.width,
+        "height": args.height,
+        "spp": args.spp,
+        "max_depth": args.max_depth,
+        "seed": args.seed,
+        "tile_grid": compare::TILE_GRID,
+        "against_path": methods,
+        "seconds": seconds,
+        "panels": ["path", "dual", "single", "|dual - path|"],
+    });
+    let exr = output::exr_bytes(&strip).map_err(|e| Error::Failure(e.to_string()))?;
+    let png =
+        output::png_bytes(&strip, args.exposure).map_err(|e| Error::Failure(e.to_string()))?;
+    for (file, bytes) in [
+        ("compare.exr", exr),
+        ("compare.png", png),
+        ("compare.json", json::pretty(&report).into_bytes()),
+    ] {
+        fsutil::write_atomic(&args.out.join(file), &bytes)?;
+    }
+    let mut out = std::io::stdout().lock();
+    let _ = writeln!(
+        out,
+        "{} {} {}x{} {} spp, against path (tile RMSE over {}x{} tiles):",
+        kind.name(),
+        name,
+        args.width,
+        args.height,
+        args.spp,
+        compare::TILE_GRID,
+        compare::TILE_GRID
+    );
+    for l in lines {
+        let _ = writeln!(out, "{l}");
+    }
+    let _ = writeln!(
+        out,
+        "  panels: path | dual | single | |dual - path| -> {}",
+        args.out.display()
+    );
+    Ok(())
+}
+
+fn evaluator_name(e: Evaluator) -> &'static str {
+    match e {
+        Evaluator::Analytic => "analytic",
+        Evaluator::Baked => "baked",
+    }
+}
+
 fn method_name(m: MethodArg) -> &'static str {
     match m {
         MethodArg::Path => "path",
@@ -160,32 +287,43 @@ fn method_name(m: MethodArg) -> &'static str {
     }
 }
 
-/// Renders with one evaluator and the method of `args` (for `dual`, the tables are computed
-/// from that evaluator first, docs/model.md §13).
+/// Renders with one evaluator and the method of `args`, or path, dual and single with
+/// `--compare` (for `dual`, the tables are computed from that evaluator first, docs/model.md
+/// §13).
 fn trace<B: Bcsdf + Sync>(
     scene: &render::scene::Scene,
     bcsdf: &B,
     settings: &Settings,
     args: &RenderArgs,
-) -> Result<Render, Error> {
+) -> Result<Vec<(MethodArg, Render)>, Error> {
+    let kinds: &[MethodArg] = if args.compare {
+        &[MethodArg::Path, MethodArg::Dual, MethodArg::Single]
+    } else {
+        core::slice::from_ref(&args.method)
+    };
     let mut tables = Box::new(DualTables::ZERO);
-    let method = match args.method {
-        MethodArg::Path => Method::Path,
-        MethodArg::Single => Method::Single,
-        MethodArg::Dual => {
-            tables.compute(bcsdf, Quadrature::DEFAULT);
-            Method::Dual {
+    if kinds.contains(&MethodArg::Dual) {
+        tables.compute(bcsdf, Quadrature::DEFAULT);
+    }
+    let mut out = Vec::new();
+    for &kind in kinds {
+        let method = match kind {
+            MethodArg::Path => Method::Path,
+            MethodArg::Single => Method::Single,
+            MethodArg::Dual => Method::Dual {
                 tables: &tables,
                 density: Density {
                     d_f: args.d_f,
                     d_b: args.d_b,
                 },
                 attenuation: Attenuation::Coat,
-            }
-        }
-    };
-    integrator::render_method(scene, &One(bcsdf), settings, &method)
-        .map_err(|e| Error::input(e.to_string()))
+            },
+        };
+        let r = integrator::render_method(scene, &One(bcsdf), settings, &method)
+            .map_err(|e| Error::input(e.to_string()))?;
+        out.push((kind, r));
+    }
+    Ok(out)
 }
 
 /// The flag a settings error is about, with the message.

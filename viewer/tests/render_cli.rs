@@ -13,7 +13,11 @@ fn viewer(args: &[&str]) -> Output {
 }
 
 fn render(out: &Path, threads: &str) -> Output {
-    viewer(&[
+    render_with(out, threads, &[])
+}
+
+fn render_with(out: &Path, threads: &str, extra: &[&str]) -> Output {
+    let mut args = vec![
         "render",
         "--scene",
         "patch",
@@ -34,7 +38,60 @@ fn render(out: &Path, threads: &str) -> Output {
         "--no-cache",
         "--out",
         out.to_str().unwrap(),
-    ])
+    ];
+    args.extend_from_slice(extra);
+    viewer(&args)
+}
+
+/// `--compare` (issue 23): path | dual | single | |dual − path| in one picture, the numbers
+/// in compare.json, the same bits for 1 and 2 threads.
+#[test]
+fn compare_writes_the_four_panels_and_the_numbers() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+    let run = render_with(&a, "1", &["--compare"]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        stdout.contains("dual") && stdout.contains("single"),
+        "{stdout}"
+    );
+    assert!(render_with(&b, "2", &["--compare"]).status.success());
+    let mut names: Vec<String> = std::fs::read_dir(&a)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["compare.exr", "compare.json", "compare.png"]);
+    assert!(
+        std::fs::read(a.join("compare.exr")).unwrap()
+            == std::fs::read(b.join("compare.exr")).unwrap(),
+        "1 and 2 threads differ"
+    );
+    // Four 16-pixel panels side by side (PNG IHDR: width, height big-endian at 16..24).
+    let png = std::fs::read(a.join("compare.png")).unwrap();
+    assert_eq!(u32::from_be_bytes(png[16..20].try_into().unwrap()), 64);
+    assert_eq!(u32::from_be_bytes(png[20..24].try_into().unwrap()), 12);
+    let report: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(a.join("compare.json")).unwrap()).unwrap();
+    for m in ["dual", "single"] {
+        for k in ["mean_error", "tile_rmse", "fur_mean_error", "fur_tile_rmse"] {
+            let v = report["against_path"][m][k].as_f64();
+            assert!(v.is_some_and(f64::is_finite), "{m} {k}: {report}");
+        }
+    }
+    assert_eq!(report["panels"][3], "|dual - path|");
+    // One render per method otherwise: --compare and --method exclude each other.
+    let o = render_with(
+        &dir.path().join("c"),
+        "1",
+        &["--compare", "--method", "dual"],
+    );
+    assert_eq!(o.status.code(), Some(2));
 }
 
 #[test]

@@ -144,9 +144,10 @@ pub struct Density {
 }
 
 impl Density {
-    /// The default shipped, with [`Attenuation::TwoStream`]: d_f = d_b = 1, the best of the
-    /// grid d ≤ 1 for every preset and scene measured against the path tracer (larger values
-    /// fit better and have no physical reading; docs/model.md §13, docs/accuracy.md).
+    /// The default shipped, with [`Attenuation::Coat`]: d_f = d_b = 1, Zinke's values for a
+    /// coat whose fibers are as dense as the counted ones (no fit): within issue 23's bounds
+    /// of the path tracer for dog and deer on both scenes (docs/model.md §13,
+    /// docs/accuracy.md).
     pub const DEFAULT: Density = Density { d_f: 1.0, d_b: 1.0 };
 
     fn sanitized(self) -> (f32, f32) {
@@ -386,7 +387,8 @@ fn gauss(x: f32, variance: f32) -> f32 {
 ///
 /// V·d_b·f_back(σ_f² = 0) + (T_f − V)·d_f·(f_s^scatter + d_b·f_back)(σ_f²),
 /// T_f = [`transmittance`] of n fibers of ā_f(−θ_i), ā_b(−θ_i) (ā_f^n for
-/// [`Attenuation::Forward`]), σ_f² = n·β_f²(−θ_i).
+/// [`Attenuation::Forward`]), σ_f² = n·β_f²(−θ_i), f_back(s²) = A·G(x − Δ_b; σ_b² + s²)/(π
+/// cos²θ_i) with A the back-half or front-half energy of [`local_backscatter`] at θ_r.
 ///
 /// Contract: `fibers` NaN or below 0 is 0 (unoccluded), above [`MAX_FIBERS`] (or +∞) is
 /// [`MAX_FIBERS`]; the density factors as in [`Density`]. The result is finite and ≥ 0 for

@@ -643,11 +643,26 @@ fn help_shows_usage_and_examples() {
 }
 
 /// The cache files in `dir` (sorted), but for the entries' lock files (`*.lock`).
+/// The medulla profile entries of a cache directory (no locks; the energy closure's residual
+/// tables, which share the directory, are [`residual_files`]).
 fn cache_files(dir: &Path) -> Vec<PathBuf> {
+    entries(dir, false)
+}
+
+/// The residual table entries (`residual-<hash>.furres`) of a cache directory.
+fn residual_files(dir: &Path) -> Vec<PathBuf> {
+    entries(dir, true)
+}
+
+fn entries(dir: &Path, residual: bool) -> Vec<PathBuf> {
     let mut files: Vec<PathBuf> = match std::fs::read_dir(dir) {
         Ok(rd) => rd
             .map(|e| e.unwrap().path())
             .filter(|p| p.extension().is_none_or(|e| e != "lock"))
+            .filter(|p| {
+                let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
+                name.starts_with("residual-") == residual
+            })
             .collect(),
         Err(_) => Vec::new(),
     };
@@ -689,12 +704,15 @@ fn profiles_are_cached_per_parameter_set_and_reused() {
     ok(&seeded, None);
     assert_eq!(cache_files(dir.path()).len(), 3);
     assert_eq!(std::fs::read(&files[0]).unwrap(), bytes);
-    // A preset that needs no profiles (kappa = 0) writes nothing.
+    // Each parameter set's residual table is cached beside its profiles.
+    assert_eq!(residual_files(dir.path()).len(), 3);
+    // A preset that needs no profiles (kappa = 0) writes no profile, only its residual.
     let hair = temp_dir();
     let mut args = probe_args("human-hair", &angles);
     args.extend(["--cache-dir", hair.path().to_str().unwrap()]);
     ok(&args, None);
     assert!(cache_files(hair.path()).is_empty());
+    assert_eq!(residual_files(hair.path()).len(), 1);
 }
 
 #[test]
@@ -864,8 +882,13 @@ fn unwritable_cache_directory_is_an_error_naming_it() {
     assert!(err.starts_with("error: "), "{err:?}");
     assert!(err.contains(bad.to_str().unwrap()), "{err:?}");
     assert!(err.contains("not writable"), "{err:?}");
-    // A preset that needs no profiles does not touch the cache, so it still works.
+    // A preset that needs no profiles still caches its energy closure's residual table: the
+    // same error. In the report closure (no residual) it does not touch the cache and works.
     let mut hair = probe_args("human-hair", &["30", "-20", "45"]);
     hair.extend(["--cache-dir", bad.to_str().unwrap()]);
+    let o = viewer(&hair, None);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("not writable"), "{}", stderr(&o));
+    hair.extend(["--set", "closure=report"]);
     ok(&hair, None);
 }

@@ -44,11 +44,11 @@ pub enum Attenuation {
     /// A two-stream stack of n identical layers, each transmitting ā_f and reflecting ā_b
     /// (light scattered back by one fiber and forward again by the one before it is kept),
     /// one layer added at a time (the adding method): T_{k+1} = ā_f T_k/(1 − ā_b R_k),
-    /// R_{k+1} = ā_b + ā_f² R_k/(1 − ā_b R_k), T_0 = 1, R_0 = 0. For fibers whose medulla scatters broadly (ā_b ≈ ā_f) this is the
-    /// diffusive transport the path tracer shows; n is clamped to [`MAX_STACK`] here. The
-    /// local backscatter's energy is then the same stack's: A_b = R_∞ − ā_b
-    /// ([`semi_infinite_reflectance`] less the single backscatter S already holds), in place
-    /// of Zinke's two-term series.
+    /// R_{k+1} = ā_b + ā_f² R_k/(1 − ā_b R_k), T_0 = 1, R_0 = 0, with nothing beneath the
+    /// shading point; n is clamped to [`MAX_STACK`] here. The local backscatter's energy is
+    /// the same stack's, A_b = R_∞ − ā_b ([`semi_infinite_reflectance`] less the single
+    /// backscatter S already holds), in place of Zinke's two-term series, in the back half
+    /// only.
     TwoStream,
     /// The n fibers between the shading point and the light as [`Attenuation::TwoStream`]'s
     /// stack, lying on the rest of the coat, taken as a semi-infinite stack of the same
@@ -56,16 +56,19 @@ pub enum Attenuation {
     /// back up and the n fibers above send down again reaches the shading point too. The
     /// downward flux there is D_n = T_n/(1 − R_n R_∞) (the adding method with the coat below;
     /// 1 at every depth for lossless fibers, where T_n alone falls as 1/(1 + n ā_b/ā_f)).
-    /// The local backscatter is [`Attenuation::TwoStream`]'s, A_b = R_∞ − ā_b.
+    /// The light the coat below sends up to the shading fiber is scattered into both halves
+    /// ([`local_backscatter`]). The shipped attenuation.
     Coat,
 }
 
 /// Largest fiber count of the two-stream recursion ([`Attenuation::TwoStream`]).
 pub const MAX_STACK: u32 = 4096;
 
-/// Transmittance of a stack of `n` fibers (n ≥ 0, fractional n geometric between the
-/// neighbouring integers) of forward fraction `t` and backward fraction `r`, per
-/// [`Attenuation`].
+/// The light that reaches a shading point behind `n` fibers (n ≥ 0, fractional n geometric
+/// between the neighbouring integers) of forward fraction `t` and backward fraction `r`, per
+/// [`Attenuation`]: the stack's transmittance T_n for [`Attenuation::Forward`] and
+/// [`Attenuation::TwoStream`], the downward flux D_n = T_n/(1 − R_n R_∞) for
+/// [`Attenuation::Coat`]. In [0, 1]; 1 for n ≤ 0 or NaN.
 #[must_use]
 pub fn transmittance(attenuation: Attenuation, t: f32, r: f32, n: f32) -> f32 {
     let t = if t > 0.0 { t.min(1.0) } else { 0.0 };

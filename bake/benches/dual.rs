@@ -1,0 +1,69 @@
+//! The dual-scattering term against one baked evaluation, in the same run (issue 23's speed
+//! check: the term at most 2× the cost of a baked eval; docs/model.md §13):
+//!
+//! - `dual_baked_eval/<preset>`: `BakedBcsdf::eval_far(..).total()`, the LUT at the default
+//!   resolution (what an engine evaluates per light for single scattering);
+//! - `dual_term/<preset>/<n>`: `dual::eval` with the shipped `Attenuation::Coat` and
+//!   `Density::DEFAULT` from tables computed from that LUT, at fiber counts n = 0 (unoccluded:
+//!   the local backscatter only), 1.5 and 6 (the spread term too; the two-stream recursion
+//!   runs ⌈n⌉ steps).
+//!
+//! One query per iteration from the fixed list of 256 directions of `bench_support`, index
+//! masked. `cargo bench -p bake --bench dual`.
+
+use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bake::tables;
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
+use bcsdf_core::dual::{self, Attenuation, Density, DualTables, Quadrature};
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::{presets, Angles, FurParams};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+
+fn bench(c: &mut Criterion) {
+    let mut stream = QueryStream::new();
+    let qs: Vec<Angles> = (0..QUERY_COUNT).map(|_| stream.angles()).collect();
+    let opts = ProfileOptions {
+        budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
+        ..ProfileOptions::default()
+    };
+    for name in ["bobcat", "dog", "human-hair"] {
+        let preset = presets::find(name).unwrap();
+        let params = FurParams::new(&preset.input).unwrap();
+        let (model, _) = build_model(params, &opts).unwrap();
+        let blob = tables::bake(&model, &preset.input, LutResolution::DEFAULT);
+        let baked = BakedBcsdf::from_bytes(&blob).unwrap();
+        let mut dual_tables = Box::new(DualTables::ZERO);
+        dual_tables.compute(&baked, Quadrature::DEFAULT);
+        let tables = &*dual_tables;
+
+        let mut i = 0usize;
+        c.bench_function(&format!("dual_baked_eval/{name}"), |b| {
+            b.iter(|| {
+                let a = &qs[i & 255];
+                i += 1;
+                black_box(baked.eval_far(black_box(a)).total())
+            })
+        });
+        for n in [0.0f32, 1.5, 6.0] {
+            let mut i = 0usize;
+            c.bench_function(&format!("dual_term/{name}/{n}"), |b| {
+                b.iter(|| {
+                    let a = &qs[i & 255];
+                    i += 1;
+                    black_box(dual::eval(
+                        tables,
+                        black_box(a),
+                        black_box(n),
+                        Density::DEFAULT,
+                        Attenuation::Coat,
+                    ))
+                })
+            });
+        }
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -141,10 +141,7 @@ impl Scene {
         from: Option<u32>,
     ) -> Option<u32> {
         let surface = self.intersect_surfaces(origin, dir)?;
-        Some(
-            self.fibers
-                .count_fibers(origin, dir, self.epsilon, surface.t, self.skip(from)),
-        )
+        Some(self.count_fibers(origin, dir, from, surface.t))
     }
 
     /// Whether the unit ray leaving `origin` (from fiber `from`) escapes to infinity.
@@ -168,10 +165,19 @@ impl Scene {
         if self.surface_blocks(origin, dir) {
             return None;
         }
-        Some(
-            self.fibers
-                .count_fibers(origin, dir, self.epsilon, f32::INFINITY, self.skip(from)),
-        )
+        Some(self.count_fibers(origin, dir, from, f32::INFINITY))
+    }
+
+    /// The distinct fibers (other than `from`) on the unit ray before distance `t_max`.
+    fn count_fibers(
+        &self,
+        origin: &Vector3<f32>,
+        dir: &Vector3<f32>,
+        from: Option<u32>,
+        t_max: f32,
+    ) -> u32 {
+        self.fibers
+            .count_fibers(origin, dir, self.epsilon, t_max, self.skip(from))
     }
 
     /// Whether a surface (opaque) lies on the unit ray leaving `origin`.

@@ -111,21 +111,10 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
     let png =
         output::png_bytes(&r.image, args.exposure).map_err(|e| Error::Failure(e.to_string()))?;
     let whole = r.image.whole();
-    let report = json!({
-        "scene": kind.name(),
-        "fibers": args.fibers.unwrap_or(kind.default_fibers()),
+    let mut report = setup_report(kind, &name, evaluator, args);
+    report.extend(json_fields(json!({
         "segments": scene.segment_count(),
-        "preset": name,
-        "set": args.set,
-        "evaluator": evaluator_name(evaluator),
         "method": method_name(args.method),
-        "d_f": args.d_f,
-        "d_b": args.d_b,
-        "width": args.width,
-        "height": args.height,
-        "spp": args.spp,
-        "max_depth": args.max_depth,
-        "seed": args.seed,
         "seconds": r.seconds,
         "paths": r.paths,
         "rays": r.rays,
@@ -134,7 +123,8 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         "mean_radiance": whole.mean,
         "mean_radiance_std_error": whole.std_error,
         "energy_per_bounce_order": r.orders,
-    });
+    })));
+    let report = serde_json::Value::Object(report);
     for (file, bytes) in [
         ("render.exr", exr),
         ("render.png", png),
@@ -221,24 +211,14 @@ fn write_comparison(
         .iter()
         .map(|(m, r)| (method_name(*m).to_string(), json!(r.seconds)))
         .collect();
-    let report = json!({
-        "scene": kind.name(),
-        "fibers": args.fibers.unwrap_or(kind.default_fibers()),
-        "preset": name,
-        "set": args.set,
-        "evaluator": evaluator_name(evaluator),
-        "d_f": args.d_f,
-        "d_b": args.d_b,
-        "width": args.width,
-        "height": args.height,
-        "spp": args.spp,
-        "max_depth": args.max_depth,
-        "seed": args.seed,
+    let mut report = setup_report(kind, name, evaluator, args);
+    report.extend(json_fields(json!({
         "tile_grid": compare::TILE_GRID,
         "against_path": methods,
         "seconds": seconds,
         "panels": ["path", "dual", "single", "|dual - path|"],
-    });
+    })));
+    let report = serde_json::Value::Object(report);
     let exr = output::exr_bytes(&strip).map_err(|e| Error::Failure(e.to_string()))?;
     let png =
         output::png_bytes(&strip, args.exposure).map_err(|e| Error::Failure(e.to_string()))?;
@@ -270,6 +250,37 @@ fn write_comparison(
         args.out.display()
     );
     Ok(())
+}
+
+/// The fields render.json and compare.json share: what was rendered and how.
+fn setup_report(
+    kind: SceneKind,
+    name: &str,
+    evaluator: Evaluator,
+    args: &RenderArgs,
+) -> serde_json::Map<String, serde_json::Value> {
+    json_fields(json!({
+        "scene": kind.name(),
+        "fibers": args.fibers.unwrap_or(kind.default_fibers()),
+        "preset": name,
+        "set": args.set,
+        "evaluator": evaluator_name(evaluator),
+        "d_f": args.d_f,
+        "d_b": args.d_b,
+        "width": args.width,
+        "height": args.height,
+        "spp": args.spp,
+        "max_depth": args.max_depth,
+        "seed": args.seed,
+    }))
+}
+
+/// The fields of a `json!({..})` object.
+fn json_fields(v: serde_json::Value) -> serde_json::Map<String, serde_json::Value> {
+    match v {
+        serde_json::Value::Object(m) => m,
+        _ => serde_json::Map::new(),
+    }
 }
 
 fn evaluator_name(e: Evaluator) -> &'static str {

@@ -3,10 +3,10 @@
 //!
 //! - `dual_baked_eval/<preset>`: `BakedBcsdf::eval_far(..).total()`, the LUT at the default
 //!   resolution (what an engine evaluates per light for single scattering);
-//! - `dual_term/<preset>/<n>`: `dual::eval` with the shipped `Attenuation::Coat` and
-//!   `Density::DEFAULT` from tables computed from that LUT, at fiber counts n = 0 (unoccluded:
-//!   the local backscatter only), 1.5 and 6 (the spread term too; the two-stream recursion
-//!   runs ⌈n⌉ steps).
+//! - `dual_term/<preset>/<n>`: `DualLut::eval` with the shipped `Attenuation::Coat` and
+//!   `Density::DEFAULT` from tables computed from that LUT (through the `.furdual` blob), at
+//!   fiber counts n = 0 (unoccluded: the local backscatter only), 1.5 and 6 (the spread term
+//!   too: six Gaussians per channel).
 //!
 //! One query per iteration from the fixed list of 256 directions of `bench_support`, index
 //! masked. `cargo bench -p bake --bench dual`.
@@ -15,7 +15,7 @@ use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
-use bcsdf_core::dual::{self, Attenuation, Density, DualTables, Quadrature};
+use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams};
@@ -36,7 +36,9 @@ fn bench(c: &mut Criterion) {
         let baked = BakedBcsdf::from_bytes(&blob).unwrap();
         let mut dual_tables = Box::new(DualTables::ZERO);
         dual_tables.compute(&baked, Quadrature::DEFAULT);
-        let tables = &*dual_tables;
+        let mut lut = Box::new(DualLut::EMPTY);
+        lut.decode(&encode(&dual_tables, Attenuation::Coat, 0))
+            .unwrap();
 
         let mut i = 0usize;
         c.bench_function(&format!("dual_baked_eval/{name}"), |b| {
@@ -52,13 +54,7 @@ fn bench(c: &mut Criterion) {
                 b.iter(|| {
                     let a = &qs[i & 255];
                     i += 1;
-                    black_box(dual::eval(
-                        tables,
-                        black_box(a),
-                        black_box(n),
-                        Density::DEFAULT,
-                        Attenuation::Coat,
-                    ))
+                    black_box(lut.eval(black_box(a), black_box(n), Density::DEFAULT))
                 })
             });
         }

@@ -207,12 +207,34 @@ fn estrin8(c: &[f32; 8], x: f32) -> f32 {
 #[inline]
 #[must_use]
 pub fn exp_neg_polynomial(x: f32) -> f32 {
-    const LN2_HI: f32 = 0.693_359_4;
-    const LN2_LO: f32 = -2.121_944_4e-4;
-    const LOG2_E: f32 = core::f32::consts::LOG2_E;
     if !(0.0..=87.0).contains(&x) {
         return if x > 87.0 { 0.0 } else { libm::expf(-x) };
     }
+    exp_neg_reduced(x)
+}
+
+/// e^−x for x ≥ 0 without a branch, for lane loops ([`crate::dual`]): x is clamped to
+/// [0, 87] for [`exp_neg_polynomial`]'s polynomial and the result selected to 0 above 87, so
+/// that a loop over lanes compiles to straight-line (vectorisable) code. Same accuracy as
+/// [`exp_neg_polynomial`] on [0, 87]; x < 0 and NaN give 1 (never a panic or NaN).
+#[inline(always)]
+#[must_use]
+pub fn exp_neg_saturating(x: f32) -> f32 {
+    // max/min, not clamp: NaN becomes 0 here.
+    let e = exp_neg_reduced(if x > 0.0 { x.min(87.0) } else { 0.0 });
+    if x > 87.0 {
+        0.0
+    } else {
+        e
+    }
+}
+
+/// The polynomial of [`exp_neg_polynomial`] for x ∈ [0, 87].
+#[inline(always)]
+fn exp_neg_reduced(x: f32) -> f32 {
+    const LN2_HI: f32 = 0.693_359_4;
+    const LN2_LO: f32 = -2.121_944_4e-4;
+    const LOG2_E: f32 = core::f32::consts::LOG2_E;
     // k = round(x / ln 2) ∈ [0, 126]: adding 1.5·2²³ rounds to an integer, which then sits
     // in the low mantissa bits (cheaper than a saturating float-to-int conversion).
     const ROUND: f32 = 12_582_912.0;

@@ -11,7 +11,7 @@
 //! - [`Method::Dual`]: `single`, but every ray toward a fiber's light — the shadow ray to a
 //!   light and the sampled ray to a surface — counts the fibers it crosses (n; a surface
 //!   still blocks a shadow ray) and the fiber's weight is S·V + D(n), the dual-scattering
-//!   term of [`bcsdf_core::dual::eval`] with V = 1 when n = 0 and 0 otherwise: the
+//!   term of [`bcsdf_core::dual::DualLut::eval`] with V = 1 when n = 0 and 0 otherwise: the
 //!   fiber→fiber steps `single` leaves out, stood in for by D, for direct and indirect light
 //!   alike.
 //!
@@ -20,7 +20,7 @@
 //! drawn per vertex are those of `path`, so a render is the same bits for any thread count.
 
 use crate::scatter::Scatterer;
-use bcsdf_core::dual::{self, Attenuation, Density, DualTables};
+use bcsdf_core::dual::{Density, DualLut};
 use bcsdf_core::{Angles, Libm};
 use core::fmt;
 use core::str::FromStr;
@@ -35,12 +35,11 @@ pub enum Method<'a> {
     Single,
     /// Single scattering with counted shadow rays plus the dual-scattering term.
     Dual {
-        /// The fiber's tables ([`DualTables::compute`] of the rendered BCSDF).
-        tables: &'a DualTables,
+        /// The fiber's dual-scattering evaluator (the decoded `.furdual` blob of the rendered
+        /// BCSDF's tables, the attenuation in it).
+        lut: &'a DualLut,
         /// d_f, d_b.
         density: Density,
-        /// How the counted fibers attenuate the light.
-        attenuation: Attenuation,
     },
 }
 
@@ -114,17 +113,12 @@ impl Method<'_> {
         } else {
             [0.0; 3]
         };
-        if let Method::Dual {
-            tables,
-            density,
-            attenuation,
-        } = self
-        {
+        if let Method::Dual { lut, density } = self {
             if let Ok(a) =
                 Angles::from_directions::<Libm>((*wi).into(), (*wr).into(), (*tangent).into())
             {
                 let cos = a.theta_i().cos().max(0.0);
-                let d = dual::eval(tables, &a, fibers as f32, *density, *attenuation);
+                let d = lut.eval(&a, fibers as f32, *density);
                 for c in 0..3 {
                     let v = d[c] * cos;
                     if v.is_finite() && v > 0.0 {

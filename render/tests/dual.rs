@@ -12,7 +12,7 @@
 
 mod common;
 
-use bcsdf_core::dual::{Attenuation, Density, DualTables, Quadrature};
+use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
 use bcsdf_core::{presets, Closure, FurBcsdf};
 use render::compare::{self, TILE_GRID};
 use render::scatter::One;
@@ -79,10 +79,9 @@ struct Row {
 
 fn measure(
     model: &FurBcsdf<'_>,
-    tables: &DualTables,
+    lut: &DualLut,
     kind: SceneKind,
     density: Density,
-    attenuation: Attenuation,
     path_spp: u32,
 ) -> ((f64, f64), (f64, f64)) {
     let scene = scene(kind);
@@ -96,11 +95,7 @@ fn measure(
         &scene,
         &fiber,
         &settings(32),
-        &Method::Dual {
-            tables,
-            density,
-            attenuation,
-        },
+        &Method::Dual { lut, density },
     )
     .unwrap();
     let single = render_method(&scene, &fiber, &settings(32), &Method::Single).unwrap();
@@ -133,7 +128,14 @@ fn measure(
     (d, s)
 }
 
-fn with_tables<R>(name: &str, f: impl FnOnce(&FurBcsdf<'_>, &DualTables) -> R) -> R {
+/// The evaluator an engine would load: `tables` for `attenuation` through the `.furdual` blob.
+fn lut_of(tables: &DualTables, attenuation: Attenuation) -> Box<DualLut> {
+    let mut lut = Box::new(DualLut::EMPTY);
+    lut.decode(&encode(tables, attenuation, 0)).unwrap();
+    lut
+}
+
+fn with_tables<R>(name: &str, f: impl FnOnce(&FurBcsdf<'_>, &DualLut) -> R) -> R {
     let mut input = presets::find(name).unwrap().input;
     input.closure = Closure::Energy;
     common::with_model(&input, |model| {
@@ -147,7 +149,7 @@ fn with_tables<R>(name: &str, f: impl FnOnce(&FurBcsdf<'_>, &DualTables) -> R) -
             },
         );
         println!("{name}: tables in {:.2} s", t.elapsed().as_secs_f64());
-        f(model, &tables)
+        f(model, &lut_of(&tables, SHIPPED.1))
     })
 }
 
@@ -159,8 +161,7 @@ fn rows(presets_: &[&'static str], scenes_: &[SceneKind], path_spp: u32) -> Vec<
     for &preset in presets_ {
         with_tables(preset, |model, tables| {
             for &kind in scenes_ {
-                let ((md, rd), (ms, rs)) =
-                    measure(model, tables, kind, SHIPPED.0, SHIPPED.1, path_spp);
+                let ((md, rd), (ms, rs)) = measure(model, tables, kind, SHIPPED.0, path_spp);
                 rows.push(Row {
                     preset,
                     scene: kind,
@@ -250,9 +251,8 @@ fn dual_renders_are_deterministic() {
         for method in [
             Method::Single,
             Method::Dual {
-                tables: &tables,
+                lut: &lut_of(&tables, SHIPPED.1),
                 density: SHIPPED.0,
-                attenuation: SHIPPED.1,
             },
         ] {
             let run = |threads| {
@@ -305,12 +305,11 @@ fn fit_density() {
                 let path = render_method(&scene, &fiber, &settings(16), &Method::Path).unwrap();
                 for ((d_f, d_b), row) in &mut results {
                     let method = Method::Dual {
-                        tables,
+                        lut: tables,
                         density: Density {
                             d_f: *d_f,
                             d_b: *d_b,
                         },
-                        attenuation: Attenuation::Coat,
                     };
                     let dual = render_method(&scene, &fiber, &settings(16), &method).unwrap();
                     let m = compare::metrics(&dual.image, &path.image, TILE_GRID, None);

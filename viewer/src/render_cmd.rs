@@ -10,7 +10,7 @@ use crate::json;
 use crate::source::{preset_model, read_lut};
 use bake::fsutil;
 use bcsdf_core::baked::BakedBcsdf;
-use bcsdf_core::dual::{Attenuation, Density, DualTables, Quadrature};
+use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::{Bcsdf, FurParamsInput};
 use render::scatter::One;
@@ -312,9 +312,13 @@ fn trace<B: Bcsdf + Sync>(
     } else {
         core::slice::from_ref(&args.method)
     };
-    let mut tables = Box::new(DualTables::ZERO);
+    // What an engine loads: the tables through the `.furdual` blob (f16).
+    let mut lut = Box::new(DualLut::EMPTY);
     if kinds.contains(&MethodArg::Dual) {
+        let mut tables = Box::new(DualTables::ZERO);
         tables.compute(bcsdf, Quadrature::DEFAULT);
+        lut.decode(&encode(&tables, Attenuation::Coat, 0))
+            .map_err(|e| Error::input(e.to_string()))?;
     }
     let mut out = Vec::new();
     for &kind in kinds {
@@ -322,12 +326,11 @@ fn trace<B: Bcsdf + Sync>(
             MethodArg::Path => Method::Path,
             MethodArg::Single => Method::Single,
             MethodArg::Dual => Method::Dual {
-                tables: &tables,
+                lut: &lut,
                 density: Density {
                     d_f: args.d_f,
                     d_b: args.d_b,
                 },
-                attenuation: Attenuation::Coat,
             },
         };
         let r = integrator::render_method(scene, &One(bcsdf), settings, &method)

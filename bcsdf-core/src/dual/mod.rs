@@ -7,20 +7,24 @@
 //!   azimuthal tables N^G of each family, all computed by [`DualTables::compute`] from any
 //!   [`crate::Bcsdf`] (every family, the residual included) by quadrature. Fixed-size arrays:
 //!   no allocation anywhere.
-//! - [`eval`]: the term to add, from the angles, the number of fibers between the shading
-//!   point and the light, and the density factors d_f, d_b ([`Density`]). No panic, no NaN.
+//! - [`DualLut`]: what an engine keeps, the quantities [`DualLut::eval`] reads at each θ node,
+//!   derived from the tables for one [`Attenuation`] and stored as f16 in a `.furdual` blob of
+//!   [`BLOB_LEN`] bytes ([`encode`], [`DualLut::decode`]; format in `blob.rs`).
+//! - [`DualLut::eval`]: the term to add, from the angles, the number of fibers between the
+//!   shading point and the light, and the density factors d_f, d_b ([`Density`]). No panic, no
+//!   NaN, no allocation.
 
+pub(crate) mod blob;
+mod eval;
 mod tables;
 #[cfg(test)]
 mod tests;
 
+pub use blob::{encode, DualError, DualLut, BLOB_LEN, DUAL_FORMAT_VERSION, DUAL_MAGIC, FIELDS};
 pub use tables::{Quadrature, MAX_PHI_STEPS};
 
-use crate::frame::Angles;
-use crate::gaussian::Gaussian;
 use crate::lobes::FAMILY_COUNT;
-use crate::math::{Libm, Math, PI};
-use crate::model::inv_cos2_theta_i;
+use crate::math::PI;
 use crate::spectrum::Rgb;
 
 /// Nodes of every table over θ ∈ [−π/2, π/2] (cell centres θ_k = −π/2 + (k + ½)·π/64).
@@ -39,79 +43,85 @@ pub const MIN_VARIANCE: f32 = 3.0e-6;
 /// point (docs/model.md §13).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Attenuation {
-    /// Zinke et al. 2008: T_f = ā_f^n, light reaches the point by forward scattering only.
+    /// Zinke et al. 2008: T_f = ā_f^n, light reaches the point by forward scattering only;
+    /// Zinke's two-term A_b in the back half.
     Forward,
-    /// A two-stream stack of n identical layers, each transmitting ā_f and reflecting ā_b
-    /// (light scattered back by one fiber and forward again by the one before it is kept),
-    /// one layer added at a time (the adding method): T_{k+1} = ā_f T_k/(1 − ā_b R_k),
-    /// R_{k+1} = ā_b + ā_f² R_k/(1 − ā_b R_k), T_0 = 1, R_0 = 0, with nothing beneath the
-    /// shading point; n is clamped to [`MAX_STACK`] here. The local backscatter's energy is
-    /// the same stack's, A_b = R_∞ − ā_b ([`semi_infinite_reflectance`] less the single
-    /// backscatter S already holds), in place of Zinke's two-term series, in the back half
-    /// only.
-    TwoStream,
-    /// The n fibers between the shading point and the light as [`Attenuation::TwoStream`]'s
-    /// stack, lying on the rest of the coat, taken as a semi-infinite stack of the same
-    /// layers (reflectance R_∞, [`semi_infinite_reflectance`]): light the coat below sends
-    /// back up and the n fibers above send down again reaches the shading point too. The
-    /// downward flux there is D_n = T_n/(1 − R_n R_∞) (the adding method with the coat below;
-    /// 1 at every depth for lossless fibers, where T_n alone falls as 1/(1 + n ā_b/ā_f)).
+    /// The n fibers between the shading point and the light as a stack of identical layers,
+    /// each transmitting ā_f and reflecting ā_b, lying on the rest of the coat, taken as a
+    /// semi-infinite stack of the same layers (reflectance R_∞,
+    /// [`semi_infinite_reflectance`]): light the coat below sends back up and the fibers above
+    /// send down again reaches the shading point too. The downward flux there is
+    /// D_n = T_n/(1 − R_n R_∞) = μⁿ ([`coat_decay`]; 1 at every depth for lossless fibers).
     /// The light the coat below sends up to the shading fiber is scattered into both halves
     /// ([`local_backscatter`]). The shipped attenuation.
     Coat,
 }
 
-/// Largest fiber count of the two-stream recursion ([`Attenuation::TwoStream`]).
-pub const MAX_STACK: u32 = 4096;
+impl Attenuation {
+    /// The number a `.furdual` blob stores for it.
+    #[must_use]
+    pub const fn code(self) -> u32 {
+        match self {
+            Attenuation::Forward => 1,
+            Attenuation::Coat => 2,
+        }
+    }
 
-/// The light that reaches a shading point behind `n` fibers (n ≥ 0, fractional n geometric
-/// between the neighbouring integers) of forward fraction `t` and backward fraction `r`, per
-/// [`Attenuation`]: the stack's transmittance T_n for [`Attenuation::Forward`] and
-/// [`Attenuation::TwoStream`], the downward flux D_n = T_n/(1 − R_n R_∞) for
-/// [`Attenuation::Coat`]. In [0, 1]; 1 for n ≤ 0 or NaN.
+    /// The attenuation of a stored number.
+    #[must_use]
+    pub const fn from_code(code: u32) -> Option<Attenuation> {
+        match code {
+            1 => Some(Attenuation::Forward),
+            2 => Some(Attenuation::Coat),
+            _ => None,
+        }
+    }
+}
+
+/// Per-fiber decay μ of the downward flux under a stack of layers transmitting `t` and
+/// reflecting `r` per [`Attenuation`]: D_n = μⁿ for every n ≥ 0 (fractional n included).
+///
+/// - [`Attenuation::Forward`]: μ = ā_f.
+/// - [`Attenuation::Coat`]: inside a semi-infinite stack the light is the decaying eigenmode
+///   of one layer's transfer matrix [[(t² − r²)/t, r/t], [−r/t, 1/t]] (determinant 1), so
+///   the downward flux at depth n is μⁿ with μ + 1/μ = 2c, c = (1 + t² − r²)/(2t):
+///   μ = 1/(c + √(c² − 1)) (the smaller root, in the form without cancellation). The same as
+///   T_n/(1 − R_n R_∞) of the adding method; μ = 1 for lossless layers, μ = t without
+///   reflection.
 #[must_use]
-pub fn transmittance(attenuation: Attenuation, t: f32, r: f32, n: f32) -> f32 {
+pub fn coat_decay(attenuation: Attenuation, t: f32, r: f32) -> f32 {
     let t = if t > 0.0 { t.min(1.0) } else { 0.0 };
     let r = if r > 0.0 { r.min(1.0 - t) } else { 0.0 };
-    if n.is_nan() || n <= 0.0 {
-        return 1.0;
-    }
     match attenuation {
-        Attenuation::Forward => libm::powf(t, n.min(MAX_FIBERS)),
-        Attenuation::TwoStream | Attenuation::Coat => {
-            let below = if attenuation == Attenuation::Coat {
-                semi_infinite_reflectance(t, r)
-            } else {
-                0.0
-            };
-            // The downward flux under a stack of transmittance tk and reflectance rk lying on
-            // a stack of reflectance `below`.
-            let down = |tk: f32, rk: f32| tk / (1.0 - rk * below).max(1e-6);
-            let n = n.min(MAX_STACK as f32);
-            let whole = n as u32; // n ≥ 0, ≤ MAX_STACK
-            let frac = n - whole as f32;
-            let (mut tk, mut rk) = (1.0f32, 0.0f32);
-            for _ in 0..whole {
-                if tk < 1e-12 {
-                    return 0.0;
-                }
-                let denom = 1.0 - rk * r;
-                let (t1, r1) = (tk * t / denom, r + t * t * rk / denom);
-                tk = t1;
-                rk = r1.min(1.0);
+        Attenuation::Forward => t,
+        Attenuation::Coat => {
+            if t <= 0.0 {
+                return 0.0;
             }
-            let mut flux = down(tk, rk);
-            if frac > 0.0 {
-                let denom = 1.0 - rk * r;
-                let next = down(tk * t / denom, (r + t * t * rk / denom).min(1.0));
-                flux *= libm::powf(next / flux.max(1e-30), frac);
-            }
-            if flux.is_finite() {
-                flux.clamp(0.0, 1.0)
+            let c = ((1.0 + t * t - r * r) / (2.0 * t)).max(1.0);
+            let mu = 1.0 / (c + libm::sqrtf((c * c - 1.0).max(0.0)));
+            if mu.is_finite() {
+                mu.clamp(0.0, 1.0)
             } else {
                 0.0
             }
         }
+    }
+}
+
+/// The light that reaches a shading point behind `n` fibers (n ≥ 0) of forward fraction `t`
+/// and backward fraction `r`, per [`Attenuation`]: μⁿ ([`coat_decay`]). In [0, 1]; 1 for
+/// n ≤ 0 or NaN, n above [`MAX_FIBERS`] is [`MAX_FIBERS`].
+#[must_use]
+pub fn transmittance(attenuation: Attenuation, t: f32, r: f32, n: f32) -> f32 {
+    if n.is_nan() || n <= 0.0 {
+        return 1.0;
+    }
+    let v = libm::powf(coat_decay(attenuation, t, r), n.min(MAX_FIBERS));
+    if v.is_finite() {
+        v.clamp(0.0, 1.0)
+    } else {
+        0.0
     }
 }
 
@@ -229,16 +239,12 @@ const PI_STEPS: f32 = (PHI_NODES - 1) as f32;
 
 /// Linear interpolation position (lower node, weight of the upper) of θ on the θ axis,
 /// clamped to the end nodes.
-fn theta_position(theta: f32) -> (usize, f32) {
+pub(super) fn theta_position(theta: f32) -> (usize, f32) {
     let t = (theta + 0.5 * PI) * (THETA_NODES as f32 / PI) - 0.5;
     let t = if t > 0.0 { t } else { 0.0 }; // NaN → 0
     let t = t.min((THETA_NODES - 1) as f32);
     let k = (t as usize).min(THETA_NODES - 2);
     (k, t - k as f32)
-}
-
-fn lerp(a: Rgb, b: Rgb, w: f32) -> Rgb {
-    a * (1.0 - w) + b * w
 }
 
 impl DualTables {
@@ -261,51 +267,6 @@ impl DualTables {
         }; FAMILY_COUNT]; THETA_NODES],
         n_g: [[[Rgb::ZERO; PHI_NODES]; THETA_NODES]; FAMILY_COUNT],
     };
-
-    /// [`FiberAverages`] at θ, linear between nodes, clamped at the ends (NaN reads node 0).
-    #[must_use]
-    pub fn fiber_at(&self, theta: f32) -> FiberAverages {
-        let (k, w) = theta_position(theta);
-        let (a, b) = (&self.fiber[k], &self.fiber[k + 1]);
-        FiberAverages {
-            a_f: lerp(a.a_f, b.a_f, w),
-            a_b: lerp(a.a_b, b.a_b, w),
-            alpha_f: lerp(a.alpha_f, b.alpha_f, w),
-            alpha_b: lerp(a.alpha_b, b.alpha_b, w),
-            beta2_f: lerp(a.beta2_f, b.beta2_f, w),
-            beta2_b: lerp(a.beta2_b, b.beta2_b, w),
-            big_a_b: lerp(a.big_a_b, b.big_a_b, w),
-            delta_b: lerp(a.delta_b, b.delta_b, w),
-            sigma_b0: lerp(a.sigma_b0, b.sigma_b0, w),
-        }
-    }
-
-    /// Family `g`'s moments at θ_r (linear, clamped).
-    #[must_use]
-    pub fn moments_at(&self, g: usize, theta_r: f32) -> FamilyMoments {
-        let (k, w) = theta_position(theta_r);
-        let (a, b) = (&self.moments[k][g], &self.moments[k + 1][g]);
-        FamilyMoments {
-            mean: lerp(a.mean, b.mean, w),
-            variance: lerp(a.variance, b.variance, w),
-        }
-    }
-
-    /// N^G of family `g` at (θ_r, |φ|), bilinear, clamped (φ folded into [0, π]).
-    #[must_use]
-    pub fn n_g_at(&self, g: usize, theta_r: f32, phi: f32) -> Rgb {
-        let (k, w) = theta_position(theta_r);
-        let p = crate::math::wrap_angle(phi).abs() * (PI_STEPS / PI);
-        let p = if p > 0.0 { p.min(PI_STEPS) } else { 0.0 };
-        let j = (p as usize).min(PHI_NODES - 2);
-        let v = p - j as f32;
-        let t = &self.n_g[g];
-        lerp(
-            lerp(t[k][j], t[k][j + 1], v),
-            lerp(t[k + 1][j], t[k + 1][j + 1], v),
-            w,
-        )
-    }
 }
 
 /// Zinke's local backscatter from the fiber averages (docs/model.md §13): A_b, Δ_b and the
@@ -343,7 +304,6 @@ pub fn backscatter(a_f: f32, a_b: f32, alpha_f: f32, alpha_b: f32, b2f: f32, b2b
 /// light reaching the fiber from the light's side:
 ///
 /// - [`Attenuation::Forward`]: Zinke's A_b (`zinke_a_b`, [`backscatter`]), back half only;
-/// - [`Attenuation::TwoStream`]: A_b = R_∞ − ā_b, back half only;
 /// - [`Attenuation::Coat`]: the light the coat below sends up to the fiber,
 ///   U = R_∞ ā_f/(1 − ā_b R_∞) (through the fiber, reflected by the coat below, with the
 ///   inter-reflections between the two), scattered by the fiber: forward through it,
@@ -360,7 +320,6 @@ pub fn local_backscatter(
     let r_inf = semi_infinite_reflectance(t, r);
     let (back, front) = match attenuation {
         Attenuation::Forward => (zinke_a_b, 0.0),
-        Attenuation::TwoStream => (r_inf - r, 0.0),
         Attenuation::Coat => {
             let up = r_inf * t / (1.0 - r * r_inf).max(1e-6);
             (t * up, r * up)
@@ -368,86 +327,4 @@ pub fn local_backscatter(
     };
     let clean = |v: f32| if v.is_finite() && v > 0.0 { v } else { 0.0 };
     (clean(back), clean(front))
-}
-
-/// G(x; √variance), with the variance kept at or above [`MIN_VARIANCE`].
-fn gauss(x: f32, variance: f32) -> f32 {
-    let v = if variance > MIN_VARIANCE {
-        variance
-    } else {
-        MIN_VARIANCE
-    };
-    Gaussian::new(libm::sqrtf(v)).eval::<Libm>(x)
-}
-
-/// The dual-scattering term to add to single scattering (docs/model.md §13), RGB, in S's
-/// units (the caller multiplies by cos θ_i and the light's radiance like S).
-///
-/// `fibers` is the number of fibers between the shading point and the light (the shadow
-/// ray's count, or an engine's deep-opacity-map count; fractional values are allowed). With
-/// V = clamp(1 − fibers, 0, 1) the fraction of direct light (what a shadow ray gives), the
-/// shading is S·V + this term, which is
-///
-/// V·d_b·f_back(σ_f² = 0) + (T_f − V)·d_f·(f_s^scatter + d_b·f_back)(σ_f²),
-/// T_f = [`transmittance`] of n fibers of ā_f(−θ_i), ā_b(−θ_i) (ā_f^n for
-/// [`Attenuation::Forward`]), σ_f² = n·β_f²(−θ_i), f_back(s²) = A·G(x − Δ_b; σ_b² + s²)/(π
-/// cos²θ_i) with A the back-half or front-half energy of [`local_backscatter`] at θ_r.
-///
-/// Contract: `fibers` NaN or below 0 is 0 (unoccluded), above [`MAX_FIBERS`] (or +∞) is
-/// [`MAX_FIBERS`]; the density factors as in [`Density`]. The result is finite and ≥ 0 for
-/// every input; nothing panics or allocates.
-#[must_use]
-pub fn eval(
-    tables: &DualTables,
-    angles: &Angles,
-    fibers: f32,
-    density: Density,
-    attenuation: Attenuation,
-) -> Rgb {
-    let n = if fibers > 0.0 {
-        fibers.min(MAX_FIBERS)
-    } else {
-        0.0
-    };
-    let (d_f, d_b) = density.sanitized();
-    let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
-    let x = ti + tr;
-    let inv_cos2 = inv_cos2_theta_i(Libm::cos(ti));
-    let direct = (1.0 - n).clamp(0.0, 1.0);
-    // The light's path: forward scattering out of fibers toward the shading point leaves at
-    // θ ≈ −θ_i, the fixed direction of the tables' energy balance.
-    let along = tables.fiber_at(-ti);
-    let here = tables.fiber_at(tr);
-    let back_half = crate::math::wrap_angle(phi).abs() < 0.5 * PI;
-    let mut out = [0.0f32; 3];
-    for (c, slot) in out.iter_mut().enumerate() {
-        let t_f = transmittance(attenuation, along.a_f[c], along.a_b[c], n);
-        let sigma2_f = n * along.beta2_f[c].max(0.0);
-        let af_here = here.a_f[c].clamp(0.0, 1.0);
-        let sigma_b = (1.0 + d_b * af_here * af_here) * here.sigma_b0[c];
-        // The local backscatter: its energy toward the back half (|φ| < π/2) and the front
-        // half, and its longitudinal Gaussian.
-        let (back, front) =
-            local_backscatter(attenuation, here.big_a_b[c], here.a_f[c], here.a_b[c]);
-        let half = if back_half { back } else { front };
-        let f_back =
-            |s2f: f32| half * gauss(x - here.delta_b[c], sigma_b * sigma_b + s2f) * inv_cos2 / PI;
-        let mut value = direct * d_b * f_back(0.0);
-        let spread = (t_f - direct).max(0.0);
-        if spread > 0.0 {
-            let mut f_s = 0.0;
-            for g in 0..FAMILY_COUNT {
-                let m = tables.moments_at(g, tr);
-                let ng = tables.n_g_at(g, tr, phi)[c].max(0.0);
-                f_s += gauss(x - m.mean[c], m.variance[c].max(0.0) + sigma2_f) * ng;
-            }
-            value += spread * d_f * (f_s * inv_cos2 + d_b * f_back(sigma2_f));
-        }
-        *slot = if value.is_finite() && value > 0.0 {
-            value
-        } else {
-            0.0
-        };
-    }
-    Rgb(out)
 }

@@ -1,7 +1,9 @@
 extern crate std;
 use super::*;
 use crate::bcsdf::{Bcsdf, SampledDirection};
+use crate::frame::Angles;
 use crate::lobes::{Families, LobeFamily};
+use crate::math::Libm;
 use crate::params::{Closure, FurParams, FurParamsInput};
 use crate::pigment::Pigment;
 use crate::presets;
@@ -32,6 +34,18 @@ fn tables_of(b: &impl Bcsdf, q: Quadrature) -> Box<DualTables> {
     let mut t = Box::new(DualTables::ZERO);
     t.compute(b, q);
     t
+}
+
+/// The evaluator an engine gets for `tables`: encoded to a blob and decoded.
+fn lut_of(tables: &DualTables, attenuation: Attenuation) -> Box<DualLut> {
+    let mut lut = Box::new(DualLut::EMPTY);
+    lut.decode(&encode(tables, attenuation, 7)).unwrap();
+    lut
+}
+
+/// `lut_of(t, att).eval(a, n, d)`.
+fn eval(t: &DualTables, a: &Angles, n: f32, d: Density, att: Attenuation) -> Rgb {
+    lut_of(t, att).eval(a, n, d)
 }
 
 #[test]
@@ -207,10 +221,10 @@ fn occluded_light_fades_with_the_fiber_count() {
     for c in 0..3 {
         assert!((2.0 * x[c] - y[c]).abs() <= 1e-6 * y[c]);
     }
-    // With backscatter kept (two-stream) more light gets through than forward alone.
-    let ts = eval(&t, &a, 4.0, d, Attenuation::TwoStream);
+    // With the coat's backscatter kept more light gets through than forward alone.
+    let coat = eval(&t, &a, 4.0, d, Attenuation::Coat);
     for c in 0..3 {
-        assert!(ts[c] > v[c], "{ts:?} vs {v:?}");
+        assert!(coat[c] > v[c], "{coat:?} vs {v:?}");
     }
     // Many fibers: nothing gets through.
     assert_eq!(eval(&t, &a, 1e5, d, Attenuation::Forward), Rgb::ZERO);
@@ -234,14 +248,14 @@ fn the_term_is_even_in_phi() {
             &Angles::new(ti, tr, phi).unwrap(),
             n,
             d,
-            Attenuation::TwoStream,
+            Attenuation::Coat,
         );
         let m = eval(
             &t,
             &Angles::new(ti, tr, -phi).unwrap(),
             n,
             d,
-            Attenuation::TwoStream,
+            Attenuation::Coat,
         );
         assert_eq!(p, m);
     }
@@ -279,16 +293,17 @@ fn degenerate_input_stays_finite() {
     ];
     let dens = [0.0, 0.7, f32::NAN, f32::INFINITY, -1.0, 1e30];
     for t in &tables {
+        let luts = [
+            lut_of(t, Attenuation::Forward),
+            lut_of(t, Attenuation::Coat),
+            Box::new(DualLut::EMPTY),
+        ];
         for a in &angles {
             for &n in &counts {
                 for &d_f in &dens {
                     for &d_b in &dens {
-                        for att in [
-                            Attenuation::Forward,
-                            Attenuation::TwoStream,
-                            Attenuation::Coat,
-                        ] {
-                            let v = eval(t, a, n, Density { d_f, d_b }, att);
+                        for lut in &luts {
+                            let v = lut.eval(a, n, Density { d_f, d_b });
                             assert!(v.0.iter().all(|x| x.is_finite() && *x >= 0.0), "{v:?}");
                         }
                     }
@@ -296,11 +311,9 @@ fn degenerate_input_stays_finite() {
             }
         }
     }
-    // Lookups at NaN or out-of-range θ read the end nodes.
-    let t = &tables[0];
-    assert_eq!(t.fiber_at(f32::NAN), t.fiber[0]);
-    assert_eq!(t.fiber_at(9.0), t.fiber[THETA_NODES - 1]);
-    assert!(t.n_g_at(0, f32::NAN, f32::NAN).is_finite());
+    // Positions at NaN or out-of-range θ are the end nodes.
+    assert_eq!(theta_position(f32::NAN), (0, 0.0));
+    assert_eq!(theta_position(9.0), (THETA_NODES - 2, 1.0));
 }
 
 #[test]
@@ -334,53 +347,76 @@ fn the_local_backscatter_is_zinkes_series() {
         .all(|v| v.is_finite()));
 }
 
+/// The adding method, one layer at a time (T_{k+1} = t T_k/(1 − r R_k),
+/// R_{k+1} = r + t² R_k/(1 − r R_k)), in f64: the stack's (T_n, R_n).
+fn adding(t: f64, r: f64, n: u32) -> (f64, f64) {
+    let (mut tk, mut rk) = (1.0f64, 0.0f64);
+    for _ in 0..n {
+        let d = 1.0 - rk * r;
+        (tk, rk) = (tk * t / d, r + t * t * rk / d);
+    }
+    (tk, rk)
+}
+
 #[test]
-fn the_two_stream_stack_has_the_classic_closed_forms() {
-    // Lossless layers (t + r = 1): T_n = 1/(1 + n·r/t).
-    for (t, r) in [(0.54f32, 0.46f32), (0.9, 0.1), (0.3, 0.7)] {
-        for n in [1u32, 2, 5, 17, 100] {
-            let got = transmittance(Attenuation::TwoStream, t, r, n as f32);
-            let want = 1.0 / (1.0 + n as f32 * r / t);
+fn the_coat_decay_is_the_adding_method_on_a_semi_infinite_stack() {
+    for (t, r) in [
+        (0.537f32, 0.40f32),
+        (0.30, 0.28),
+        (0.8, 0.1),
+        (0.2, 0.05),
+        (0.9, 0.0999),
+    ] {
+        let (t64, r64) = (f64::from(t), f64::from(r));
+        let (_, r_inf) = adding(t64, r64, 100_000);
+        for n in [1u32, 2, 5, 17] {
+            // D_n = T_n/(1 − R_n R_∞), the adding method with the coat below.
+            let (tn, rn) = adding(t64, r64, n);
+            let want = tn / (1.0 - rn * r_inf);
+            let got = f64::from(transmittance(Attenuation::Coat, t, r, n as f32));
             assert!(
-                (got - want).abs() < 1e-4 * want,
-                "t {t} n {n}: {got} vs {want}"
+                (got - want).abs() < 2e-5 + 1e-4 * want,
+                "t {t} r {r} n {n}: {got} vs {want}"
             );
         }
+        // Fractional n: geometric between the integers (D_n is geometric).
+        let (a, b) = (
+            transmittance(Attenuation::Coat, t, r, 2.0),
+            transmittance(Attenuation::Coat, t, r, 3.0),
+        );
+        let mid = transmittance(Attenuation::Coat, t, r, 2.5);
+        assert!(
+            (mid - (a * b).sqrt()).abs() < 1e-5,
+            "{mid} vs {}",
+            (a * b).sqrt()
+        );
+        // The semi-infinite stack's reflectance is the limit of the recursion's R_n.
+        let closed = semi_infinite_reflectance(t, r);
+        assert!(
+            (f64::from(closed) - r_inf).abs() < 1e-4,
+            "t {t} r {r}: {closed} vs {r_inf}"
+        );
     }
-    // No backscatter: the forward product ā_f^n.
+    // Lossless layers: D_n = 1 at every depth; no reflection: t^n; Forward: ā_f^n.
+    for (t, r) in [(0.54f32, 0.46f32), (0.9, 0.1), (0.3, 0.7)] {
+        assert_eq!(coat_decay(Attenuation::Coat, t, r), 1.0, "t {t}");
+    }
     for n in [1.0f32, 3.0, 7.0] {
-        let a = transmittance(Attenuation::TwoStream, 0.6, 0.0, n);
+        let a = transmittance(Attenuation::Coat, 0.6, 0.0, n);
         assert!((a - 0.6f32.powf(n)).abs() < 1e-6, "{a}");
         assert_eq!(
             transmittance(Attenuation::Forward, 0.6, 0.3, n),
             0.6f32.powf(n)
         );
     }
-    // Monotone in n, 1 at n = 0, between the integers.
-    let mut last = 1.0;
-    for k in 1..40 {
-        let v = transmittance(Attenuation::TwoStream, 0.5, 0.3, k as f32 * 0.25);
-        assert!(v < last && v > 0.0, "{k}: {v} !< {last}");
-        last = v;
-    }
     for n in [0.0, -1.0, f32::NAN] {
-        assert_eq!(transmittance(Attenuation::TwoStream, 0.5, 0.3, n), 1.0);
+        assert_eq!(transmittance(Attenuation::Coat, 0.5, 0.3, n), 1.0);
     }
-    assert!(transmittance(Attenuation::TwoStream, 1.0, 0.0, f32::INFINITY) <= 1.0);
-    // The semi-infinite stack's reflectance is the limit of the recursion's R_n.
-    for (t, r) in [(0.54f32, 0.46f32), (0.5, 0.3), (0.2, 0.1), (0.9, 0.05)] {
-        let (mut tk, mut rk) = (1.0f32, 0.0f32);
-        for _ in 0..200_000 {
-            let d = 1.0 - rk * r;
-            (tk, rk) = (tk * t / d, r + t * t * rk / d);
-        }
-        let closed = semi_infinite_reflectance(t, r);
-        let tol = if t + r > 0.999 { 2e-3 } else { 1e-5 };
-        assert!(
-            (closed - rk).abs() < tol,
-            "t {t} r {r}: {closed} vs {rk} ({tk})"
-        );
+    for bad in [f32::NAN, -1.0, f32::INFINITY, 0.0] {
+        let mu = coat_decay(Attenuation::Coat, bad, 0.3);
+        assert!((0.0..=1.0).contains(&mu), "{bad}: {mu}");
     }
+    assert!(transmittance(Attenuation::Coat, 1.0, 0.0, f32::INFINITY) <= 1.0);
     assert_eq!(semi_infinite_reflectance(0.5, 0.0), 0.0);
 }
 
@@ -457,25 +493,26 @@ fn the_coat_fluxes_match_a_random_walk_through_the_layers() {
         for n in [1.0f32, 2.0, 7.5, 40.0] {
             let d = transmittance(Attenuation::Coat, t, r, n);
             assert!((d - 1.0).abs() < 4e-3, "t {t} n {n}: {d}");
-            assert!(d > transmittance(Attenuation::TwoStream, t, r, n));
+            let (tn, _) = adding(f64::from(t), f64::from(r), n as u32);
+            assert!(
+                f64::from(d) > tn,
+                "the finite stack alone lets less through"
+            );
         }
         let (back, front) = local_backscatter(Attenuation::Coat, 0.0, t, r);
         assert!((back + front - 1.0).abs() < 2e-3, "{back} + {front}");
     }
-    // No backscatter: the coat below returns nothing; Coat is TwoStream is the product.
-    for n in [1.0f32, 3.0] {
-        assert_eq!(
-            transmittance(Attenuation::Coat, 0.6, 0.0, n),
-            transmittance(Attenuation::TwoStream, 0.6, 0.0, n)
-        );
-    }
     for n in [0.0, -1.0, f32::NAN] {
         assert_eq!(transmittance(Attenuation::Coat, 0.5, 0.3, n), 1.0);
     }
-    // Two-stream's back-half energy is Coat's (R_∞ − ā_b = ā_f U); Zinke's is its own.
-    let (b_ts, f_ts) = local_backscatter(Attenuation::TwoStream, 0.7, 0.5, 0.3);
+    // Coat's back-half energy is R_∞ − ā_b (= ā_f U); Zinke's is its own.
     let (b_c, _) = local_backscatter(Attenuation::Coat, 0.7, 0.5, 0.3);
-    assert!((b_ts - b_c).abs() < 1e-6 && f_ts == 0.0, "{b_ts} {b_c}");
+    let r_inf = semi_infinite_reflectance(0.5, 0.3);
+    assert!(
+        (b_c - (r_inf - 0.3)).abs() < 1e-6,
+        "{b_c} vs {}",
+        r_inf - 0.3
+    );
     assert_eq!(
         local_backscatter(Attenuation::Forward, 0.7, 0.5, 0.3),
         (0.7, 0.0)
@@ -483,5 +520,141 @@ fn the_coat_fluxes_match_a_random_walk_through_the_layers() {
     for bad in [f32::NAN, -1.0, f32::INFINITY] {
         let (b, f) = local_backscatter(Attenuation::Coat, bad, bad, bad);
         assert!(b.is_finite() && f.is_finite() && b >= 0.0 && f >= 0.0);
+    }
+}
+
+#[test]
+fn the_blob_round_trips_to_half_precision() {
+    let t = absorbing_tables();
+    let blob = encode(&t, Attenuation::Coat, 0xfeed);
+    assert_eq!(blob.len(), BLOB_LEN);
+    let mut lut = Box::new(DualLut::EMPTY);
+    lut.decode(&blob).unwrap();
+    assert_eq!(
+        (lut.attenuation(), lut.source()),
+        (Attenuation::Coat, 0xfeed)
+    );
+    // Encoding what was decoded gives the same bytes (f16 values are exact in f32).
+    for k in [0usize, 17, 63] {
+        let f = &t.fiber[k];
+        for c in 0..3 {
+            let mu = coat_decay(Attenuation::Coat, f.a_f[c], f.a_b[c]);
+            let got = libm::exp2f(lut.nodes[k][blob::LOG2_DECAY][c]);
+            assert!((got - mu).abs() < 1e-3 * mu, "μ {got} vs {mu}");
+            let (back, front) =
+                local_backscatter(Attenuation::Coat, f.big_a_b[c], f.a_f[c], f.a_b[c]);
+            assert!((lut.nodes[k][blob::BACK][c] - back).abs() <= 5e-4 * back);
+            assert!((lut.nodes[k][blob::FRONT][c] - front).abs() <= 5e-4 * front);
+            assert_eq!(lut.nodes[k][blob::BACK][3], 0.0);
+        }
+        let ng = t.n_g[0][k][5][1];
+        assert!((lut.n_g[0][k][5][1] - ng).abs() <= 5e-4 * ng);
+    }
+    // Forward stores μ = ā_f.
+    let fwd = lut_of(&t, Attenuation::Forward);
+    assert!((libm::exp2f(fwd.nodes[3][blob::LOG2_DECAY][0]) - 0.6).abs() < 1e-3);
+}
+
+#[test]
+fn a_damaged_blob_is_refused_and_leaves_the_evaluator_alone() {
+    let good = encode(&absorbing_tables(), Attenuation::Coat, 1);
+    let mut lut = Box::new(DualLut::EMPTY);
+    lut.decode(&good).unwrap();
+    let before = lut.clone();
+    let reseal = |b: &mut [u8]| {
+        let sum = blob::checksum_of(b);
+        b[56..64].copy_from_slice(&sum.to_le_bytes());
+    };
+    let mut cases: std::vec::Vec<(std::vec::Vec<u8>, DualError)> = std::vec::Vec::new();
+    cases.push((good[..100].to_vec(), DualError::Length(100)));
+    let mut b = good.to_vec();
+    b.push(0);
+    cases.push((b, DualError::Length(BLOB_LEN + 1)));
+    let mut b = good.to_vec();
+    b[0] = b'X';
+    cases.push((b, DualError::Magic));
+    let mut b = good.to_vec();
+    b[8] = 9;
+    cases.push((b, DualError::FormatVersion(9)));
+    let mut b = good.to_vec();
+    b[12] = 99;
+    cases.push((b, DualError::ModelVersion(99)));
+    let mut b = good.to_vec();
+    b[16] = 65;
+    cases.push((b, DualError::Layout));
+    let mut b = good.to_vec();
+    b[50] = 1;
+    cases.push((b, DualError::Layout));
+    let mut b = good.to_vec();
+    b[32] = 3;
+    cases.push((b, DualError::Attenuation(3)));
+    let mut b = good.to_vec();
+    b[1000] ^= 1;
+    cases.push((b, DualError::Checksum));
+    // Sealed but hostile values: a NaN, an infinity, a negative width, ā_f² above 1, a
+    // positive log₂ μ, a negative N^G.
+    let field = |k: usize, f: usize, c: usize| (k * FIELDS + f) * 3 + c;
+    let ng0 = THETA_NODES * FIELDS * 3;
+    for (i, bits) in [
+        (field(4, blob::MEAN, 1), 0x7e00u16),
+        (field(4, blob::DELTA_B, 0), 0x7c00),
+        (field(9, blob::SD + 2, 2), 0xbc00),
+        (field(9, blob::A_F2, 0), 0x3c01),
+        (field(0, blob::LOG2_DECAY, 0), 0x3c00),
+        (ng0 + 77, 0x8001),
+    ] {
+        let mut b = good.to_vec();
+        b[64 + 2 * i..66 + 2 * i].copy_from_slice(&bits.to_le_bytes());
+        reseal(&mut b);
+        cases.push((b, DualError::Value(i)));
+    }
+    for (bytes, want) in cases {
+        assert_eq!(lut.decode(&bytes), Err(want));
+        assert_eq!(lut, before, "{want:?} changed the evaluator");
+        assert!(!std::format!("{want}").is_empty());
+    }
+}
+
+#[test]
+fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
+    // The term recomputed from the decoded node values with f64 Gaussians (independent of
+    // the lane code): back half, n = 2.5, default density.
+    let t = absorbing_tables();
+    let lut = lut_of(&t, Attenuation::Coat);
+    let (ti, tr, phi, n) = (0.31f32, -0.22f32, 0.7f32, 2.5f32);
+    let got = lut.eval(&Angles::new(ti, tr, phi).unwrap(), n, Density::DEFAULT);
+    let g = |d: f64, v: f64| (-d * d / (2.0 * v)).exp() / (2.0 * std::f64::consts::PI * v).sqrt();
+    let lerp_at = |theta: f32, f: usize, c: usize| {
+        let (k, w) = theta_position(theta);
+        f64::from(lut.nodes[k][f][c]) * f64::from(1.0 - w)
+            + f64::from(lut.nodes[k + 1][f][c]) * f64::from(w)
+    };
+    for c in 0..3 {
+        let x = f64::from(ti + tr);
+        let inv = 1.0 / f64::from(ti).cos().powi(2);
+        let mu = lerp_at(-ti, blob::LOG2_DECAY, c).exp2();
+        let s2 = f64::from(n) * lerp_at(-ti, blob::BETA_F, c).powi(2);
+        let sb = (1.0 + lerp_at(tr, blob::A_F2, c)) * lerp_at(tr, blob::SIGMA_B0, c);
+        let back = lerp_at(tr, blob::BACK, c);
+        let db = x - lerp_at(tr, blob::DELTA_B, c);
+        let mut fs = 0.0;
+        for fam in 0..FAMILY_COUNT {
+            let (k, w) = theta_position(tr);
+            let p = f64::from(phi) * (PHI_NODES - 1) as f64 / std::f64::consts::PI;
+            let (j, v) = (p as usize, p - p.floor());
+            let tab = &lut.n_g[fam];
+            let at = |kk: usize, jj: usize| f64::from(tab[kk][jj][c]);
+            let ng = (at(k, j) * (1.0 - v) + at(k, j + 1) * v) * f64::from(1.0 - w)
+                + (at(k + 1, j) * (1.0 - v) + at(k + 1, j + 1) * v) * f64::from(w);
+            let m = lerp_at(tr, blob::MEAN + fam, c);
+            let sd = lerp_at(tr, blob::SD + fam, c);
+            fs += ng * g(x - m, (sd * sd + s2).max(f64::from(MIN_VARIANCE)));
+        }
+        let want = mu.powf(f64::from(n))
+            * (fs * inv
+                + back * g(db, (sb * sb + s2).max(f64::from(MIN_VARIANCE))) * inv
+                    / std::f64::consts::PI);
+        let err = (f64::from(got[c]) - want).abs() / want;
+        assert!(err < 1e-4, "channel {c}: {} vs {want} ({err:e})", got[c]);
     }
 }

@@ -32,6 +32,21 @@ fn exp_neg_polynomial_is_within_one_ulp() {
     assert_eq!(exp_neg_polynomial(-1.0), libm::expf(1.0));
 }
 
+#[test]
+fn exp_neg_saturating_is_the_polynomial_on_its_range_and_safe_outside() {
+    let (lo, hi) = (0.0f32.to_bits(), 87.0f32.to_bits());
+    for bits in (lo..=hi).step_by(4099).chain([hi]) {
+        let x = f32::from_bits(bits);
+        assert_eq!(exp_neg_saturating(x), exp_neg_polynomial(x), "x = {x}");
+    }
+    assert_eq!(exp_neg_saturating(87.001), 0.0);
+    assert_eq!(exp_neg_saturating(f32::INFINITY), 0.0);
+    assert_eq!(exp_neg_saturating(f32::MAX), 0.0);
+    assert_eq!(exp_neg_saturating(-5.0), 1.0);
+    assert_eq!(exp_neg_saturating(f32::NEG_INFINITY), 1.0);
+    assert_eq!(exp_neg_saturating(f32::NAN), 1.0);
+}
+
 /// Every `n`-th f32 in [lo, hi].
 fn grid(lo: f32, hi: f32, n: usize) -> impl Iterator<Item = f32> {
     (0..=n).map(move |k| lo + (hi - lo) * (k as f32 / n as f32))

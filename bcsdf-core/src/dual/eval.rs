@@ -1,0 +1,162 @@
+//! [`DualLut::eval`]: the dual-scattering term from the stored node quantities
+//! (docs/model.md §13), channels in the lanes of `[f32; 4]` rows so that the per-channel work
+//! (lerps, the six Gaussians) runs as straight-line lane loops.
+
+use super::blob::{A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, SD, SIGMA_B0};
+use super::{theta_position, Density, DualLut, MAX_FIBERS, MIN_VARIANCE, PHI_NODES};
+use crate::frame::{Angles, Vec3};
+use crate::lobes::FAMILY_COUNT;
+use crate::math::{exp_neg_saturating, wrap_angle, Libm, Math, PI, TAU};
+use crate::model::inv_cos2_theta_i;
+use crate::spectrum::Rgb;
+
+type Lanes = [f32; 4];
+
+#[inline(always)]
+fn lerp(a: &Lanes, b: &Lanes, w: f32) -> Lanes {
+    core::array::from_fn(|c| a[c] + (b[c] - a[c]) * w)
+}
+
+/// The normalised Gaussian G(d; √v) = e^(−d²/2v)/√(2πv) per lane, v kept at or above
+/// [`MIN_VARIANCE`].
+#[inline(always)]
+fn gauss(d: &Lanes, v: &Lanes) -> Lanes {
+    core::array::from_fn(|c| {
+        let v = v[c].max(MIN_VARIANCE);
+        exp_neg_saturating(d[c] * d[c] / (2.0 * v)) / libm::sqrtf(TAU * v)
+    })
+}
+
+impl DualLut {
+    /// Field `f` at θ (linear between nodes, clamped to the end nodes; NaN reads node 0).
+    #[inline(always)]
+    fn field(&self, (k, w): (usize, f32), f: usize) -> Lanes {
+        lerp(&self.nodes[k][f], &self.nodes[k + 1][f], w)
+    }
+
+    /// N^G of family `g` at the θ position and |φ| position (bilinear).
+    #[inline(always)]
+    fn n_g(&self, g: usize, (k, w): (usize, f32), (j, v): (usize, f32)) -> Lanes {
+        let t = &self.n_g[g];
+        let lo = lerp(&t[k][j], &t[k][j + 1], v);
+        let hi = lerp(&t[k + 1][j], &t[k + 1][j + 1], v);
+        lerp(&lo, &hi, w)
+    }
+
+    /// The dual-scattering term to add to single scattering (docs/model.md §13), RGB, in S's
+    /// units (the caller multiplies by cos θ_i and the light's radiance like S).
+    ///
+    /// `fibers` is the number of fibers between the shading point and the light (the shadow
+    /// ray's count, or an engine's deep-opacity-map count; fractional values are allowed).
+    /// With V = clamp(1 − fibers, 0, 1) the fraction of direct light (what a shadow ray
+    /// gives), the shading is S·V + this term, which is
+    ///
+    /// V·d_b·f_back(0) + (T_f − V)·d_f·(f_s^scatter(σ_f²) + d_b·f_back(σ_f²)),
+    ///
+    /// - T_f = μⁿ, μ the stored decay at −θ_i (the light's path leaves the fibers above at
+    ///   θ ≈ −θ_i), σ_f² = n·β_f²(−θ_i);
+    /// - f_s^scatter(s²) = Σ_g N^G_g(θ_r, φ)·G(x − mean_g; sd_g² + s²)/cos²θ_i, x = θ_i + θ_r;
+    /// - f_back(s²) = A·G(x − Δ_b; σ_b² + s²)/(π cos²θ_i), σ_b = (1 + d_b ā_f²)·σ_b0, A the
+    ///   stored back-half or front-half energy of the local backscatter at θ_r.
+    ///
+    /// Contract: `fibers` NaN or below 0 is 0 (unoccluded), above [`MAX_FIBERS`] (or +∞) is
+    /// [`MAX_FIBERS`]; the density factors as in [`Density`]. The result is finite and ≥ 0 for
+    /// every input; nothing panics or allocates.
+    #[must_use]
+    pub fn eval(&self, angles: &Angles, fibers: f32, density: Density) -> Rgb {
+        let n = if fibers > 0.0 {
+            fibers.min(MAX_FIBERS)
+        } else {
+            0.0
+        };
+        let (d_f, d_b) = density.sanitized();
+        let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
+        let x = ti + tr;
+        let inv_cos2 = inv_cos2_theta_i(Libm::cos(ti));
+        let direct = (1.0 - n).clamp(0.0, 1.0);
+        let here = theta_position(tr);
+        let back_half = wrap_angle(phi).abs() < 0.5 * PI;
+        let half = self.field(here, if back_half { BACK } else { FRONT });
+        let a_f2 = self.field(here, A_F2);
+        let sigma_b0 = self.field(here, SIGMA_B0);
+        let delta = self.field(here, DELTA_B);
+        let d_back: Lanes = core::array::from_fn(|c| x - delta[c]);
+        let v_back: Lanes = core::array::from_fn(|c| {
+            let s = (1.0 + d_b * a_f2[c]) * sigma_b0[c];
+            s * s
+        });
+        // f_back without its variance increase, times π cos²θ_i.
+        let back_scale = d_b * inv_cos2 / PI;
+        let mut out = [0.0f32; 4];
+        if direct > 0.0 {
+            let g = gauss(&d_back, &v_back);
+            for c in 0..4 {
+                out[c] = direct * back_scale * half[c] * g[c];
+            }
+        }
+        if n > 0.0 {
+            let along = theta_position(-ti);
+            let log2_mu = self.field(along, LOG2_DECAY);
+            let beta_f = self.field(along, BETA_F);
+            let spread: Lanes = core::array::from_fn(|c| {
+                // μⁿ = e^(−n·ln 2·(−log₂ μ)), log₂ μ ≤ 0.
+                let t_f = exp_neg_saturating(-n * core::f32::consts::LN_2 * log2_mu[c]);
+                (t_f - direct).max(0.0) * d_f
+            });
+            if spread.iter().any(|&s| s > 0.0) {
+                let s2f: Lanes = core::array::from_fn(|c| n * beta_f[c] * beta_f[c]);
+                let p = wrap_angle(phi).abs() * ((PHI_NODES - 1) as f32 / PI);
+                let p = if p > 0.0 {
+                    p.min((PHI_NODES - 1) as f32)
+                } else {
+                    0.0
+                };
+                let j = (p as usize).min(PHI_NODES - 2); // p ∈ [0, PHI_NODES − 1]
+                let at_phi = (j, p - j as f32);
+                let mut f_s = [0.0f32; 4];
+                for g in 0..FAMILY_COUNT {
+                    let mean = self.field(here, MEAN + g);
+                    let sd = self.field(here, SD + g);
+                    let ng = self.n_g(g, here, at_phi);
+                    let d: Lanes = core::array::from_fn(|c| x - mean[c]);
+                    let v: Lanes = core::array::from_fn(|c| sd[c] * sd[c] + s2f[c]);
+                    let gv = gauss(&d, &v);
+                    for c in 0..4 {
+                        f_s[c] += ng[c] * gv[c];
+                    }
+                }
+                let v_spread: Lanes = core::array::from_fn(|c| v_back[c] + s2f[c]);
+                let gb = gauss(&d_back, &v_spread);
+                for c in 0..4 {
+                    out[c] += spread[c] * (f_s[c] * inv_cos2 + back_scale * half[c] * gb[c]);
+                }
+            }
+        }
+        Rgb([0, 1, 2].map(|c| {
+            let v = out[c];
+            if v.is_finite() && v > 0.0 {
+                v
+            } else {
+                0.0
+            }
+        }))
+    }
+
+    /// [`DualLut::eval`] from world-space directions toward the light `wi` and the viewer `wr`
+    /// and the fiber tangent (any lengths; [`Angles::from_directions`]); zero when the
+    /// directions are rejected (zero, non-finite, parallel to the tangent).
+    #[must_use]
+    pub fn eval_dirs(
+        &self,
+        wi: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+        fibers: f32,
+        density: Density,
+    ) -> Rgb {
+        match Angles::from_directions::<Libm>(wi, wr, tangent) {
+            Ok(a) => self.eval(&a, fibers, density),
+            Err(_) => Rgb::ZERO,
+        }
+    }
+}

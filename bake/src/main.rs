@@ -27,8 +27,10 @@ Examples:
 Writes <OUT>/<preset>.exr (one f16 layer per table, metadata attributes: versions, parameters,
 axes, scales, profile provenance, measured error) and <OUT>/<preset>.furlut (the raw
 little-endian blob that bcsdf_core::baked::BakedBcsdf::from_bytes reads in place, e.g. from
-include_bytes!). Files are written to a temporary file and renamed, so an interrupted bake
-never leaves a partial LUT under the final name. The table layout is in docs/lut.md.
+include_bytes!), and <OUT>/<preset>.furdual (the dual-scattering tables computed from that
+LUT, 54 976 bytes of f16, bcsdf_core::dual::DualLut::decode; docs/model.md §13). Files are
+written to a temporary file and renamed, so an interrupted bake never leaves a partial LUT
+under the final name. The table layout is in docs/lut.md.
 
 Exit codes: 0 all presets baked within the error budget; 1 I/O failure (e.g. unwritable
 output directory, disk full); 2 bad input (unknown preset, invalid preset file or value);
@@ -41,7 +43,7 @@ in file order) belongs to shard i mod N: the N shards are disjoint, together bak
 once, and shard K always bakes the same presets for the same file (appending presets moves
 none of the existing ones). A shard with no presets (N above the preset count) succeeds and
 writes nothing. Shards may share --out and the profile cache: bake writes only
-<OUT>/<preset>.exr and <OUT>/<preset>.furlut (each via a uniquely named temporary file), and
+<OUT>/<preset>.exr, .furlut and .furdual (each via a uniquely named temporary file), and
 the summary goes to standard output, so concurrent shards never write the same file. Shards
 sharing a profile cache generate each missing entry once: one takes the entry's lock file
 (medulla-<hash>.lock) and generates, the others wait and read it; a killed holder leaves no
@@ -341,14 +343,17 @@ fn print_summary(
     );
     println!(
         "sizes: f16 KB = the half-float tables; LUT KB = the whole .furlut (header, tables and \
-         the sampling data) as BakedBcsdf reads it"
+         the sampling data) as BakedBcsdf reads it; dual KB = the .furdual dual-scattering \
+         tables (f16, beside the LUT), dual s = the time to compute them from the baked LUT"
     );
     println!(
-        "{:<14} {:>9} {:>9} {:>9} {:>10} {:>8} {:>8} {:>9} {:>9} {:>9}  result",
+        "{:<14} {:>9} {:>9} {:>9} {:>8} {:>7} {:>10} {:>8} {:>8} {:>9} {:>9} {:>9}  result",
         "preset",
         "f16 KB",
         "LUT KB",
         "EXR KB",
+        "dual KB",
+        "dual s",
         "profiles",
         "bake s",
         "check s",
@@ -374,11 +379,13 @@ fn print_summary(
             ),
         };
         println!(
-            "{:<14} {:>9.1} {:>9.1} {:>9.1} {:>10} {:>8.2} {:>8.2} {:>9} {:>9} {:>9}  {}",
+            "{:<14} {:>9.1} {:>9.1} {:>9.1} {:>8.1} {:>7.2} {:>10} {:>8.2} {:>8.2} {:>9} {:>9} {:>9}  {}",
             r.preset,
             r.table_bytes as f64 / 1024.0,
             r.blob_bytes as f64 / 1024.0,
             r.exr_bytes as f64 / 1024.0,
+            r.dual_bytes as f64 / 1024.0,
+            r.dual_seconds,
             profiles,
             r.bake_seconds(),
             r.metric_seconds,
@@ -389,7 +396,7 @@ fn print_summary(
         );
     }
     println!(
-        "wrote {} LUTs (.exr and .furlut) to {}",
+        "wrote {} LUTs (.exr, .furlut and .furdual) to {}",
         reports.len(),
         out_dir.display()
     );

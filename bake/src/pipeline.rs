@@ -1,6 +1,6 @@
 //! One preset from parameters to files: profiles → analytic model → sampled tables → f16 blob
-//! → measured error → `<out>/<preset>.exr` and `<out>/<preset>.furlut`, both written
-//! atomically.
+//! → dual-scattering tables from the baked LUT → measured error → `<out>/<preset>.exr`,
+//! `<out>/<preset>.furlut` and `<out>/<preset>.furdual`, each written atomically.
 
 use crate::fsutil;
 use crate::lutfile::{self, LutFile, LutFileError, LutMeta};
@@ -9,7 +9,8 @@ use crate::presets::NamedPreset;
 use crate::profiles::{self, build_model, CacheOutcome, ProfileOptions};
 use crate::tables;
 use bcsdf_core::baked::BakedBcsdf;
-use bcsdf_core::lut::LutResolution;
+use bcsdf_core::dual::{self, Attenuation, DualTables, Quadrature};
+use bcsdf_core::lut::{self as core_lut, LutResolution};
 use bcsdf_core::{FurParams, ParamError};
 use std::fmt;
 use std::io;
@@ -21,6 +22,9 @@ pub const BLOB_EXTENSION: &str = "furlut";
 
 /// File extension of the OpenEXR file.
 pub const EXR_EXTENSION: &str = "exr";
+
+/// File extension of the dual-scattering tables (docs/model.md §13).
+pub const DUAL_EXTENSION: &str = "furdual";
 
 /// What [`bake_preset`] does.
 #[derive(Clone, Debug)]
@@ -42,6 +46,8 @@ pub enum Step {
     Profiles,
     /// Sampling the analytic model into tables.
     Tables,
+    /// Computing the dual-scattering tables from the baked LUT.
+    Dual,
     /// Measuring baked against analytic.
     Metrics,
     /// Writing the files.
@@ -54,6 +60,7 @@ impl Step {
         match self {
             Step::Profiles => "medulla profiles",
             Step::Tables => "sampling tables",
+            Step::Dual => "dual-scattering tables",
             Step::Metrics => "measuring error",
             Step::Writing => "writing files",
         }
@@ -75,6 +82,12 @@ pub struct BakeReport {
     pub blob_bytes: usize,
     /// Bytes of the EXR file.
     pub exr_bytes: u64,
+    /// The dual-scattering tables (`.furdual`).
+    pub dual: PathBuf,
+    /// Bytes of the `.furdual` file ([`dual::BLOB_LEN`]).
+    pub dual_bytes: usize,
+    /// Seconds spent computing and encoding the dual-scattering tables.
+    pub dual_seconds: f64,
     /// Seconds spent on profiles and, in the energy closure, the residual table (generation
     /// or cache load).
     pub profile_seconds: f64,
@@ -152,11 +165,39 @@ pub fn prepare_out_dir(dir: &Path) -> Result<(), BakeError> {
     })
 }
 
-/// The two files a bake of preset `name` writes in `out_dir`: `<name>.exr` and
-/// `<name>.furlut`, built by [`fsutil::output_path`] (never outside `out_dir`).
-pub fn output_paths(out_dir: &Path, name: &str) -> Result<(PathBuf, PathBuf), BakeError> {
+/// The files a bake of preset `name` writes in `out_dir`.
+#[derive(Clone, Debug)]
+pub struct OutputPaths {
+    /// `<name>.exr`.
+    pub exr: PathBuf,
+    /// `<name>.furlut`.
+    pub blob: PathBuf,
+    /// `<name>.furdual`.
+    pub dual: PathBuf,
+}
+
+/// The three files a bake of preset `name` writes in `out_dir`, built by
+/// [`fsutil::output_path`] (never outside `out_dir`).
+pub fn output_paths(out_dir: &Path, name: &str) -> Result<OutputPaths, BakeError> {
     let path = |ext| fsutil::output_path(out_dir, name, ext).map_err(BakeError::Name);
-    Ok((path(EXR_EXTENSION)?, path(BLOB_EXTENSION)?))
+    Ok(OutputPaths {
+        exr: path(EXR_EXTENSION)?,
+        blob: path(BLOB_EXTENSION)?,
+        dual: path(DUAL_EXTENSION)?,
+    })
+}
+
+/// The `.furdual` blob of a baked LUT (docs/model.md §13): [`DualTables::compute`] over the
+/// baked evaluator at [`Quadrature::DEFAULT`], encoded for the shipped
+/// [`Attenuation::Coat`], tagged with the LUT's checksum.
+pub fn dual_blob(lut_blob: &[u8], baked: &BakedBcsdf<'_>) -> Box<[u8; dual::BLOB_LEN]> {
+    let mut tables = Box::new(DualTables::ZERO);
+    tables.compute(baked, Quadrature::DEFAULT);
+    Box::new(dual::encode(
+        &tables,
+        Attenuation::Coat,
+        core_lut::checksum(lut_blob),
+    ))
 }
 
 /// Bakes one preset into `opts.out_dir`; `on_step` hears each step as it starts.
@@ -169,7 +210,11 @@ pub fn bake_preset(
         preset: preset.name.clone(),
         error,
     })?;
-    let (exr, blob_path) = output_paths(&opts.out_dir, &preset.name)?;
+    let OutputPaths {
+        exr,
+        blob: blob_path,
+        dual: dual_path,
+    } = output_paths(&opts.out_dir, &preset.name)?;
 
     on_step(Step::Profiles);
     let t = Instant::now();
@@ -181,6 +226,11 @@ pub fn bake_preset(
     let blob = tables::bake(&model, &preset.input, opts.res);
     let table_seconds = t.elapsed().as_secs_f64();
     let baked = BakedBcsdf::from_bytes(&blob).map_err(BakeError::Invalid)?;
+
+    on_step(Step::Dual);
+    let t = Instant::now();
+    let dual_bytes = dual_blob(&blob, &baked);
+    let dual_seconds = t.elapsed().as_secs_f64();
 
     let t = Instant::now();
     let errors = opts.metrics.map(|set| {
@@ -199,6 +249,7 @@ pub fn bake_preset(
     };
     lutfile::write_exr(&exr, &file).map_err(BakeError::Write)?;
     lutfile::write_blob(&blob_path, &file.blob).map_err(BakeError::Write)?;
+    lutfile::write_dual(&dual_path, &dual_bytes[..]).map_err(BakeError::Write)?;
     let exr_bytes = std::fs::metadata(&exr).map(|m| m.len()).unwrap_or(0);
 
     Ok(BakeReport {
@@ -208,6 +259,9 @@ pub fn bake_preset(
         table_bytes: 2 * opts.res.total_values(),
         blob_bytes: file.blob.len(),
         exr_bytes,
+        dual: dual_path,
+        dual_bytes: dual_bytes.len(),
+        dual_seconds,
         profile_seconds,
         table_seconds,
         metric_seconds,

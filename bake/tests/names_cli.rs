@@ -5,7 +5,7 @@
 //!   nothing anywhere: not `--out`, not beside it, not the profile cache;
 //! - a property test over random names: baking a preset under any name (the library's
 //!   `bake_preset`, which does not go through the preset-file check) either refuses the
-//!   name and writes nothing, or writes exactly `<out>/<name>.exr` and `<out>/<name>.furlut`.
+//!   name and writes nothing, or writes exactly `<out>/<name>.exr`, `.furlut` and `.furdual`.
 
 mod cli_support;
 
@@ -116,7 +116,9 @@ fn every_bad_name_exits_2_naming_file_line_and_field_and_writes_nothing() {
         assert!(o.stdout.is_empty(), "{name:?}");
         assert_eq!(tree(root), before, "{name:?} wrote something");
         // Nothing at the absolute destinations either.
-        assert!(!Path::new("/tmp/abs.exr").exists() && !Path::new("/tmp/abs.furlut").exists());
+        for ext in ["exr", "furlut", "furdual"] {
+            assert!(!Path::new(&format!("/tmp/abs.{ext}")).exists());
+        }
     }
 
     // `--preset NAME` with a bad name: the same rule, before the lookup.
@@ -194,6 +196,7 @@ proptest! {
                     "a/b/".to_string(),
                     "a/b/out/".to_string(),
                     format!("a/b/out/{name}.exr"),
+                    format!("a/b/out/{name}.furdual"),
                     format!("a/b/out/{name}.furlut"),
                 ];
                 want.sort();

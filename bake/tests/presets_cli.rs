@@ -53,7 +53,7 @@ fn former_name_prints_a_note_and_bakes_the_new_presets_bytes() {
     let new = bake(&["--preset", "raccoon"], &new_dir);
     assert!(new.status.success(), "{}", stderr(&new));
     assert!(!stderr(&new).contains("note: preset"), "{}", stderr(&new));
-    for file in ["raccoon.furlut", "raccoon.exr"] {
+    for file in ["raccoon.furlut", "raccoon.exr", "raccoon.furdual"] {
         let (a, b) = (
             fs::read(old_dir.join(file)).unwrap(),
             fs::read(new_dir.join(file)).unwrap(),

@@ -201,7 +201,13 @@ fn shards_reproduce_the_unsharded_bake_byte_for_byte() {
     let (fa, fb) = (files(&a), files(&b));
     let expected_names: Vec<String> = NAMES
         .iter()
-        .flat_map(|p| [format!("{p}.exr"), format!("{p}.furlut")])
+        .flat_map(|p| {
+            [
+                format!("{p}.exr"),
+                format!("{p}.furdual"),
+                format!("{p}.furlut"),
+            ]
+        })
         .collect::<std::collections::BTreeSet<_>>()
         .into_iter()
         .collect();

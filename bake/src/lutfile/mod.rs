@@ -1,15 +1,18 @@
-//! LUT files on disk: the raw little-endian blob ([`blob`], `.furlut`) and the OpenEXR form
+//! LUT files on disk: the raw little-endian blob ([`blob`], `.furlut`), the OpenEXR form
 //! ([`exr`]: one f16 layer per table, the blob's header verbatim in one attribute, readable
-//! metadata beside it), both written atomically ([`crate::fsutil::AtomicWriter`]). Every
+//! metadata beside it) and the dual-scattering tables ([`dual`], `.furdual`), all written
+//! atomically ([`crate::fsutil::AtomicWriter`]). Every
 //! failure is one [`LutFileError`] naming the file, with a [`LutFileErrorKind`] ([`error`]).
 //!
 //! Everything public in the submodules is re-exported here (`bake::lutfile::read_exr`).
 
 pub mod blob;
+pub mod dual;
 pub mod error;
 pub mod exr;
 
 pub use blob::{read_blob, write_blob};
+pub use dual::{read_dual, write_dual};
 pub use error::{LutFileError, LutFileErrorKind};
 pub use exr::{encode_exr, exr_from_bytes, read_exr, write_exr};
 

@@ -82,7 +82,7 @@ pub fn tree(root: &Path) -> Vec<String> {
 }
 
 /// The rows of the summary table (between the header and the "wrote" line), split into
-/// columns: preset, f16 KB, LUT KB, EXR KB, profiles, …
+/// columns: preset, f16 KB, LUT KB, EXR KB, dual KB, dual s, profiles, …
 pub fn summary_rows(stdout: &str) -> Vec<Vec<String>> {
     stdout
         .lines()

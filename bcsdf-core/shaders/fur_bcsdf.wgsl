@@ -16,9 +16,11 @@
 // phi_i. Invalid input (NaN, |theta| > pi/2, degenerate vectors) gives exactly 0, like the
 // CPU's `eval_far_dirs`.
 //
-// Binding: group 0, binding 0 = the LUT words. The entry points at the end (bindings 1 and 2)
-// serve the tests and `viewer probe --gpu`; an engine includes the functions and calls
-// `fur_eval_far` / `fur_eval_far_dirs` from its own shaders.
+// Binding: group 0, binding 0 = the LUT words; binding 3 = the dual-scattering blob's words
+// (`fur_eval_dual`, docs/model.md §13, its section below). The entry points at the end
+// (bindings 1 and 2) serve the tests and `viewer probe --gpu`; an engine includes the
+// functions and calls `fur_eval_far` / `fur_eval_far_dirs` / `fur_eval_dual` /
+// `fur_eval_dual_dirs` from its own shaders.
 
 @group(0) @binding(0) var<storage, read> fur_lut: array<u32>;
 
@@ -303,22 +305,31 @@ fn fur_atan2(y: f32, x: f32) -> f32 {
     return select(r, -r, (bitcast<u32>(y) & 0x80000000u) != 0u);
 }
 
-// Far-field S from world-space vectors (BakedBcsdf::eval_far_dirs, frame::polynomial_angles):
+// The angles of world-space vectors (frame::polynomial_angles): theta_i, theta_r, |phi|, and
+// whether the vectors were usable (finite, none of zero length); the angles are 0 if not.
+struct FurDirAngles {
+    theta_i: f32,
+    theta_r: f32,
+    phi: f32,
+    ok: bool,
+}
+
 // wi toward the light, wr toward the viewer, u the fiber tangent; none needs unit length.
 // phi from unnormalised vectors: y = u.(wi x wr)/|u|, x = wi.wr - (wi.u)(wr.u)/|u|^2.
-fn fur_eval_far_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>) -> FurFamilies {
+fn fur_angles_from_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>) -> FurDirAngles {
+    let none = FurDirAngles(0.0, 0.0, 0.0, false);
     let ii = dot(wi, wi);
     let rr = dot(wr, wr);
     let uu = dot(u, u);
     if (!(fur_finite(ii) && fur_finite(rr) && fur_finite(uu))) {
-        return fur_zero();
+        return none;
     }
     let ni = sqrt(ii);
     let nr = sqrt(rr);
     let nu = sqrt(uu);
     let min_positive = 1.17549435e-38;
     if (ni < min_positive || nr < min_positive || nu < min_positive) {
-        return fur_zero();
+        return none;
     }
     let un = u * (1.0 / nu);
     let a = dot(wi, un);
@@ -327,7 +338,17 @@ fn fur_eval_far_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>) -> FurFamilies 
     let theta_r = fur_asin(clamp(b * (1.0 / nr), -1.0, 1.0));
     let y = dot(un, cross(wi, wr));
     let x = dot(wi, wr) - a * b;
-    return fur_eval_far(theta_i, theta_r, abs(fur_atan2(y, x)));
+    return FurDirAngles(theta_i, theta_r, abs(fur_atan2(y, x)), true);
+}
+
+// Far-field S from world-space vectors (BakedBcsdf::eval_far_dirs), at the angles of
+// fur_angles_from_dirs; 0 for unusable vectors.
+fn fur_eval_far_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>) -> FurFamilies {
+    let a = fur_angles_from_dirs(wi, wr, u);
+    if (!a.ok) {
+        return fur_zero();
+    }
+    return fur_eval_far(a.theta_i, a.theta_r, a.phi);
 }
 
 // ---- Sampling and pdf (sampling::baked, docs/model.md §10) ----
@@ -997,7 +1018,202 @@ fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
     return out;
 }
 
-// ---- Entry points for the tests and `viewer probe --gpu` (bindings 1 and 2) ----
+// ---- Dual scattering (bcsdf_core::dual::DualLut::eval, docs/model.md §13) ----
+//
+// The term an engine adds to single scattering for the light that reaches a fiber through
+// other fibers, from a .furdual blob (bcsdf_core::dual, blob.rs) bound as its own read-only
+// storage buffer of u32 words (group 0, binding 3), validated on the CPU first
+// (`DualLut::decode`): the shader trusts it. After the 64-byte header (16 words) come
+// little-endian f16 halves, read with unpack2x16float (exact, as the CPU's f16 -> f32):
+// - the node fields, [theta node k (64)][field f (15)][channel c (3)];
+// - N^G, [family g (4)][theta node k (64)][phi node j (32)][channel c (3)].
+// Every step mirrors `DualLut::eval` in the same order; the Gaussians use the built-in exp
+// where the CPU has its polynomial `exp_neg_saturating` (a few ulp apart).
+
+@group(0) @binding(3) var<storage, read> fur_dual: array<u32>;
+
+// Words of the .furdual header before the first half.
+const FUR_DUAL_HEADER_WORDS: u32 = 16u;
+// Fields per theta node (dual::FIELDS) and their indices (blob.rs): log2 mu (the downward
+// flux's decay per fiber), beta_f (rad), the local backscatter's back-half and front-half
+// energy, Delta_b, sigma_b0, a_f^2, then each family's mean of x and its standard deviation.
+const FUR_DUAL_FIELDS: u32 = 15u;
+const FUR_DUAL_LOG2_DECAY: u32 = 0u;
+const FUR_DUAL_BETA_F: u32 = 1u;
+const FUR_DUAL_BACK: u32 = 2u;
+const FUR_DUAL_FRONT: u32 = 3u;
+const FUR_DUAL_DELTA_B: u32 = 4u;
+const FUR_DUAL_SIGMA_B0: u32 = 5u;
+const FUR_DUAL_A_F2: u32 = 6u;
+const FUR_DUAL_MEAN: u32 = 7u;
+const FUR_DUAL_SD: u32 = 11u;
+// Table nodes: theta (cell centres over [-pi/2, pi/2]), |phi| (j pi/31, ends included).
+const FUR_DUAL_THETA_NODES: u32 = 64u;
+const FUR_DUAL_PHI_NODES: u32 = 32u;
+// Halves of the node fields, before N^G: 64 x 15 x 3.
+const FUR_DUAL_NG_START: u32 = 2880u;
+// 64/pi and 31/pi as the CPU's f32 quotients (dual::theta_position, the phi position).
+const FUR_DUAL_THETA_SCALE: f32 = 20.3718319;
+const FUR_DUAL_PHI_SCALE: f32 = 9.86760616;
+// dual::MAX_FIBERS, dual::MAX_DENSITY, dual::MIN_VARIANCE (rad^2).
+const FUR_DUAL_MAX_FIBERS: f32 = 1.0e6;
+const FUR_DUAL_MAX_DENSITY: f32 = 4.0;
+const FUR_DUAL_MIN_VARIANCE: f32 = 3.0e-6;
+// ln 2 as an f32 (core::f32::consts::LN_2).
+const FUR_LN2: f32 = 0.693147182;
+
+// Half h of the blob's tables (counted from the first half after the header).
+fn fur_dual_half(h: u32) -> f32 {
+    let pair = unpack2x16float(fur_dual[FUR_DUAL_HEADER_WORDS + (h >> 1u)]);
+    return select(pair.x, pair.y, (h & 1u) == 1u);
+}
+
+// Three consecutive halves (the RGB of one stored value) from half h.
+fn fur_dual_rgb(h: u32) -> vec3<f32> {
+    return vec3<f32>(fur_dual_half(h), fur_dual_half(h + 1u), fur_dual_half(h + 2u));
+}
+
+// True for NaN, on the bits (see fur_finite).
+fn fur_is_nan(x: f32) -> bool {
+    return (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u;
+}
+
+// Linear interpolation position of theta on the theta axis (dual::theta_position):
+// t = (theta + pi/2) 64/pi - 1/2 clamped to [0, 63], lower node k = min(floor t, 62) and the
+// weight t - k of the upper one.
+fn fur_dual_theta(theta: f32) -> FurLoc {
+    var t = (theta + FUR_HALF_PI) * FUR_DUAL_THETA_SCALE - 0.5;
+    t = select(0.0, t, t > 0.0);
+    t = min(t, f32(FUR_DUAL_THETA_NODES - 1u));
+    let k = min(u32(t), FUR_DUAL_THETA_NODES - 2u);
+    return FurLoc(k, t - f32(k));
+}
+
+// Field f at theta (DualLut::field): linear between nodes k and k + 1, a + (b - a) w.
+fn fur_dual_field(l: FurLoc, f: u32) -> vec3<f32> {
+    let a = fur_dual_rgb(3u * (l.i * FUR_DUAL_FIELDS + f));
+    let b = fur_dual_rgb(3u * ((l.i + 1u) * FUR_DUAL_FIELDS + f));
+    return a + (b - a) * l.w;
+}
+
+// N^G of family g at the theta and |phi| positions (DualLut::n_g): bilinear, |phi| first.
+fn fur_dual_ng(g: u32, l: FurLoc, p: FurLoc) -> vec3<f32> {
+    let row0 = (g * FUR_DUAL_THETA_NODES + l.i) * FUR_DUAL_PHI_NODES + p.i;
+    let row1 = row0 + FUR_DUAL_PHI_NODES;
+    let t00 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * row0);
+    let t01 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * (row0 + 1u));
+    let t10 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * row1);
+    let t11 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * (row1 + 1u));
+    let lo = t00 + (t01 - t00) * p.w;
+    let hi = t10 + (t11 - t10) * p.w;
+    return lo + (hi - lo) * l.w;
+}
+
+// The normalised Gaussian G(d; sqrt(v)) = e^(-d^2/2v)/sqrt(2 pi v) per channel, v kept at or
+// above dual::MIN_VARIANCE.
+fn fur_dual_gauss(d: vec3<f32>, v_in: vec3<f32>) -> vec3<f32> {
+    let v = max(v_in, vec3<f32>(FUR_DUAL_MIN_VARIANCE));
+    return exp(-(d * d / (2.0 * v))) / sqrt(FUR_TAU * v);
+}
+
+// A fiber count or density factor as the CPU's contract takes it: NaN and values <= 0 give
+// 0, values above `top` (+inf included) give `top`.
+fn fur_dual_clean(x: f32, top: f32) -> f32 {
+    return select(0.0, min(x, top), !fur_is_nan(x) && x > 0.0);
+}
+
+// The dual-scattering term to add to single scattering (DualLut::eval, docs/model.md §13),
+// RGB, in S's units (the caller multiplies by cos theta_i and the light's radiance like S).
+// `fibers` is n, the number of fibers between the shading point and the light (fractional
+// allowed); d_f, d_b the density factors (dual::Density; 1 and 1 by default). With
+// V = clamp(1 - n, 0, 1) the direct fraction (what a shadow ray gives), the shading is
+// S V + this term:
+//
+//   D = V d_b f_back(0) + (T_f - V) d_f (f_s^scatter(sigma_f^2) + d_b f_back(sigma_f^2)),
+//   T_f = mu^n, mu the stored decay at -theta_i; sigma_f^2 = n beta_f^2(-theta_i);
+//   f_s^scatter(s^2) = sum_g N^G_g(theta_r, |phi|) G(x - mean_g; sd_g^2 + s^2)/cos^2 theta_i,
+//   f_back(s^2) = A G(x - Delta_b; sigma_b^2 + s^2)/(pi cos^2 theta_i),
+//   sigma_b = (1 + d_b a_f^2) sigma_b0, x = theta_i + theta_r, A the stored back-half energy
+//   for |phi| < pi/2, the front-half one otherwise.
+//
+// Invalid angles (as fur_eval_far) give 0; n NaN or < 0 is 0, n > 1e6 (or +inf) is 1e6;
+// densities likewise, clamped to 4. The result is finite and >= 0.
+fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, d_f_in: f32, d_b_in: f32) -> vec3<f32> {
+    let zero = vec3<f32>(0.0);
+    if (!fur_valid(theta_i, theta_r, phi_in)) {
+        return zero;
+    }
+    let n = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    let d_f = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    let d_b = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    let x = theta_i + theta_r;
+    // S's guarded 1/cos^2(theta_i) (model::inv_cos2_theta_i, docs/model.md §8).
+    let c = fur_cos_within_half_pi(theta_i);
+    let inv_cos2 = 1.0 / max(c * c, FUR_MIN_COS2);
+    let direct = clamp(1.0 - n, 0.0, 1.0);
+    let here = fur_dual_theta(theta_r);
+    let abs_phi = abs(fur_wrap_angle(phi_in));
+    // The local backscatter: A (back half for |phi| < pi/2, else front), Delta_b, and
+    // sigma_b^2 = ((1 + d_b a_f^2) sigma_b0)^2.
+    let half_energy = fur_dual_field(here, select(FUR_DUAL_FRONT, FUR_DUAL_BACK, abs_phi < FUR_HALF_PI));
+    let a_f2 = fur_dual_field(here, FUR_DUAL_A_F2);
+    let sigma_b0 = fur_dual_field(here, FUR_DUAL_SIGMA_B0);
+    let delta = fur_dual_field(here, FUR_DUAL_DELTA_B);
+    let d_back = x - delta;
+    let s_b = (1.0 + d_b * a_f2) * sigma_b0;
+    let v_back = s_b * s_b;
+    // f_back without its variance increase, times pi cos^2 theta_i.
+    let back_scale = d_b * inv_cos2 / FUR_PI;
+    var out = zero;
+    // V d_b f_back(0).
+    if (direct > 0.0) {
+        out = direct * back_scale * half_energy * fur_dual_gauss(d_back, v_back);
+    }
+    if (n > 0.0) {
+        // T_f = mu^n = e^(-n ln2 (-log2 mu)) and sigma_f^2 = n beta_f^2, both at -theta_i.
+        let along = fur_dual_theta(-theta_i);
+        let log2_mu = fur_dual_field(along, FUR_DUAL_LOG2_DECAY);
+        let beta_f = fur_dual_field(along, FUR_DUAL_BETA_F);
+        let t_f = exp(-(-n * FUR_LN2 * log2_mu));
+        let spread = max(t_f - direct, zero) * d_f;
+        if (any(spread > zero)) {
+            let s2f = n * beta_f * beta_f;
+            // |phi| position on the N^G axis: p = |phi| 31/pi in [0, 31], j = min(floor p, 30).
+            var p = abs_phi * FUR_DUAL_PHI_SCALE;
+            p = select(0.0, min(p, f32(FUR_DUAL_PHI_NODES - 1u)), p > 0.0);
+            let j = min(u32(p), FUR_DUAL_PHI_NODES - 2u);
+            let at_phi = FurLoc(j, p - f32(j));
+            // f_s^scatter(sigma_f^2) cos^2 theta_i: each family's N^G times its Gaussian.
+            var f_s = zero;
+            for (var g = 0u; g < 4u; g = g + 1u) {
+                let mean = fur_dual_field(here, FUR_DUAL_MEAN + g);
+                let sd = fur_dual_field(here, FUR_DUAL_SD + g);
+                let ng = fur_dual_ng(g, here, at_phi);
+                let v = sd * sd + s2f;
+                f_s = f_s + ng * fur_dual_gauss(x - mean, v);
+            }
+            // (T_f - V) d_f (f_s^scatter(sigma_f^2) + d_b f_back(sigma_f^2)).
+            let gb = fur_dual_gauss(d_back, v_back + s2f);
+            out = out + spread * (f_s * inv_cos2 + back_scale * half_energy * gb);
+        }
+    }
+    // Finite and >= 0 per channel, else 0 (on the bits, like fur_finite).
+    let finite = vec3<bool>(fur_finite(out.x), fur_finite(out.y), fur_finite(out.z));
+    return select(zero, out, finite & (out > zero));
+}
+
+// fur_eval_dual from world-space vectors: wi toward the light, wr toward the viewer, u the
+// fiber tangent (any lengths), at the angles of fur_angles_from_dirs (the baked
+// evaluator's polynomial conversion, `BakedBcsdf::angles_from_dirs`); 0 for unusable vectors.
+fn fur_eval_dual_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>, fibers: f32, d_f: f32, d_b: f32) -> vec3<f32> {
+    let a = fur_angles_from_dirs(wi, wr, u);
+    if (!a.ok) {
+        return vec3<f32>(0.0);
+    }
+    return fur_eval_dual(a.theta_i, a.theta_r, a.phi, fibers, d_f, d_b);
+}
+
+// ---- Entry points for the tests and `viewer probe --gpu` (bindings 1 and 2; 3 for dual) ----
 
 // Queries: (theta_i, theta_r, phi, unused) per evaluation; or, for fur_eval_dirs_main,
 // three vec4 per evaluation (wi, wr, tangent; w unused).
@@ -1014,6 +1230,17 @@ fn fur_store(q: u32, f: FurFamilies) {
         fur_results[base + 3u * k + 2u] = parts[k].z;
     }
     fur_results[base + 15u] = 0.0;
+}
+
+// One RGB result in the first three of the query's 16 floats, the rest 0.
+fn fur_store_rgb(q: u32, v: vec3<f32>) {
+    let base = 16u * q;
+    fur_results[base] = v.x;
+    fur_results[base + 1u] = v.y;
+    fur_results[base + 2u] = v.z;
+    for (var k = 3u; k < 16u; k = k + 1u) {
+        fur_results[base + k] = 0.0;
+    }
 }
 
 @compute @workgroup_size(64)
@@ -1070,4 +1297,32 @@ fn fur_pdf_main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     let a = fur_queries[q];
     fur_results[16u * q] = fur_pdf_far(a.x, a.y, a.z);
+}
+
+// Dual-scattering queries (bindings 1, 2 and 3): two vec4 per evaluation,
+// (theta_i, theta_r, phi, fibers) and (d_f, d_b, unused, unused); results: RGB in the first
+// three of 16 floats, the rest 0.
+@compute @workgroup_size(64)
+fn fur_dual_main(@builtin(global_invocation_id) id: vec3<u32>) {
+    let q = id.x;
+    if (2u * q + 1u >= arrayLength(&fur_queries)) {
+        return;
+    }
+    let a = fur_queries[2u * q];
+    let d = fur_queries[2u * q + 1u];
+    fur_store_rgb(q, fur_eval_dual(a.x, a.y, a.z, a.w, d.x, d.y));
+}
+
+// Dual-scattering vector queries (bindings 1, 2 and 3): three vec4 per evaluation,
+// (wi, fibers), (wr, d_f), (tangent, d_b); results as fur_dual_main.
+@compute @workgroup_size(64)
+fn fur_dual_dirs_main(@builtin(global_invocation_id) id: vec3<u32>) {
+    let q = id.x;
+    if (3u * q + 2u >= arrayLength(&fur_queries)) {
+        return;
+    }
+    let wi = fur_queries[3u * q];
+    let wr = fur_queries[3u * q + 1u];
+    let u = fur_queries[3u * q + 2u];
+    fur_store_rgb(q, fur_eval_dual_dirs(wi.xyz, wr.xyz, u.xyz, wi.w, wr.w, u.w));
 }

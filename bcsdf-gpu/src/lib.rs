@@ -7,16 +7,23 @@
 //!   `bcsdf-core/shaders/generated/` and a test regenerates and compares them;
 //! - [`GpuLut`]: a wgpu compute runner that binds a validated `.furlut` as a storage buffer of
 //!   u32 words and evaluates batches of queries through the shader, on the first adapter
-//!   (on a machine without a GPU: Mesa's llvmpipe Vulkan driver, an adapter of type Cpu).
+//!   (on a machine without a GPU: Mesa's llvmpipe Vulkan driver, an adapter of type Cpu);
+//! - [`GpuDual`]: the same for the dual-scattering term (docs/model.md §13): a validated
+//!   `.furdual` blob bound as its own storage buffer, batches of queries evaluated by the
+//!   shader's `fur_eval_dual` / `fur_eval_dual_dirs` ([`ENTRY_DUAL`], [`ENTRY_DUAL_DIRS`]).
 
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::dual::DualError;
 use bcsdf_core::lut::LutError;
 use bcsdf_core::shader::{
     ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_PDF, ENTRY_SAMPLE, FUR_BCSDF_WGSL, RESULT_FLOATS,
 };
 use std::fmt;
 
+mod dual;
 pub mod translate;
+
+pub use dual::{DualDirsQuery, DualQuery, GpuDual, ENTRY_DUAL, ENTRY_DUAL_DIRS};
 
 /// Why the GPU path is unavailable or failed.
 #[derive(Debug)]
@@ -28,6 +35,8 @@ pub enum GpuError {
     Device(String),
     /// The LUT bytes are not a valid LUT.
     Lut(LutError),
+    /// The bytes are not a valid `.furdual` blob.
+    Dual(DualError),
     /// Reading the results back failed.
     Readback(String),
 }
@@ -42,6 +51,7 @@ impl fmt::Display for GpuError {
             ),
             GpuError::Device(e) => write!(f, "the GPU adapter refused a device: {e}"),
             GpuError::Lut(e) => write!(f, "{e}"),
+            GpuError::Dual(e) => write!(f, "{e}"),
             GpuError::Readback(e) => write!(f, "reading the GPU results back failed: {e}"),
         }
     }
@@ -100,6 +110,54 @@ fn adapter() -> Result<wgpu::Adapter, GpuError> {
     .map_err(|e| GpuError::NoAdapter(e.to_string()))
 }
 
+/// A device and queue on the first adapter, with the adapter's description.
+fn device() -> Result<(wgpu::Device, wgpu::Queue, wgpu::AdapterInfo), GpuError> {
+    let adapter = adapter()?;
+    let info = adapter.get_info();
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+        label: Some("fur-bcsdf"),
+        required_limits: adapter.limits(),
+        ..Default::default()
+    }))
+    .map_err(|e| GpuError::Device(e.to_string()))?;
+    Ok((device, queue, info))
+}
+
+/// A blob as a read-only storage buffer of little-endian u32 words, zero-padded to a whole
+/// word.
+fn words_buffer(device: &wgpu::Device, label: &str, bytes: &[u8]) -> wgpu::Buffer {
+    let mut words = Vec::with_capacity(bytes.len().div_ceil(4));
+    for chunk in bytes.chunks(4) {
+        let mut w = [0u8; 4];
+        w[..chunk.len()].copy_from_slice(chunk);
+        words.push(u32::from_le_bytes(w));
+    }
+    buffer_init(device, label, as_bytes(&words), wgpu::BufferUsages::STORAGE)
+}
+
+/// The compute pipelines of `entries` in the WGSL `wgsl` (layouts derived from the shader:
+/// each binds only what its entry point uses).
+fn pipelines<const N: usize>(
+    device: &wgpu::Device,
+    wgsl: &str,
+    entries: [&str; N],
+) -> [wgpu::ComputePipeline; N] {
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("fur_bcsdf.wgsl"),
+        source: wgpu::ShaderSource::Wgsl(wgsl.to_owned().into()),
+    });
+    entries.map(|entry| {
+        device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(entry),
+            layout: None,
+            module: &module,
+            entry_point: Some(entry),
+            compilation_options: Default::default(),
+            cache: None,
+        })
+    })
+}
+
 impl GpuLut {
     /// Validates `bytes` (`BakedBcsdf::from_bytes`) and uploads them to the first adapter.
     pub fn new(bytes: &[u8]) -> Result<GpuLut, GpuError> {
@@ -110,43 +168,13 @@ impl GpuLut {
     /// show that the agreement test catches a wrong table index).
     pub fn with_shader(bytes: &[u8], wgsl: &str) -> Result<GpuLut, GpuError> {
         BakedBcsdf::from_bytes(bytes).map_err(GpuError::Lut)?;
-        let adapter = adapter()?;
-        let info = adapter.get_info();
-        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-            label: Some("fur-bcsdf"),
-            required_limits: adapter.limits(),
-            ..Default::default()
-        }))
-        .map_err(|e| GpuError::Device(e.to_string()))?;
-        // The blob as little-endian u32 words, zero-padded to a whole word.
-        let mut words = Vec::with_capacity(bytes.len().div_ceil(4));
-        for chunk in bytes.chunks(4) {
-            let mut w = [0u8; 4];
-            w[..chunk.len()].copy_from_slice(chunk);
-            words.push(u32::from_le_bytes(w));
-        }
-        let lut = buffer_init(
+        let (device, queue, info) = device()?;
+        let lut = words_buffer(&device, "fur-lut", bytes);
+        let [eval, eval_dirs, sample, pdf] = pipelines(
             &device,
-            "fur-lut",
-            as_bytes(&words),
-            wgpu::BufferUsages::STORAGE,
+            wgsl,
+            [ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_SAMPLE, ENTRY_PDF],
         );
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("fur_bcsdf.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(wgsl.to_owned().into()),
-        });
-        let pipeline = |entry: &str| {
-            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(entry),
-                layout: None,
-                module: &module,
-                entry_point: Some(entry),
-                compilation_options: Default::default(),
-                cache: None,
-            })
-        };
-        let (eval, eval_dirs) = (pipeline(ENTRY_EVAL), pipeline(ENTRY_EVAL_DIRS));
-        let (sample, pdf) = (pipeline(ENTRY_SAMPLE), pipeline(ENTRY_PDF));
         Ok(GpuLut {
             device,
             queue,
@@ -221,87 +249,104 @@ impl GpuLut {
         queries: &[[f32; 4]],
         n: usize,
     ) -> Result<Vec<GpuFamilies>, GpuError> {
-        if n == 0 {
-            return Ok(Vec::new());
-        }
-        let d = &self.device;
-        let input = buffer_init(
-            d,
-            "fur-queries",
-            as_bytes(queries),
-            wgpu::BufferUsages::STORAGE,
-        );
-        let size = (n * RESULT_FLOATS * 4) as u64;
-        let output = d.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("fur-results"),
-            size,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-            mapped_at_creation: false,
-        });
-        let staging = d.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("fur-staging"),
-            size,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let bind = d.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: None,
-            layout: &pipeline.get_bind_group_layout(0),
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: self.lut.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: input.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: output.as_entire_binding(),
-                },
-            ],
-        });
-        let mut enc = d.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-        {
-            let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: None,
-                timestamp_writes: None,
-            });
-            pass.set_pipeline(pipeline);
-            pass.set_bind_group(0, &bind, &[]);
-            // 64 invocations per workgroup; n ≤ MAX_DISPATCH keeps it within one dimension.
-            pass.dispatch_workgroups(n.div_ceil(64) as u32, 1, 1);
-        }
-        enc.copy_buffer_to_buffer(&output, 0, &staging, 0, size);
-        self.queue.submit([enc.finish()]);
-        let slice = staging.slice(..);
-        let (tx, rx) = std::sync::mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        d.poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
-        rx.recv()
-            .map_err(|e| GpuError::Readback(e.to_string()))?
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
-        let data = slice
-            .get_mapped_range()
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
-        let out = data
-            .chunks_exact(RESULT_FLOATS * 4)
-            .map(|r| {
-                let mut v = [0.0f32; 15];
-                for (o, b) in v.iter_mut().zip(r.chunks_exact(4)) {
-                    *o = f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
-                }
-                v
-            })
-            .collect();
-        drop(data);
-        staging.unmap();
-        Ok(out)
+        let table = (0, &self.lut);
+        let rows = dispatch(&self.device, &self.queue, pipeline, table, queries, n)?;
+        Ok(rows
+            .iter()
+            .map(|r| core::array::from_fn(|k| r[k]))
+            .collect())
     }
+}
+
+/// Runs `pipeline` over `n` queries (`queries`: the query buffer's vec4s) with `table` bound
+/// at its binding, and reads back [`RESULT_FLOATS`] floats per query.
+fn dispatch(
+    d: &wgpu::Device,
+    queue: &wgpu::Queue,
+    pipeline: &wgpu::ComputePipeline,
+    table: (u32, &wgpu::Buffer),
+    queries: &[[f32; 4]],
+    n: usize,
+) -> Result<Vec<[f32; RESULT_FLOATS]>, GpuError> {
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    let input = buffer_init(
+        d,
+        "fur-queries",
+        as_bytes(queries),
+        wgpu::BufferUsages::STORAGE,
+    );
+    let size = (n * RESULT_FLOATS * 4) as u64;
+    let output = d.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("fur-results"),
+        size,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
+    });
+    let staging = d.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("fur-staging"),
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let bind = d.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[
+            wgpu::BindGroupEntry {
+                binding: table.0,
+                resource: table.1.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 1,
+                resource: input.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 2,
+                resource: output.as_entire_binding(),
+            },
+        ],
+    });
+    let mut enc = d.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+    {
+        let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: None,
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, &bind, &[]);
+        // 64 invocations per workgroup; n ≤ MAX_DISPATCH keeps it within one dimension.
+        pass.dispatch_workgroups(n.div_ceil(64) as u32, 1, 1);
+    }
+    enc.copy_buffer_to_buffer(&output, 0, &staging, 0, size);
+    queue.submit([enc.finish()]);
+    let slice = staging.slice(..);
+    let (tx, rx) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = tx.send(r);
+    });
+    d.poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    rx.recv()
+        .map_err(|e| GpuError::Readback(e.to_string()))?
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    let data = slice
+        .get_mapped_range()
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    let out = data
+        .chunks_exact(RESULT_FLOATS * 4)
+        .map(|r| {
+            let mut v = [0.0f32; RESULT_FLOATS];
+            for (o, b) in v.iter_mut().zip(r.chunks_exact(4)) {
+                *o = f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+            }
+            v
+        })
+        .collect();
+    drop(data);
+    staging.unmap();
+    Ok(out)
 }
 
 fn buffer_init(

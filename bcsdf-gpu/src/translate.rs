@@ -3,6 +3,7 @@
 //! copy under `bcsdf-core/shaders/generated/` (set `FUR_BLESS_SHADERS=1` to rewrite them), and
 //! runs `spirv-val` and `glslangValidator` on them when those are installed.
 
+use crate::{ENTRY_DUAL, ENTRY_DUAL_DIRS};
 use bcsdf_core::shader::{ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_PDF, ENTRY_SAMPLE, FUR_BCSDF_WGSL};
 use naga::back::{glsl, hlsl, msl, spv};
 use naga::valid::{Capabilities, ValidationFlags, Validator};
@@ -75,7 +76,14 @@ pub fn translations() -> Result<Vec<Translation>, String> {
             "es310",
         ),
     ] {
-        for entry in [ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_SAMPLE, ENTRY_PDF] {
+        for entry in [
+            ENTRY_EVAL,
+            ENTRY_EVAL_DIRS,
+            ENTRY_SAMPLE,
+            ENTRY_PDF,
+            ENTRY_DUAL,
+            ENTRY_DUAL_DIRS,
+        ] {
             let mut text = String::new();
             let options = glsl::Options {
                 version,

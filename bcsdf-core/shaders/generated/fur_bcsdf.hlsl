@@ -43,6 +43,13 @@ struct FurDensity {
     uint channels;
 };
 
+struct FurDirAngles {
+    float theta_i;
+    float theta_r;
+    float phi;
+    bool ok;
+};
+
 struct FurSample {
     float theta_i;
     float phi;
@@ -95,8 +102,29 @@ static const float FUR_MIN_COS2_ = 0.0001;
 static const float FUR_POLE_SLIVER = 0.010000167;
 static const uint FUR_HEADER_HALVES = 80u;
 static const uint FUR_CLOSURE_WORD = 26u;
+static const uint FUR_DUAL_HEADER_WORDS = 16u;
+static const uint FUR_DUAL_FIELDS = 15u;
+static const uint FUR_DUAL_LOG2_DECAY = 0u;
+static const uint FUR_DUAL_BETA_F = 1u;
+static const uint FUR_DUAL_BACK = 2u;
+static const uint FUR_DUAL_FRONT = 3u;
+static const uint FUR_DUAL_DELTA_B = 4u;
+static const uint FUR_DUAL_SIGMA_B0_ = 5u;
+static const uint FUR_DUAL_A_F2_ = 6u;
+static const uint FUR_DUAL_MEAN = 7u;
+static const uint FUR_DUAL_SD = 11u;
+static const uint FUR_DUAL_THETA_NODES = 64u;
+static const uint FUR_DUAL_PHI_NODES = 32u;
+static const uint FUR_DUAL_NG_START = 2880u;
+static const float FUR_DUAL_THETA_SCALE = 20.371832;
+static const float FUR_DUAL_PHI_SCALE = 9.867606;
+static const float FUR_DUAL_MAX_FIBERS = 1000000.0;
+static const float FUR_DUAL_MAX_DENSITY = 4.0;
+static const float FUR_DUAL_MIN_VARIANCE = 3e-6;
+static const float FUR_LN2_ = 0.6931472;
 
 ByteAddressBuffer fur_lut : register(t0);
+ByteAddressBuffer fur_dual : register(t3);
 ByteAddressBuffer fur_queries : register(t1);
 RWByteAddressBuffer fur_results : register(u2);
 
@@ -129,9 +157,9 @@ int naga_f2i32(float value) {
 
 FurLoc fur_locate(FurAxis a, float x)
 {
-    float u_5 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
-    int i = min(naga_f2i32(u_5), asint(asuint(int(a.nodes)) - asuint(int(2))));
-    const FurLoc furloc = ConstructFurLoc(uint(i), (u_5 - float(i)));
+    float u_7 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
+    int i = min(naga_f2i32(u_7), asint(asuint(int(a.nodes)) - asuint(int(2))));
+    const FurLoc furloc = ConstructFurLoc(uint(i), (u_7 - float(i)));
     return furloc;
 }
 
@@ -350,17 +378,17 @@ FurDensity fur_density(uint d)
     uint _e49 = at;
     at = (_e49 + (12u * _e27));
     if ((d < 7u)) {
-        uint f_2 = (d - 3u);
+        uint f_3 = (d - 3u);
         uint _e57 = at;
-        const FurDensity furdensity_1 = ConstructFurDensity((_e57 + (((4u * f_2) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_2), 3u);
+        const FurDensity furdensity_1 = ConstructFurDensity((_e57 + (((4u * f_3) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_3), 3u);
         return furdensity_1;
     }
     uint _e74 = at;
     at = (_e74 + ((16u * _e4) * _e29));
     if ((d < 9u)) {
-        uint x_9 = (d - 7u);
+        uint x_11 = (d - 7u);
         uint _e83 = at;
-        const FurDensity furdensity_2 = ConstructFurDensity((_e83 + (((4u * x_9) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_9, 1u);
+        const FurDensity furdensity_2 = ConstructFurDensity((_e83 + (((4u * x_11) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_11, 1u);
         return furdensity_2;
     }
     uint _e98 = at;
@@ -700,9 +728,9 @@ float fur_atan2_(float y_1, float x_5)
     float ax_4 = abs(x_5);
     float ay = abs(y_1);
     float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_8 = (a_5 * a_5);
-    const float _e10 = fur_atan_poly(t_8);
-    r = (a_5 + (a_5 * (t_8 * _e10)));
+    float t_9 = (a_5 * a_5);
+    const float _e10 = fur_atan_poly(t_9);
+    r = (a_5 + (a_5 * (t_9 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -714,35 +742,44 @@ float fur_atan2_(float y_1, float x_5)
     return (((asuint(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28);
 }
 
-FurFamilies fur_eval_far_dirs(float3 wi, float3 wr, float3 u)
+FurDirAngles ConstructFurDirAngles(float arg0, float arg1, float arg2, bool arg3) {
+    FurDirAngles ret = (FurDirAngles)0;
+    ret.theta_i = arg0;
+    ret.theta_r = arg1;
+    ret.phi = arg2;
+    ret.ok = arg3;
+    return ret;
+}
+
+FurDirAngles fur_angles_from_dirs(float3 wi, float3 wr, float3 u)
 {
     bool local_8 = (bool)0;
     bool local_9 = (bool)0;
     bool local_10 = (bool)0;
     bool local_11 = (bool)0;
 
+    FurDirAngles none = ConstructFurDirAngles(0.0, 0.0, 0.0, false);
     float ii = dot(wi, wi);
     float rr = dot(wr, wr);
     float uu = dot(u, u);
-    const bool _e6 = fur_finite(ii);
-    if (_e6) {
-        const bool _e9 = fur_finite(rr);
-        local_8 = _e9;
+    const bool _e11 = fur_finite(ii);
+    if (_e11) {
+        const bool _e14 = fur_finite(rr);
+        local_8 = _e14;
     } else {
         local_8 = false;
     }
-    bool _e11 = local_8;
-    if (_e11) {
-        const bool _e14 = fur_finite(uu);
-        local_9 = _e14;
+    bool _e16 = local_8;
+    if (_e16) {
+        const bool _e19 = fur_finite(uu);
+        local_9 = _e19;
     } else {
         local_9 = false;
     }
-    bool _e16 = local_9;
-    if (!(_e16)) {
-        const FurFamilies _e18 = fur_zero();
-        const FurFamilies furfamilies_4 = _e18;
-        return furfamilies_4;
+    bool _e21 = local_9;
+    if (!(_e21)) {
+        const FurDirAngles furdirangles = none;
+        return furdirangles;
     }
     float ni = sqrt(ii);
     float nr = sqrt(rr);
@@ -752,29 +789,40 @@ FurFamilies fur_eval_far_dirs(float3 wi, float3 wr, float3 u)
     } else {
         local_10 = true;
     }
-    bool _e29 = local_10;
-    if (!(_e29)) {
+    bool _e33 = local_10;
+    if (!(_e33)) {
         local_11 = (nu < 1.1754944e-38);
     } else {
         local_11 = true;
     }
-    bool _e35 = local_11;
-    if (_e35) {
-        const FurFamilies _e36 = fur_zero();
-        const FurFamilies furfamilies_5 = _e36;
-        return furfamilies_5;
+    bool _e39 = local_11;
+    if (_e39) {
+        const FurDirAngles furdirangles_1 = none;
+        return furdirangles_1;
     }
     float3 un = (u * (1.0 / nu));
     float a_6 = dot(wi, un);
     float b_3 = dot(wr, un);
-    const float _e48 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
-    const float _e55 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
+    const float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
+    const float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_4 = dot(un, cross(wi, wr));
-    float x_10 = (dot(wi, wr) - (a_6 * b_3));
-    const float _e61 = fur_atan2_(y_4, x_10);
-    const FurFamilies _e63 = fur_eval_far(_e48, _e55, abs(_e61));
-    const FurFamilies furfamilies_6 = _e63;
-    return furfamilies_6;
+    float x_12 = (dot(wi, wr) - (a_6 * b_3));
+    const float _e64 = fur_atan2_(y_4, x_12);
+    const FurDirAngles furdirangles_2 = ConstructFurDirAngles(_e51, _e58, abs(_e64), true);
+    return furdirangles_2;
+}
+
+FurFamilies fur_eval_far_dirs(float3 wi_1, float3 wr_1, float3 u_1)
+{
+    const FurDirAngles _e3 = fur_angles_from_dirs(wi_1, wr_1, u_1);
+    if (!(_e3.ok)) {
+        const FurFamilies _e6 = fur_zero();
+        const FurFamilies furfamilies_4 = _e6;
+        return furfamilies_4;
+    }
+    const FurFamilies _e10 = fur_eval_far(_e3.theta_i, _e3.theta_r, _e3.phi);
+    const FurFamilies furfamilies_5 = _e10;
+    return furfamilies_5;
 }
 
 typedef uint ret_Constructarray3_uint_[3];
@@ -981,13 +1029,13 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
             }
             float _e70 = x_6;
             float _e71 = x_6;
-            float d_6 = (q0_ + (_e70 * (cb + (_e71 * cc))));
+            float d_7 = (q0_ + (_e70 * (cb + (_e71 * cc))));
             float _e76 = lo;
             float _e77 = hi;
             next = (0.5 * (_e76 + _e77));
-            if ((d_6 > 0.0)) {
+            if ((d_7 > 0.0)) {
                 float _e84 = x_6;
-                float n_1 = (_e84 - (fx / d_6));
+                float n_1 = (_e84 - (fx / d_7));
                 float _e87 = lo;
                 if ((n_1 >= _e87)) {
                     float _e91 = hi;
@@ -1066,10 +1114,10 @@ float fur_rows_invert_segment(FurRows r_7, uint j_4, float v0_5, float v1_5, flo
     return _e16;
 }
 
-float fur_unit(float u_1)
+float fur_unit(float u_2)
 {
-    if ((u_1 > 0.0)) {
-        return min(u_1, 0.99999994);
+    if ((u_2 > 0.0)) {
+        return min(u_2, 0.99999994);
     }
     return 0.0;
 }
@@ -1175,12 +1223,12 @@ float fur_rows_invert(FurRows r_8, float t_5)
     return (r_8.origin + (float(end) * r_8.d.step_));
 }
 
-float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_2)
+float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_3)
 {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
-    const float _e7 = fur_unit(u_2);
-    float t_9 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    const float _e14 = fur_rows_invert(r_9, t_9);
+    const float _e7 = fur_unit(u_3);
+    float t_10 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    const float _e14 = fur_rows_invert(r_9, t_10);
     return _e14;
 }
 
@@ -1222,7 +1270,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_10[3] = Constructarray3_float_(0.11270166, 0.5, 0.8872983);
+    float t_11[3] = Constructarray3_float_(0.11270166, 0.5, 0.8872983);
     float w_4[3] = Constructarray3_float_(0.2777778, 0.44444445, 0.2777778);
     uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
@@ -1241,11 +1289,11 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_7 = (t_10[min(uint(_e33), 2u)] * len_5);
+            float d_8 = (t_11[min(uint(_e33), 2u)] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
-            const float _e44 = fur_sliver_keep(((x0_ - pole) + d_7));
-            acc_3 = (_e36 + ((w_4[min(uint(_e37), 2u)] * (v0_6 + (slope * d_7))) * _e44));
+            const float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
+            acc_3 = (_e36 + ((w_4[min(uint(_e37), 2u)] * (v0_6 + (slope * d_8))) * _e44));
         }
     }
     float _e50 = acc_3;
@@ -1296,8 +1344,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             const float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_3 = (_e35 - t_6);
-            if ((f_3 > 0.0)) {
+            float f_4 = (_e35 - t_6);
+            if ((f_4 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1313,7 +1361,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_2 = (_e57 - (f_3 / dens));
+                float n_2 = (_e57 - (f_4 / dens));
                 float _e60 = lo_2;
                 if ((n_2 >= _e60)) {
                     float _e64 = hi_1;
@@ -1442,31 +1490,31 @@ float fur_range_kept(FurRange g_1)
     return ((max(((g_1.raw - g_1.s.x) - g_1.s.z), 0.0) + g_1.s.y) + g_1.s.w);
 }
 
-float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_3)
+float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_4)
 {
     bool local_23 = (bool)0;
 
     const float _e4 = fur_range_kept(g_2);
     float inset_3 = (_e4 * 9.536743e-7);
-    const float _e7 = fur_unit(u_3);
+    const float _e7 = fur_unit(u_4);
     float t0_1 = clamp((_e7 * _e4), inset_3, (_e4 - inset_3));
     if ((t0_1 < g_2.s.y)) {
         const float3 _e19 = fur_rows_sliver(r_12, ax_2, g_2.lo, (g_2.lo + FUR_POLE_SLIVER), g_2.lo, t0_1);
         return _e19.z;
     }
     float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
-    float t_11 = (t0_1 - g_2.s.y);
-    if (!((t_11 <= mid))) {
+    float t_12 = (t0_1 - g_2.s.y);
+    if (!((t_12 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        const float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_11, mid)));
+        const float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_12, mid)));
         return _e50;
     }
-    const float3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_11 - mid));
+    const float3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_12 - mid));
     return _e57.z;
 }
 
@@ -1696,9 +1744,9 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1)
     float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
     float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
+    float p_2 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
     const float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p * _e70);
+    float pg = (p_2 * _e70);
     const float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
     return _e76;
 }
@@ -1728,7 +1776,7 @@ FurSample ConstructFurSample(float arg0, float arg1, float arg2, float3 arg3, ui
     return ret;
 }
 
-FurSample fur_sample_far(float theta_r_7, float3 u_4)
+FurSample fur_sample_far(float theta_r_7, float3 u_5)
 {
     FurSample out_3 = ConstructFurSample(0.0, 0.0, 0.0, (0.0).xxx, 0u, false);
     bool local_25 = (bool)0;
@@ -1783,7 +1831,7 @@ FurSample fur_sample_far(float theta_r_7, float3 u_4)
         const FurSample fursample_1 = _e41;
         return fursample_1;
     }
-    const float _e43 = fur_unit(u_4.x);
+    const float _e43 = fur_unit(u_5.x);
     float _e44 = total;
     float target_mass = (_e43 * _e44);
     uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
@@ -1838,14 +1886,14 @@ FurSample fur_sample_far(float theta_r_7, float3 u_4)
         const FurRows _e111 = fur_rows(_e107, 0u, 0.0, -3.1415927);
         const FurAxis _e112 = fur_sum_axis();
         uint _e114 = c;
-        const float _e117 = fur_rows_invert_kept(_e111, _e112, _e21.ranges[min(uint(_e114), 4u)], u_4.y);
+        const float _e117 = fur_rows_invert_kept(_e111, _e112, _e21.ranges[min(uint(_e114), 4u)], u_5.y);
         theta_i_4 = clamp((_e117 - theta_r_7), -1.5707964, FUR_HALF_PI);
     } else {
         uint _e122 = c;
         const FurRows _e125 = fur_ms_rows((_e122 - 3u), theta_r_7);
         const FurAxis _e126 = fur_ms_i_axis();
         uint _e128 = c;
-        const float _e131 = fur_rows_invert_kept(_e125, _e126, _e21.ranges[min(uint(_e128), 4u)], u_4.y);
+        const float _e131 = fur_rows_invert_kept(_e125, _e126, _e21.ranges[min(uint(_e128), 4u)], u_5.y);
         theta_i_4 = clamp(_e131, -1.5707964, FUR_HALF_PI);
     }
     uint _e135 = c;
@@ -1865,7 +1913,7 @@ FurSample fur_sample_far(float theta_r_7, float3 u_4)
     FurRows _e162 = nrows;
     FurRows _e164 = nrows;
     const float _e165 = fur_rows_total(_e164);
-    const float _e167 = fur_rows_invert_between(_e162, 0.0, _e165, u_4.z);
+    const float _e167 = fur_rows_invert_between(_e162, 0.0, _e165, u_5.z);
     float abs_phi_1 = clamp(_e167, 0.0, FUR_PI);
     const float _e173 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
     float _e174 = theta_i_4;
@@ -1887,12 +1935,201 @@ FurSample fur_sample_far(float theta_r_7, float3 u_4)
     }
     const FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_10 = (max(cos(_e189), 0.0) / _e178);
+    float k_11 = (max(cos(_e189), 0.0) / _e178);
     float _e194 = theta_i_4;
-    out_3 = ConstructFurSample(_e194, _e173, _e178, max((_e188.total * k_10), (0.0).xxx), family, true);
+    out_3 = ConstructFurSample(_e194, _e173, _e178, max((_e188.total * k_11), (0.0).xxx), family, true);
     FurSample _e202 = out_3;
     const FurSample fursample_3 = _e202;
     return fursample_3;
+}
+
+float fur_dual_half(uint h_1)
+{
+    uint _e7 = asuint(fur_dual.Load((FUR_DUAL_HEADER_WORDS + (h_1 >> 1u))*4));
+    float2 pair = float2(f16tof32(_e7), f16tof32((_e7) >> 16));
+    return (((h_1 & 1u) == 1u) ? pair.y : pair.x);
+}
+
+float3 fur_dual_rgb(uint h_2)
+{
+    const float _e1 = fur_dual_half(h_2);
+    const float _e4 = fur_dual_half((h_2 + 1u));
+    const float _e7 = fur_dual_half((h_2 + 2u));
+    return float3(_e1, _e4, _e7);
+}
+
+bool fur_is_nan(float x_9)
+{
+    return ((asuint(x_9) & 2147483647u) > 2139095040u);
+}
+
+uint naga_f2u32(float value) {
+    return uint(clamp(value, 0.0, 4294967000.0));
+}
+
+FurLoc fur_dual_theta(float theta)
+{
+    float t_8 = (float)0;
+
+    t_8 = (((theta + FUR_HALF_PI) * FUR_DUAL_THETA_SCALE) - 0.5);
+    float _e8 = t_8;
+    float _e9 = t_8;
+    t_8 = ((_e9 > 0.0) ? _e8 : 0.0);
+    float _e14 = t_8;
+    t_8 = min(_e14, 63.0);
+    float _e17 = t_8;
+    uint k_12 = min(naga_f2u32(_e17), 62u);
+    float _e21 = t_8;
+    const FurLoc furloc_1 = ConstructFurLoc(k_12, (_e21 - float(k_12)));
+    return furloc_1;
+}
+
+float3 fur_dual_field(FurLoc l_4, uint f_1)
+{
+    const float3 _e8 = fur_dual_rgb((3u * ((l_4.i * FUR_DUAL_FIELDS) + f_1)));
+    const float3 _e17 = fur_dual_rgb((3u * (((l_4.i + 1u) * FUR_DUAL_FIELDS) + f_1)));
+    return (_e8 + ((_e17 - _e8) * l_4.w));
+}
+
+float3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p)
+{
+    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i);
+    uint row1_ = (row0_ + FUR_DUAL_PHI_NODES);
+    const float3 _e17 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row0_)));
+    const float3 _e24 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row0_ + 1u))));
+    const float3 _e29 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row1_)));
+    const float3 _e36 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row1_ + 1u))));
+    float3 lo_4 = (_e17 + ((_e24 - _e17) * p.w));
+    float3 hi_3 = (_e29 + ((_e36 - _e29) * p.w));
+    return (lo_4 + ((hi_3 - lo_4) * l_5.w));
+}
+
+float3 fur_dual_gauss(float3 d_6, float3 v_in)
+{
+    float3 v_2 = max(v_in, (3e-6).xxx);
+    return (exp(-(((d_6 * d_6) / (2.0 * v_2)))) / sqrt((FUR_TAU * v_2)));
+}
+
+float fur_dual_clean(float x_10, float top)
+{
+    bool local_27 = (bool)0;
+
+    const bool _e3 = fur_is_nan(x_10);
+    if (!(_e3)) {
+        local_27 = (x_10 > 0.0);
+    } else {
+        local_27 = false;
+    }
+    bool _e10 = local_27;
+    return (_e10 ? min(x_10, top) : 0.0);
+}
+
+float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fibers, float d_f_in, float d_b_in)
+{
+    float3 out_4 = (float3)0;
+    float p_1 = (float)0;
+    float3 f_s = (float3)0;
+    uint g_6 = 0u;
+
+    float3 zero = (0.0).xxx;
+    const bool _e8 = fur_valid(theta_i_5, theta_r_8, phi_in_1);
+    if (!(_e8)) {
+        return zero;
+    }
+    const float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    const float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    const float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    float x_13 = (theta_i_5 + theta_r_8);
+    const float _e17 = fur_cos_within_half_pi(theta_i_5);
+    float inv_cos2_1 = (1.0 / max((_e17 * _e17), FUR_MIN_COS2_));
+    float direct = clamp((1.0 - _e11), 0.0, 1.0);
+    const FurLoc _e28 = fur_dual_theta(theta_r_8);
+    const float _e29 = fur_wrap_angle(phi_in_1);
+    float abs_phi_2 = abs(_e29);
+    const float3 _e36 = fur_dual_field(_e28, ((abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
+    const float3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_);
+    const float3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_);
+    const float3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B);
+    float3 d_back = ((x_13).xxx - _e42);
+    float3 s_b = (((1.0).xxx + (_e15 * _e38)) * _e40);
+    float3 v_back = (s_b * s_b);
+    float back_scale = ((_e15 * inv_cos2_1) / FUR_PI);
+    out_4 = zero;
+    if ((direct > 0.0)) {
+        const float3 _e59 = fur_dual_gauss(d_back, v_back);
+        out_4 = (((direct * back_scale) * _e36) * _e59);
+    }
+    if ((_e11 > 0.0)) {
+        const FurLoc _e64 = fur_dual_theta(-(theta_i_5));
+        const float3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY);
+        const float3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F);
+        float3 t_f = exp(-(((-(_e11) * FUR_LN2_) * _e66)));
+        float3 spread = (max((t_f - (direct).xxx), zero) * _e13);
+        if (any((spread > zero))) {
+            float3 s2f = ((_e11 * _e68) * _e68);
+            p_1 = (abs_phi_2 * FUR_DUAL_PHI_SCALE);
+            float _e86 = p_1;
+            float _e89 = p_1;
+            p_1 = ((_e89 > 0.0) ? min(_e86, 31.0) : 0.0);
+            float _e94 = p_1;
+            uint j_7 = min(naga_f2u32(_e94), 30u);
+            float _e98 = p_1;
+            FurLoc at_phi = ConstructFurLoc(j_7, (_e98 - float(j_7)));
+            f_s = zero;
+            uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+            bool loop_init_16 = true;
+            while(true) {
+                if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+                loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+                if (!loop_init_16) {
+                    uint _e126 = g_6;
+                    g_6 = (_e126 + 1u);
+                }
+                loop_init_16 = false;
+                uint _e105 = g_6;
+                if ((_e105 < 4u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e109 = g_6;
+                    const float3 _e111 = fur_dual_field(_e28, (FUR_DUAL_MEAN + _e109));
+                    uint _e113 = g_6;
+                    const float3 _e115 = fur_dual_field(_e28, (FUR_DUAL_SD + _e113));
+                    uint _e116 = g_6;
+                    const float3 _e117 = fur_dual_ng(_e116, _e28, at_phi);
+                    float3 v_3 = ((_e115 * _e115) + s2f);
+                    float3 _e120 = f_s;
+                    const float3 _e123 = fur_dual_gauss(((x_13).xxx - _e111), v_3);
+                    f_s = (_e120 + (_e117 * _e123));
+                }
+            }
+            const float3 _e130 = fur_dual_gauss(d_back, (v_back + s2f));
+            float3 _e131 = out_4;
+            float3 _e132 = f_s;
+            out_4 = (_e131 + (spread * ((_e132 * inv_cos2_1) + ((back_scale * _e36) * _e130))));
+        }
+    }
+    float _e140 = out_4.x;
+    const bool _e141 = fur_finite(_e140);
+    float _e143 = out_4.y;
+    const bool _e144 = fur_finite(_e143);
+    float _e146 = out_4.z;
+    const bool _e147 = fur_finite(_e146);
+    bool3 finite = bool3(_e141, _e144, _e147);
+    float3 _e149 = out_4;
+    float3 _e150 = out_4;
+    return ((finite & (_e150 > zero)) ? _e149 : zero);
+}
+
+float3 fur_eval_dual_dirs(float3 wi_2, float3 wr_2, float3 u_6, float fibers_1, float d_f, float d_b)
+{
+    const FurDirAngles _e6 = fur_angles_from_dirs(wi_2, wr_2, u_6);
+    if (!(_e6.ok)) {
+        return (0.0).xxx;
+    }
+    const float3 _e14 = fur_eval_dual(_e6.theta_i, _e6.theta_r, _e6.phi, fibers_1, d_f, d_b);
+    return _e14;
 }
 
 typedef float3 ret_Constructarray5_float3_[5];
@@ -1901,22 +2138,22 @@ ret_Constructarray5_float3_ Constructarray5_float3_(float3 arg0, float3 arg1, fl
     return ret;
 }
 
-void fur_store(uint q, FurFamilies f_1)
+void fur_store(uint q, FurFamilies f_2)
 {
     uint k_9 = 0u;
 
     uint base_1 = (16u * q);
-    float3 parts[5] = Constructarray5_float3_(f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total);
-    uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
-    bool loop_init_16 = true;
+    float3 parts[5] = Constructarray5_float3_(f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
+    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
-        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-        if (!loop_init_16) {
+        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_17) {
             uint _e46 = k_9;
             k_9 = (_e46 + 1u);
         }
-        loop_init_16 = false;
+        loop_init_17 = false;
         uint _e12 = k_9;
         if ((_e12 < 5u)) {
         } else {
@@ -1938,6 +2175,37 @@ void fur_store(uint q, FurFamilies f_1)
     return;
 }
 
+void fur_store_rgb(uint q_1, float3 v_1)
+{
+    uint k_10 = 3u;
+
+    uint base_2 = (16u * q_1);
+    fur_results.Store(base_2*4, asuint(v_1.x));
+    fur_results.Store((base_2 + 1u)*4, asuint(v_1.y));
+    fur_results.Store((base_2 + 2u)*4, asuint(v_1.z));
+    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+    bool loop_init_18 = true;
+    while(true) {
+        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_18) {
+            uint _e27 = k_10;
+            k_10 = (_e27 + 1u);
+        }
+        loop_init_18 = false;
+        uint _e19 = k_10;
+        if ((_e19 < 16u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e23 = k_10;
+            fur_results.Store((base_2 + _e23)*4, asuint(0.0));
+        }
+    }
+    return;
+}
+
 uint NagaBufferLength(ByteAddressBuffer buffer)
 {
     uint ret;
@@ -1948,61 +2216,90 @@ uint NagaBufferLength(ByteAddressBuffer buffer)
 [numthreads(64, 1, 1)]
 void fur_eval_main(uint3 id : SV_DispatchThreadID)
 {
-    uint q_1 = id.x;
-    if ((q_1 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    uint q_2 = id.x;
+    if ((q_2 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_8 = asfloat(fur_queries.Load4(q_1*16));
+    float4 a_8 = asfloat(fur_queries.Load4(q_2*16));
     const FurFamilies _e11 = fur_eval_far(a_8.x, a_8.y, a_8.z);
-    fur_store(q_1, _e11);
+    fur_store(q_2, _e11);
     return;
 }
 
 [numthreads(64, 1, 1)]
 void fur_eval_dirs_main(uint3 id_1 : SV_DispatchThreadID)
 {
-    uint q_2 = id_1.x;
-    if ((((3u * q_2) + 2u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    uint q_3 = id_1.x;
+    if ((((3u * q_3) + 2u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 _e13 = asfloat(fur_queries.Load4((3u * q_2)*16));
-    float4 _e21 = asfloat(fur_queries.Load4(((3u * q_2) + 1u)*16));
-    float4 _e29 = asfloat(fur_queries.Load4(((3u * q_2) + 2u)*16));
+    float4 _e13 = asfloat(fur_queries.Load4((3u * q_3)*16));
+    float4 _e21 = asfloat(fur_queries.Load4(((3u * q_3) + 1u)*16));
+    float4 _e29 = asfloat(fur_queries.Load4(((3u * q_3) + 2u)*16));
     const FurFamilies _e31 = fur_eval_far_dirs(_e13.xyz, _e21.xyz, _e29.xyz);
-    fur_store(q_2, _e31);
+    fur_store(q_3, _e31);
     return;
 }
 
 [numthreads(64, 1, 1)]
 void fur_sample_main(uint3 id_2 : SV_DispatchThreadID)
 {
-    uint q_3 = id_2.x;
-    if ((q_3 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    uint q_4 = id_2.x;
+    if ((q_4 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_9 = asfloat(fur_queries.Load4(q_3*16));
+    float4 a_9 = asfloat(fur_queries.Load4(q_4*16));
     const FurSample _e10 = fur_sample_far(a_9.x, a_9.yzw);
-    uint base_2 = (16u * q_3);
-    fur_results.Store(base_2*4, asuint(_e10.theta_i));
-    fur_results.Store((base_2 + 1u)*4, asuint(_e10.phi));
-    fur_results.Store((base_2 + 2u)*4, asuint(_e10.pdf));
-    fur_results.Store((base_2 + 3u)*4, asuint(_e10.weight.x));
-    fur_results.Store((base_2 + 4u)*4, asuint(_e10.weight.y));
-    fur_results.Store((base_2 + 5u)*4, asuint(_e10.weight.z));
-    fur_results.Store((base_2 + 6u)*4, asuint(float(_e10.family)));
-    fur_results.Store((base_2 + 7u)*4, asuint((_e10.ok ? 1.0 : 0.0)));
+    uint base_3 = (16u * q_4);
+    fur_results.Store(base_3*4, asuint(_e10.theta_i));
+    fur_results.Store((base_3 + 1u)*4, asuint(_e10.phi));
+    fur_results.Store((base_3 + 2u)*4, asuint(_e10.pdf));
+    fur_results.Store((base_3 + 3u)*4, asuint(_e10.weight.x));
+    fur_results.Store((base_3 + 4u)*4, asuint(_e10.weight.y));
+    fur_results.Store((base_3 + 5u)*4, asuint(_e10.weight.z));
+    fur_results.Store((base_3 + 6u)*4, asuint(float(_e10.family)));
+    fur_results.Store((base_3 + 7u)*4, asuint((_e10.ok ? 1.0 : 0.0)));
     return;
 }
 
 [numthreads(64, 1, 1)]
 void fur_pdf_main(uint3 id_3 : SV_DispatchThreadID)
 {
-    uint q_4 = id_3.x;
-    if ((q_4 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    uint q_5 = id_3.x;
+    if ((q_5 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_10 = asfloat(fur_queries.Load4(q_4*16));
+    float4 a_10 = asfloat(fur_queries.Load4(q_5*16));
     const float _e15 = fur_pdf_far(a_10.x, a_10.y, a_10.z);
-    fur_results.Store((16u * q_4)*4, asuint(_e15));
+    fur_results.Store((16u * q_5)*4, asuint(_e15));
+    return;
+}
+
+[numthreads(64, 1, 1)]
+void fur_dual_main(uint3 id_4 : SV_DispatchThreadID)
+{
+    uint q_6 = id_4.x;
+    if ((((2u * q_6) + 1u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+        return;
+    }
+    float4 a_11 = asfloat(fur_queries.Load4((2u * q_6)*16));
+    float4 d_9 = asfloat(fur_queries.Load4(((2u * q_6) + 1u)*16));
+    const float3 _e27 = fur_eval_dual(a_11.x, a_11.y, a_11.z, a_11.w, d_9.x, d_9.y);
+    fur_store_rgb(q_6, _e27);
+    return;
+}
+
+[numthreads(64, 1, 1)]
+void fur_dual_dirs_main(uint3 id_5 : SV_DispatchThreadID)
+{
+    uint q_7 = id_5.x;
+    if ((((3u * q_7) + 2u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+        return;
+    }
+    float4 wi_3 = asfloat(fur_queries.Load4((3u * q_7)*16));
+    float4 wr_3 = asfloat(fur_queries.Load4(((3u * q_7) + 1u)*16));
+    float4 u_8 = asfloat(fur_queries.Load4(((3u * q_7) + 2u)*16));
+    const float3 _e34 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, wr_3.w, u_8.w);
+    fur_store_rgb(q_7, _e34);
     return;
 }

@@ -8,6 +8,7 @@ struct _mslBufferSizes {
     uint size0;
     uint size1;
     uint size2;
+    uint size3;
 };
 
 typedef uint type_1[1];
@@ -61,6 +62,13 @@ struct type_8 {
 struct type_9 {
     metal::float3 inner[4];
 };
+struct FurDirAngles {
+    float theta_i;
+    float theta_r;
+    float phi;
+    bool ok;
+    char _pad4[3];
+};
 struct FurSample {
     float theta_i;
     float phi;
@@ -104,9 +112,9 @@ struct FurParts {
     char _pad1[12];
     type_14 ranges;
 };
-typedef metal::float4 type_15[1];
-typedef float type_16[1];
-struct type_17 {
+typedef metal::float4 type_16[1];
+typedef float type_17[1];
+struct type_18 {
     metal::float3 inner[5];
 };
 constant float FUR_PI = 3.1415927;
@@ -116,6 +124,26 @@ constant float FUR_MIN_COS2_ = 0.0001;
 constant float FUR_POLE_SLIVER = 0.010000167;
 constant uint FUR_HEADER_HALVES = 80u;
 constant uint FUR_CLOSURE_WORD = 26u;
+constant uint FUR_DUAL_HEADER_WORDS = 16u;
+constant uint FUR_DUAL_FIELDS = 15u;
+constant uint FUR_DUAL_LOG2_DECAY = 0u;
+constant uint FUR_DUAL_BETA_F = 1u;
+constant uint FUR_DUAL_BACK = 2u;
+constant uint FUR_DUAL_FRONT = 3u;
+constant uint FUR_DUAL_DELTA_B = 4u;
+constant uint FUR_DUAL_SIGMA_B0_ = 5u;
+constant uint FUR_DUAL_A_F2_ = 6u;
+constant uint FUR_DUAL_MEAN = 7u;
+constant uint FUR_DUAL_SD = 11u;
+constant uint FUR_DUAL_THETA_NODES = 64u;
+constant uint FUR_DUAL_PHI_NODES = 32u;
+constant uint FUR_DUAL_NG_START = 2880u;
+constant float FUR_DUAL_THETA_SCALE = 20.371832;
+constant float FUR_DUAL_PHI_SCALE = 9.867606;
+constant float FUR_DUAL_MAX_FIBERS = 1000000.0;
+constant float FUR_DUAL_MAX_DENSITY = 4.0;
+constant float FUR_DUAL_MIN_VARIANCE = 0.000003;
+constant float FUR_LN2_ = 0.6931472;
 
 FurAxis fur_axis(
     bool centred,
@@ -134,9 +162,9 @@ FurLoc fur_locate(
     FurAxis a,
     float x
 ) {
-    float u_5 = metal::min(metal::max((x * a.inv_step) + a.offset, 0.0), a.last);
-    int i = metal::min(naga_f2i32(u_5), as_type<int>(as_type<uint>(static_cast<int>(a.nodes)) - as_type<uint>(2)));
-    return FurLoc {static_cast<uint>(i), u_5 - static_cast<float>(i)};
+    float u_7 = metal::min(metal::max((x * a.inv_step) + a.offset, 0.0), a.last);
+    int i = metal::min(naga_f2i32(u_7), as_type<int>(as_type<uint>(static_cast<int>(a.nodes)) - as_type<uint>(2)));
+    return FurLoc {static_cast<uint>(i), u_7 - static_cast<float>(i)};
 }
 
 uint fur_word(
@@ -344,16 +372,16 @@ FurDensity fur_density(
     uint _e49 = at;
     at = _e49 + (12u * _e27);
     if (d < 7u) {
-        uint f_2 = d - 3u;
+        uint f_3 = d - 3u;
         uint _e57 = at;
-        return FurDensity {_e57 + (((4u * f_2) * _e4) * _e29), _e29, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 3u * f_2, 3u};
+        return FurDensity {_e57 + (((4u * f_3) * _e4) * _e29), _e29, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 3u * f_3, 3u};
     }
     uint _e74 = at;
     at = _e74 + ((16u * _e4) * _e29);
     if (d < 9u) {
-        uint x_9 = d - 7u;
+        uint x_11 = d - 7u;
         uint _e83 = at;
-        return FurDensity {_e83 + (((4u * x_9) * _e10) * _e31), _e31, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_9, 1u};
+        return FurDensity {_e83 + (((4u * x_11) * _e10) * _e31), _e31, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_11, 1u};
     }
     uint _e98 = at;
     at = _e98 + ((8u * _e10) * _e31);
@@ -690,9 +718,9 @@ float fur_atan2_(
     float ax_4 = metal::abs(x_5);
     float ay = metal::abs(y_1);
     float a_5 = metal::min(ax_4, ay) / metal::max(metal::max(ax_4, ay), 0.000000000000000000000000000000000000011754944);
-    float t_8 = a_5 * a_5;
-    float _e10 = fur_atan_poly(t_8);
-    r = a_5 + (a_5 * (t_8 * _e10));
+    float t_9 = a_5 * a_5;
+    float _e10 = fur_atan_poly(t_9);
+    r = a_5 + (a_5 * (t_9 * _e10));
     float _e15 = r;
     float _e17 = r;
     r = (ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15;
@@ -704,38 +732,36 @@ float fur_atan2_(
     return ((as_type<uint>(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28;
 }
 
-FurFamilies fur_eval_far_dirs(
+FurDirAngles fur_angles_from_dirs(
     metal::float3 wi,
     metal::float3 wr,
-    metal::float3 u,
-    device type_1 const& fur_lut,
-    constant _mslBufferSizes& _buffer_sizes
+    metal::float3 u
 ) {
     bool local_8 = {};
     bool local_9 = {};
     bool local_10 = {};
     bool local_11 = {};
+    FurDirAngles none = FurDirAngles {0.0, 0.0, 0.0, false};
     float ii = metal::dot(wi, wi);
     float rr = metal::dot(wr, wr);
     float uu = metal::dot(u, u);
-    bool _e6 = fur_finite(ii);
-    if (_e6) {
-        bool _e9 = fur_finite(rr);
-        local_8 = _e9;
+    bool _e11 = fur_finite(ii);
+    if (_e11) {
+        bool _e14 = fur_finite(rr);
+        local_8 = _e14;
     } else {
         local_8 = false;
     }
-    bool _e11 = local_8;
-    if (_e11) {
-        bool _e14 = fur_finite(uu);
-        local_9 = _e14;
+    bool _e16 = local_8;
+    if (_e16) {
+        bool _e19 = fur_finite(uu);
+        local_9 = _e19;
     } else {
         local_9 = false;
     }
-    bool _e16 = local_9;
-    if (!(_e16)) {
-        FurFamilies _e18 = fur_zero();
-        return _e18;
+    bool _e21 = local_9;
+    if (!(_e21)) {
+        return none;
     }
     float ni = metal::sqrt(ii);
     float nr = metal::sqrt(rr);
@@ -745,27 +771,41 @@ FurFamilies fur_eval_far_dirs(
     } else {
         local_10 = true;
     }
-    bool _e29 = local_10;
-    if (!(_e29)) {
+    bool _e33 = local_10;
+    if (!(_e33)) {
         local_11 = nu < 0.000000000000000000000000000000000000011754944;
     } else {
         local_11 = true;
     }
-    bool _e35 = local_11;
-    if (_e35) {
-        FurFamilies _e36 = fur_zero();
-        return _e36;
+    bool _e39 = local_11;
+    if (_e39) {
+        return none;
     }
     metal::float3 un = u * (1.0 / nu);
     float a_6 = metal::dot(wi, un);
     float b_3 = metal::dot(wr, un);
-    float _e48 = fur_asin(metal::clamp(a_6 * (1.0 / ni), -1.0, 1.0));
-    float _e55 = fur_asin(metal::clamp(b_3 * (1.0 / nr), -1.0, 1.0));
+    float _e51 = fur_asin(metal::clamp(a_6 * (1.0 / ni), -1.0, 1.0));
+    float _e58 = fur_asin(metal::clamp(b_3 * (1.0 / nr), -1.0, 1.0));
     float y_4 = metal::dot(un, metal::cross(wi, wr));
-    float x_10 = metal::dot(wi, wr) - (a_6 * b_3);
-    float _e61 = fur_atan2_(y_4, x_10);
-    FurFamilies _e63 = fur_eval_far(_e48, _e55, metal::abs(_e61), fur_lut, _buffer_sizes);
-    return _e63;
+    float x_12 = metal::dot(wi, wr) - (a_6 * b_3);
+    float _e64 = fur_atan2_(y_4, x_12);
+    return FurDirAngles {_e51, _e58, metal::abs(_e64), true};
+}
+
+FurFamilies fur_eval_far_dirs(
+    metal::float3 wi_1,
+    metal::float3 wr_1,
+    metal::float3 u_1,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FurDirAngles _e3 = fur_angles_from_dirs(wi_1, wr_1, u_1);
+    if (!(_e3.ok)) {
+        FurFamilies _e6 = fur_zero();
+        return _e6;
+    }
+    FurFamilies _e10 = fur_eval_far(_e3.theta_i, _e3.theta_r, _e3.phi, fur_lut, _buffer_sizes);
+    return _e10;
 }
 
 float fur_node(
@@ -999,13 +1039,13 @@ float fur_invert_weighted_linear(
             }
             float _e70 = x_6;
             float _e71 = x_6;
-            float d_6 = q0_ + (_e70 * (cb + (_e71 * cc)));
+            float d_7 = q0_ + (_e70 * (cb + (_e71 * cc)));
             float _e76 = lo;
             float _e77 = hi;
             next = 0.5 * (_e76 + _e77);
-            if (d_6 > 0.0) {
+            if (d_7 > 0.0) {
                 float _e84 = x_6;
-                float n_1 = _e84 - (fx / d_6);
+                float n_1 = _e84 - (fx / d_7);
                 float _e87 = lo;
                 if (n_1 >= _e87) {
                     float _e91 = hi;
@@ -1096,10 +1136,10 @@ float fur_rows_invert_segment(
 }
 
 float fur_unit(
-    float u_1
+    float u_2
 ) {
-    if (u_1 > 0.0) {
-        return metal::min(u_1, 0.99999994);
+    if (u_2 > 0.0) {
+        return metal::min(u_2, 0.99999994);
     }
     return 0.0;
 }
@@ -1212,14 +1252,14 @@ float fur_rows_invert_between(
     FurRows r_9,
     float t0_,
     float t1_,
-    float u_2,
+    float u_3,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float inset_2 = (t1_ - t0_) * 0.0000009536743;
-    float _e7 = fur_unit(u_2);
-    float t_9 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
-    float _e14 = fur_rows_invert(r_9, t_9, fur_lut, _buffer_sizes);
+    float _e7 = fur_unit(u_3);
+    float t_10 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
+    float _e14 = fur_rows_invert(r_9, t_10, fur_lut, _buffer_sizes);
     return _e14;
 }
 
@@ -1262,7 +1302,7 @@ float fur_sliver_piece_mass(
         return 0.0;
     }
     float slope = (v1_6 - v0_6) / len0_;
-    type_5 t_10 = type_5 {{0.11270166, 0.5, 0.8872983}};
+    type_5 t_11 = type_5 {{0.11270166, 0.5, 0.8872983}};
     type_5 w_4 = type_5 {{0.2777778, 0.44444445, 0.2777778}};
     uint2 loop_bound_9 = uint2(4294967295u);
     bool loop_init_8 = true;
@@ -1281,11 +1321,11 @@ float fur_sliver_piece_mass(
         }
         {
             uint _e33 = k_5;
-            float d_7 = t_10.inner[_e33] * len_5;
+            float d_8 = t_11.inner[_e33] * len_5;
             float _e36 = acc_3;
             uint _e37 = k_5;
-            float _e44 = fur_sliver_keep((x0_ - pole) + d_7);
-            acc_3 = _e36 + ((w_4.inner[_e37] * (v0_6 + (slope * d_7))) * _e44);
+            float _e44 = fur_sliver_keep((x0_ - pole) + d_8);
+            acc_3 = _e36 + ((w_4.inner[_e37] * (v0_6 + (slope * d_8))) * _e44);
         }
     }
     float _e50 = acc_3;
@@ -1341,8 +1381,8 @@ float fur_invert_sliver_piece(
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_3 = _e35 - t_6;
-            if (f_3 > 0.0) {
+            float f_4 = _e35 - t_6;
+            if (f_4 > 0.0) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1358,7 +1398,7 @@ float fur_invert_sliver_piece(
             next_1 = 0.5 * (_e49 + _e50);
             if (dens > 0.0) {
                 float _e57 = d_4;
-                float n_2 = _e57 - (f_3 / dens);
+                float n_2 = _e57 - (f_4 / dens);
                 float _e60 = lo_2;
                 if (n_2 >= _e60) {
                     float _e64 = hi_1;
@@ -1496,32 +1536,32 @@ float fur_rows_invert_kept(
     FurRows r_12,
     FurAxis ax_2,
     FurRange g_2,
-    float u_3,
+    float u_4,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_23 = {};
     float _e4 = fur_range_kept(g_2);
     float inset_3 = _e4 * 0.0000009536743;
-    float _e7 = fur_unit(u_3);
+    float _e7 = fur_unit(u_4);
     float t0_1 = metal::clamp(_e7 * _e4, inset_3, _e4 - inset_3);
     if (t0_1 < g_2.s.y) {
         metal::float3 _e19 = fur_rows_sliver(r_12, ax_2, g_2.lo, g_2.lo + FUR_POLE_SLIVER, g_2.lo, t0_1, fur_lut, _buffer_sizes);
         return _e19.z;
     }
     float mid = metal::max((g_2.raw - g_2.s.x) - g_2.s.z, 0.0);
-    float t_11 = t0_1 - g_2.s.y;
-    if (!((t_11 <= mid))) {
+    float t_12 = t0_1 - g_2.s.y;
+    if (!((t_12 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_11, mid), fur_lut, _buffer_sizes);
+        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_12, mid), fur_lut, _buffer_sizes);
         return _e50;
     }
-    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_11 - mid, fur_lut, _buffer_sizes);
+    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_12 - mid, fur_lut, _buffer_sizes);
     return _e57.z;
 }
 
@@ -1748,9 +1788,9 @@ float fur_density_of(
     float mean2_ = ((l_3.n.inner[6] + l_3.n.inner[7]) + l_3.n.inner[8]) * 0.33333334;
     float mean3_ = ((l_3.n.inner[9] + l_3.n.inner[10]) + l_3.n.inner[11]) * 0.33333334;
     float ms_1 = l_3.ms.inner[0] + (l_3.front * (l_3.ms.inner[1] - l_3.ms.inner[0]));
-    float p = (((l_3.m.inner[0] * mean0_) + (l_3.m.inner[1] * mean1_)) + (l_3.m.inner[2] * mean2_)) + (ms_1 * mean3_);
+    float p_2 = (((l_3.m.inner[0] * mean0_) + (l_3.m.inner[1] * mean1_)) + (l_3.m.inner[2] * mean2_)) + (ms_1 * mean3_);
     float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = p * _e70;
+    float pg = p_2 * _e70;
     float _e76 = fur_positive((pg / w_2) / metal::max(cos_theta_i_1, 0.000001));
     return _e76;
 }
@@ -1776,7 +1816,7 @@ float fur_pdf_far(
 
 FurSample fur_sample_far(
     float theta_r_7,
-    metal::float3 u_4,
+    metal::float3 u_5,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1830,7 +1870,7 @@ FurSample fur_sample_far(
         FurSample _e41 = out_3;
         return _e41;
     }
-    float _e43 = fur_unit(u_4.x);
+    float _e43 = fur_unit(u_5.x);
     float _e44 = total;
     float target_mass = _e43 * _e44;
     uint2 loop_bound_16 = uint2(4294967295u);
@@ -1885,14 +1925,14 @@ FurSample fur_sample_far(
         FurRows _e111 = fur_rows(_e107, 0u, 0.0, -3.1415927);
         FurAxis _e112 = fur_sum_axis(fur_lut, _buffer_sizes);
         uint _e114 = c;
-        float _e117 = fur_rows_invert_kept(_e111, _e112, _e21.ranges.inner[_e114], u_4.y, fur_lut, _buffer_sizes);
+        float _e117 = fur_rows_invert_kept(_e111, _e112, _e21.ranges.inner[_e114], u_5.y, fur_lut, _buffer_sizes);
         theta_i_4 = metal::clamp(_e117 - theta_r_7, -1.5707964, FUR_HALF_PI);
     } else {
         uint _e122 = c;
         FurRows _e125 = fur_ms_rows(_e122 - 3u, theta_r_7, fur_lut, _buffer_sizes);
         FurAxis _e126 = fur_ms_i_axis(fur_lut, _buffer_sizes);
         uint _e128 = c;
-        float _e131 = fur_rows_invert_kept(_e125, _e126, _e21.ranges.inner[_e128], u_4.y, fur_lut, _buffer_sizes);
+        float _e131 = fur_rows_invert_kept(_e125, _e126, _e21.ranges.inner[_e128], u_5.y, fur_lut, _buffer_sizes);
         theta_i_4 = metal::clamp(_e131, -1.5707964, FUR_HALF_PI);
     }
     uint _e135 = c;
@@ -1912,7 +1952,7 @@ FurSample fur_sample_far(
     FurRows _e162 = nrows;
     FurRows _e164 = nrows;
     float _e165 = fur_rows_total(_e164, fur_lut, _buffer_sizes);
-    float _e167 = fur_rows_invert_between(_e162, 0.0, _e165, u_4.z, fur_lut, _buffer_sizes);
+    float _e167 = fur_rows_invert_between(_e162, 0.0, _e165, u_5.z, fur_lut, _buffer_sizes);
     float abs_phi_1 = metal::clamp(_e167, 0.0, FUR_PI);
     float _e173 = fur_wrap_angle(negative ? -(abs_phi_1) : abs_phi_1);
     float _e174 = theta_i_4;
@@ -1933,32 +1973,254 @@ FurSample fur_sample_far(
     }
     FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_10 = metal::max(metal::cos(_e189), 0.0) / _e178;
+    float k_11 = metal::max(metal::cos(_e189), 0.0) / _e178;
     float _e194 = theta_i_4;
-    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_10, metal::float3(0.0)), family, true};
+    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_11, metal::float3(0.0)), family, true};
     FurSample _e202 = out_3;
     return _e202;
 }
 
+float fur_dual_half(
+    uint h_1,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e7 = fur_dual[FUR_DUAL_HEADER_WORDS + (h_1 >> 1u)];
+    metal::float2 pair = float2(as_type<half2>(_e7));
+    return ((h_1 & 1u) == 1u) ? pair.y : pair.x;
+}
+
+metal::float3 fur_dual_rgb(
+    uint h_2,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e1 = fur_dual_half(h_2, fur_dual, _buffer_sizes);
+    float _e4 = fur_dual_half(h_2 + 1u, fur_dual, _buffer_sizes);
+    float _e7 = fur_dual_half(h_2 + 2u, fur_dual, _buffer_sizes);
+    return metal::float3(_e1, _e4, _e7);
+}
+
+bool fur_is_nan(
+    float x_9
+) {
+    return (as_type<uint>(x_9) & 2147483647u) > 2139095040u;
+}
+
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+FurLoc fur_dual_theta(
+    float theta
+) {
+    float t_8 = {};
+    t_8 = ((theta + FUR_HALF_PI) * FUR_DUAL_THETA_SCALE) - 0.5;
+    float _e8 = t_8;
+    float _e9 = t_8;
+    t_8 = (_e9 > 0.0) ? _e8 : 0.0;
+    float _e14 = t_8;
+    t_8 = metal::min(_e14, 63.0);
+    float _e17 = t_8;
+    uint k_12 = metal::min(naga_f2u32(_e17), 62u);
+    float _e21 = t_8;
+    return FurLoc {k_12, _e21 - static_cast<float>(k_12)};
+}
+
+metal::float3 fur_dual_field(
+    FurLoc l_4,
+    uint f_1,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e8 = fur_dual_rgb(3u * ((l_4.i * FUR_DUAL_FIELDS) + f_1), fur_dual, _buffer_sizes);
+    metal::float3 _e17 = fur_dual_rgb(3u * (((l_4.i + 1u) * FUR_DUAL_FIELDS) + f_1), fur_dual, _buffer_sizes);
+    return _e8 + ((_e17 - _e8) * l_4.w);
+}
+
+metal::float3 fur_dual_ng(
+    uint g_5,
+    FurLoc l_5,
+    FurLoc p,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint row0_ = (((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i;
+    uint row1_ = row0_ + FUR_DUAL_PHI_NODES;
+    metal::float3 _e17 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * row0_), fur_dual, _buffer_sizes);
+    metal::float3 _e24 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * (row0_ + 1u)), fur_dual, _buffer_sizes);
+    metal::float3 _e29 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * row1_), fur_dual, _buffer_sizes);
+    metal::float3 _e36 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * (row1_ + 1u)), fur_dual, _buffer_sizes);
+    metal::float3 lo_4 = _e17 + ((_e24 - _e17) * p.w);
+    metal::float3 hi_3 = _e29 + ((_e36 - _e29) * p.w);
+    return lo_4 + ((hi_3 - lo_4) * l_5.w);
+}
+
+metal::float3 fur_dual_gauss(
+    metal::float3 d_6,
+    metal::float3 v_in
+) {
+    metal::float3 v_2 = metal::max(v_in, metal::float3(0.000003));
+    return metal::exp(-(((d_6 * d_6) / (2.0 * v_2)))) / metal::sqrt(FUR_TAU * v_2);
+}
+
+float fur_dual_clean(
+    float x_10,
+    float top
+) {
+    bool local_27 = {};
+    bool _e3 = fur_is_nan(x_10);
+    if (!(_e3)) {
+        local_27 = x_10 > 0.0;
+    } else {
+        local_27 = false;
+    }
+    bool _e10 = local_27;
+    return _e10 ? metal::min(x_10, top) : 0.0;
+}
+
+metal::float3 fur_eval_dual(
+    float theta_i_5,
+    float theta_r_8,
+    float phi_in_1,
+    float fibers,
+    float d_f_in,
+    float d_b_in,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 out_4 = {};
+    float p_1 = {};
+    metal::float3 f_s = {};
+    uint g_6 = 0u;
+    metal::float3 zero = metal::float3(0.0);
+    bool _e8 = fur_valid(theta_i_5, theta_r_8, phi_in_1);
+    if (!(_e8)) {
+        return zero;
+    }
+    float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    float x_13 = theta_i_5 + theta_r_8;
+    float _e17 = fur_cos_within_half_pi(theta_i_5);
+    float inv_cos2_1 = 1.0 / metal::max(_e17 * _e17, FUR_MIN_COS2_);
+    float direct = metal::clamp(1.0 - _e11, 0.0, 1.0);
+    FurLoc _e28 = fur_dual_theta(theta_r_8);
+    float _e29 = fur_wrap_angle(phi_in_1);
+    float abs_phi_2 = metal::abs(_e29);
+    metal::float3 _e36 = fur_dual_field(_e28, (abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT, fur_dual, _buffer_sizes);
+    metal::float3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
+    metal::float3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_, fur_dual, _buffer_sizes);
+    metal::float3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B, fur_dual, _buffer_sizes);
+    metal::float3 d_back = metal::float3(x_13) - _e42;
+    metal::float3 s_b = (metal::float3(1.0) + (_e15 * _e38)) * _e40;
+    metal::float3 v_back = s_b * s_b;
+    float back_scale = (_e15 * inv_cos2_1) / FUR_PI;
+    out_4 = zero;
+    if (direct > 0.0) {
+        metal::float3 _e59 = fur_dual_gauss(d_back, v_back);
+        out_4 = ((direct * back_scale) * _e36) * _e59;
+    }
+    if (_e11 > 0.0) {
+        FurLoc _e64 = fur_dual_theta(-(theta_i_5));
+        metal::float3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
+        metal::float3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F, fur_dual, _buffer_sizes);
+        metal::float3 t_f = metal::exp(-(((-(_e11) * FUR_LN2_) * _e66)));
+        metal::float3 spread = metal::max(t_f - metal::float3(direct), zero) * _e13;
+        if (metal::any(spread > zero)) {
+            metal::float3 s2f = (_e11 * _e68) * _e68;
+            p_1 = abs_phi_2 * FUR_DUAL_PHI_SCALE;
+            float _e86 = p_1;
+            float _e89 = p_1;
+            p_1 = (_e89 > 0.0) ? metal::min(_e86, 31.0) : 0.0;
+            float _e94 = p_1;
+            uint j_7 = metal::min(naga_f2u32(_e94), 30u);
+            float _e98 = p_1;
+            FurLoc at_phi = FurLoc {j_7, _e98 - static_cast<float>(j_7)};
+            f_s = zero;
+            uint2 loop_bound_17 = uint2(4294967295u);
+            bool loop_init_16 = true;
+            while(true) {
+                if (metal::all(loop_bound_17 == uint2(0u))) { break; }
+                loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+                if (!loop_init_16) {
+                    uint _e126 = g_6;
+                    g_6 = _e126 + 1u;
+                }
+                loop_init_16 = false;
+                uint _e105 = g_6;
+                if (_e105 < 4u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e109 = g_6;
+                    metal::float3 _e111 = fur_dual_field(_e28, FUR_DUAL_MEAN + _e109, fur_dual, _buffer_sizes);
+                    uint _e113 = g_6;
+                    metal::float3 _e115 = fur_dual_field(_e28, FUR_DUAL_SD + _e113, fur_dual, _buffer_sizes);
+                    uint _e116 = g_6;
+                    metal::float3 _e117 = fur_dual_ng(_e116, _e28, at_phi, fur_dual, _buffer_sizes);
+                    metal::float3 v_3 = (_e115 * _e115) + s2f;
+                    metal::float3 _e120 = f_s;
+                    metal::float3 _e123 = fur_dual_gauss(metal::float3(x_13) - _e111, v_3);
+                    f_s = _e120 + (_e117 * _e123);
+                }
+            }
+            metal::float3 _e130 = fur_dual_gauss(d_back, v_back + s2f);
+            metal::float3 _e131 = out_4;
+            metal::float3 _e132 = f_s;
+            out_4 = _e131 + (spread * ((_e132 * inv_cos2_1) + ((back_scale * _e36) * _e130)));
+        }
+    }
+    float _e140 = out_4.x;
+    bool _e141 = fur_finite(_e140);
+    float _e143 = out_4.y;
+    bool _e144 = fur_finite(_e143);
+    float _e146 = out_4.z;
+    bool _e147 = fur_finite(_e146);
+    metal::bool3 finite = metal::bool3(_e141, _e144, _e147);
+    metal::float3 _e149 = out_4;
+    metal::float3 _e150 = out_4;
+    return metal::select(zero, _e149, finite & (_e150 > zero));
+}
+
+metal::float3 fur_eval_dual_dirs(
+    metal::float3 wi_2,
+    metal::float3 wr_2,
+    metal::float3 u_6,
+    float fibers_1,
+    float d_f,
+    float d_b,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FurDirAngles _e6 = fur_angles_from_dirs(wi_2, wr_2, u_6);
+    if (!(_e6.ok)) {
+        return metal::float3(0.0);
+    }
+    metal::float3 _e14 = fur_eval_dual(_e6.theta_i, _e6.theta_r, _e6.phi, fibers_1, d_f, d_b, fur_dual, _buffer_sizes);
+    return _e14;
+}
+
 void fur_store(
     uint q,
-    FurFamilies f_1,
-    device type_16& fur_results,
+    FurFamilies f_2,
+    device type_17& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint k_9 = 0u;
     uint base_1 = 16u * q;
-    type_17 parts = type_17 {{f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total}};
-    uint2 loop_bound_17 = uint2(4294967295u);
-    bool loop_init_16 = true;
+    type_18 parts = type_18 {{f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total}};
+    uint2 loop_bound_18 = uint2(4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (metal::all(loop_bound_17 == uint2(0u))) { break; }
-        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-        if (!loop_init_16) {
+        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_17) {
             uint _e46 = k_9;
             k_9 = _e46 + 1u;
         }
-        loop_init_16 = false;
+        loop_init_17 = false;
         uint _e12 = k_9;
         if (_e12 < 5u) {
         } else {
@@ -1980,22 +2242,56 @@ void fur_store(
     return;
 }
 
+void fur_store_rgb(
+    uint q_1,
+    metal::float3 v_1,
+    device type_17& fur_results,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint k_10 = 3u;
+    uint base_2 = 16u * q_1;
+    fur_results[base_2] = v_1.x;
+    fur_results[base_2 + 1u] = v_1.y;
+    fur_results[base_2 + 2u] = v_1.z;
+    uint2 loop_bound_19 = uint2(4294967295u);
+    bool loop_init_18 = true;
+    while(true) {
+        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_18) {
+            uint _e27 = k_10;
+            k_10 = _e27 + 1u;
+        }
+        loop_init_18 = false;
+        uint _e19 = k_10;
+        if (_e19 < 16u) {
+        } else {
+            break;
+        }
+        {
+            uint _e23 = k_10;
+            fur_results[base_2 + _e23] = 0.0;
+        }
+    }
+    return;
+}
+
 struct fur_eval_mainInput {
 };
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_eval_main(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_15 const& fur_queries [[user(fake0)]]
-, device type_16& fur_results [[user(fake0)]]
+, device type_16 const& fur_queries [[user(fake0)]]
+, device type_17& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    uint q_1 = id.x;
-    if (q_1 >= (1 + (_buffer_sizes.size1 - 0 - 16) / 16)) {
+    uint q_2 = id.x;
+    if (q_2 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_8 = fur_queries[q_1];
+    metal::float4 a_8 = fur_queries[q_2];
     FurFamilies _e11 = fur_eval_far(a_8.x, a_8.y, a_8.z, fur_lut, _buffer_sizes);
-    fur_store(q_1, _e11, fur_results, _buffer_sizes);
+    fur_store(q_2, _e11, fur_results, _buffer_sizes);
     return;
 }
 
@@ -2005,19 +2301,19 @@ struct fur_eval_dirs_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_eval_dirs_main(
   metal::uint3 id_1 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_15 const& fur_queries [[user(fake0)]]
-, device type_16& fur_results [[user(fake0)]]
+, device type_16 const& fur_queries [[user(fake0)]]
+, device type_17& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    uint q_2 = id_1.x;
-    if (((3u * q_2) + 2u) >= (1 + (_buffer_sizes.size1 - 0 - 16) / 16)) {
+    uint q_3 = id_1.x;
+    if (((3u * q_3) + 2u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 _e13 = fur_queries[3u * q_2];
-    metal::float4 _e21 = fur_queries[(3u * q_2) + 1u];
-    metal::float4 _e29 = fur_queries[(3u * q_2) + 2u];
+    metal::float4 _e13 = fur_queries[3u * q_3];
+    metal::float4 _e21 = fur_queries[(3u * q_3) + 1u];
+    metal::float4 _e29 = fur_queries[(3u * q_3) + 2u];
     FurFamilies _e31 = fur_eval_far_dirs(_e13.xyz, _e21.xyz, _e29.xyz, fur_lut, _buffer_sizes);
-    fur_store(q_2, _e31, fur_results, _buffer_sizes);
+    fur_store(q_3, _e31, fur_results, _buffer_sizes);
     return;
 }
 
@@ -2027,25 +2323,25 @@ struct fur_sample_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_sample_main(
   metal::uint3 id_2 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_15 const& fur_queries [[user(fake0)]]
-, device type_16& fur_results [[user(fake0)]]
+, device type_16 const& fur_queries [[user(fake0)]]
+, device type_17& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    uint q_3 = id_2.x;
-    if (q_3 >= (1 + (_buffer_sizes.size1 - 0 - 16) / 16)) {
+    uint q_4 = id_2.x;
+    if (q_4 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_9 = fur_queries[q_3];
+    metal::float4 a_9 = fur_queries[q_4];
     FurSample _e10 = fur_sample_far(a_9.x, a_9.yzw, fur_lut, _buffer_sizes);
-    uint base_2 = 16u * q_3;
-    fur_results[base_2] = _e10.theta_i;
-    fur_results[base_2 + 1u] = _e10.phi;
-    fur_results[base_2 + 2u] = _e10.pdf;
-    fur_results[base_2 + 3u] = _e10.weight[0];
-    fur_results[base_2 + 4u] = _e10.weight[1];
-    fur_results[base_2 + 5u] = _e10.weight[2];
-    fur_results[base_2 + 6u] = static_cast<float>(_e10.family);
-    fur_results[base_2 + 7u] = _e10.ok ? 1.0 : 0.0;
+    uint base_3 = 16u * q_4;
+    fur_results[base_3] = _e10.theta_i;
+    fur_results[base_3 + 1u] = _e10.phi;
+    fur_results[base_3 + 2u] = _e10.pdf;
+    fur_results[base_3 + 3u] = _e10.weight[0];
+    fur_results[base_3 + 4u] = _e10.weight[1];
+    fur_results[base_3 + 5u] = _e10.weight[2];
+    fur_results[base_3 + 6u] = static_cast<float>(_e10.family);
+    fur_results[base_3 + 7u] = _e10.ok ? 1.0 : 0.0;
     return;
 }
 
@@ -2055,16 +2351,59 @@ struct fur_pdf_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_pdf_main(
   metal::uint3 id_3 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_15 const& fur_queries [[user(fake0)]]
-, device type_16& fur_results [[user(fake0)]]
+, device type_16 const& fur_queries [[user(fake0)]]
+, device type_17& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    uint q_4 = id_3.x;
-    if (q_4 >= (1 + (_buffer_sizes.size1 - 0 - 16) / 16)) {
+    uint q_5 = id_3.x;
+    if (q_5 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_10 = fur_queries[q_4];
+    metal::float4 a_10 = fur_queries[q_5];
     float _e15 = fur_pdf_far(a_10.x, a_10.y, a_10.z, fur_lut, _buffer_sizes);
-    fur_results[16u * q_4] = _e15;
+    fur_results[16u * q_5] = _e15;
+    return;
+}
+
+
+struct fur_dual_mainInput {
+};
+[[max_total_threads_per_threadgroup(64)]] kernel void fur_dual_main(
+  metal::uint3 id_4 [[thread_position_in_grid]]
+, device type_1 const& fur_dual [[user(fake0)]]
+, device type_16 const& fur_queries [[user(fake0)]]
+, device type_17& fur_results [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    uint q_6 = id_4.x;
+    if (((2u * q_6) + 1u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+        return;
+    }
+    metal::float4 a_11 = fur_queries[2u * q_6];
+    metal::float4 d_9 = fur_queries[(2u * q_6) + 1u];
+    metal::float3 _e27 = fur_eval_dual(a_11.x, a_11.y, a_11.z, a_11.w, d_9.x, d_9.y, fur_dual, _buffer_sizes);
+    fur_store_rgb(q_6, _e27, fur_results, _buffer_sizes);
+    return;
+}
+
+
+struct fur_dual_dirs_mainInput {
+};
+[[max_total_threads_per_threadgroup(64)]] kernel void fur_dual_dirs_main(
+  metal::uint3 id_5 [[thread_position_in_grid]]
+, device type_1 const& fur_dual [[user(fake0)]]
+, device type_16 const& fur_queries [[user(fake0)]]
+, device type_17& fur_results [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    uint q_7 = id_5.x;
+    if (((3u * q_7) + 2u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+        return;
+    }
+    metal::float4 wi_3 = fur_queries[3u * q_7];
+    metal::float4 wr_3 = fur_queries[(3u * q_7) + 1u];
+    metal::float4 u_8 = fur_queries[(3u * q_7) + 2u];
+    metal::float3 _e34 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, wr_3.w, u_8.w, fur_dual, _buffer_sizes);
+    fur_store_rgb(q_7, _e34, fur_results, _buffer_sizes);
     return;
 }

@@ -38,6 +38,12 @@ struct FurDensity {
     uint first;
     uint channels;
 };
+struct FurDirAngles {
+    float theta_i;
+    float theta_r;
+    float phi;
+    bool ok;
+};
 struct FurSample {
     float theta_i;
     float phi;
@@ -76,12 +82,32 @@ const float FUR_MIN_COS2_ = 0.0001;
 const float FUR_POLE_SLIVER = 0.010000167;
 const uint FUR_HEADER_HALVES = 80u;
 const uint FUR_CLOSURE_WORD = 26u;
+const uint FUR_DUAL_HEADER_WORDS = 16u;
+const uint FUR_DUAL_FIELDS = 15u;
+const uint FUR_DUAL_LOG2_DECAY = 0u;
+const uint FUR_DUAL_BETA_F = 1u;
+const uint FUR_DUAL_BACK = 2u;
+const uint FUR_DUAL_FRONT = 3u;
+const uint FUR_DUAL_DELTA_B = 4u;
+const uint FUR_DUAL_SIGMA_B0_ = 5u;
+const uint FUR_DUAL_A_F2_ = 6u;
+const uint FUR_DUAL_MEAN = 7u;
+const uint FUR_DUAL_SD = 11u;
+const uint FUR_DUAL_THETA_NODES = 64u;
+const uint FUR_DUAL_PHI_NODES = 32u;
+const uint FUR_DUAL_NG_START = 2880u;
+const float FUR_DUAL_THETA_SCALE = 20.371832;
+const float FUR_DUAL_PHI_SCALE = 9.867606;
+const float FUR_DUAL_MAX_FIBERS = 1000000.0;
+const float FUR_DUAL_MAX_DENSITY = 4.0;
+const float FUR_DUAL_MIN_VARIANCE = 3e-6;
+const float FUR_LN2_ = 0.6931472;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
-layout(std430) readonly buffer type_15_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_16_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_16_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_17_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -90,9 +116,9 @@ FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
 }
 
 FurLoc fur_locate(FurAxis a, float x) {
-    float u_5 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
-    int i = min(int(u_5), (int(a.nodes) - 2));
-    return FurLoc(uint(i), (u_5 - float(i)));
+    float u_7 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
+    int i = min(int(u_7), (int(a.nodes) - 2));
+    return FurLoc(uint(i), (u_7 - float(i)));
 }
 
 uint fur_word(uint k) {
@@ -266,16 +292,16 @@ FurDensity fur_density(uint d) {
     uint _e49 = at;
     at = (_e49 + (12u * _e27));
     if ((d < 7u)) {
-        uint f_2 = (d - 3u);
+        uint f_3 = (d - 3u);
         uint _e57 = at;
-        return FurDensity((_e57 + (((4u * f_2) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_2), 3u);
+        return FurDensity((_e57 + (((4u * f_3) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_3), 3u);
     }
     uint _e74 = at;
     at = (_e74 + ((16u * _e4) * _e29));
     if ((d < 9u)) {
-        uint x_9 = (d - 7u);
+        uint x_11 = (d - 7u);
         uint _e83 = at;
-        return FurDensity((_e83 + (((4u * x_9) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_9, 1u);
+        return FurDensity((_e83 + (((4u * x_11) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_11, 1u);
     }
     uint _e98 = at;
     at = (_e98 + ((8u * _e10) * _e31));
@@ -562,9 +588,9 @@ float fur_atan2_(float y_1, float x_5) {
     float ax_4 = abs(x_5);
     float ay = abs(y_1);
     float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_8 = (a_5 * a_5);
-    float _e10 = fur_atan_poly(t_8);
-    r = (a_5 + (a_5 * (t_8 * _e10)));
+    float t_9 = (a_5 * a_5);
+    float _e10 = fur_atan_poly(t_9);
+    r = (a_5 + (a_5 * (t_9 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -576,32 +602,32 @@ float fur_atan2_(float y_1, float x_5) {
     return (((floatBitsToUint(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28);
 }
 
-FurFamilies fur_eval_far_dirs(vec3 wi, vec3 wr, vec3 u) {
+FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     bool local_8 = false;
     bool local_9 = false;
     bool local_10 = false;
     bool local_11 = false;
+    FurDirAngles none = FurDirAngles(0.0, 0.0, 0.0, false);
     float ii = dot(wi, wi);
     float rr = dot(wr, wr);
     float uu = dot(u, u);
-    bool _e6 = fur_finite(ii);
-    if (_e6) {
-        bool _e9 = fur_finite(rr);
-        local_8 = _e9;
+    bool _e11 = fur_finite(ii);
+    if (_e11) {
+        bool _e14 = fur_finite(rr);
+        local_8 = _e14;
     } else {
         local_8 = false;
     }
-    bool _e11 = local_8;
-    if (_e11) {
-        bool _e14 = fur_finite(uu);
-        local_9 = _e14;
+    bool _e16 = local_8;
+    if (_e16) {
+        bool _e19 = fur_finite(uu);
+        local_9 = _e19;
     } else {
         local_9 = false;
     }
-    bool _e16 = local_9;
-    if (!(_e16)) {
-        FurFamilies _e18 = fur_zero();
-        return _e18;
+    bool _e21 = local_9;
+    if (!(_e21)) {
+        return none;
     }
     float ni = sqrt(ii);
     float nr = sqrt(rr);
@@ -611,27 +637,35 @@ FurFamilies fur_eval_far_dirs(vec3 wi, vec3 wr, vec3 u) {
     } else {
         local_10 = true;
     }
-    bool _e29 = local_10;
-    if (!(_e29)) {
+    bool _e33 = local_10;
+    if (!(_e33)) {
         local_11 = (nu < 1.1754944e-38);
     } else {
         local_11 = true;
     }
-    bool _e35 = local_11;
-    if (_e35) {
-        FurFamilies _e36 = fur_zero();
-        return _e36;
+    bool _e39 = local_11;
+    if (_e39) {
+        return none;
     }
     vec3 un = (u * (1.0 / nu));
     float a_6 = dot(wi, un);
     float b_3 = dot(wr, un);
-    float _e48 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
-    float _e55 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
+    float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
+    float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_4 = dot(un, cross(wi, wr));
-    float x_10 = (dot(wi, wr) - (a_6 * b_3));
-    float _e61 = fur_atan2_(y_4, x_10);
-    FurFamilies _e63 = fur_eval_far(_e48, _e55, abs(_e61));
-    return _e63;
+    float x_12 = (dot(wi, wr) - (a_6 * b_3));
+    float _e64 = fur_atan2_(y_4, x_12);
+    return FurDirAngles(_e51, _e58, abs(_e64), true);
+}
+
+FurFamilies fur_eval_far_dirs(vec3 wi_1, vec3 wr_1, vec3 u_1) {
+    FurDirAngles _e3 = fur_angles_from_dirs(wi_1, wr_1, u_1);
+    if (!(_e3.ok)) {
+        FurFamilies _e6 = fur_zero();
+        return _e6;
+    }
+    FurFamilies _e10 = fur_eval_far(_e3.theta_i, _e3.theta_r, _e3.phi);
+    return _e10;
 }
 
 float fur_node(FurDensity d_1, uint row, uint j) {
@@ -803,13 +837,13 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
             }
             float _e70 = x_6;
             float _e71 = x_6;
-            float d_6 = (q0_ + (_e70 * (cb + (_e71 * cc))));
+            float d_7 = (q0_ + (_e70 * (cb + (_e71 * cc))));
             float _e76 = lo;
             float _e77 = hi;
             next = (0.5 * (_e76 + _e77));
-            if ((d_6 > 0.0)) {
+            if ((d_7 > 0.0)) {
                 float _e84 = x_6;
-                float n_1 = (_e84 - (fx / d_6));
+                float n_1 = (_e84 - (fx / d_7));
                 float _e87 = lo;
                 if ((n_1 >= _e87)) {
                     float _e91 = hi;
@@ -885,9 +919,9 @@ float fur_rows_invert_segment(FurRows r_7, uint j_4, float v0_5, float v1_5, flo
     return _e16;
 }
 
-float fur_unit(float u_1) {
-    if ((u_1 > 0.0)) {
-        return min(u_1, 0.99999994);
+float fur_unit(float u_2) {
+    if ((u_2 > 0.0)) {
+        return min(u_2, 0.99999994);
     }
     return 0.0;
 }
@@ -985,11 +1019,11 @@ float fur_rows_invert(FurRows r_8, float t_5) {
     return (r_8.origin + (float(end) * r_8.d.step_));
 }
 
-float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_2) {
+float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_3) {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
-    float _e7 = fur_unit(u_2);
-    float t_9 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    float _e14 = fur_rows_invert(r_9, t_9);
+    float _e7 = fur_unit(u_3);
+    float t_10 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    float _e14 = fur_rows_invert(r_9, t_10);
     return _e14;
 }
 
@@ -1021,7 +1055,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_10[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float t_11[3] = float[3](0.11270166, 0.5, 0.8872983);
     float w_4[3] = float[3](0.2777778, 0.44444445, 0.2777778);
     bool loop_init_8 = true;
     while(true) {
@@ -1037,11 +1071,11 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_7 = (t_10[_e33] * len_5);
+            float d_8 = (t_11[_e33] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
-            float _e44 = fur_sliver_keep(((x0_ - pole) + d_7));
-            acc_3 = (_e36 + ((w_4[_e37] * (v0_6 + (slope * d_7))) * _e44));
+            float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
+            acc_3 = (_e36 + ((w_4[_e37] * (v0_6 + (slope * d_8))) * _e44));
         }
     }
     float _e50 = acc_3;
@@ -1087,8 +1121,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_3 = (_e35 - t_6);
-            if ((f_3 > 0.0)) {
+            float f_4 = (_e35 - t_6);
+            if ((f_4 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1104,7 +1138,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_2 = (_e57 - (f_3 / dens));
+                float n_2 = (_e57 - (f_4 / dens));
                 float _e60 = lo_2;
                 if ((n_2 >= _e60)) {
                     float _e64 = hi_1;
@@ -1215,29 +1249,29 @@ float fur_range_kept(FurRange g_1) {
     return ((max(((g_1.raw - g_1.s.x) - g_1.s.z), 0.0) + g_1.s.y) + g_1.s.w);
 }
 
-float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_3) {
+float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_4) {
     bool local_23 = false;
     float _e4 = fur_range_kept(g_2);
     float inset_3 = (_e4 * 9.536743e-7);
-    float _e7 = fur_unit(u_3);
+    float _e7 = fur_unit(u_4);
     float t0_1 = clamp((_e7 * _e4), inset_3, (_e4 - inset_3));
     if ((t0_1 < g_2.s.y)) {
         vec3 _e19 = fur_rows_sliver(r_12, ax_2, g_2.lo, (g_2.lo + FUR_POLE_SLIVER), g_2.lo, t0_1);
         return _e19.z;
     }
     float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
-    float t_11 = (t0_1 - g_2.s.y);
-    if (!((t_11 <= mid))) {
+    float t_12 = (t0_1 - g_2.s.y);
+    if (!((t_12 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_11, mid)));
+        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_12, mid)));
         return _e50;
     }
-    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_11 - mid));
+    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_12 - mid));
     return _e57.z;
 }
 
@@ -1421,9 +1455,9 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
     float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
     float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
+    float p_2 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
     float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p * _e70);
+    float pg = (p_2 * _e70);
     float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
     return _e76;
 }
@@ -1441,7 +1475,7 @@ float fur_pdf_far(float theta_i_3, float theta_r_6, float phi_2) {
     return _e23;
 }
 
-FurSample fur_sample_far(float theta_r_7, vec3 u_4) {
+FurSample fur_sample_far(float theta_r_7, vec3 u_5) {
     FurSample out_3 = FurSample(0.0, 0.0, 0.0, vec3(0.0), 0u, false);
     bool local_25 = false;
     float total = 0.0;
@@ -1489,7 +1523,7 @@ FurSample fur_sample_far(float theta_r_7, vec3 u_4) {
         FurSample _e41 = out_3;
         return _e41;
     }
-    float _e43 = fur_unit(u_4.x);
+    float _e43 = fur_unit(u_5.x);
     float _e44 = total;
     float target_mass = (_e43 * _e44);
     bool loop_init_15 = true;
@@ -1541,14 +1575,14 @@ FurSample fur_sample_far(float theta_r_7, vec3 u_4) {
         FurRows _e111 = fur_rows(_e107, 0u, 0.0, -3.1415927);
         FurAxis _e112 = fur_sum_axis();
         uint _e114 = c;
-        float _e117 = fur_rows_invert_kept(_e111, _e112, _e21.ranges[_e114], u_4.y);
+        float _e117 = fur_rows_invert_kept(_e111, _e112, _e21.ranges[_e114], u_5.y);
         theta_i_4 = clamp((_e117 - theta_r_7), -1.5707964, FUR_HALF_PI);
     } else {
         uint _e122 = c;
         FurRows _e125 = fur_ms_rows((_e122 - 3u), theta_r_7);
         FurAxis _e126 = fur_ms_i_axis();
         uint _e128 = c;
-        float _e131 = fur_rows_invert_kept(_e125, _e126, _e21.ranges[_e128], u_4.y);
+        float _e131 = fur_rows_invert_kept(_e125, _e126, _e21.ranges[_e128], u_5.y);
         theta_i_4 = clamp(_e131, -1.5707964, FUR_HALF_PI);
     }
     uint _e135 = c;
@@ -1568,7 +1602,7 @@ FurSample fur_sample_far(float theta_r_7, vec3 u_4) {
     FurRows _e162 = nrows;
     FurRows _e164 = nrows;
     float _e165 = fur_rows_total(_e164);
-    float _e167 = fur_rows_invert_between(_e162, 0.0, _e165, u_4.z);
+    float _e167 = fur_rows_invert_between(_e162, 0.0, _e165, u_5.z);
     float abs_phi_1 = clamp(_e167, 0.0, FUR_PI);
     float _e173 = fur_wrap_angle((negative ? -(abs_phi_1) : abs_phi_1));
     float _e174 = theta_i_4;
@@ -1589,17 +1623,52 @@ FurSample fur_sample_far(float theta_r_7, vec3 u_4) {
     }
     FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_10 = (max(cos(_e189), 0.0) / _e178);
+    float k_11 = (max(cos(_e189), 0.0) / _e178);
     float _e194 = theta_i_4;
-    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_10), vec3(0.0)), family, true);
+    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_11), vec3(0.0)), family, true);
     FurSample _e202 = out_3;
     return _e202;
 }
 
-void fur_store(uint q, FurFamilies f_1) {
+bool fur_is_nan(float x_9) {
+    return ((floatBitsToUint(x_9) & 2147483647u) > 2139095040u);
+}
+
+FurLoc fur_dual_theta(float theta) {
+    float t_8 = 0.0;
+    t_8 = (((theta + FUR_HALF_PI) * FUR_DUAL_THETA_SCALE) - 0.5);
+    float _e8 = t_8;
+    float _e9 = t_8;
+    t_8 = ((_e9 > 0.0) ? _e8 : 0.0);
+    float _e14 = t_8;
+    t_8 = min(_e14, 63.0);
+    float _e17 = t_8;
+    uint k_12 = min(uint(_e17), 62u);
+    float _e21 = t_8;
+    return FurLoc(k_12, (_e21 - float(k_12)));
+}
+
+vec3 fur_dual_gauss(vec3 d_6, vec3 v_in) {
+    vec3 v_2 = max(v_in, vec3(3e-6));
+    return (exp(-(((d_6 * d_6) / (2.0 * v_2)))) / sqrt((FUR_TAU * v_2)));
+}
+
+float fur_dual_clean(float x_10, float top) {
+    bool local_27 = false;
+    bool _e3 = fur_is_nan(x_10);
+    if (!(_e3)) {
+        local_27 = (x_10 > 0.0);
+    } else {
+        local_27 = false;
+    }
+    bool _e10 = local_27;
+    return (_e10 ? min(x_10, top) : 0.0);
+}
+
+void fur_store(uint q, FurFamilies f_2) {
     uint k_9 = 0u;
     uint base_1 = (16u * q);
-    vec3 parts[5] = vec3[5](f_1.r, f_1.tt, f_1.trt, f_1.scattered, f_1.total);
+    vec3 parts[5] = vec3[5](f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
@@ -1628,15 +1697,41 @@ void fur_store(uint q, FurFamilies f_1) {
     return;
 }
 
+void fur_store_rgb(uint q_1, vec3 v_1) {
+    uint k_10 = 3u;
+    uint base_2 = (16u * q_1);
+    _group_0_binding_2_cs[base_2] = v_1.x;
+    _group_0_binding_2_cs[(base_2 + 1u)] = v_1.y;
+    _group_0_binding_2_cs[(base_2 + 2u)] = v_1.z;
+    bool loop_init_17 = true;
+    while(true) {
+        if (!loop_init_17) {
+            uint _e27 = k_10;
+            k_10 = (_e27 + 1u);
+        }
+        loop_init_17 = false;
+        uint _e19 = k_10;
+        if ((_e19 < 16u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e23 = k_10;
+            _group_0_binding_2_cs[(base_2 + _e23)] = 0.0;
+        }
+    }
+    return;
+}
+
 void main() {
     uvec3 id_3 = gl_GlobalInvocationID;
-    uint q_1 = id_3.x;
-    if ((q_1 >= uint(_group_0_binding_1_cs.length()))) {
+    uint q_2 = id_3.x;
+    if ((q_2 >= uint(_group_0_binding_1_cs.length()))) {
         return;
     }
-    vec4 a_8 = _group_0_binding_1_cs[q_1];
+    vec4 a_8 = _group_0_binding_1_cs[q_2];
     float _e15 = fur_pdf_far(a_8.x, a_8.y, a_8.z);
-    _group_0_binding_2_cs[(16u * q_1)] = _e15;
+    _group_0_binding_2_cs[(16u * q_2)] = _e15;
     return;
 }
 

@@ -4,9 +4,9 @@
 
 use super::blob::{A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, SD, SIGMA_B0};
 use super::{theta_position, Density, DualLut, MAX_FIBERS, MIN_VARIANCE, PHI_NODES};
-use crate::frame::{Angles, Vec3};
+use crate::frame::{polynomial_angles, Angles, Vec3};
 use crate::lobes::FAMILY_COUNT;
-use crate::math::{exp_neg_saturating, wrap_angle, Libm, Math, PI, TAU};
+use crate::math::{cos_within_half_pi, exp_neg_saturating, rsqrt_newton, wrap_angle, Libm, PI};
 use crate::model::inv_cos2_theta_i;
 use crate::spectrum::Rgb;
 
@@ -17,14 +17,21 @@ fn lerp(a: &Lanes, b: &Lanes, w: f32) -> Lanes {
     core::array::from_fn(|c| a[c] + (b[c] - a[c]) * w)
 }
 
-/// The normalised Gaussian G(d; √v) = e^(−d²/2v)/√(2πv) per lane, v kept at or above
-/// [`MIN_VARIANCE`].
+/// 1/√(2π).
+const INV_SQRT_TAU: f32 = 0.398_942_3;
+
+/// The normalised Gaussian G(d; √v) = e^(−d²/2v)/√(2πv) per lane, v kept in
+/// [[`MIN_VARIANCE`], 1e30]: with s = 1/√v ([`rsqrt_newton`]), e^(−(ds)²/2)·s/√(2π), no
+/// division or square root, so the lane loop vectorises.
 #[inline(always)]
 fn gauss(d: &Lanes, v: &Lanes) -> Lanes {
-    core::array::from_fn(|c| {
-        let v = v[c].max(MIN_VARIANCE);
-        exp_neg_saturating(d[c] * d[c] / (2.0 * v)) / libm::sqrtf(TAU * v)
-    })
+    let mut out = [0.0f32; 4];
+    for c in 0..4 {
+        let s = rsqrt_newton(v[c].max(MIN_VARIANCE).min(1e30));
+        let z = d[c] * s;
+        out[c] = exp_neg_saturating(0.5 * z * z) * s * INV_SQRT_TAU;
+    }
+    out
 }
 
 impl DualLut {
@@ -72,7 +79,8 @@ impl DualLut {
         let (d_f, d_b) = density.sanitized();
         let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
         let x = ti + tr;
-        let inv_cos2 = inv_cos2_theta_i(Libm::cos(ti));
+        // cos θ_i by the baked evaluator's polynomial (θ_i ∈ [−π/2, π/2]), as in the shader.
+        let inv_cos2 = inv_cos2_theta_i(cos_within_half_pi(ti));
         let direct = (1.0 - n).clamp(0.0, 1.0);
         let here = theta_position(tr);
         let back_half = wrap_angle(phi).abs() < 0.5 * PI;
@@ -143,8 +151,10 @@ impl DualLut {
     }
 
     /// [`DualLut::eval`] from world-space directions toward the light `wi` and the viewer `wr`
-    /// and the fiber tangent (any lengths; [`Angles::from_directions`]); zero when the
-    /// directions are rejected (zero, non-finite, parallel to the tangent).
+    /// and the fiber tangent (any lengths), converted to angles exactly as
+    /// [`crate::BakedBcsdf::angles_from_dirs`] and the shader do (the branch-free polynomials,
+    /// within about 3e-7 rad of [`Angles::from_directions`]); zero when the directions are
+    /// rejected (zero, non-finite, parallel to the tangent).
     #[must_use]
     pub fn eval_dirs(
         &self,
@@ -154,7 +164,9 @@ impl DualLut {
         fibers: f32,
         density: Density,
     ) -> Rgb {
-        match Angles::from_directions::<Libm>(wi, wr, tangent) {
+        match polynomial_angles::<Libm>(wi, wr, tangent)
+            .and_then(|[ti, tr, phi]| Angles::new(ti, tr, phi))
+        {
             Ok(a) => self.eval(&a, fibers, density),
             Err(_) => Rgb::ZERO,
         }

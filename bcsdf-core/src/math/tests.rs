@@ -273,3 +273,17 @@ fn fast_math_backend_is_within_its_documented_error() {
     assert_eq!(FastMath::exp(-100.0), 0.0);
     assert_eq!(FastMath::sqrt(2.0), libm::sqrtf(2.0));
 }
+
+#[test]
+fn rsqrt_newton_is_within_four_ulp() {
+    // Every 1021st float from 1e-7 to 1e7 (the variances and widths the dual term feeds it).
+    let mut worst = 0.0f64;
+    let (lo, hi) = (1e-7f32.to_bits(), 1e7f32.to_bits());
+    for bits in (lo..=hi).step_by(1021).chain([hi]) {
+        let x = f32::from_bits(bits);
+        let want = 1.0 / f64::from(x).sqrt();
+        worst = worst.max(ulps(rsqrt_newton(x), want));
+    }
+    std::eprintln!("rsqrt_newton: worst {worst:.2} ulp");
+    assert!(worst <= 4.0, "worst {worst} ulp");
+}

@@ -1,0 +1,1003 @@
+#version 450 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+struct FurFamilies {
+    vec3 r;
+    vec3 tt;
+    vec3 trt;
+    vec3 scattered;
+    vec3 total;
+};
+struct FurAxis {
+    float inv_step;
+    float offset;
+    float last;
+    uint nodes;
+};
+struct FurLoc {
+    uint i;
+    float w;
+};
+struct FurLookups {
+    float m[3];
+    float ms[2];
+    float n[12];
+    float front;
+    float inv_cos2_;
+};
+struct FurDensity {
+    uint prefix_at;
+    uint entries;
+    uint nodes;
+    uint rows;
+    float step_;
+    uint block;
+    uint table;
+    uint first;
+    uint channels;
+};
+struct FurDirAngles {
+    float theta_i;
+    float theta_r;
+    float phi;
+    bool ok;
+};
+struct FurSample {
+    float theta_i;
+    float phi;
+    float pdf;
+    vec3 weight;
+    uint family;
+    bool ok;
+};
+struct FurRows {
+    FurDensity d;
+    uint r0_;
+    uint r1_;
+    float w;
+    float origin;
+    uint weighting;
+};
+struct FurRange {
+    float lo;
+    float hi;
+    float start;
+    float raw;
+    vec4 s;
+};
+struct FurMAt {
+    vec3 cdf;
+    vec3 value;
+};
+struct FurParts {
+    float a[5];
+    FurRange ranges[5];
+};
+const float FUR_PI = 3.1415927;
+const float FUR_HALF_PI = 1.5707964;
+const float FUR_TAU = 6.2831855;
+const float FUR_MIN_COS2_ = 0.0001;
+const float FUR_POLE_SLIVER = 0.010000167;
+const uint FUR_HEADER_HALVES = 80u;
+const uint FUR_CLOSURE_WORD = 26u;
+const uint FUR_DUAL_HEADER_WORDS = 16u;
+const uint FUR_DUAL_FIELDS = 15u;
+const uint FUR_DUAL_LOG2_DECAY = 0u;
+const uint FUR_DUAL_BETA_F = 1u;
+const uint FUR_DUAL_BACK = 2u;
+const uint FUR_DUAL_FRONT = 3u;
+const uint FUR_DUAL_DELTA_B = 4u;
+const uint FUR_DUAL_SIGMA_B0_ = 5u;
+const uint FUR_DUAL_A_F2_ = 6u;
+const uint FUR_DUAL_MEAN = 7u;
+const uint FUR_DUAL_SD = 11u;
+const uint FUR_DUAL_THETA_NODES = 64u;
+const uint FUR_DUAL_PHI_NODES = 32u;
+const uint FUR_DUAL_NG_START = 2880u;
+const float FUR_DUAL_THETA_SCALE = 20.371832;
+const float FUR_DUAL_PHI_SCALE = 9.867606;
+const float FUR_DUAL_MAX_FIBERS = 1000000.0;
+const float FUR_DUAL_MAX_DENSITY = 4.0;
+const float FUR_DUAL_MIN_VARIANCE = 3e-6;
+const float FUR_LN2_ = 0.6931472;
+
+layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_16_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+
+layout(std430) buffer type_17_block_2Compute { float _group_0_binding_2_cs[]; };
+
+
+FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
+    float last_1 = float((nodes - 1u));
+    return FurAxis((last_1 * inv_span), (centred ? (0.5 * last_1) : 0.0), last_1, nodes);
+}
+
+FurLoc fur_locate(FurAxis a, float x) {
+    float u_7 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
+    int i = min(int(u_7), (int(a.nodes) - 2));
+    return FurLoc(uint(i), (u_7 - float(i)));
+}
+
+float fur_cos_within_half_pi(float x_1) {
+    float acc = -2.755732e-7;
+    float acc_1 = 2.7557319e-6;
+    float a_4 = abs(x_1);
+    if ((a_4 <= 0.7853982)) {
+        float y_2 = (a_4 * a_4);
+        float _e7 = acc;
+        acc = ((_e7 * y_2) + 2.4801588e-5);
+        float _e11 = acc;
+        acc = ((_e11 * y_2) - 0.0013888889);
+        float _e15 = acc;
+        acc = ((_e15 * y_2) + 0.041666668);
+        float _e19 = acc;
+        acc = ((_e19 * y_2) - 0.5);
+        float _e23 = acc;
+        return ((_e23 * y_2) + 1.0);
+    }
+    float r_13 = ((1.5707964 - a_4) + -4.371139e-8);
+    float y_3 = (r_13 * r_13);
+    float _e34 = acc_1;
+    acc_1 = ((_e34 * y_3) - 0.0001984127);
+    float _e38 = acc_1;
+    acc_1 = ((_e38 * y_3) + 0.008333334);
+    float _e42 = acc_1;
+    acc_1 = ((_e42 * y_3) - 0.16666667);
+    float _e46 = acc_1;
+    return (((_e46 * y_3) * r_13) + r_13);
+}
+
+float fur_wrap_angle(float x_2) {
+    bool local = false;
+    bool local_1 = false;
+    bool local_2 = false;
+    float y = 0.0;
+    bool local_3 = false;
+    if ((x_2 > -3.1415927)) {
+        local = (x_2 <= FUR_PI);
+    } else {
+        local = false;
+    }
+    bool _e8 = local;
+    if (_e8) {
+        return x_2;
+    }
+    if ((x_2 > FUR_PI)) {
+        local_1 = (x_2 <= 9.424778);
+    } else {
+        local_1 = false;
+    }
+    bool _e16 = local_1;
+    if (_e16) {
+        return (x_2 - FUR_TAU);
+    }
+    if ((x_2 <= -3.1415927)) {
+        local_2 = (x_2 > -9.424778);
+    } else {
+        local_2 = false;
+    }
+    bool _e26 = local_2;
+    if (_e26) {
+        return (x_2 + FUR_TAU);
+    }
+    y = (x_2 - (FUR_TAU * floor(((x_2 + FUR_PI) / FUR_TAU))));
+    float _e38 = y;
+    if ((_e38 <= -3.1415927)) {
+        float _e41 = y;
+        y = (_e41 + FUR_TAU);
+    }
+    float _e44 = y;
+    if ((_e44 > FUR_PI)) {
+        float _e47 = y;
+        y = (_e47 - FUR_TAU);
+    }
+    float _e50 = y;
+    if ((_e50 > -3.1415927)) {
+        float _e55 = y;
+        local_3 = (_e55 <= FUR_PI);
+    } else {
+        local_3 = false;
+    }
+    bool _e59 = local_3;
+    if (_e59) {
+        float _e60 = y;
+        return _e60;
+    }
+    return 0.0;
+}
+
+FurFamilies fur_zero() {
+    vec3 z = vec3(0.0);
+    return FurFamilies(z, z, z, z, z);
+}
+
+bool fur_finite(float x_3) {
+    return ((floatBitsToUint(x_3) & 2139095040u) != 2139095040u);
+}
+
+bool fur_valid(float theta_i, float theta_r, float phi) {
+    bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
+    bool local_7 = false;
+    bool _e3 = fur_finite(theta_i);
+    if (_e3) {
+        bool _e6 = fur_finite(theta_r);
+        local_4 = _e6;
+    } else {
+        local_4 = false;
+    }
+    bool _e8 = local_4;
+    if (_e8) {
+        bool _e11 = fur_finite(phi);
+        local_5 = _e11;
+    } else {
+        local_5 = false;
+    }
+    bool _e13 = local_5;
+    if (_e13) {
+        local_6 = (abs(theta_i) <= FUR_HALF_PI);
+    } else {
+        local_6 = false;
+    }
+    bool _e20 = local_6;
+    if (_e20) {
+        local_7 = (abs(theta_r) <= FUR_HALF_PI);
+    } else {
+        local_7 = false;
+    }
+    bool _e27 = local_7;
+    return _e27;
+}
+
+uint fur_entries(uint nodes_1, uint block) {
+    return (((((nodes_1 - 1u) + block) - 1u) / block) + 1u);
+}
+
+FurFamilies fur_assemble(FurLookups l) {
+    vec3 f[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    uint k_1 = 0u;
+    float mss = (l.ms[0] + (l.front * (l.ms[1] - l.ms[0])));
+    float lon[4] = float[4](l.m[0], l.m[1], l.m[2], mss);
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e51 = k_1;
+            k_1 = (_e51 + 1u);
+        }
+        loop_init = false;
+        uint _e21 = k_1;
+        if ((_e21 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e24 = k_1;
+            float weight = (lon[_e24] * l.inv_cos2_);
+            uint _e28 = k_1;
+            uint _e32 = k_1;
+            uint _e37 = k_1;
+            uint _e44 = k_1;
+            f[_e28] = (vec3(l.n[(3u * _e32)], l.n[((3u * _e37) + 1u)], l.n[((3u * _e44) + 2u)]) * weight);
+        }
+    }
+    vec3 _e55 = f[0];
+    vec3 _e57 = f[1];
+    vec3 _e59 = f[2];
+    vec3 _e61 = f[3];
+    vec3 _e63 = f[0];
+    vec3 _e65 = f[1];
+    vec3 _e68 = f[2];
+    vec3 _e71 = f[3];
+    return FurFamilies(_e55, _e57, _e59, _e61, (((_e63 + _e65) + _e68) + _e71));
+}
+
+float fur_asin(float x_4) {
+    float ax_3 = min(abs(x_4), 1.0);
+    float x2_ = (ax_3 * ax_3);
+    float x4_ = (x2_ * x2_);
+    float p01_ = ((-0.001262491 * ax_3) + 0.00667009);
+    float p23_ = ((-0.017088126 * ax_3) + 0.03089188);
+    float p45_ = ((-0.050174303 * ax_3) + 0.08897899);
+    float p67_ = ((-0.2145988 * ax_3) + FUR_HALF_PI);
+    float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
+    float r_14 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
+    return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_14)) : abs(r_14));
+}
+
+float fur_atan_poly(float t_1) {
+    float t2_ = (t_1 * t_1);
+    float t4_ = (t2_ * t2_);
+    float p01_1 = ((0.0029202348 * t_1) + -0.016366187);
+    float p23_1 = ((0.043209206 * t_1) + -0.07552008);
+    float p45_1 = ((0.10665919 * t_1) + -0.14211038);
+    float p67_1 = ((0.19993772 * t_1) + -0.33333153);
+    return ((((p01_1 * t2_) + p23_1) * t4_) + ((p45_1 * t2_) + p67_1));
+}
+
+float fur_atan2_(float y_1, float x_5) {
+    float r = 0.0;
+    float ax_4 = abs(x_5);
+    float ay = abs(y_1);
+    float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
+    float t_9 = (a_5 * a_5);
+    float _e10 = fur_atan_poly(t_9);
+    r = (a_5 + (a_5 * (t_9 * _e10)));
+    float _e15 = r;
+    float _e17 = r;
+    r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
+    float _e21 = r;
+    float _e23 = r;
+    r = ((x_5 < 0.0) ? (FUR_PI - _e23) : _e21);
+    float _e28 = r;
+    float _e29 = r;
+    return (((floatBitsToUint(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28);
+}
+
+FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
+    bool local_8 = false;
+    bool local_9 = false;
+    bool local_10 = false;
+    bool local_11 = false;
+    FurDirAngles none = FurDirAngles(0.0, 0.0, 0.0, false);
+    float ii = dot(wi, wi);
+    float rr = dot(wr, wr);
+    float uu = dot(u, u);
+    bool _e11 = fur_finite(ii);
+    if (_e11) {
+        bool _e14 = fur_finite(rr);
+        local_8 = _e14;
+    } else {
+        local_8 = false;
+    }
+    bool _e16 = local_8;
+    if (_e16) {
+        bool _e19 = fur_finite(uu);
+        local_9 = _e19;
+    } else {
+        local_9 = false;
+    }
+    bool _e21 = local_9;
+    if (!(_e21)) {
+        return none;
+    }
+    float ni = sqrt(ii);
+    float nr = sqrt(rr);
+    float nu = sqrt(uu);
+    if (!((ni < 1.1754944e-38))) {
+        local_10 = (nr < 1.1754944e-38);
+    } else {
+        local_10 = true;
+    }
+    bool _e33 = local_10;
+    if (!(_e33)) {
+        local_11 = (nu < 1.1754944e-38);
+    } else {
+        local_11 = true;
+    }
+    bool _e39 = local_11;
+    if (_e39) {
+        return none;
+    }
+    vec3 un = (u * (1.0 / nu));
+    float a_6 = dot(wi, un);
+    float b_3 = dot(wr, un);
+    float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
+    float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
+    float y_4 = dot(un, cross(wi, wr));
+    float x_11 = (dot(wi, wr) - (a_6 * b_3));
+    float _e64 = fur_atan2_(y_4, x_11);
+    return FurDirAngles(_e51, _e58, abs(_e64), true);
+}
+
+FurRows fur_rows(FurDensity d_2, uint row_1, float w, float origin) {
+    return FurRows(d_2, min(row_1, (d_2.rows - 1u)), min((row_1 + 1u), (d_2.rows - 1u)), w, origin, 0u);
+}
+
+float fur_linear_mass(float v0_, float v1_, float len) {
+    return ((0.5 * len) * (v0_ + v1_));
+}
+
+float fur_invert_linear(float v0_1, float v1_1, float len_1, float t_2) {
+    float s = 0.0;
+    bool local_12 = false;
+    bool local_13 = false;
+    if (!((len_1 > 0.0))) {
+        return 0.0;
+    }
+    if ((t_2 > 0.0)) {
+        float disc = max(((v0_1 * v0_1) + (((2.0 * (v1_1 - v0_1)) * t_2) / len_1)), 0.0);
+        float den = (v0_1 + sqrt(disc));
+        if ((den > 0.0)) {
+            s = clamp(((2.0 * t_2) / den), 0.0, len_1);
+        } else {
+            s = len_1;
+        }
+    }
+    float inset = (len_1 * 9.536743e-7);
+    if ((v0_1 <= 0.0)) {
+        float _e36 = s;
+        local_12 = (_e36 < inset);
+    } else {
+        local_12 = false;
+    }
+    bool _e39 = local_12;
+    if (_e39) {
+        return inset;
+    }
+    if ((v1_1 <= 0.0)) {
+        float _e44 = s;
+        local_13 = (_e44 > (len_1 - inset));
+    } else {
+        local_13 = false;
+    }
+    bool _e48 = local_13;
+    if (_e48) {
+        return (len_1 - inset);
+    }
+    float _e50 = s;
+    return _e50;
+}
+
+float fur_weighted_linear_mass(float v0_2, float v1_2, float a_1, float b, float len_2) {
+    return ((len_2 * (((a_1 * v0_2) + (0.5 * ((a_1 * v1_2) + (b * v0_2)))) + (b * v1_2))) * 0.33333334);
+}
+
+float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, float len_3, float t_3) {
+    float x_6 = 0.5;
+    bool local_14 = false;
+    float lo = 0.0;
+    float hi = 1.0;
+    uint k_4 = 0u;
+    float next = 0.0;
+    bool local_15 = false;
+    bool local_16 = false;
+    bool local_17 = false;
+    if (!((len_3 > 0.0))) {
+        return 0.0;
+    }
+    float q0_ = (a_2 * v0_3);
+    float cb = ((a_2 * (v1_3 - v0_3)) + (v0_3 * (b_1 - a_2)));
+    float cc = ((b_1 - a_2) * (v1_3 - v0_3));
+    float q1_ = (b_1 * v1_3);
+    float goal = (t_3 / len_3);
+    float total_1 = ((q0_ + (0.5 * cb)) + (0.33333334 * cc));
+    float lin = (0.5 * (q0_ + q1_));
+    if ((total_1 > 0.0)) {
+        local_14 = (lin > 0.0);
+    } else {
+        local_14 = false;
+    }
+    bool _e39 = local_14;
+    if (_e39) {
+        float _e43 = fur_invert_linear(q0_, q1_, 1.0, (goal * (lin / total_1)));
+        x_6 = _e43;
+    }
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e102 = k_4;
+            k_4 = (_e102 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e50 = k_4;
+        if ((_e50 < 8u)) {
+        } else {
+            break;
+        }
+        {
+            float _e53 = x_6;
+            float _e54 = x_6;
+            float _e57 = x_6;
+            float fx = ((_e53 * (q0_ + (_e54 * ((0.5 * cb) + ((_e57 * 0.33333334) * cc))))) - goal);
+            if ((fx > 0.0)) {
+                float _e68 = x_6;
+                hi = _e68;
+            } else {
+                float _e69 = x_6;
+                lo = _e69;
+            }
+            float _e70 = x_6;
+            float _e71 = x_6;
+            float d_7 = (q0_ + (_e70 * (cb + (_e71 * cc))));
+            float _e76 = lo;
+            float _e77 = hi;
+            next = (0.5 * (_e76 + _e77));
+            if ((d_7 > 0.0)) {
+                float _e84 = x_6;
+                float n_1 = (_e84 - (fx / d_7));
+                float _e87 = lo;
+                if ((n_1 >= _e87)) {
+                    float _e91 = hi;
+                    local_15 = (n_1 <= _e91);
+                } else {
+                    local_15 = false;
+                }
+                bool _e94 = local_15;
+                if (_e94) {
+                    next = n_1;
+                }
+            }
+            float _e95 = next;
+            float _e96 = x_6;
+            bool done = (abs((_e95 - _e96)) <= 1.2e-7);
+            float _e101 = next;
+            x_6 = _e101;
+            if (done) {
+                break;
+            }
+        }
+    }
+    float _e105 = x_6;
+    float s_1 = clamp((_e105 * len_3), 0.0, len_3);
+    float inset_1 = (len_3 * 9.536743e-7);
+    if ((q0_ <= 0.0)) {
+        local_16 = (s_1 < inset_1);
+    } else {
+        local_16 = false;
+    }
+    bool _e117 = local_16;
+    if (_e117) {
+        return inset_1;
+    }
+    if ((q1_ <= 0.0)) {
+        local_17 = (s_1 > (len_3 - inset_1));
+    } else {
+        local_17 = false;
+    }
+    bool _e125 = local_17;
+    if (_e125) {
+        return (len_3 - inset_1);
+    }
+    return s_1;
+}
+
+vec2 fur_rows_weights(FurRows r_5, uint j_2) {
+    float inv = (1.0 / float((r_5.d.nodes - 1u)));
+    vec2 ab = vec2((float(j_2) * inv), (float((j_2 + 1u)) * inv));
+    if ((r_5.weighting == 1u)) {
+        return vec2((1.0 - ab.x), (1.0 - ab.y));
+    }
+    return ab;
+}
+
+float fur_rows_segment_mass(FurRows r_6, uint j_3, float v0_4, float v1_4) {
+    if ((r_6.weighting == 0u)) {
+        float _e9 = fur_linear_mass(v0_4, v1_4, r_6.d.step_);
+        return _e9;
+    }
+    vec2 _e10 = fur_rows_weights(r_6, j_3);
+    float _e15 = fur_weighted_linear_mass(v0_4, v1_4, _e10.x, _e10.y, r_6.d.step_);
+    return _e15;
+}
+
+float fur_rows_invert_segment(FurRows r_7, uint j_4, float v0_5, float v1_5, float t_4) {
+    if ((r_7.weighting == 0u)) {
+        float _e10 = fur_invert_linear(v0_5, v1_5, r_7.d.step_, t_4);
+        return _e10;
+    }
+    vec2 _e11 = fur_rows_weights(r_7, j_4);
+    float _e16 = fur_invert_weighted_linear(v0_5, v1_5, _e11.x, _e11.y, r_7.d.step_, t_4);
+    return _e16;
+}
+
+float fur_unit(float u_2) {
+    if ((u_2 > 0.0)) {
+        return min(u_2, 0.99999994);
+    }
+    return 0.0;
+}
+
+float fur_pole_keep(float cos_theta_i) {
+    float c_1 = max(cos_theta_i, 1e-6);
+    return min(((c_1 * c_1) * 10000.0), 1.0);
+}
+
+float fur_sliver_keep(float s_in) {
+    float s_2 = abs(s_in);
+    if (!((s_2 < FUR_POLE_SLIVER))) {
+        return 1.0;
+    }
+    float s2_ = (s_2 * s_2);
+    return min(((s2_ * (1.0 - (s2_ * 0.33333334))) * 10000.0), 1.0);
+}
+
+float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, float pole, float len_5) {
+    bool local_18 = false;
+    float acc_3 = 0.0;
+    uint k_5 = 0u;
+    if ((len_5 > 0.0)) {
+        local_18 = (len0_ > 0.0);
+    } else {
+        local_18 = false;
+    }
+    bool _e13 = local_18;
+    if (!(_e13)) {
+        return 0.0;
+    }
+    float slope = ((v1_6 - v0_6) / len0_);
+    float t_10[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float w_3[3] = float[3](0.2777778, 0.44444445, 0.2777778);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e47 = k_5;
+            k_5 = (_e47 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e30 = k_5;
+        if ((_e30 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e33 = k_5;
+            float d_8 = (t_10[_e33] * len_5);
+            float _e36 = acc_3;
+            uint _e37 = k_5;
+            float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
+            acc_3 = (_e36 + ((w_3[_e37] * (v0_6 + (slope * d_8))) * _e44));
+        }
+    }
+    float _e50 = acc_3;
+    return (_e50 * len_5);
+}
+
+float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, float pole_1, float t_6) {
+    bool local_19 = false;
+    float lo_2 = 0.0;
+    float hi_1 = 0.0;
+    float d_4 = 0.0;
+    uint k_6 = 0u;
+    float next_1 = 0.0;
+    bool local_20 = false;
+    float _e6 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, len_6);
+    if (!(!((_e6 > 0.0)))) {
+        local_19 = !((t_6 > 0.0));
+    } else {
+        local_19 = true;
+    }
+    bool _e17 = local_19;
+    if (_e17) {
+        return 0.0;
+    }
+    if (!((t_6 < _e6))) {
+        return len_6;
+    }
+    float slope_1 = ((v1_7 - v0_7) / len_6);
+    hi_1 = len_6;
+    d_4 = (len_6 * (t_6 / _e6));
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            uint _e76 = k_6;
+            k_6 = (_e76 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e31 = k_6;
+        if ((_e31 < 16u)) {
+        } else {
+            break;
+        }
+        {
+            float _e34 = d_4;
+            float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
+            float f_3 = (_e35 - t_6);
+            if ((f_3 > 0.0)) {
+                float _e39 = d_4;
+                hi_1 = _e39;
+            } else {
+                float _e40 = d_4;
+                lo_2 = _e40;
+            }
+            float _e41 = d_4;
+            float _e45 = d_4;
+            float _e47 = fur_sliver_keep(((x0_1 - pole_1) + _e45));
+            float dens = ((v0_7 + (slope_1 * _e41)) * _e47);
+            float _e49 = lo_2;
+            float _e50 = hi_1;
+            next_1 = (0.5 * (_e49 + _e50));
+            if ((dens > 0.0)) {
+                float _e57 = d_4;
+                float n_2 = (_e57 - (f_3 / dens));
+                float _e60 = lo_2;
+                if ((n_2 >= _e60)) {
+                    float _e64 = hi_1;
+                    local_20 = (n_2 <= _e64);
+                } else {
+                    local_20 = false;
+                }
+                bool _e67 = local_20;
+                if (_e67) {
+                    next_1 = n_2;
+                }
+            }
+            float _e68 = next_1;
+            float _e69 = d_4;
+            bool done_1 = (abs((_e68 - _e69)) <= (1.2e-7 * len_6));
+            float _e75 = next_1;
+            d_4 = _e75;
+            if (done_1) {
+                break;
+            }
+        }
+    }
+    float _e79 = d_4;
+    return clamp(_e79, 0.0, len_6);
+}
+
+float fur_range_kept(FurRange g_1) {
+    return ((max(((g_1.raw - g_1.s.x) - g_1.s.z), 0.0) + g_1.s.y) + g_1.s.w);
+}
+
+float fur_positive(float v) {
+    bool local_24 = false;
+    bool _e1 = fur_finite(v);
+    if (_e1) {
+        local_24 = (v > 0.0);
+    } else {
+        local_24 = false;
+    }
+    bool _e7 = local_24;
+    return (_e7 ? v : 0.0);
+}
+
+float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
+    if (!((w_2 > 0.0))) {
+        return 0.0;
+    }
+    float mean0_ = (((l_3.n[0] + l_3.n[1]) + l_3.n[2]) * 0.33333334);
+    float mean1_ = (((l_3.n[3] + l_3.n[4]) + l_3.n[5]) * 0.33333334);
+    float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
+    float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
+    float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
+    float p_2 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
+    float _e70 = fur_pole_keep(cos_theta_i_1);
+    float pg = (p_2 * _e70);
+    float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
+    return _e76;
+}
+
+float fur_dual_half(uint h_1) {
+    uint _e7 = _group_0_binding_3_cs[(FUR_DUAL_HEADER_WORDS + (h_1 >> 1u))];
+    vec2 pair = unpackHalf2x16(_e7);
+    return (((h_1 & 1u) == 1u) ? pair.y : pair.x);
+}
+
+vec3 fur_dual_rgb(uint h_2) {
+    float _e1 = fur_dual_half(h_2);
+    float _e4 = fur_dual_half((h_2 + 1u));
+    float _e7 = fur_dual_half((h_2 + 2u));
+    return vec3(_e1, _e4, _e7);
+}
+
+bool fur_is_nan(float x_9) {
+    return ((floatBitsToUint(x_9) & 2147483647u) > 2139095040u);
+}
+
+FurLoc fur_dual_theta(float theta) {
+    float t_8 = 0.0;
+    t_8 = (((theta + FUR_HALF_PI) * FUR_DUAL_THETA_SCALE) - 0.5);
+    float _e8 = t_8;
+    float _e9 = t_8;
+    t_8 = ((_e9 > 0.0) ? _e8 : 0.0);
+    float _e14 = t_8;
+    t_8 = min(_e14, 63.0);
+    float _e17 = t_8;
+    uint k_11 = min(uint(_e17), 62u);
+    float _e21 = t_8;
+    return FurLoc(k_11, (_e21 - float(k_11)));
+}
+
+vec3 fur_dual_field(FurLoc l_4, uint f_1) {
+    vec3 _e8 = fur_dual_rgb((3u * ((l_4.i * FUR_DUAL_FIELDS) + f_1)));
+    vec3 _e17 = fur_dual_rgb((3u * (((l_4.i + 1u) * FUR_DUAL_FIELDS) + f_1)));
+    return (_e8 + ((_e17 - _e8) * l_4.w));
+}
+
+vec3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p) {
+    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i);
+    uint row1_ = (row0_ + FUR_DUAL_PHI_NODES);
+    vec3 _e17 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row0_)));
+    vec3 _e24 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row0_ + 1u))));
+    vec3 _e29 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row1_)));
+    vec3 _e36 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row1_ + 1u))));
+    vec3 lo_4 = (_e17 + ((_e24 - _e17) * p.w));
+    vec3 hi_3 = (_e29 + ((_e36 - _e29) * p.w));
+    return (lo_4 + ((hi_3 - lo_4) * l_5.w));
+}
+
+vec3 fur_dual_gauss(vec3 d_6, vec3 v_in) {
+    vec3 v_2 = max(v_in, vec3(3e-6));
+    return (exp(-(((d_6 * d_6) / (2.0 * v_2)))) / sqrt((FUR_TAU * v_2)));
+}
+
+float fur_dual_clean(float x_10, float top) {
+    bool local_27 = false;
+    bool _e3 = fur_is_nan(x_10);
+    if (!(_e3)) {
+        local_27 = (x_10 > 0.0);
+    } else {
+        local_27 = false;
+    }
+    bool _e10 = local_27;
+    return (_e10 ? min(x_10, top) : 0.0);
+}
+
+vec3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fibers, float d_f_in, float d_b_in) {
+    vec3 out_4 = vec3(0.0);
+    float p_1 = 0.0;
+    vec3 f_s = vec3(0.0);
+    uint g_6 = 0u;
+    vec3 zero = vec3(0.0);
+    bool _e8 = fur_valid(theta_i_5, theta_r_8, phi_in_1);
+    if (!(_e8)) {
+        return zero;
+    }
+    float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    float x_12 = (theta_i_5 + theta_r_8);
+    float _e17 = fur_cos_within_half_pi(theta_i_5);
+    float inv_cos2_ = (1.0 / max((_e17 * _e17), FUR_MIN_COS2_));
+    float direct = clamp((1.0 - _e11), 0.0, 1.0);
+    FurLoc _e28 = fur_dual_theta(theta_r_8);
+    float _e29 = fur_wrap_angle(phi_in_1);
+    float abs_phi = abs(_e29);
+    vec3 _e36 = fur_dual_field(_e28, ((abs_phi < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
+    vec3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_);
+    vec3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_);
+    vec3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B);
+    vec3 d_back = (vec3(x_12) - _e42);
+    vec3 s_b = ((vec3(1.0) + (_e15 * _e38)) * _e40);
+    vec3 v_back = (s_b * s_b);
+    float back_scale = ((_e15 * inv_cos2_) / FUR_PI);
+    out_4 = zero;
+    if ((direct > 0.0)) {
+        vec3 _e59 = fur_dual_gauss(d_back, v_back);
+        out_4 = (((direct * back_scale) * _e36) * _e59);
+    }
+    if ((_e11 > 0.0)) {
+        FurLoc _e64 = fur_dual_theta(-(theta_i_5));
+        vec3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY);
+        vec3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F);
+        vec3 t_f = exp(-(((-(_e11) * FUR_LN2_) * _e66)));
+        vec3 spread = (max((t_f - vec3(direct)), zero) * _e13);
+        if (any(greaterThan(spread, zero))) {
+            vec3 s2f = ((_e11 * _e68) * _e68);
+            p_1 = (abs_phi * FUR_DUAL_PHI_SCALE);
+            float _e86 = p_1;
+            float _e89 = p_1;
+            p_1 = ((_e89 > 0.0) ? min(_e86, 31.0) : 0.0);
+            float _e94 = p_1;
+            uint j_7 = min(uint(_e94), 30u);
+            float _e98 = p_1;
+            FurLoc at_phi = FurLoc(j_7, (_e98 - float(j_7)));
+            f_s = zero;
+            bool loop_init_4 = true;
+            while(true) {
+                if (!loop_init_4) {
+                    uint _e126 = g_6;
+                    g_6 = (_e126 + 1u);
+                }
+                loop_init_4 = false;
+                uint _e105 = g_6;
+                if ((_e105 < 4u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e109 = g_6;
+                    vec3 _e111 = fur_dual_field(_e28, (FUR_DUAL_MEAN + _e109));
+                    uint _e113 = g_6;
+                    vec3 _e115 = fur_dual_field(_e28, (FUR_DUAL_SD + _e113));
+                    uint _e116 = g_6;
+                    vec3 _e117 = fur_dual_ng(_e116, _e28, at_phi);
+                    vec3 v_3 = ((_e115 * _e115) + s2f);
+                    vec3 _e120 = f_s;
+                    vec3 _e123 = fur_dual_gauss((vec3(x_12) - _e111), v_3);
+                    f_s = (_e120 + (_e117 * _e123));
+                }
+            }
+            vec3 _e130 = fur_dual_gauss(d_back, (v_back + s2f));
+            vec3 _e131 = out_4;
+            vec3 _e132 = f_s;
+            out_4 = (_e131 + (spread * ((_e132 * inv_cos2_) + ((back_scale * _e36) * _e130))));
+        }
+    }
+    float _e140 = out_4.x;
+    bool _e141 = fur_finite(_e140);
+    float _e143 = out_4.y;
+    bool _e144 = fur_finite(_e143);
+    float _e146 = out_4.z;
+    bool _e147 = fur_finite(_e146);
+    bvec3 finite = bvec3(_e141, _e144, _e147);
+    vec3 _e149 = out_4;
+    vec3 _e150 = out_4;
+    return mix(zero, _e149, bvec3(finite.x && greaterThan(_e150, zero).x, finite.y && greaterThan(_e150, zero).y, finite.z && greaterThan(_e150, zero).z));
+}
+
+vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float d_f, float d_b) {
+    FurDirAngles _e6 = fur_angles_from_dirs(wi_2, wr_2, u_6);
+    if (!(_e6.ok)) {
+        return vec3(0.0);
+    }
+    vec3 _e14 = fur_eval_dual(_e6.theta_i, _e6.theta_r, _e6.phi, fibers_1, d_f, d_b);
+    return _e14;
+}
+
+void fur_store(uint q, FurFamilies f_2) {
+    uint k_9 = 0u;
+    uint base = (16u * q);
+    vec3 parts[5] = vec3[5](f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
+    bool loop_init_5 = true;
+    while(true) {
+        if (!loop_init_5) {
+            uint _e46 = k_9;
+            k_9 = (_e46 + 1u);
+        }
+        loop_init_5 = false;
+        uint _e12 = k_9;
+        if ((_e12 < 5u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = k_9;
+            uint _e21 = k_9;
+            _group_0_binding_2_cs[(base + (3u * _e17))] = parts[_e21].x;
+            uint _e26 = k_9;
+            uint _e32 = k_9;
+            _group_0_binding_2_cs[((base + (3u * _e26)) + 1u)] = parts[_e32].y;
+            uint _e37 = k_9;
+            uint _e43 = k_9;
+            _group_0_binding_2_cs[((base + (3u * _e37)) + 2u)] = parts[_e43].z;
+        }
+    }
+    _group_0_binding_2_cs[(base + 15u)] = 0.0;
+    return;
+}
+
+void fur_store_rgb(uint q_1, vec3 v_1) {
+    uint k_10 = 3u;
+    uint base_1 = (16u * q_1);
+    _group_0_binding_2_cs[base_1] = v_1.x;
+    _group_0_binding_2_cs[(base_1 + 1u)] = v_1.y;
+    _group_0_binding_2_cs[(base_1 + 2u)] = v_1.z;
+    bool loop_init_6 = true;
+    while(true) {
+        if (!loop_init_6) {
+            uint _e27 = k_10;
+            k_10 = (_e27 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e19 = k_10;
+        if ((_e19 < 16u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e23 = k_10;
+            _group_0_binding_2_cs[(base_1 + _e23)] = 0.0;
+        }
+    }
+    return;
+}
+
+void main() {
+    uvec3 id_5 = gl_GlobalInvocationID;
+    uint q_2 = id_5.x;
+    if ((((3u * q_2) + 2u) >= uint(_group_0_binding_1_cs.length()))) {
+        return;
+    }
+    vec4 wi_3 = _group_0_binding_1_cs[(3u * q_2)];
+    vec4 wr_3 = _group_0_binding_1_cs[((3u * q_2) + 1u)];
+    vec4 u_8 = _group_0_binding_1_cs[((3u * q_2) + 2u)];
+    vec3 _e34 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, wr_3.w, u_8.w);
+    fur_store_rgb(q_2, _e34);
+    return;
+}
+

@@ -1,0 +1,327 @@
+//! The WGSL dual-scattering evaluator (`fur_eval_dual`, docs/model.md §13) on a real Vulkan
+//! device (a GPU, or Mesa's llvmpipe) against `bcsdf_core::dual::DualLut::eval`, for the dog
+//! and human-hair presets: tables computed from each preset's baked LUT (small quadrature),
+//! encoded to a `.furdual` blob, decoded on the CPU and bound on the GPU. Queries: random
+//! angles and edge angles (θ at ±90°, φ at 0, ±π/2, ±π, 7; NaN and out-of-range angles, 0 on
+//! both sides), fiber counts 0, 0.25, 0.5, 1, 3.7, 50, 10⁶, +∞, NaN, −2 and densities default,
+//! (0.5, 2), (4, 0), (7, NaN), (−1, 1); and random vectors at the same counts and densities.
+//!
+//! Tolerance, as `tests/agreement.rs` states it, relative: per channel,
+//! |gpu − cpu| ≤ 1e-5·max(cpu, 1e-3·peak), peak the largest CPU value of that channel over
+//! the preset's queries. A shader with one constant perturbed must fail the same check.
+//!
+//! Without an adapter the tests print "skipped: no GPU adapter" and pass, unless
+//! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
+
+use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::rng::{cell_stream, Pcg32};
+use bcsdf_core::shader::FUR_BCSDF_WGSL;
+use bcsdf_core::{presets, Angles, FurParams};
+use bcsdf_gpu::{DualDirsQuery, DualQuery, GpuDual, GpuError};
+use std::f32::consts::{FRAC_PI_2, PI};
+use std::path::PathBuf;
+
+const RELATIVE: f32 = 1e-5;
+
+const FIBERS: [f32; 10] = [
+    0.0,
+    0.25,
+    0.5,
+    1.0,
+    3.7,
+    50.0,
+    1e6,
+    f32::INFINITY,
+    f32::NAN,
+    -2.0,
+];
+
+const DENSITIES: [Density; 5] = [
+    Density::DEFAULT,
+    Density { d_f: 0.5, d_b: 2.0 },
+    Density { d_f: 4.0, d_b: 0.0 },
+    Density {
+        d_f: 7.0,
+        d_b: f32::NAN,
+    },
+    Density {
+        d_f: -1.0,
+        d_b: 1.0,
+    },
+];
+
+/// The preset's baked LUT (a small photon budget, profiles cached like `tests/agreement.rs`)
+/// and its `.furdual` blob (tables from the LUT at a 32 × 16 quadrature, `Coat`).
+fn lut_and_blob(name: &str) -> (Vec<u8>, Vec<u8>) {
+    let preset = presets::find(name).unwrap();
+    let opts = ProfileOptions {
+        budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
+        cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
+        ..ProfileOptions::default()
+    };
+    let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
+    let bytes = bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT);
+    let baked = BakedBcsdf::from_bytes(&bytes).unwrap();
+    let mut tables = Box::new(DualTables::ZERO);
+    tables.compute(
+        &baked,
+        Quadrature {
+            theta_steps: 32,
+            phi_steps: 16,
+        },
+    );
+    let blob = encode(&tables, Attenuation::Coat, 0).to_vec();
+    (bytes, blob)
+}
+
+/// The GPU evaluator, or None (after printing why) when the machine has no adapter and the
+/// GPU is not required.
+fn gpu(blob: &[u8], wgsl: &str) -> Option<GpuDual> {
+    match GpuDual::with_shader(blob, wgsl) {
+        Ok(g) => Some(g),
+        Err(e @ GpuError::NoAdapter(_)) => {
+            if std::env::var("FUR_BCSDF_REQUIRE_GPU").as_deref() == Ok("1") {
+                panic!("FUR_BCSDF_REQUIRE_GPU=1 but {e}");
+            }
+            println!("skipped: no GPU adapter ({e})");
+            None
+        }
+        Err(e) => panic!("{e}"),
+    }
+}
+
+fn angle_queries() -> Vec<DualQuery> {
+    let mut angles = Vec::new();
+    for i in 0..96u64 {
+        let mut r = Pcg32::new(cell_stream(13, 1, i), cell_stream(13, 2, i));
+        angles.push([
+            (r.uniform() - 0.5) * PI,
+            (r.uniform() - 0.5) * PI,
+            (r.uniform() - 0.5) * 2.0 * PI,
+        ]);
+    }
+    // Near the specular cone (x = θ_i + θ_r ≈ 0), where the Gaussians peak.
+    for i in 0..48u64 {
+        let mut r = Pcg32::new(cell_stream(13, 3, i), cell_stream(13, 4, i));
+        let t = (r.uniform() - 0.5) * 2.8;
+        angles.push([
+            t,
+            -t + (r.uniform() - 0.5) * 0.2,
+            (r.uniform() - 0.5) * 2.0 * PI,
+        ]);
+    }
+    let edge_t = [FRAC_PI_2, -FRAC_PI_2, 89.9f32.to_radians(), 0.0];
+    let edge_p = [0.0f32, FRAC_PI_2, -FRAC_PI_2, PI, -PI, 7.0];
+    for &a in &edge_t {
+        for &p in &edge_p {
+            angles.push([a, -0.3, p]);
+            angles.push([0.2, a, p]);
+        }
+    }
+    let bad = [
+        [f32::NAN, 0.1, 0.2],
+        [0.1, f32::NAN, 0.2],
+        [0.1, 0.2, f32::NAN],
+        [f32::INFINITY, 0.1, 0.2],
+        [0.1, 0.2, f32::NEG_INFINITY],
+        [1.6, 0.1, 0.2],
+        [0.1, -1.6, 0.2],
+    ];
+    angles.extend(bad);
+    // Every angle with several fiber counts and densities, cycling through both lists.
+    let mut q = Vec::new();
+    for (i, &angles) in angles.iter().enumerate() {
+        for s in 0..4 {
+            let k = 4 * i + s;
+            q.push(DualQuery {
+                angles,
+                fibers: FIBERS[k % FIBERS.len()],
+                density: DENSITIES[(k / FIBERS.len()) % DENSITIES.len()],
+            });
+        }
+    }
+    q
+}
+
+fn dirs_queries() -> Vec<DualDirsQuery> {
+    let mut q = Vec::new();
+    for i in 0..400u64 {
+        let mut r = Pcg32::new(cell_stream(17, 1, i), cell_stream(17, 2, i));
+        let mut v = || [r.uniform() - 0.5, r.uniform() - 0.5, r.uniform() - 0.5];
+        let (wi, wr, tangent) = (v(), v(), v());
+        let k = i as usize;
+        q.push(DualDirsQuery {
+            wi,
+            wr,
+            tangent,
+            fibers: FIBERS[k % FIBERS.len()],
+            density: DENSITIES[(k / FIBERS.len()) % DENSITIES.len()],
+        });
+    }
+    let t = [0.2f32, -0.4, 0.9];
+    let edge = [
+        ([0.3f32, 0.1, 0.0], t),
+        (t, [0.3, 0.1, 0.0]),
+        ([0.0; 3], [0.3, 0.1, 0.0]),
+        ([f32::NAN, 0.1, 0.0], [0.3, 0.1, 0.0]),
+    ];
+    for (wi, wr) in edge {
+        q.push(DualDirsQuery {
+            wi,
+            wr,
+            tangent: t,
+            fibers: 3.7,
+            density: Density::DEFAULT,
+        });
+    }
+    q.push(DualDirsQuery {
+        wi: [0.3, 0.1, 0.0],
+        wr: [0.1, 0.3, 0.2],
+        tangent: [0.0; 3],
+        fibers: 1.0,
+        density: Density::DEFAULT,
+    });
+    q
+}
+
+fn cpu_angles(lut: &DualLut, q: &DualQuery) -> [f32; 3] {
+    let [ti, tr, phi] = q.angles;
+    match Angles::new(ti, tr, phi) {
+        Ok(a) => lut.eval(&a, q.fibers, q.density).0,
+        Err(_) => [0.0; 3],
+    }
+}
+
+/// The CPU term from the vectors: `DualLut::eval_dirs` (the baked evaluator's polynomial
+/// conversion, which the shader ports).
+fn cpu_dirs(lut: &DualLut, q: &DualDirsQuery) -> [f32; 3] {
+    lut.eval_dirs(q.wi, q.wr, q.tangent, q.fibers, q.density).0
+}
+
+/// The worst |gpu − cpu| / max(cpu, 1e-3·peak) over all queries and channels, its query,
+/// and the largest absolute difference.
+fn worst(cpu: &[[f32; 3]], gpu: &[[f32; 3]]) -> (f32, usize, f32) {
+    let mut peak = [0.0f32; 3];
+    for v in cpu {
+        for (p, x) in peak.iter_mut().zip(v) {
+            *p = p.max(*x);
+        }
+    }
+    let mut w = (0.0f32, 0, 0.0f32);
+    for (i, (c, g)) in cpu.iter().zip(gpu).enumerate() {
+        for k in 0..3 {
+            let scale = c[k].max(1e-3 * peak[k]).max(f32::MIN_POSITIVE);
+            let d = (g[k] - c[k]).abs();
+            let d = if d.is_nan() { f32::INFINITY } else { d };
+            w.2 = w.2.max(d);
+            if d / scale > w.0 {
+                (w.0, w.1) = (d / scale, i);
+            }
+        }
+    }
+    w
+}
+
+#[test]
+fn gpu_dual_matches_cpu() {
+    for name in ["dog", "human-hair"] {
+        let (bytes, blob) = lut_and_blob(name);
+        let Some(g) = gpu(&blob, FUR_BCSDF_WGSL) else {
+            return;
+        };
+        let baked = BakedBcsdf::from_bytes(&bytes).unwrap();
+        let mut lut = Box::new(DualLut::EMPTY);
+        lut.decode(&blob).unwrap();
+
+        let q = angle_queries();
+        let cpu: Vec<[f32; 3]> = q.iter().map(|a| cpu_angles(&lut, a)).collect();
+        let got = g.eval(&q).unwrap();
+        let nonzero = cpu.iter().filter(|c| c.iter().any(|&x| x > 0.0)).count();
+        let (e, at, abs) = worst(&cpu, &got);
+        println!(
+            "{name} on {}: {} angle queries ({nonzero} non-zero), worst relative difference \
+             {e:.2e} at {:?}, largest absolute difference {abs:.2e}",
+            g.adapter_name(),
+            q.len(),
+            q[at]
+        );
+        assert!(nonzero > q.len() / 2, "{name}: only {nonzero} non-zero");
+        assert!(
+            e <= RELATIVE,
+            "{name}: {e} at {:?}: cpu {:?} gpu {:?}",
+            q[at],
+            cpu[at],
+            got[at]
+        );
+        // Invalid angles and the clamped inputs give exactly what the CPU gives.
+        for (i, (c, x)) in cpu.iter().zip(&got).enumerate() {
+            if *c == [0.0; 3] {
+                assert_eq!(*x, [0.0; 3], "{name}: {:?}", q[i]);
+            }
+        }
+
+        let vq = dirs_queries();
+        let cpu: Vec<[f32; 3]> = vq.iter().map(|v| cpu_dirs(&lut, v)).collect();
+        let got = g.eval_dirs(&vq).unwrap();
+        let (e, at, abs) = worst(&cpu, &got);
+        println!(
+            "{name}: {} vector queries, worst relative difference {e:.2e}, largest absolute \
+             difference {abs:.2e}",
+            vq.len()
+        );
+        assert!(
+            e <= RELATIVE,
+            "{name}: {e} at {:?}: cpu {:?} gpu {:?}",
+            vq[at],
+            cpu[at],
+            got[at]
+        );
+        let edges = vq.len() - 5;
+        for (c, x) in cpu[edges + 2..].iter().zip(&got[edges + 2..]) {
+            assert_eq!((*c, *x), ([0.0; 3], [0.0; 3]), "{name}: degenerate vectors");
+        }
+        // The vectors' angles are the baked evaluator's (one conversion for S and the term).
+        for v in &vq {
+            if let Ok(a) = baked.angles_from_dirs(v.wi, v.wr, v.tangent) {
+                assert_eq!(cpu_dirs(&lut, v), lut.eval(&a, v.fibers, v.density).0);
+            }
+        }
+    }
+}
+
+#[test]
+fn a_perturbed_constant_is_caught() {
+    let (_, blob) = lut_and_blob("dog");
+    // ln 2 off by 1e-4 (relative): T_f = μⁿ moves wherever the spread term matters.
+    let wrong = FUR_BCSDF_WGSL.replace(
+        "const FUR_LN2: f32 = 0.693147182;",
+        "const FUR_LN2: f32 = 0.693216497;",
+    );
+    assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation applies");
+    let Some(g) = gpu(&blob, &wrong) else {
+        return;
+    };
+    let mut lut = Box::new(DualLut::EMPTY);
+    lut.decode(&blob).unwrap();
+    let q = angle_queries();
+    let cpu: Vec<[f32; 3]> = q.iter().map(|a| cpu_angles(&lut, a)).collect();
+    let got = g.eval(&q).unwrap();
+    let (e, _, _) = worst(&cpu, &got);
+    println!("perturbed ln 2: worst relative difference {e:.2e}");
+    assert!(
+        e > RELATIVE,
+        "the agreement check missed a wrong constant ({e})"
+    );
+}
+
+#[test]
+fn an_invalid_blob_is_refused() {
+    let (_, mut blob) = lut_and_blob("dog");
+    blob[100] ^= 1;
+    assert!(matches!(GpuDual::new(&blob), Err(GpuError::Dual(_))));
+    assert!(matches!(GpuDual::new(&blob[..64]), Err(GpuError::Dual(_))));
+}

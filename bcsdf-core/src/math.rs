@@ -220,9 +220,11 @@ pub fn exp_neg_polynomial(x: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn exp_neg_saturating(x: f32) -> f32 {
-    // max/min (NaN becomes 0 here), and the result kept or zeroed by a bit mask: no branch.
+    // max/min, not clamp: NaN becomes 0 here (clamp would pass it on); the result kept or
+    // zeroed by a bit mask: no branch.
+    #[allow(clippy::manual_clamp)]
     let e = exp_neg_reduced(x.max(0.0).min(87.0));
-    let keep = u32::from(!(x > 87.0)).wrapping_neg();
+    let keep = u32::from(x > 87.0).wrapping_sub(1);
     f32::from_bits(e.to_bits() & keep)
 }
 

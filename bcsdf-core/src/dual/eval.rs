@@ -27,7 +27,7 @@ const INV_SQRT_TAU: f32 = 0.398_942_3;
 fn gauss(d: &Lanes, v: &Lanes) -> Lanes {
     let mut out = [0.0f32; 4];
     for c in 0..4 {
-        let s = rsqrt_newton(v[c].max(MIN_VARIANCE).min(1e30));
+        let s = rsqrt_newton(v[c].clamp(MIN_VARIANCE, 1e30));
         let z = d[c] * s;
         out[c] = exp_neg_saturating(0.5 * z * z) * s * INV_SQRT_TAU;
     }

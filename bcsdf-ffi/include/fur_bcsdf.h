@@ -9,6 +9,9 @@
  * The contract (see fur_lut): initialise a fur_lut (FUR_LUT_INIT), open it before use, close
  * it before you free the LUT bytes; never let an output buffer overlap another argument's
  * buffer (FUR_RESTRICT); a fur_lut is only meaningful in the process and build that opened it.
+ * A fur_dual (dual scattering, docs/model.md section 13) is the same kind of handle, but
+ * large (150 KiB: allocate it on the heap) and owning: fur_dual_open decodes a .furdual blob
+ * into it, and the blob's bytes may be freed at once.
  */
 
 #ifndef FUR_BCSDF_H
@@ -37,9 +40,27 @@
 #define FUR_LUT_INIT {{0}}
 
 /**
+ * Initialiser of a closed fur_dual (all zeroes): `static fur_dual d = FUR_DUAL_INIT;`.
+ * Zeroed memory is the same (`calloc(1, sizeof(fur_dual))`, the usual way: a fur_dual is
+ * 150 KiB). Every fur_dual must be initialised (this, zeroes, or fur_dual_open) before any
+ * other call reads it.
+ */
+#define FUR_DUAL_INIT {{0}}
+
+/**
  * 64-bit words of storage in a `fur_lut`.
  */
 #define FUR_LUT_WORDS 256
+
+/**
+ * 64-bit words of storage in a `fur_dual` (153 600 bytes, 150 KiB).
+ */
+#define FUR_DUAL_WORDS 19200
+
+/**
+ * Length in bytes of every `.furdual` blob `fur_dual_open` accepts.
+ */
+#define FUR_DUAL_BLOB_LEN 54976
 
 /**
  * Status of a call; `FUR_OK` (0) is success. `fur_status_str` describes each.
@@ -62,7 +83,8 @@ typedef enum fur_status {
    */
   FUR_ERR_LENGTH = 3,
   /**
-   * The fur_lut is not open: zeroed (`FUR_LUT_INIT`), closed, or its open failed.
+   * The fur_lut (or fur_dual) is not open: zeroed (`FUR_LUT_INIT`, `FUR_DUAL_INIT`),
+   * closed, or its open failed.
    */
   FUR_ERR_NOT_OPEN = 4,
   /**
@@ -98,15 +120,37 @@ typedef enum fur_status {
    */
   FUR_ERR_NO_SAMPLE = 12,
   /**
-   * The fur_lut was opened by another build of this library (another version, compiler
-   * or target): it is only meaningful in the process and build that opened it.
+   * The fur_lut (or fur_dual) was opened by another build of this library (another
+   * version, compiler or target): it is only meaningful in the process and build that
+   * opened it.
    */
   FUR_ERR_OTHER_BUILD = 13,
   /**
-   * An output buffer overlaps an input buffer, the fur_lut or the LUT bytes; nothing
-   * was written.
+   * An output buffer overlaps an input buffer, the fur_lut or the LUT bytes (or the
+   * fur_dual, or the .furdual bytes being opened); nothing was written.
    */
   FUR_ERR_OVERLAP = 14,
+  /**
+   * The .furdual bytes are not `FUR_DUAL_BLOB_LEN` long (truncated, or trailing data).
+   */
+  FUR_ERR_DUAL_LENGTH = 15,
+  /**
+   * The bytes are not a .furdual blob (bad magic).
+   */
+  FUR_ERR_DUAL_FORMAT = 16,
+  /**
+   * The .furdual blob was made by another format or model version: recompute it (bake).
+   */
+  FUR_ERR_DUAL_VERSION = 17,
+  /**
+   * The .furdual checksum does not match its bytes: the data was changed after baking.
+   */
+  FUR_ERR_DUAL_CHECKSUM = 18,
+  /**
+   * The .furdual blob has another table layout, an unknown attenuation, or an invalid
+   * value (infinite, NaN or out of its range).
+   */
+  FUR_ERR_DUAL_INVALID = 19,
 } fur_status;
 
 /**
@@ -130,6 +174,33 @@ typedef enum fur_family {
    */
   FUR_FAMILY_SCATTERED = 3,
 } fur_family;
+
+/**
+ * Decoded dual-scattering tables (docs/model.md §13): fixed-size, caller-owned storage of
+ * `FUR_DUAL_WORDS` 64-bit words (153 600 bytes, 150 KiB: allocate it on the heap, e.g.
+ * `calloc(1, sizeof(fur_dual))`, or in static storage, rather than on a thread's stack).
+ * Its contents are private, and only meaningful in the process and the build of this
+ * library that opened it (another build's is refused with `FUR_ERR_OTHER_BUILD`).
+ *
+ * The contract:
+ * 1. Initialise before use: zeroed memory (`calloc`, or `FUR_DUAL_INIT`), or open it at once.
+ *    `fur_dual_open` accepts uninitialised storage; every other function reads it, and
+ *    refuses a zeroed one with `FUR_ERR_NOT_OPEN`.
+ * 2. Open: `fur_dual_open(bytes, len, d)` decodes the `.furdual` blob into `*d`. Unlike
+ *    `fur_lut_open`, nothing is borrowed: the bytes may be freed as soon as it returns.
+ * 3. Close when done: `fur_dual_close(d)` zeroes it, after which every call with it returns
+ *    `FUR_ERR_NOT_OPEN`; then free the storage. A copy made by value (memcpy) is another
+ *    open `fur_dual`, independent of the first.
+ *
+ * Do not write to a `fur_dual` (open, close, or otherwise) while another thread evaluates
+ * with it; concurrent evaluations with one open `fur_dual` are fine.
+ */
+typedef struct fur_dual {
+  /**
+   * Opaque storage (8-byte aligned).
+   */
+  uint64_t _opaque[FUR_DUAL_WORDS];
+} fur_dual;
 
 /**
  * An opened LUT (docs/model.md §8): fixed-size, caller-owned storage (stack, arena, struct
@@ -186,6 +257,89 @@ typedef struct fur_sample {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Decodes the `.furdual` blob of `len` bytes at `bytes` (docs/model.md §13) into `*out`
+ * after checking all of it (length `FUR_DUAL_BLOB_LEN`, magic, format and model versions,
+ * table layout, attenuation, checksum, every value), and opens `*out`. Nothing is borrowed:
+ * the bytes may be freed or changed as soon as this returns. `*out` may be uninitialised.
+ *
+ * Statuses of a refused blob (`*out` is then left closed, equal to `FUR_DUAL_INIT`):
+ * `FUR_ERR_DUAL_LENGTH`, `FUR_ERR_DUAL_FORMAT`, `FUR_ERR_DUAL_VERSION`,
+ * `FUR_ERR_DUAL_CHECKSUM`, `FUR_ERR_DUAL_INVALID`; NULL `bytes` gives `FUR_ERR_NULL`, `len`
+ * 0 `FUR_ERR_LENGTH` (also closed). `FUR_ERR_NULL`/`FUR_ERR_ALIGNMENT` on `out` itself and
+ * `FUR_ERR_OVERLAP` (`*out` overlaps the bytes) leave `*out` untouched.
+ *
+ * # Safety
+ * `bytes` is NULL or points to `len` readable bytes; `out` is NULL or points to a writable
+ * `fur_dual` no other thread is using.
+ */
+enum fur_status fur_dual_open(const uint8_t *FUR_RESTRICT bytes,
+                              size_t len,
+                              struct fur_dual *FUR_RESTRICT out);
+
+/**
+ * Closes `*dual`: zeroes it (it becomes equal to `FUR_DUAL_INIT`), so that every later call
+ * with it returns `FUR_ERR_NOT_OPEN`. It holds no other resources (the caller frees the
+ * storage itself, before or after closing).
+ *
+ * # Safety
+ * `dual` is NULL or points to a writable `fur_dual` no other thread is using.
+ */
+enum fur_status fur_dual_close(struct fur_dual *FUR_RESTRICT dual);
+
+/**
+ * The dual-scattering term (docs/model.md §13), RGB, into `out_rgb[3]`, from angles
+ * (radians, as `fur_eval_far`): the light that reaches the shading point through `fibers`
+ * other fibers.
+ *
+ * `fibers` is the number of fibers between the shading point and the light (a shadow ray's
+ * count, or a deep opacity map's / voxel density's estimate; fractional values are fine;
+ * NaN or negative is 0, i.e. unoccluded; above 10^6, or +infinity, is 10^6). `d_f` and
+ * `d_b` are the forward and backward density factors (1 and 1 is the shipped default; NaN
+ * or negative is 0; above 4 is 4). The result is the term to ADD to single scattering:
+ * shade with S * V + result, where S is `fur_eval_far`'s value and
+ * V = clamp(1 - fibers, 0, 1) the fraction of direct light; the result is in S's units
+ * (multiply it, like S, by cos(theta_i) and the light's radiance). Finite and >= 0.
+ *
+ * Invalid angles write 0 and return `FUR_ERR_ANGLE`. `out_rgb` must not overlap `*dual`
+ * (`FUR_ERR_OVERLAP`, nothing written).
+ *
+ * # Safety
+ * `dual` is NULL or points to an initialised `fur_dual`; `out_rgb` is NULL or points to 3
+ * writable floats.
+ */
+enum fur_status fur_eval_dual(const struct fur_dual *FUR_RESTRICT dual,
+                              float theta_i,
+                              float theta_r,
+                              float phi,
+                              float fibers,
+                              float d_f,
+                              float d_b,
+                              float *FUR_RESTRICT out_rgb);
+
+/**
+ * `fur_eval_dual` from world-space vectors (as `fur_eval_far_dirs`): `wi` toward the light,
+ * `wr` toward the viewer, `tangent` the fiber direction (none needs unit length), into
+ * `out_rgb[3]`; `fibers`, `d_f`, `d_b` and the result as in `fur_eval_dual` (add it to
+ * S * V, multiply by cos(theta_i) and the light's radiance). The angles are those
+ * `DualLut::eval_dirs` converts to (the baked evaluator's conversion). A vector with a
+ * component that is not finite, or of zero (below the smallest normal float) or overflowing
+ * length, writes 0 and returns `FUR_ERR_DIRECTION`. `out_rgb` must not
+ * overlap the three vectors or `*dual` (`FUR_ERR_OVERLAP`, nothing written).
+ *
+ * # Safety
+ * `dual` is NULL or points to an initialised `fur_dual`; each vector is NULL or points to 3
+ * readable floats; `out_rgb` is NULL or points to 3 writable floats.
+ */
+enum fur_status fur_eval_dual_dirs(const struct fur_dual *FUR_RESTRICT dual,
+                                   const float *FUR_RESTRICT wi,
+                                   const float *FUR_RESTRICT wr,
+                                   const float *FUR_RESTRICT tangent,
+                                   float fibers,
+                                   float d_f,
+                                   float d_b,
+                                   float *FUR_RESTRICT out_rgb);
 
 /**
  * Far-field S(omega_i, omega_r), RGB, into `out_rgb[3]` (0 and `FUR_ERR_ANGLE` for invalid

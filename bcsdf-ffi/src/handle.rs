@@ -43,31 +43,35 @@ const fn fnv1a(mut h: u64, bytes: &[u8]) -> u64 {
     h
 }
 
-/// What a `fur_lut` means in this build, hashed (FNV-1a): the library version, the compiler
-/// (`rustc -vV`, recorded by build.rs) and the target, the LUT format and model versions, and
-/// the size, alignment and field offsets of the stored layout. A `fur_lut` opened by another
-/// build (another version of the library linked into the same process, another compiler)
-/// carries another tag and is refused with `FUR_ERR_OTHER_BUILD` instead of being misread.
-pub(crate) const BUILD_TAG: u64 = {
+/// The library version, the compiler (`rustc -vV`, recorded by build.rs) and the target,
+/// hashed (FNV-1a), then `layout` (what a stored handle's bits mean: versions, sizes,
+/// alignments, offsets), each as 8 little-endian bytes. The build tag of a handle type.
+pub(crate) const fn build_tag(layout: &[usize]) -> u64 {
     let mut h = fnv1a(0xcbf2_9ce4_8422_2325, env!("CARGO_PKG_VERSION").as_bytes());
     h = fnv1a(h, env!("FUR_BCSDF_RUSTC").as_bytes());
     h = fnv1a(h, env!("FUR_BCSDF_TARGET").as_bytes());
-    let layout = [
-        lut::FORMAT_VERSION as usize,
-        bcsdf_core::MODEL_VERSION as usize,
-        size_of::<Opened>(),
-        align_of::<Opened>(),
-        offset_of!(Opened, lut),
-        size_of::<BakedBcsdf<'static>>(),
-        align_of::<BakedBcsdf<'static>>(),
-    ];
     let mut i = 0;
     while i < layout.len() {
         h = fnv1a(h, &(layout[i] as u64).to_le_bytes());
         i += 1;
     }
     h
-};
+}
+
+/// What a `fur_lut` means in this build, hashed ([`build_tag`]): the library version, the
+/// compiler and the target, the LUT format and model versions, and the size, alignment and
+/// field offsets of the stored layout. A `fur_lut` opened by another build (another version
+/// of the library linked into the same process, another compiler) carries another tag and is
+/// refused with `FUR_ERR_OTHER_BUILD` instead of being misread.
+pub(crate) const BUILD_TAG: u64 = build_tag(&[
+    lut::FORMAT_VERSION as usize,
+    bcsdf_core::MODEL_VERSION as usize,
+    size_of::<Opened>(),
+    align_of::<Opened>(),
+    offset_of!(Opened, lut),
+    size_of::<BakedBcsdf<'static>>(),
+    align_of::<BakedBcsdf<'static>>(),
+]);
 
 /// A 64-bit mix of the integers an open `fur_lut` carries (SplitMix64 finaliser).
 fn check_of(build: u64, bytes: usize, len: usize) -> u64 {

@@ -4,7 +4,8 @@
 //! borrowed bytes, evaluate the far field (one direction, per family, from vectors, in
 //! batches), importance-sample it and query its pdf (docs/model.md §8, §10). The header
 //! `include/fur_bcsdf.h` is generated from this file by cbindgen (`tests/header.rs` checks it
-//! is current).
+//! is current). A `fur_dual`, decoded from a `.furdual` blob, evaluates the dual-scattering
+//! term added to single scattering behind other fibers (docs/model.md §13, `dual.rs`).
 //!
 //! Rules every exported function keeps:
 //! - no allocation, no global state, thread-safe for concurrent reads of one `fur_lut`;
@@ -41,13 +42,15 @@ macro_rules! tri {
     };
 }
 
-// cbindgen writes the functions file by file in path order: eval, handle, info.
+// cbindgen writes the functions file by file in path order: dual, eval, handle, info.
 mod args;
+mod dual;
 mod eval;
 mod handle;
 mod info;
 mod nostd;
 
+pub use dual::{fur_dual_close, fur_dual_open, fur_eval_dual, fur_eval_dual_dirs};
 pub use eval::{
     fur_eval_far, fur_eval_far_batch, fur_eval_far_dirs, fur_eval_far_families, fur_pdf_far,
     fur_sample_far, fur_sample_pdf_far,
@@ -67,7 +70,8 @@ pub enum fur_status {
     FUR_ERR_ALIGNMENT = 2,
     /// A length is zero where data is required, or 3*n overflows size_t.
     FUR_ERR_LENGTH = 3,
-    /// The fur_lut is not open: zeroed (`FUR_LUT_INIT`), closed, or its open failed.
+    /// The fur_lut (or fur_dual) is not open: zeroed (`FUR_LUT_INIT`, `FUR_DUAL_INIT`),
+    /// closed, or its open failed.
     FUR_ERR_NOT_OPEN = 4,
     /// The LUT bytes are shorter than their header says (or than a header).
     FUR_ERR_LUT_TRUNCATED = 5,
@@ -85,12 +89,24 @@ pub enum fur_status {
     FUR_ERR_DIRECTION = 11,
     /// Nothing can be sampled at this view angle (the BCSDF is zero there).
     FUR_ERR_NO_SAMPLE = 12,
-    /// The fur_lut was opened by another build of this library (another version, compiler
-    /// or target): it is only meaningful in the process and build that opened it.
+    /// The fur_lut (or fur_dual) was opened by another build of this library (another
+    /// version, compiler or target): it is only meaningful in the process and build that
+    /// opened it.
     FUR_ERR_OTHER_BUILD = 13,
-    /// An output buffer overlaps an input buffer, the fur_lut or the LUT bytes; nothing
-    /// was written.
+    /// An output buffer overlaps an input buffer, the fur_lut or the LUT bytes (or the
+    /// fur_dual, or the .furdual bytes being opened); nothing was written.
     FUR_ERR_OVERLAP = 14,
+    /// The .furdual bytes are not `FUR_DUAL_BLOB_LEN` long (truncated, or trailing data).
+    FUR_ERR_DUAL_LENGTH = 15,
+    /// The bytes are not a .furdual blob (bad magic).
+    FUR_ERR_DUAL_FORMAT = 16,
+    /// The .furdual blob was made by another format or model version: recompute it (bake).
+    FUR_ERR_DUAL_VERSION = 17,
+    /// The .furdual checksum does not match its bytes: the data was changed after baking.
+    FUR_ERR_DUAL_CHECKSUM = 18,
+    /// The .furdual blob has another table layout, an unknown attenuation, or an invalid
+    /// value (infinite, NaN or out of its range).
+    FUR_ERR_DUAL_INVALID = 19,
 }
 
 /// The lobe family a sample was drawn from (docs/model.md sections 5, 6).
@@ -137,6 +153,42 @@ pub const FUR_LUT_INIT: fur_lut = fur_lut {
 pub struct fur_lut {
     /// Opaque storage (8-byte aligned).
     pub _opaque: [u64; FUR_LUT_WORDS],
+}
+
+/// 64-bit words of storage in a `fur_dual` (153 600 bytes, 150 KiB).
+pub const FUR_DUAL_WORDS: usize = 19_200;
+
+/// Length in bytes of every `.furdual` blob `fur_dual_open` accepts.
+pub const FUR_DUAL_BLOB_LEN: usize = 54_976;
+
+/// A closed `fur_dual` (all zeroes), for Rust callers; C and C++ use the header's
+/// `FUR_DUAL_INIT` initialiser (or zeroed memory: `calloc`), the same bits.
+pub const FUR_DUAL_INIT: fur_dual = fur_dual {
+    _opaque: [0; FUR_DUAL_WORDS],
+};
+
+/// Decoded dual-scattering tables (docs/model.md §13): fixed-size, caller-owned storage of
+/// `FUR_DUAL_WORDS` 64-bit words (153 600 bytes, 150 KiB: allocate it on the heap, e.g.
+/// `calloc(1, sizeof(fur_dual))`, or in static storage, rather than on a thread's stack).
+/// Its contents are private, and only meaningful in the process and the build of this
+/// library that opened it (another build's is refused with `FUR_ERR_OTHER_BUILD`).
+///
+/// The contract:
+/// 1. Initialise before use: zeroed memory (`calloc`, or `FUR_DUAL_INIT`), or open it at once.
+///    `fur_dual_open` accepts uninitialised storage; every other function reads it, and
+///    refuses a zeroed one with `FUR_ERR_NOT_OPEN`.
+/// 2. Open: `fur_dual_open(bytes, len, d)` decodes the `.furdual` blob into `*d`. Unlike
+///    `fur_lut_open`, nothing is borrowed: the bytes may be freed as soon as it returns.
+/// 3. Close when done: `fur_dual_close(d)` zeroes it, after which every call with it returns
+///    `FUR_ERR_NOT_OPEN`; then free the storage. A copy made by value (memcpy) is another
+///    open `fur_dual`, independent of the first.
+///
+/// Do not write to a `fur_dual` (open, close, or otherwise) while another thread evaluates
+/// with it; concurrent evaluations with one open `fur_dual` are fine.
+#[repr(C)]
+pub struct fur_dual {
+    /// Opaque storage (8-byte aligned).
+    pub _opaque: [u64; FUR_DUAL_WORDS],
 }
 
 /// One importance sample (docs/model.md section 10), written by `fur_sample_far`.

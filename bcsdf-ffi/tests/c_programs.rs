@@ -6,6 +6,12 @@
 //! used after its bytes were freed, overlapping buffers, 10⁵ mutated blobs): any crash or
 //! abort fails this test.
 //!
+//! The dual-scattering clients (`tests/c/dual.c`, `tests/c/dual.cpp`) run on a `.furdual`
+//! blob computed here from the same baked LUT, and are compared with `DualLut::eval` and
+//! `DualLut::eval_dirs` bit for bit (statuses too); dual.c drives `fur_dual_*` with bad
+//! input (NULL, misalignment, never-opened, closed and other-build fur_duals, overlaps,
+//! each refusal status of a corrupt blob, 3000 mutated blobs).
+//!
 //! The same clients also run under Valgrind memcheck and built with
 //! `-fsanitize=address,undefined`: any error report fails those tests. Where `valgrind` or
 //! the sanitizer runtimes are missing they print "skipped: …" and pass, unless
@@ -13,8 +19,9 @@
 
 use bake::profiles::{build_model, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::dual::{self, Attenuation, Density, DualLut, DualTables, Quadrature};
 use bcsdf_core::lut::LutResolution;
-use bcsdf_core::{presets, Angles, Bcsdf, FurParams};
+use bcsdf_core::{presets, Angles, Bcsdf, FurParams, Libm};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
@@ -162,14 +169,144 @@ fn expected(blob: &[u8]) -> Vec<String> {
     out
 }
 
-/// The static library and the two LUT files, made once per test process.
+// The queries dual.c evaluates (its TI, TR, PH, FIBERS, DF/DB, WI/WR/WT, DIR_FIBERS).
+const DUAL_TI: [f32; 8] = [0.5, -0.3, 1.2, 0.0, -1.5, 0.25, 2.0, 0.4];
+const DUAL_TR: [f32; 8] = [-0.35, 0.1, -1.0, 0.0, 1.4, 0.6, 0.1, -0.2];
+const DUAL_PH: [f32; 8] = [0.785, 3.0, -2.0, 0.0, 1.0, -0.1, 0.3, 7.0];
+const DUAL_FIBERS: [f32; 9] = [
+    0.0,
+    0.25,
+    1.0,
+    2.75,
+    40.0,
+    1.0e7,
+    f32::INFINITY,
+    f32::NAN,
+    -3.0,
+];
+const DUAL_DENSITY: [(f32, f32); 4] = [(1.0, 1.0), (0.5, 2.0), (f32::NAN, -1.0), (10.0, 10.0)];
+type Dirs = ([f32; 3], [f32; 3], [f32; 3]);
+const DUAL_DIRS: [Dirs; 7] = [
+    ([0.3, 0.8, 0.2], [-0.6, 0.7, -0.1], [0.0, 0.2, 1.0]),
+    ([0.1, -0.9, 0.4], [0.5, 0.5, 0.5], [1.0, 0.0, 0.0]),
+    ([0.0, 0.0, 2.0], [0.3, 0.3, 0.9], [0.0, 0.0, 1.0]),
+    ([0.0, 0.0, 0.0], [0.3, 0.3, 0.9], [0.0, 1.0, 0.0]),
+    ([f32::NAN, 0.0, 1.0], [0.3, 0.3, 0.9], [0.0, 1.0, 0.0]),
+    ([0.3, 0.8, 0.2], [-0.6, 0.7, -0.1], [0.0, 0.0, 0.0]),
+    ([1.0e20, 1.0e20, -1.0e20], [0.5, -0.5, 0.1], [0.0, 0.0, 3.0]),
+];
+const DUAL_DIR_FIBERS: [f32; 4] = [0.0, 0.5, 3.0, f32::NAN];
+// fur_status values the dual entry points return for these queries.
+const FUR_OK: i32 = 0;
+const FUR_ERR_ANGLE: i32 = 10;
+const FUR_ERR_DIRECTION: i32 = 11;
+
+/// The `.furdual` blob of a baked LUT: the pipeline's recipe (`bake::pipeline::dual_blob`) at
+/// a coarser quadrature, to keep the test fast.
+fn dual_blob(lut: &[u8]) -> Vec<u8> {
+    let baked = BakedBcsdf::from_bytes(lut).unwrap();
+    let mut tables = Box::new(DualTables::ZERO);
+    tables.compute(
+        &baked,
+        Quadrature {
+            theta_steps: 32,
+            phi_steps: 16,
+        },
+    );
+    dual::encode(&tables, Attenuation::Coat, bcsdf_core::lut::checksum(lut)).to_vec()
+}
+
+fn decoded(blob: &[u8]) -> Box<DualLut> {
+    let mut d = Box::new(DualLut::EMPTY);
+    d.decode(blob).unwrap();
+    d
+}
+
+fn rgb_line(prefix: String, status: i32, v: [f32; 3]) -> String {
+    format!(
+        "{prefix} {status} {} {} {}",
+        hex(v[0]),
+        hex(v[1]),
+        hex(v[2])
+    )
+}
+
+/// `DualLut::eval` from angles, and the status `fur_eval_dual` returns.
+fn dual_at(d: &DualLut, ti: f32, tr: f32, ph: f32, n: f32, density: Density) -> (i32, [f32; 3]) {
+    match Angles::new(ti, tr, ph) {
+        Ok(a) => (FUR_OK, d.eval(&a, n, density).0),
+        Err(_) => (FUR_ERR_ANGLE, [0.0; 3]),
+    }
+}
+
+/// The lines dual.c prints for its evaluations, from the Rust API.
+fn expected_dual(blob: &[u8]) -> Vec<String> {
+    let d = decoded(blob);
+    let mut out = Vec::new();
+    for i in 0..DUAL_TI.len() {
+        for (f, &n) in DUAL_FIBERS.iter().enumerate() {
+            for (k, &(d_f, d_b)) in DUAL_DENSITY.iter().enumerate() {
+                let (st, v) = dual_at(
+                    &d,
+                    DUAL_TI[i],
+                    DUAL_TR[i],
+                    DUAL_PH[i],
+                    n,
+                    Density { d_f, d_b },
+                );
+                out.push(rgb_line(format!("dual {i} {f} {k}"), st, v));
+            }
+        }
+    }
+    for (i, &(wi, wr, t)) in DUAL_DIRS.iter().enumerate() {
+        for (f, &n) in DUAL_DIR_FIBERS.iter().enumerate() {
+            let v = d.eval_dirs(wi, wr, t, n, Density::DEFAULT).0;
+            // The status: whether the directions are accepted (eval_dirs gives 0 otherwise).
+            let st = match Angles::from_directions::<Libm>(wi, wr, t) {
+                Ok(_) => FUR_OK,
+                Err(_) => FUR_ERR_DIRECTION,
+            };
+            out.push(rgb_line(format!("dualdirs {i} {f}"), st, v));
+        }
+    }
+    out
+}
+
+/// The lines dual.cpp prints, from the Rust API.
+fn expected_dual_cpp(blob: &[u8]) -> Vec<String> {
+    let d = decoded(blob);
+    let fibers = [0.0, 0.25, 3.5, f32::INFINITY, f32::NAN];
+    let mut out = Vec::new();
+    for i in 0..3 {
+        for (f, &n) in fibers.iter().enumerate() {
+            let (st, v) = dual_at(&d, DUAL_TI[i], DUAL_TR[i], DUAL_PH[i], n, Density::DEFAULT);
+            out.push(rgb_line(format!("cppdual {i} {f}"), st, v));
+        }
+    }
+    let (wi, wr, t) = DUAL_DIRS[0];
+    let v = d
+        .eval_dirs(wi, wr, t, 2.0, Density { d_f: 0.5, d_b: 2.0 })
+        .0;
+    out.push(rgb_line("cppdualdirs".into(), FUR_OK, v));
+    out.push(
+        "cppdual refused: the bytes are not a dual-scattering (.furdual) blob (bad magic)".into(),
+    );
+    out
+}
+
+/// The static library, the two LUT files and the `.furdual` file, made once per test process.
 struct Fixture {
     lib: PathBuf,
     dir: tempfile::TempDir,
     blob: Vec<u8>,
+    dual: Vec<u8>,
 }
 
 impl Fixture {
+    fn dual_path(&self) -> PathBuf {
+        self.dir.path().join("a.furdual")
+    }
+
     fn lut_path(&self) -> PathBuf {
         self.dir.path().join("a.furlut")
     }
@@ -194,7 +331,14 @@ fn fixture() -> &'static Fixture {
         });
         std::fs::write(dir.path().join("a.furlut"), &blob).unwrap();
         std::fs::write(dir.path().join("small.furlut"), &small).unwrap();
-        Fixture { lib, dir, blob }
+        let dual = dual_blob(&blob);
+        std::fs::write(dir.path().join("a.furdual"), &dual).unwrap();
+        Fixture {
+            lib,
+            dir,
+            blob,
+            dual,
+        }
     })
 }
 
@@ -258,6 +402,39 @@ fn check_cpp_output(run: &Output, blob: &[u8]) {
     assert!(stdout.lines().any(|x| x == line), "{stdout}\nwanted {line}");
 }
 
+/// dual.c's output: every evaluation equals Rust's bit for bit (and its status), there are no
+/// other evaluation lines, and every bad input was refused.
+fn check_dual_c_output(run: &Output, blob: &[u8]) {
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "dual.c failed ({:?}):\n{stdout}\n{}",
+        run.status,
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let lines: Vec<&str> = stdout.lines().collect();
+    let want = expected_dual(blob);
+    assert_eq!(want.len(), 8 * 9 * 4 + 7 * 4);
+    assert_eq!(&lines[..want.len()], &want[..]);
+    assert_eq!(
+        &lines[want.len()..],
+        &["dual mutated refused 3000 of 3000", "dual-bad-input ok"]
+    );
+}
+
+/// dual.cpp's output: its evaluations equal Rust's bit for bit, the corrupt blob is refused.
+fn check_dual_cpp_output(run: &Output, blob: &[u8]) {
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "dual.cpp failed ({:?}):\n{stdout}\n{}",
+        run.status,
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert_eq!(lines, expected_dual_cpp(blob));
+}
+
 /// Whether a missing tool fails the test (CI) rather than skipping it.
 fn tools_required() -> bool {
     std::env::var_os("FUR_BCSDF_REQUIRE_TOOLS").is_some()
@@ -307,6 +484,29 @@ fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
     );
     let run = Command::new(&cpp_exe).arg(f.lut_path()).output().unwrap();
     check_cpp_output(&run, &f.blob);
+
+    let (dual_exe, dual_cpp_exe) = (dir.path().join("dual"), dir.path().join("dual_cpp"));
+    compile(
+        "cc",
+        &C_FLAGS,
+        &manifest().join("tests/c/dual.c"),
+        &f.lib,
+        &dual_exe,
+    );
+    let run = Command::new(&dual_exe).arg(f.dual_path()).output().unwrap();
+    check_dual_c_output(&run, &f.dual);
+    compile(
+        "c++",
+        &CPP_FLAGS,
+        &manifest().join("tests/c/dual.cpp"),
+        &f.lib,
+        &dual_cpp_exe,
+    );
+    let run = Command::new(&dual_cpp_exe)
+        .arg(f.dual_path())
+        .output()
+        .unwrap();
+    check_dual_cpp_output(&run, &f.dual);
 }
 
 #[test]
@@ -357,6 +557,24 @@ fn c_and_cpp_clients_are_clean_under_valgrind_memcheck() {
     };
     check_c_output(&memcheck(&c_exe, &[f.lut_path(), f.small_path()]), &f.blob);
     check_cpp_output(&memcheck(&cpp_exe, &[f.lut_path()]), &f.blob);
+
+    let (dual_exe, dual_cpp_exe) = (dir.path().join("dual"), dir.path().join("dual_cpp"));
+    compile(
+        "cc",
+        &c_flags,
+        &manifest().join("tests/c/dual.c"),
+        &f.lib,
+        &dual_exe,
+    );
+    compile(
+        "c++",
+        &cpp_flags,
+        &manifest().join("tests/c/dual.cpp"),
+        &f.lib,
+        &dual_cpp_exe,
+    );
+    check_dual_c_output(&memcheck(&dual_exe, &[f.dual_path()]), &f.dual);
+    check_dual_cpp_output(&memcheck(&dual_cpp_exe, &[f.dual_path()]), &f.dual);
 }
 
 #[test]
@@ -410,4 +628,22 @@ fn c_and_cpp_clients_are_clean_under_address_and_undefined_sanitizers() {
     };
     check_c_output(&run(&c_exe, &[f.lut_path(), f.small_path()]), &f.blob);
     check_cpp_output(&run(&cpp_exe, &[f.lut_path()]), &f.blob);
+
+    let (dual_exe, dual_cpp_exe) = (dir.path().join("dual"), dir.path().join("dual_cpp"));
+    compile(
+        "cc",
+        &c_flags,
+        &manifest().join("tests/c/dual.c"),
+        &f.lib,
+        &dual_exe,
+    );
+    compile(
+        "c++",
+        &cpp_flags,
+        &manifest().join("tests/c/dual.cpp"),
+        &f.lib,
+        &dual_cpp_exe,
+    );
+    check_dual_c_output(&run(&dual_exe, &[f.dual_path()]), &f.dual);
+    check_dual_cpp_output(&run(&dual_cpp_exe, &[f.dual_path()]), &f.dual);
 }

@@ -1,0 +1,454 @@
+//! Dual scattering through the C ABI (docs/model.md §13): what a `fur_dual` stores, how it is
+//! opened (decoded from a `.furdual` blob), recognised and closed, and its two evaluation
+//! entry points (from angles and from world-space vectors).
+//!
+//! Like a `fur_lut` (`handle.rs`), a `fur_dual` is caller-owned, fixed-size storage that
+//! starts with plain integers readable whatever the bytes are: a magic number the same in
+//! every build, the [`DUAL_BUILD_TAG`] of the build that opened it, the source checksum the
+//! blob records, and a check mixing the three. Then the decoded evaluator
+//! (`bcsdf_core::dual::DualLut`, about 146 KB of f32), whose bits only this build can
+//! interpret. Unlike a `fur_lut`, it owns everything it reads: the blob's bytes are decoded
+//! into it and not borrowed.
+
+use crate::args::{check_ptr, disjoint, read3, write3, Region};
+use crate::handle::build_tag;
+use crate::{fur_dual, fur_status};
+use bcsdf_core::dual::{Density, DualError, DualLut, DUAL_FORMAT_VERSION};
+use bcsdf_core::{Angles, Libm};
+use core::mem::{align_of, offset_of, size_of, MaybeUninit};
+
+/// What a `fur_dual` holds.
+#[repr(C)]
+struct OpenedDual {
+    /// [`DUAL_MAGIC`] while open, 0 once closed (or never opened: `FUR_DUAL_INIT` is zeroes).
+    magic: u64,
+    /// [`DUAL_BUILD_TAG`] of the library build that opened it.
+    build: u64,
+    /// `DualLut::source` of the decoded blob (the checksum of the LUT it was computed from).
+    source: u64,
+    /// [`check_of`] the three fields above.
+    check: u64,
+    lut: MaybeUninit<DualLut>,
+}
+
+/// "FURDUALO": the first word of an open `fur_dual`, in every build of this library (not
+/// the first word of an open `fur_lut`).
+const DUAL_MAGIC: u64 = 0x4655_5244_5541_4c4f;
+
+const _: () = assert!(size_of::<OpenedDual>() <= size_of::<fur_dual>());
+const _: () = assert!(align_of::<OpenedDual>() <= align_of::<fur_dual>());
+const _: () = assert!(crate::FUR_DUAL_BLOB_LEN == bcsdf_core::dual::BLOB_LEN);
+
+/// What a `fur_dual` means in this build ([`build_tag`]: the library version, the compiler
+/// and the target), with the `.furdual` format and model versions and the size, alignment
+/// and field offsets of the stored layout. A `fur_dual` opened by another build carries
+/// another tag and is refused with `FUR_ERR_OTHER_BUILD` instead of being misread.
+pub(crate) const DUAL_BUILD_TAG: u64 = build_tag(&[
+    DUAL_FORMAT_VERSION as usize,
+    bcsdf_core::MODEL_VERSION as usize,
+    size_of::<OpenedDual>(),
+    align_of::<OpenedDual>(),
+    offset_of!(OpenedDual, lut),
+    size_of::<DualLut>(),
+    align_of::<DualLut>(),
+]);
+
+/// A 64-bit mix of the integers an open `fur_dual` carries (SplitMix64 finaliser).
+fn check_of(build: u64, source: u64) -> u64 {
+    let mut z = DUAL_MAGIC ^ build.rotate_left(29) ^ source.wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// The status of a refused `.furdual` blob.
+fn status_of(e: &DualError) -> fur_status {
+    match e {
+        DualError::Length(_) => fur_status::FUR_ERR_DUAL_LENGTH,
+        DualError::Magic => fur_status::FUR_ERR_DUAL_FORMAT,
+        DualError::FormatVersion(_) | DualError::ModelVersion(_) => {
+            fur_status::FUR_ERR_DUAL_VERSION
+        }
+        DualError::Checksum => fur_status::FUR_ERR_DUAL_CHECKSUM,
+        DualError::Layout | DualError::Attenuation(_) | DualError::Value(_) => {
+            fur_status::FUR_ERR_DUAL_INVALID
+        }
+    }
+}
+
+/// An open `fur_dual`: its evaluator and its storage, which no output of a call may overlap.
+struct Open<'a> {
+    lut: &'a DualLut,
+    region: Region,
+}
+
+/// The evaluator inside an open `fur_dual`, after checking the pointer, the magic, the tag
+/// and the check word.
+///
+/// # Safety
+/// `dual` is NULL or points to `size_of::<fur_dual>()` readable, initialised bytes (the
+/// header's contract: `FUR_DUAL_INIT` or zeroed memory, then `fur_dual_open`,
+/// `fur_dual_close`) that no other thread writes while the reference lives.
+unsafe fn opened<'a>(dual: *const fur_dual) -> Result<Open<'a>, fur_status> {
+    check_ptr(dual)?;
+    let o = dual.cast::<OpenedDual>();
+    // SAFETY: `dual` is non-NULL, 8-aligned (checked) and, by the caller's contract, points
+    // to an initialised fur_dual; the first four words are plain integers, valid for any
+    // bits.
+    let (magic, build, source, check) = unsafe {
+        (
+            (&raw const (*o).magic).read(),
+            (&raw const (*o).build).read(),
+            (&raw const (*o).source).read(),
+            (&raw const (*o).check).read(),
+        )
+    };
+    if magic != DUAL_MAGIC {
+        return Err(fur_status::FUR_ERR_NOT_OPEN);
+    }
+    if build != DUAL_BUILD_TAG {
+        return Err(fur_status::FUR_ERR_OTHER_BUILD);
+    }
+    if check != check_of(build, source) {
+        return Err(fur_status::FUR_ERR_NOT_OPEN);
+    }
+    // SAFETY: magic, build and check are written together only by fur_dual_open of this
+    // build (the tag says so), after `lut` was initialised with a valid DualLut and decoded
+    // into, and cleared by fur_dual_close; a random match of the 128 bits is a 2^-128 event.
+    // The storage is owned by the caller and, by the contract, not written while in use.
+    let lut = unsafe { (*o).lut.assume_init_ref() };
+    Ok(Open {
+        lut,
+        region: Region::of(dual, 1),
+    })
+}
+
+/// Zeroes the whole storage: closed, and equal to `FUR_DUAL_INIT`.
+///
+/// # Safety
+/// `dual` is non-NULL, aligned and points to a writable `fur_dual`.
+unsafe fn close(dual: *mut fur_dual) {
+    // SAFETY: the caller guarantees a writable, aligned fur_dual; zero is a valid u64.
+    unsafe { dual.write_bytes(0, 1) };
+}
+
+/// Decodes the `.furdual` blob of `len` bytes at `bytes` (docs/model.md §13) into `*out`
+/// after checking all of it (length `FUR_DUAL_BLOB_LEN`, magic, format and model versions,
+/// table layout, attenuation, checksum, every value), and opens `*out`. Nothing is borrowed:
+/// the bytes may be freed or changed as soon as this returns. `*out` may be uninitialised.
+///
+/// Statuses of a refused blob (`*out` is then left closed, equal to `FUR_DUAL_INIT`):
+/// `FUR_ERR_DUAL_LENGTH`, `FUR_ERR_DUAL_FORMAT`, `FUR_ERR_DUAL_VERSION`,
+/// `FUR_ERR_DUAL_CHECKSUM`, `FUR_ERR_DUAL_INVALID`; NULL `bytes` gives `FUR_ERR_NULL`, `len`
+/// 0 `FUR_ERR_LENGTH` (also closed). `FUR_ERR_NULL`/`FUR_ERR_ALIGNMENT` on `out` itself and
+/// `FUR_ERR_OVERLAP` (`*out` overlaps the bytes) leave `*out` untouched.
+///
+/// # Safety
+/// `bytes` is NULL or points to `len` readable bytes; `out` is NULL or points to a writable
+/// `fur_dual` no other thread is using.
+#[no_mangle]
+pub unsafe extern "C" fn fur_dual_open(
+    bytes: *const u8,
+    len: usize,
+    out: *mut fur_dual,
+) -> fur_status {
+    tri!(check_ptr(out));
+    if !bytes.is_null() {
+        tri!(disjoint(Region::of(out, 1), &[Region::of(bytes, len)]));
+    }
+    // SAFETY: `out` is a writable, aligned fur_dual (checked, and the caller's contract)
+    // outside the bytes (checked); closing it first means a failed open never leaves it open.
+    unsafe { close(out) };
+    if bytes.is_null() {
+        return fur_status::FUR_ERR_NULL;
+    }
+    if len == 0 || len > isize::MAX as usize {
+        return fur_status::FUR_ERR_LENGTH;
+    }
+    // SAFETY: non-NULL, `len` ≤ isize::MAX (checked); the caller guarantees `len` readable
+    // bytes for the duration of this call, and `*out`, the only memory written while the
+    // slice lives, is outside them (checked).
+    let slice: &[u8] = unsafe { core::slice::from_raw_parts(bytes, len) };
+    let o = out.cast::<OpenedDual>();
+    // `DualLut::EMPTY` is promoted to a static (no Drop, no interior mutability): copying
+    // it from there puts no 146 KB temporary on the caller's stack.
+    let empty: &'static DualLut = &DualLut::EMPTY;
+    // SAFETY: `o` is aligned and writable for an `OpenedDual` (`out` is checked, and
+    // `OpenedDual` fits in `fur_dual` with no stricter alignment: static assertions); the
+    // bitwise copy of a valid `DualLut` into its field makes that field a valid `DualLut`
+    // (the zeroed storage need not be one: its attenuation is an enum), which `decode` then
+    // fills through the only reference to it. `empty` is a static, disjoint from `*out`.
+    let decoded = unsafe {
+        let lut = (&raw mut (*o).lut).cast::<DualLut>();
+        lut.copy_from_nonoverlapping(empty, 1);
+        (*lut).decode(slice).map(|()| (*lut).source())
+    };
+    let source = match decoded {
+        Ok(s) => s,
+        Err(e) => {
+            // SAFETY: as above: `out` is writable and aligned.
+            unsafe { close(out) };
+            return status_of(&e);
+        }
+    };
+    let build = DUAL_BUILD_TAG;
+    // SAFETY: `o` is aligned and writable (above); these four plain integers are written
+    // last, after `lut` holds a valid, decoded evaluator.
+    unsafe {
+        (&raw mut (*o).source).write(source);
+        (&raw mut (*o).check).write(check_of(build, source));
+        (&raw mut (*o).build).write(build);
+        (&raw mut (*o).magic).write(DUAL_MAGIC);
+    }
+    fur_status::FUR_OK
+}
+
+/// Closes `*dual`: zeroes it (it becomes equal to `FUR_DUAL_INIT`), so that every later call
+/// with it returns `FUR_ERR_NOT_OPEN`. It holds no other resources (the caller frees the
+/// storage itself, before or after closing).
+///
+/// # Safety
+/// `dual` is NULL or points to a writable `fur_dual` no other thread is using.
+#[no_mangle]
+pub unsafe extern "C" fn fur_dual_close(dual: *mut fur_dual) -> fur_status {
+    tri!(check_ptr(dual));
+    // SAFETY: non-NULL and aligned (checked); writable by the caller's contract.
+    unsafe { close(dual) };
+    fur_status::FUR_OK
+}
+
+/// The density factors as the core takes them (NaN and negative values are 0 there, values
+/// above `MAX_DENSITY` = 4 are 4).
+fn density(d_f: f32, d_b: f32) -> Density {
+    Density { d_f, d_b }
+}
+
+/// The dual-scattering term (docs/model.md §13), RGB, into `out_rgb[3]`, from angles
+/// (radians, as `fur_eval_far`): the light that reaches the shading point through `fibers`
+/// other fibers.
+///
+/// `fibers` is the number of fibers between the shading point and the light (a shadow ray's
+/// count, or a deep opacity map's / voxel density's estimate; fractional values are fine;
+/// NaN or negative is 0, i.e. unoccluded; above 10^6, or +infinity, is 10^6). `d_f` and
+/// `d_b` are the forward and backward density factors (1 and 1 is the shipped default; NaN
+/// or negative is 0; above 4 is 4). The result is the term to ADD to single scattering:
+/// shade with S * V + result, where S is `fur_eval_far`'s value and
+/// V = clamp(1 - fibers, 0, 1) the fraction of direct light; the result is in S's units
+/// (multiply it, like S, by cos(theta_i) and the light's radiance). Finite and >= 0.
+///
+/// Invalid angles write 0 and return `FUR_ERR_ANGLE`. `out_rgb` must not overlap `*dual`
+/// (`FUR_ERR_OVERLAP`, nothing written).
+///
+/// # Safety
+/// `dual` is NULL or points to an initialised `fur_dual`; `out_rgb` is NULL or points to 3
+/// writable floats.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)] // the C signature: three angles, the count, two factors
+pub unsafe extern "C" fn fur_eval_dual(
+    dual: *const fur_dual,
+    theta_i: f32,
+    theta_r: f32,
+    phi: f32,
+    fibers: f32,
+    d_f: f32,
+    d_b: f32,
+    out_rgb: *mut f32,
+) -> fur_status {
+    // SAFETY: forwarded caller guarantee on `dual`.
+    let open = tri!(unsafe { opened(dual) });
+    tri!(check_ptr(out_rgb));
+    tri!(disjoint(Region::of(out_rgb, 3), &[open.region]));
+    let (v, status) = match Angles::new(theta_i, theta_r, phi) {
+        Ok(a) => (
+            open.lut.eval(&a, fibers, density(d_f, d_b)).0,
+            fur_status::FUR_OK,
+        ),
+        Err(_) => ([0.0; 3], fur_status::FUR_ERR_ANGLE),
+    };
+    // SAFETY: non-NULL and aligned (checked); 3 writable floats by the caller's contract,
+    // disjoint from `*dual` (checked).
+    unsafe { write3(out_rgb, v) };
+    status
+}
+
+/// `fur_eval_dual` from world-space vectors (as `fur_eval_far_dirs`): `wi` toward the light,
+/// `wr` toward the viewer, `tangent` the fiber direction (none needs unit length), into
+/// `out_rgb[3]`; `fibers`, `d_f`, `d_b` and the result as in `fur_eval_dual` (add it to
+/// S * V, multiply by cos(theta_i) and the light's radiance). The angles are those
+/// `DualLut::eval_dirs` converts to (the baked evaluator's conversion). A vector with a
+/// component that is not finite, or of zero (below the smallest normal float) or overflowing
+/// length, writes 0 and returns `FUR_ERR_DIRECTION`. `out_rgb` must not
+/// overlap the three vectors or `*dual` (`FUR_ERR_OVERLAP`, nothing written).
+///
+/// # Safety
+/// `dual` is NULL or points to an initialised `fur_dual`; each vector is NULL or points to 3
+/// readable floats; `out_rgb` is NULL or points to 3 writable floats.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)] // the C signature: three vectors, the count, two factors
+pub unsafe extern "C" fn fur_eval_dual_dirs(
+    dual: *const fur_dual,
+    wi: *const f32,
+    wr: *const f32,
+    tangent: *const f32,
+    fibers: f32,
+    d_f: f32,
+    d_b: f32,
+    out_rgb: *mut f32,
+) -> fur_status {
+    // SAFETY: forwarded caller guarantee on `dual`.
+    let open = tri!(unsafe { opened(dual) });
+    tri!(check_ptr(out_rgb));
+    // SAFETY: forwarded caller guarantee on `wi`.
+    let wi_v = tri!(unsafe { read3(wi) });
+    // SAFETY: forwarded caller guarantee on `wr`.
+    let wr_v = tri!(unsafe { read3(wr) });
+    // SAFETY: forwarded caller guarantee on `tangent`.
+    let t_v = tri!(unsafe { read3(tangent) });
+    let inputs = [
+        open.region,
+        Region::of(wi, 3),
+        Region::of(wr, 3),
+        Region::of(tangent, 3),
+    ];
+    tri!(disjoint(Region::of(out_rgb, 3), &inputs));
+    // The value is `DualLut::eval_dirs`' (its own direction conversion, bit for bit the Rust
+    // API's; 0 for rejected directions). The status tells those apart by the rejection rule
+    // every conversion of the core shares: a component not finite, a squared length that
+    // overflows, or a length below the smallest normal float.
+    let v = open
+        .lut
+        .eval_dirs(wi_v, wr_v, t_v, fibers, density(d_f, d_b))
+        .0;
+    let status = match Angles::from_directions::<Libm>(wi_v, wr_v, t_v) {
+        Ok(_) => fur_status::FUR_OK,
+        Err(_) => fur_status::FUR_ERR_DIRECTION,
+    };
+    // SAFETY: non-NULL and aligned (checked); 3 writable floats by the caller's contract,
+    // disjoint from the inputs and `*dual` (checked).
+    unsafe { write3(out_rgb, v) };
+    status
+}
+
+#[cfg(test)]
+mod tests {
+    //! The entry points called from Rust on small synthetic tables (also run under Miri:
+    //! `cargo +nightly miri test -p bcsdf-ffi --lib dual`).
+    use super::*;
+    use crate::FUR_DUAL_INIT;
+    use bcsdf_core::dual::{encode, Attenuation, DualTables, BLOB_LEN};
+    use bcsdf_core::Rgb;
+
+    /// A `.furdual` blob of uniform, non-zero tables.
+    fn blob() -> Vec<u8> {
+        let mut t = Box::new(DualTables::ZERO);
+        for f in t.fiber.iter_mut() {
+            f.a_f = Rgb([0.6, 0.5, 0.4]);
+            f.a_b = Rgb([0.2, 0.2, 0.1]);
+            f.beta2_f = Rgb([0.01; 3]);
+            f.big_a_b = Rgb([0.1; 3]);
+            f.sigma_b0 = Rgb([0.1; 3]);
+        }
+        for row in t.moments.iter_mut() {
+            for m in row.iter_mut() {
+                m.variance = Rgb([0.02; 3]);
+            }
+        }
+        for g in t.n_g.iter_mut() {
+            for row in g.iter_mut() {
+                row.fill(Rgb([0.1; 3]));
+            }
+        }
+        encode(&t, Attenuation::Coat, 42).to_vec()
+    }
+
+    #[test]
+    fn opens_evaluates_like_the_core_refuses_and_closes() {
+        let bytes = blob();
+        let mut want = Box::new(DualLut::EMPTY);
+        want.decode(&bytes).unwrap();
+        let mut d: Box<fur_dual> = Box::new(FUR_DUAL_INIT);
+        let p: *mut fur_dual = &mut *d;
+        let mut rgb = [-1.0f32; 3];
+        let out = rgb.as_mut_ptr();
+        // SAFETY: for every call below, `p` is a live, aligned fur_dual, `bytes` a live buffer of
+        // its length, `out` 3 writable floats; the vectors are live arrays.
+        unsafe {
+            assert_eq!(
+                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, 1.0, 1.0, out),
+                fur_status::FUR_ERR_NOT_OPEN
+            );
+            assert_eq!(
+                fur_dual_open(bytes.as_ptr(), bytes.len(), p),
+                fur_status::FUR_OK
+            );
+            let a = Angles::new(0.3, -0.2, 2.5).unwrap();
+            for n in [0.0, 0.5, 2.0, f32::NAN] {
+                assert_eq!(
+                    fur_eval_dual(p, 0.3, -0.2, 2.5, n, 1.0, 1.0, out),
+                    fur_status::FUR_OK
+                );
+                let w = want.eval(&a, n, Density::DEFAULT).0;
+                assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
+            }
+            assert_eq!(
+                fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 1.0, 1.0, out),
+                fur_status::FUR_OK
+            );
+            assert!(rgb.iter().any(|&v| v > 0.0));
+            let (wi, wr, t) = ([0.3f32, 0.8, 0.2], [-0.6f32, 0.7, -0.1], [0.0f32, 0.2, 1.0]);
+            assert_eq!(
+                fur_eval_dual_dirs(p, wi.as_ptr(), wr.as_ptr(), t.as_ptr(), 2.0, 0.5, 2.0, out),
+                fur_status::FUR_OK
+            );
+            let w = want
+                .eval_dirs(wi, wr, t, 2.0, Density { d_f: 0.5, d_b: 2.0 })
+                .0;
+            assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
+            assert_eq!(
+                fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 1.0, 1.0, p.cast::<f32>().add(8)),
+                fur_status::FUR_ERR_OVERLAP
+            );
+
+            // Refused blobs leave it closed.
+            let mut bad = bytes.clone();
+            bad[1000] ^= 1;
+            assert_eq!(
+                fur_dual_open(bad.as_ptr(), bad.len(), p),
+                fur_status::FUR_ERR_DUAL_CHECKSUM
+            );
+            assert!(d._opaque.iter().all(|&w| w == 0));
+            assert_eq!(
+                fur_dual_open(bytes.as_ptr(), BLOB_LEN - 1, p),
+                fur_status::FUR_ERR_DUAL_LENGTH
+            );
+            bad.copy_from_slice(&bytes);
+            bad[0] = b'X';
+            assert_eq!(
+                fur_dual_open(bad.as_ptr(), bad.len(), p),
+                fur_status::FUR_ERR_DUAL_FORMAT
+            );
+            assert_eq!(
+                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, 1.0, 1.0, out),
+                fur_status::FUR_ERR_NOT_OPEN
+            );
+
+            // Another build's tag; then close.
+            assert_eq!(
+                fur_dual_open(bytes.as_ptr(), bytes.len(), p),
+                fur_status::FUR_OK
+            );
+            (*p)._opaque[1] ^= 1;
+            assert_eq!(
+                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, 1.0, 1.0, out),
+                fur_status::FUR_ERR_OTHER_BUILD
+            );
+            (*p)._opaque[1] ^= 1;
+            assert_eq!(fur_dual_close(p), fur_status::FUR_OK);
+            assert_eq!(
+                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, 1.0, 1.0, out),
+                fur_status::FUR_ERR_NOT_OPEN
+            );
+        }
+        assert!(d._opaque.iter().all(|&w| w == 0));
+    }
+}

@@ -1,9 +1,11 @@
-//! CHANGELOG.md against the code: every value `lut::FORMAT_VERSION` and `MODEL_VERSION` have
-//! taken has an entry (a list item `- **LUT format N** (DATE; re-bake: yes|no) ...` or
-//! `- **Model version N** ...`, its layout described at the top of the changelog), and the
+//! CHANGELOG.md against the code: every value `lut::FORMAT_VERSION`, `MODEL_VERSION` and
+//! `dual::DUAL_FORMAT_VERSION` have taken has an entry (a list item
+//! `- **LUT format N** (DATE; re-bake: yes|no) ...`, `- **Model version N** ...` or
+//! `- **Dual format N** ...`, its layout described at the top of the changelog), and the
 //! latest release heading is the version of every crate of the workspace (which is what
 //! `fur_version()`, `bake --version` and `viewer --version` print: their own tests check that).
 
+use bcsdf_core::dual::DUAL_FORMAT_VERSION;
 use bcsdf_core::lut::FORMAT_VERSION;
 use bcsdf_core::MODEL_VERSION;
 use std::path::PathBuf;
@@ -18,7 +20,7 @@ fn changelog() -> String {
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
-/// The version entries for `kind` (`"LUT format"` or `"Model version"`): the number of each
+/// The version entries for `kind` (`"LUT format"`, `"Model version"` or `"Dual format"`): the number of each
 /// list item that starts with `- **{kind} N**`, with the rest of its first line.
 fn entries<'a>(text: &'a str, kind: &str) -> Vec<(u32, &'a str)> {
     let prefix = format!("- **{kind} ");
@@ -90,6 +92,13 @@ fn every_lut_format_and_model_version_has_an_entry() {
     check(&text, "LUT format", "lut::FORMAT_VERSION", FORMAT_VERSION)
         .unwrap_or_else(|e| panic!("{e}"));
     check(&text, "Model version", "MODEL_VERSION", MODEL_VERSION).unwrap_or_else(|e| panic!("{e}"));
+    check(
+        &text,
+        "Dual format",
+        "dual::DUAL_FORMAT_VERSION",
+        DUAL_FORMAT_VERSION,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
 }
 
 /// The checker itself, on a made-up changelog: complete, missing the next version, ahead of

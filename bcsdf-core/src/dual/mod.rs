@@ -31,9 +31,9 @@ use crate::spectrum::Rgb;
 pub const THETA_NODES: usize = 64;
 /// Nodes of the N^G tables over |φ| ∈ [0, π] (φ_j = j·π/31, ends included).
 pub const PHI_NODES: usize = 32;
-/// Largest fiber count [`eval`] uses; larger counts (and +∞) are clamped to it.
+/// Largest fiber count [`DualLut::eval`] uses; larger counts (and +∞) are clamped to it.
 pub const MAX_FIBERS: f32 = 1.0e6;
-/// Largest density factor [`eval`] uses; larger ones are clamped to it.
+/// Largest density factor [`DualLut::eval`] uses; larger ones are clamped to it.
 pub const MAX_DENSITY: f32 = 4.0;
 /// Smallest variance a Gaussian of this module is given (rad²): a lobe narrower than 0.1°
 /// is a numerical zero width, not a physical one.
@@ -146,7 +146,7 @@ pub fn semi_infinite_reflectance(t: f32, r: f32) -> f32 {
 }
 
 /// Zinke's density factors d_f (forward, the spread term) and d_b (local backscatter),
-/// docs/model.md §13. [`eval`] maps NaN and negative values to 0 and clamps to
+/// docs/model.md §13. [`DualLut::eval`] maps NaN and negative values to 0 and clamps to
 /// [`MAX_DENSITY`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Density {

@@ -14,7 +14,7 @@ use crate::args::{check_ptr, disjoint, read3, write3, Region};
 use crate::handle::build_tag;
 use crate::{fur_dual, fur_status};
 use bcsdf_core::dual::{Density, DualError, DualLut, DUAL_FORMAT_VERSION};
-use bcsdf_core::{Angles, Libm};
+use bcsdf_core::Angles;
 use core::mem::{align_of, offset_of, size_of, MaybeUninit};
 
 /// What a `fur_dual` holds.
@@ -311,17 +311,14 @@ pub unsafe extern "C" fn fur_eval_dual_dirs(
         Region::of(tangent, 3),
     ];
     tri!(disjoint(Region::of(out_rgb, 3), &inputs));
-    // The value is `DualLut::eval_dirs`' (its own direction conversion, bit for bit the Rust
-    // API's; 0 for rejected directions). The status tells those apart by the rejection rule
-    // every conversion of the core shares: a component not finite, a squared length that
-    // overflows, or a length below the smallest normal float.
-    let v = open
+    // `DualLut::try_eval_dirs`: the Rust API's value bit for bit, and its verdict on the
+    // directions from the same conversion (0 written for rejected ones).
+    let (v, status) = match open
         .lut
-        .eval_dirs(wi_v, wr_v, t_v, fibers, density(d_f, d_b))
-        .0;
-    let status = match Angles::from_directions::<Libm>(wi_v, wr_v, t_v) {
-        Ok(_) => fur_status::FUR_OK,
-        Err(_) => fur_status::FUR_ERR_DIRECTION,
+        .try_eval_dirs(wi_v, wr_v, t_v, fibers, density(d_f, d_b))
+    {
+        Ok(v) => (v.0, fur_status::FUR_OK),
+        Err(_) => ([0.0; 3], fur_status::FUR_ERR_DIRECTION),
     };
     // SAFETY: non-NULL and aligned (checked); 3 writable floats by the caller's contract,
     // disjoint from the inputs and `*dual` (checked).

@@ -25,7 +25,7 @@
 
 use super::{coat_decay, local_backscatter, Attenuation, DualTables, PHI_NODES, THETA_NODES};
 use crate::lobes::FAMILY_COUNT;
-use crate::lut::fnv1a64;
+use crate::lut::{fnv1a64, fnv1a64_continue};
 use core::fmt;
 
 /// The first eight bytes of a `.furdual` blob.
@@ -221,13 +221,7 @@ pub(super) fn checksum_of(blob: &[u8]) -> u64 {
     copy.copy_from_slice(&blob[..HEADER_LEN]);
     copy[CHECKSUM_AT..].fill(0);
     // The header with its checksum field zeroed, then the body.
-    let head = fnv1a64(&copy);
-    let mut h = head;
-    for &b in &blob[HEADER_LEN..] {
-        h ^= u64::from(b);
-        h = h.wrapping_mul(0x0000_0100_0000_01b3);
-    }
-    h
+    fnv1a64_continue(fnv1a64(&copy), &blob[HEADER_LEN..])
 }
 
 fn word(bytes: &[u8], at: usize) -> u32 {

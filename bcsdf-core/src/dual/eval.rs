@@ -4,7 +4,7 @@
 
 use super::blob::{A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, SD, SIGMA_B0};
 use super::{theta_position, Density, DualLut, MAX_FIBERS, MIN_VARIANCE, PHI_NODES};
-use crate::frame::{polynomial_angles, Angles, Vec3};
+use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::FAMILY_COUNT;
 use crate::math::{cos_within_half_pi, exp_neg_saturating, rsqrt_newton, wrap_angle, Libm, PI};
 use crate::model::inv_cos2_theta_i;
@@ -83,7 +83,8 @@ impl DualLut {
         let inv_cos2 = inv_cos2_theta_i(cos_within_half_pi(ti));
         let direct = (1.0 - n).clamp(0.0, 1.0);
         let here = theta_position(tr);
-        let back_half = wrap_angle(phi).abs() < 0.5 * PI;
+        let abs_phi = wrap_angle(phi).abs();
+        let back_half = abs_phi < 0.5 * PI;
         let half = self.field(here, if back_half { BACK } else { FRONT });
         let a_f2 = self.field(here, A_F2);
         let sigma_b0 = self.field(here, SIGMA_B0);
@@ -113,7 +114,7 @@ impl DualLut {
             });
             if spread.iter().any(|&s| s > 0.0) {
                 let s2f: Lanes = core::array::from_fn(|c| n * beta_f[c] * beta_f[c]);
-                let p = wrap_angle(phi).abs() * ((PHI_NODES - 1) as f32 / PI);
+                let p = abs_phi * ((PHI_NODES - 1) as f32 / PI);
                 let p = if p > 0.0 {
                     p.min((PHI_NODES - 1) as f32)
                 } else {
@@ -164,11 +165,24 @@ impl DualLut {
         fibers: f32,
         density: Density,
     ) -> Rgb {
-        match polynomial_angles::<Libm>(wi, wr, tangent)
-            .and_then(|[ti, tr, phi]| Angles::new(ti, tr, phi))
-        {
-            Ok(a) => self.eval(&a, fibers, density),
-            Err(_) => Rgb::ZERO,
-        }
+        self.try_eval_dirs(wi, wr, tangent, fibers, density)
+            .unwrap_or(Rgb::ZERO)
+    }
+
+    /// [`DualLut::eval_dirs`], or why the directions were rejected (one conversion for the
+    /// value and the verdict; the C ABI's status comes from it).
+    ///
+    /// # Errors
+    /// The [`AngleError`] of the direction-to-angle conversion.
+    pub fn try_eval_dirs(
+        &self,
+        wi: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+        fibers: f32,
+        density: Density,
+    ) -> Result<Rgb, AngleError> {
+        let [ti, tr, phi] = polynomial_angles::<Libm>(wi, wr, tangent)?;
+        Ok(self.eval(&Angles::new(ti, tr, phi)?, fibers, density))
     }
 }

@@ -1,0 +1,140 @@
+//! The `.furdual` blob and its evaluator: round trip, refusals, and the term recomputed in
+//! f64 from the decoded node values.
+
+use super::*;
+
+#[test]
+fn the_blob_round_trips_to_half_precision() {
+    let t = absorbing_tables();
+    let blob = encode(&t, Attenuation::Coat, 0xfeed);
+    assert_eq!(blob.len(), BLOB_LEN);
+    let mut lut = Box::new(DualLut::EMPTY);
+    lut.decode(&blob).unwrap();
+    assert_eq!(
+        (lut.attenuation(), lut.source()),
+        (Attenuation::Coat, 0xfeed)
+    );
+    // Encoding what was decoded gives the same bytes (f16 values are exact in f32).
+    for k in [0usize, 17, 63] {
+        let f = &t.fiber[k];
+        for c in 0..3 {
+            let mu = coat_decay(Attenuation::Coat, f.a_f[c], f.a_b[c]);
+            let got = libm::exp2f(lut.nodes[k][blob::LOG2_DECAY][c]);
+            assert!((got - mu).abs() < 1e-3 * mu, "μ {got} vs {mu}");
+            let (back, front) =
+                local_backscatter(Attenuation::Coat, f.big_a_b[c], f.a_f[c], f.a_b[c]);
+            assert!((lut.nodes[k][blob::BACK][c] - back).abs() <= 5e-4 * back);
+            assert!((lut.nodes[k][blob::FRONT][c] - front).abs() <= 5e-4 * front);
+            assert_eq!(lut.nodes[k][blob::BACK][3], 0.0);
+        }
+        let ng = t.n_g[0][k][5][1];
+        assert!((lut.n_g[0][k][5][1] - ng).abs() <= 5e-4 * ng);
+    }
+    // Forward stores μ = ā_f.
+    let fwd = lut_of(&t, Attenuation::Forward);
+    assert!((libm::exp2f(fwd.nodes[3][blob::LOG2_DECAY][0]) - 0.6).abs() < 1e-3);
+}
+
+#[test]
+fn a_damaged_blob_is_refused_and_leaves_the_evaluator_alone() {
+    let good = encode(&absorbing_tables(), Attenuation::Coat, 1);
+    let mut lut = Box::new(DualLut::EMPTY);
+    lut.decode(&good).unwrap();
+    let before = lut.clone();
+    let reseal = |b: &mut [u8]| {
+        let sum = blob::checksum_of(b);
+        b[56..64].copy_from_slice(&sum.to_le_bytes());
+    };
+    let mut cases: std::vec::Vec<(std::vec::Vec<u8>, DualError)> = std::vec::Vec::new();
+    cases.push((good[..100].to_vec(), DualError::Length(100)));
+    let mut b = good.to_vec();
+    b.push(0);
+    cases.push((b, DualError::Length(BLOB_LEN + 1)));
+    let mut b = good.to_vec();
+    b[0] = b'X';
+    cases.push((b, DualError::Magic));
+    let mut b = good.to_vec();
+    b[8] = 9;
+    cases.push((b, DualError::FormatVersion(9)));
+    let mut b = good.to_vec();
+    b[12] = 99;
+    cases.push((b, DualError::ModelVersion(99)));
+    let mut b = good.to_vec();
+    b[16] = 65;
+    cases.push((b, DualError::Layout));
+    let mut b = good.to_vec();
+    b[50] = 1;
+    cases.push((b, DualError::Layout));
+    let mut b = good.to_vec();
+    b[32] = 3;
+    cases.push((b, DualError::Attenuation(3)));
+    let mut b = good.to_vec();
+    b[1000] ^= 1;
+    cases.push((b, DualError::Checksum));
+    // Sealed but hostile values: a NaN, an infinity, a negative width, ā_f² above 1, a
+    // positive log₂ μ, a negative N^G.
+    let field = |k: usize, f: usize, c: usize| (k * FIELDS + f) * 3 + c;
+    let ng0 = THETA_NODES * FIELDS * 3;
+    for (i, bits) in [
+        (field(4, blob::MEAN, 1), 0x7e00u16),
+        (field(4, blob::DELTA_B, 0), 0x7c00),
+        (field(9, blob::SD + 2, 2), 0xbc00),
+        (field(9, blob::A_F2, 0), 0x3c01),
+        (field(0, blob::LOG2_DECAY, 0), 0x3c00),
+        (ng0 + 77, 0x8001),
+    ] {
+        let mut b = good.to_vec();
+        b[64 + 2 * i..66 + 2 * i].copy_from_slice(&bits.to_le_bytes());
+        reseal(&mut b);
+        cases.push((b, DualError::Value(i)));
+    }
+    for (bytes, want) in cases {
+        assert_eq!(lut.decode(&bytes), Err(want));
+        assert_eq!(lut, before, "{want:?} changed the evaluator");
+        assert!(!std::format!("{want}").is_empty());
+    }
+}
+
+#[test]
+fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
+    // The term recomputed from the decoded node values with f64 Gaussians (independent of
+    // the lane code): back half, n = 2.5, default density.
+    let t = absorbing_tables();
+    let lut = lut_of(&t, Attenuation::Coat);
+    let (ti, tr, phi, n) = (0.31f32, -0.22f32, 0.7f32, 2.5f32);
+    let got = lut.eval(&Angles::new(ti, tr, phi).unwrap(), n, Density::DEFAULT);
+    let g = |d: f64, v: f64| (-d * d / (2.0 * v)).exp() / (2.0 * std::f64::consts::PI * v).sqrt();
+    let lerp_at = |theta: f32, f: usize, c: usize| {
+        let (k, w) = theta_position(theta);
+        f64::from(lut.nodes[k][f][c]) * f64::from(1.0 - w)
+            + f64::from(lut.nodes[k + 1][f][c]) * f64::from(w)
+    };
+    for c in 0..3 {
+        let x = f64::from(ti + tr);
+        let inv = 1.0 / f64::from(ti).cos().powi(2);
+        let mu = lerp_at(-ti, blob::LOG2_DECAY, c).exp2();
+        let s2 = f64::from(n) * lerp_at(-ti, blob::BETA_F, c).powi(2);
+        let sb = (1.0 + lerp_at(tr, blob::A_F2, c)) * lerp_at(tr, blob::SIGMA_B0, c);
+        let back = lerp_at(tr, blob::BACK, c);
+        let db = x - lerp_at(tr, blob::DELTA_B, c);
+        let mut fs = 0.0;
+        for fam in 0..FAMILY_COUNT {
+            let (k, w) = theta_position(tr);
+            let p = f64::from(phi) * (PHI_NODES - 1) as f64 / std::f64::consts::PI;
+            let (j, v) = (p as usize, p - p.floor());
+            let tab = &lut.n_g[fam];
+            let at = |kk: usize, jj: usize| f64::from(tab[kk][jj][c]);
+            let ng = (at(k, j) * (1.0 - v) + at(k, j + 1) * v) * f64::from(1.0 - w)
+                + (at(k + 1, j) * (1.0 - v) + at(k + 1, j + 1) * v) * f64::from(w);
+            let m = lerp_at(tr, blob::MEAN + fam, c);
+            let sd = lerp_at(tr, blob::SD + fam, c);
+            fs += ng * g(x - m, (sd * sd + s2).max(f64::from(MIN_VARIANCE)));
+        }
+        let want = mu.powf(f64::from(n))
+            * (fs * inv
+                + back * g(db, (sb * sb + s2).max(f64::from(MIN_VARIANCE))) * inv
+                    / std::f64::consts::PI);
+        let err = (f64::from(got[c]) - want).abs() / want;
+        assert!(err < 1e-4, "channel {c}: {} vs {want} ({err:e})", got[c]);
+    }
+}

@@ -12,9 +12,19 @@ use crate::spectrum::Rgb;
 
 type Lanes = [f32; 4];
 
+/// Lanes of the spread term's Gaussians: four per family and four for the backscatter.
+const SPREAD_LANES: usize = 4 * (FAMILY_COUNT + 1);
+
 #[inline(always)]
 fn lerp(a: &Lanes, b: &Lanes, w: f32) -> Lanes {
     core::array::from_fn(|c| a[c] + (b[c] - a[c]) * w)
+}
+
+/// The weights of the corners (k, j), (k, j + 1), (k + 1, j), (k + 1, j + 1) of a bilinear
+/// lookup at fractions `w` (θ) and `v` (φ).
+#[inline(always)]
+fn bilinear_weights(w: f32, v: f32) -> [f32; 4] {
+    [(1.0 - w) * (1.0 - v), (1.0 - w) * v, w * (1.0 - v), w * v]
 }
 
 /// 1/√(2π).
@@ -24,9 +34,9 @@ const INV_SQRT_TAU: f32 = 0.398_942_3;
 /// [[`MIN_VARIANCE`], 1e30]: with s = 1/√v ([`rsqrt_newton`]), e^(−(ds)²/2)·s/√(2π), no
 /// division or square root, so the lane loop vectorises.
 #[inline(always)]
-fn gauss(d: &Lanes, v: &Lanes) -> Lanes {
-    let mut out = [0.0f32; 4];
-    for c in 0..4 {
+fn gauss<const L: usize>(d: &[f32; L], v: &[f32; L]) -> [f32; L] {
+    let mut out = [0.0f32; L];
+    for c in 0..L {
         let s = rsqrt_newton(v[c].clamp(MIN_VARIANCE, 1e30));
         let z = d[c] * s;
         out[c] = exp_neg_saturating(0.5 * z * z) * s * INV_SQRT_TAU;
@@ -41,13 +51,13 @@ impl DualLut {
         lerp(&self.nodes[k][f], &self.nodes[k + 1][f], w)
     }
 
-    /// N^G of family `g` at the θ position and |φ| position (bilinear).
+    /// N^G of family `g` at θ node `k` and |φ| node `j` (bilinear with the corner weights
+    /// `w`, which [`bilinear_weights`] computes once for the four families).
     #[inline(always)]
-    fn n_g(&self, g: usize, (k, w): (usize, f32), (j, v): (usize, f32)) -> Lanes {
+    fn n_g(&self, g: usize, k: usize, j: usize, w: &[f32; 4]) -> Lanes {
         let t = &self.n_g[g];
-        let lo = lerp(&t[k][j], &t[k][j + 1], v);
-        let hi = lerp(&t[k + 1][j], &t[k + 1][j + 1], v);
-        lerp(&lo, &hi, w)
+        let (a, b, c, d) = (&t[k][j], &t[k][j + 1], &t[k + 1][j], &t[k + 1][j + 1]);
+        core::array::from_fn(|l| w[0] * a[l] + w[1] * b[l] + w[2] * c[l] + w[3] * d[l])
     }
 
     /// The dual-scattering term to add to single scattering (docs/model.md §13), RGB, in S's
@@ -121,34 +131,42 @@ impl DualLut {
                     0.0
                 };
                 let j = (p as usize).min(PHI_NODES - 2); // p ∈ [0, PHI_NODES − 1]
-                let at_phi = (j, p - j as f32);
-                let mut f_s = [0.0f32; 4];
+                let corners = bilinear_weights(here.1, p - j as f32);
+                // The spread term's five Gaussians (one per family, then the spread
+                // backscatter) in one lane pass: independent chains the CPU overlaps.
+                let mut d = [0.0f32; SPREAD_LANES];
+                let mut v = [0.0f32; SPREAD_LANES];
                 for g in 0..FAMILY_COUNT {
                     let mean = self.field(here, MEAN + g);
                     let sd = self.field(here, SD + g);
-                    let ng = self.n_g(g, here, at_phi);
-                    let d: Lanes = core::array::from_fn(|c| x - mean[c]);
-                    let v: Lanes = core::array::from_fn(|c| sd[c] * sd[c] + s2f[c]);
-                    let gv = gauss(&d, &v);
                     for c in 0..4 {
-                        f_s[c] += ng[c] * gv[c];
+                        d[4 * g + c] = x - mean[c];
+                        v[4 * g + c] = sd[c] * sd[c] + s2f[c];
                     }
                 }
-                let v_spread: Lanes = core::array::from_fn(|c| v_back[c] + s2f[c]);
-                let gb = gauss(&d_back, &v_spread);
                 for c in 0..4 {
-                    out[c] += spread[c] * (f_s[c] * inv_cos2 + back_scale * half[c] * gb[c]);
+                    d[4 * FAMILY_COUNT + c] = d_back[c];
+                    v[4 * FAMILY_COUNT + c] = v_back[c] + s2f[c];
+                }
+                let gv = gauss(&d, &v);
+                let mut f_s = [0.0f32; 4];
+                for g in 0..FAMILY_COUNT {
+                    let ng = self.n_g(g, here.0, j, &corners);
+                    for c in 0..4 {
+                        f_s[c] += ng[c] * gv[4 * g + c];
+                    }
+                }
+                for c in 0..4 {
+                    out[c] += spread[c]
+                        * (f_s[c] * inv_cos2 + back_scale * half[c] * gv[4 * FAMILY_COUNT + c]);
                 }
             }
         }
-        Rgb([0, 1, 2].map(|c| {
-            let v = out[c];
-            if v.is_finite() && v > 0.0 {
-                v
-            } else {
-                0.0
-            }
-        }))
+        // Finite and ≥ 0: NaN and negative lanes are 0, +∞ the largest finite value (lane
+        // loop, no branch; not clamp, which passes NaN on).
+        #[allow(clippy::manual_clamp)]
+        let out: Lanes = core::array::from_fn(|c| out[c].max(0.0).min(f32::MAX));
+        Rgb([out[0], out[1], out[2]])
     }
 
     /// [`DualLut::eval`] from world-space directions toward the light `wi` and the viewer `wr`

@@ -187,19 +187,15 @@ impl FiberAccel {
             return 0;
         }
         let query = SegmentQuery::new(origin, dir, t_max);
-        let mut ids: Vec<u32> = Vec::new();
+        let mut hit = FiberSet::<64>::new();
         self.walk(&query, |seg| {
             match seg.intersect(origin, dir, t_min, t_max) {
-                Some(hit) if !skip.ignores(seg.fiber, hit.t) => {
-                    ids.push(seg.fiber);
-                }
+                Some(h) if !skip.ignores(seg.fiber, h.t) => hit.insert(seg.fiber),
                 _ => {}
             }
             Visit::Continue
         });
-        ids.sort_unstable();
-        ids.dedup();
-        ids.len() as u32
+        hit.distinct()
     }
 
     /// Calls `leaf` for the segments whose leaves the ray reaches within the query's
@@ -270,6 +266,48 @@ fn depth(bvh: &Bvh<f32, 3>) -> usize {
         }
     }
     deepest
+}
+
+/// The fibers a shadow ray met, kept on the stack while they fit (no allocation per ray) and
+/// spilled to the heap past `N`; a fiber met by several of its segments counts once.
+struct FiberSet<const N: usize> {
+    inline: [u32; N],
+    len: usize,
+    spill: Vec<u32>,
+}
+
+impl<const N: usize> FiberSet<N> {
+    fn new() -> Self {
+        FiberSet {
+            inline: [0; N],
+            len: 0,
+            spill: Vec::new(),
+        }
+    }
+
+    fn insert(&mut self, fiber: u32) {
+        if self.len < N {
+            self.inline[self.len] = fiber;
+            self.len += 1;
+        } else {
+            if self.spill.is_empty() {
+                self.spill.extend_from_slice(&self.inline);
+            }
+            self.spill.push(fiber);
+        }
+    }
+
+    /// The number of distinct fibers inserted.
+    fn distinct(mut self) -> u32 {
+        let ids: &mut [u32] = if self.spill.is_empty() {
+            &mut self.inline[..self.len]
+        } else {
+            &mut self.spill
+        };
+        ids.sort_unstable();
+        let repeats = ids.windows(2).filter(|w| w[0] == w[1]).count();
+        (ids.len() - repeats) as u32
+    }
 }
 
 #[cfg(test)]
@@ -352,6 +390,28 @@ mod tests {
             );
         }
         assert!(hits > 500 && misses > 500, "{hits} hits, {misses} misses");
+    }
+
+    /// `FiberSet` counts distinct fibers on the stack and after spilling to the heap (a
+    /// capacity of 4 spills), against a sort and dedup of everything inserted.
+    #[test]
+    fn fiber_set_counts_distinct_fibers_inline_and_spilled() {
+        let mut rng = Pcg32::new(5, 9);
+        let mut spilled = 0;
+        for round in 0..500 {
+            let count = round % 12;
+            let ids: Vec<u32> = (0..count).map(|_| (rng.uniform() * 6.0) as u32).collect();
+            let mut set = FiberSet::<4>::new();
+            for &id in &ids {
+                set.insert(id);
+            }
+            spilled += usize::from(!set.spill.is_empty());
+            let mut expected = ids.clone();
+            expected.sort_unstable();
+            expected.dedup();
+            assert_eq!(set.distinct(), expected.len() as u32, "{ids:?}");
+        }
+        assert!(spilled > 100, "only {spilled} rounds spilled");
     }
 
     /// `count_fibers` counts distinct fibers: brute force over every segment, a fiber met

@@ -56,6 +56,40 @@ pub(crate) fn disjoint(out: Region, others: &[Region]) -> Result<(), fur_status>
     }
 }
 
+/// The start both `*_open` functions share: `out` non-NULL and aligned (else its status,
+/// `*out` untouched) and outside the bytes (`FUR_ERR_OVERLAP`, untouched); then `*out` closed
+/// by `close`, so that a failed open never leaves it open; then `bytes` non-NULL
+/// (`FUR_ERR_NULL`) and `len` in 1 ..= isize::MAX (`FUR_ERR_LENGTH`); the bytes as a slice.
+///
+/// # Safety
+/// `bytes` is NULL or points to `len` readable bytes that stay alive and unchanged for `'a`;
+/// `out` is NULL or points to a writable `T` no other thread is using; `close` may be called
+/// with a non-NULL, aligned pointer to a writable `T`.
+pub(crate) unsafe fn open_bytes<'a, T>(
+    bytes: *const u8,
+    len: usize,
+    out: *mut T,
+    close: unsafe fn(*mut T),
+) -> Result<&'a [u8], fur_status> {
+    check_ptr(out)?;
+    if !bytes.is_null() {
+        disjoint(Region::of(out, 1), &[Region::of(bytes, len)])?;
+    }
+    // SAFETY: `out` is a writable, aligned T (checked, and the caller's contract) outside the
+    // bytes (checked).
+    unsafe { close(out) };
+    if bytes.is_null() {
+        return Err(fur_status::FUR_ERR_NULL);
+    }
+    if len == 0 || len > isize::MAX as usize {
+        return Err(fur_status::FUR_ERR_LENGTH);
+    }
+    // SAFETY: non-NULL, `len` ≤ isize::MAX (checked); the caller guarantees `len` readable
+    // bytes for `'a`, and `*out`, the only memory the open functions write while the slice
+    // lives, is outside them (checked).
+    Ok(unsafe { core::slice::from_raw_parts(bytes, len) })
+}
+
 /// Writes `v` to `out` (3 floats).
 ///
 /// # Safety

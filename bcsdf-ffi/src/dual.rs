@@ -10,7 +10,7 @@
 //! interpret. Unlike a `fur_lut`, it owns everything it reads: the blob's bytes are decoded
 //! into it and not borrowed.
 
-use crate::args::{check_ptr, disjoint, read3, write3, Region};
+use crate::args::{check_ptr, disjoint, open_bytes, read3, write3, Region};
 use crate::handle::build_tag;
 use crate::{fur_dual, fur_status};
 use bcsdf_core::dual::{Density, DualError, DualLut, DUAL_FORMAT_VERSION};
@@ -152,23 +152,9 @@ pub unsafe extern "C" fn fur_dual_open(
     len: usize,
     out: *mut fur_dual,
 ) -> fur_status {
-    tri!(check_ptr(out));
-    if !bytes.is_null() {
-        tri!(disjoint(Region::of(out, 1), &[Region::of(bytes, len)]));
-    }
-    // SAFETY: `out` is a writable, aligned fur_dual (checked, and the caller's contract)
-    // outside the bytes (checked); closing it first means a failed open never leaves it open.
-    unsafe { close(out) };
-    if bytes.is_null() {
-        return fur_status::FUR_ERR_NULL;
-    }
-    if len == 0 || len > isize::MAX as usize {
-        return fur_status::FUR_ERR_LENGTH;
-    }
-    // SAFETY: non-NULL, `len` ≤ isize::MAX (checked); the caller guarantees `len` readable
-    // bytes for the duration of this call, and `*out`, the only memory written while the
-    // slice lives, is outside them (checked).
-    let slice: &[u8] = unsafe { core::slice::from_raw_parts(bytes, len) };
+    // SAFETY: the caller's contract (this function's) on `bytes`, `len` and `out`, for the
+    // duration of this call; `close` zeroes a fur_dual.
+    let slice: &[u8] = tri!(unsafe { open_bytes(bytes, len, out, close) });
     let o = out.cast::<OpenedDual>();
     // `DualLut::EMPTY` is promoted to a static (no Drop, no interior mutability): copying
     // it from there puts no 146 KB temporary on the caller's stack.

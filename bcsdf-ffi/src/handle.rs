@@ -6,7 +6,7 @@
 //! address and length of the borrowed LUT bytes, and a check mixing the four. Then the
 //! evaluator, whose bits only this build can interpret.
 
-use crate::args::{check_ptr, disjoint, Region};
+use crate::args::{check_ptr, open_bytes, Region};
 use crate::{fur_lut, fur_status};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::{self, LutError};
@@ -163,25 +163,10 @@ pub unsafe extern "C" fn fur_lut_open(
     len: usize,
     out: *mut fur_lut,
 ) -> fur_status {
-    tri!(check_ptr(out));
-    if !bytes.is_null() {
-        tri!(disjoint(Region::of(out, 1), &[Region::of(bytes, len)]));
-    }
-    // SAFETY: `out` is a writable, aligned fur_lut (checked, and the caller's contract)
-    // outside the LUT bytes (checked); closing it first means a failed open never leaves
-    // it open on other bytes.
-    unsafe { close(out) };
-    if bytes.is_null() {
-        return fur_status::FUR_ERR_NULL;
-    }
-    if len == 0 || len > isize::MAX as usize {
-        return fur_status::FUR_ERR_LENGTH;
-    }
-    // SAFETY: non-NULL, `len` ≤ isize::MAX (checked); the caller guarantees `len` readable
-    // bytes that stay alive and unchanged until the fur_lut is closed (the header's
-    // contract), and `*out`, the only memory written while the slice lives, is outside
-    // them (checked).
-    let slice: &'static [u8] = unsafe { core::slice::from_raw_parts(bytes, len) };
+    // SAFETY: the caller's contract (this function's) on `bytes`, `len` and `out`: the bytes
+    // stay alive and unchanged until the fur_lut is closed (the header's contract), hence
+    // 'static here; `close` zeroes a fur_lut.
+    let slice: &'static [u8] = tri!(unsafe { open_bytes(bytes, len, out, close) });
     let lut = match BakedBcsdf::from_bytes(slice) {
         Ok(l) => l,
         Err(e) => return status_of(&e),

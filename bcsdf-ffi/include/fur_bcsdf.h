@@ -151,6 +151,11 @@ typedef enum fur_status {
    * value (infinite, NaN or out of its range).
    */
   FUR_ERR_DUAL_INVALID = 19,
+  /**
+   * The fur_dual was not computed from the LUT it is checked against
+   * (`fur_dual_check_lut`): its .furdual blob records another LUT's checksum, or none.
+   */
+  FUR_ERR_DUAL_SOURCE = 20,
 } fur_status;
 
 /**
@@ -287,6 +292,23 @@ enum fur_status fur_dual_open(const uint8_t *FUR_RESTRICT bytes,
  * `dual` is NULL or points to a writable `fur_dual` no other thread is using.
  */
 enum fur_status fur_dual_close(struct fur_dual *FUR_RESTRICT dual);
+
+/**
+ * Whether the open `*dual` was computed from the LUT the open `*lut` reads
+ * (`DualLut::check_lut`, docs/model.md §13 "Stored tables"): `FUR_OK` when the `.furdual`
+ * blob's recorded source is the LUT's checksum, `FUR_ERR_DUAL_SOURCE` when it is another
+ * LUT's or the blob records none. Check once after opening a `.furdual` and a `.furlut` as a
+ * pair: tables left over from another bake or another preset open and evaluate without
+ * complaint, but shade with another fur. Either handle not open gives `FUR_ERR_NOT_OPEN`
+ * (or `FUR_ERR_NULL`, `FUR_ERR_ALIGNMENT`, `FUR_ERR_OTHER_BUILD`, as for its other calls).
+ * Reads only: O(1), the LUT's checksum is read from its validated header.
+ *
+ * # Safety
+ * `dual` is NULL or points to an initialised `fur_dual`; `lut` is NULL or points to an
+ * initialised `fur_lut` whose LUT bytes are alive (the contract of its other calls).
+ */
+enum fur_status fur_dual_check_lut(const struct fur_dual *FUR_RESTRICT dual,
+                                   const struct fur_lut *FUR_RESTRICT lut);
 
 /**
  * The dual-scattering term (docs/model.md §13), RGB, into `out_rgb[3]`, from angles

@@ -12,7 +12,7 @@
 
 use crate::args::{check_ptr, disjoint, open_bytes, read3, write3, Region};
 use crate::handle::build_tag;
-use crate::{fur_dual, fur_status};
+use crate::{fur_dual, fur_lut, fur_status};
 use bcsdf_core::dual::{Density, DualError, DualLut, DUAL_FORMAT_VERSION};
 use bcsdf_core::Angles;
 use core::mem::{align_of, offset_of, size_of, MaybeUninit};
@@ -73,6 +73,7 @@ fn status_of(e: &DualError) -> fur_status {
         DualError::Layout | DualError::Attenuation(_) | DualError::Value(_) => {
             fur_status::FUR_ERR_DUAL_INVALID
         }
+        DualError::Source { .. } => fur_status::FUR_ERR_DUAL_SOURCE,
     }
 }
 
@@ -201,6 +202,33 @@ pub unsafe extern "C" fn fur_dual_close(dual: *mut fur_dual) -> fur_status {
     // SAFETY: non-NULL and aligned (checked); writable by the caller's contract.
     unsafe { close(dual) };
     fur_status::FUR_OK
+}
+
+/// Whether the open `*dual` was computed from the LUT the open `*lut` reads
+/// (`DualLut::check_lut`, docs/model.md §13 "Stored tables"): `FUR_OK` when the `.furdual`
+/// blob's recorded source is the LUT's checksum, `FUR_ERR_DUAL_SOURCE` when it is another
+/// LUT's or the blob records none. Check once after opening a `.furdual` and a `.furlut` as a
+/// pair: tables left over from another bake or another preset open and evaluate without
+/// complaint, but shade with another fur. Either handle not open gives `FUR_ERR_NOT_OPEN`
+/// (or `FUR_ERR_NULL`, `FUR_ERR_ALIGNMENT`, `FUR_ERR_OTHER_BUILD`, as for its other calls).
+/// Reads only: O(1), the LUT's checksum is read from its validated header.
+///
+/// # Safety
+/// `dual` is NULL or points to an initialised `fur_dual`; `lut` is NULL or points to an
+/// initialised `fur_lut` whose LUT bytes are alive (the contract of its other calls).
+#[no_mangle]
+pub unsafe extern "C" fn fur_dual_check_lut(
+    dual: *const fur_dual,
+    lut: *const fur_lut,
+) -> fur_status {
+    // SAFETY: forwarded caller guarantee on `dual`.
+    let open = tri!(unsafe { opened(dual) });
+    // SAFETY: forwarded caller guarantee on `lut`.
+    let baked = tri!(unsafe { crate::handle::opened(lut) });
+    match open.lut.check_lut(baked.lut) {
+        Ok(()) => fur_status::FUR_OK,
+        Err(e) => status_of(&e),
+    }
 }
 
 /// The density factors as the core takes them (NaN and negative values are 0 there, values
@@ -363,6 +391,18 @@ mod tests {
             assert_eq!(
                 fur_dual_open(bytes.as_ptr(), bytes.len(), p),
                 fur_status::FUR_OK
+            );
+            // Pairing needs an open fur_lut (the C clients pair real files): a never-opened
+            // one and NULL are refused without reading further.
+            let never = Box::new(crate::FUR_LUT_INIT);
+            assert_eq!(fur_dual_check_lut(p, &*never), fur_status::FUR_ERR_NOT_OPEN);
+            assert_eq!(
+                fur_dual_check_lut(p, core::ptr::null()),
+                fur_status::FUR_ERR_NULL
+            );
+            assert_eq!(
+                fur_dual_check_lut(core::ptr::null(), &*never),
+                fur_status::FUR_ERR_NULL
             );
             let a = Angles::new(0.3, -0.2, 2.5).unwrap();
             for n in [0.0, 0.5, 2.0, f32::NAN] {

@@ -107,6 +107,9 @@ pub enum fur_status {
     /// The .furdual blob has another table layout, an unknown attenuation, or an invalid
     /// value (infinite, NaN or out of its range).
     FUR_ERR_DUAL_INVALID = 19,
+    /// The fur_dual was not computed from the LUT it is checked against
+    /// (`fur_dual_check_lut`): its .furdual blob records another LUT's checksum, or none.
+    FUR_ERR_DUAL_SOURCE = 20,
 }
 
 /// The lobe family a sample was drawn from (docs/model.md sections 5, 6).

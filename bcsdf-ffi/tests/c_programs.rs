@@ -10,7 +10,9 @@
 //! blob computed here from the same baked LUT, and are compared with `DualLut::eval` and
 //! `DualLut::eval_dirs` bit for bit (statuses too); dual.c drives `fur_dual_*` with bad
 //! input (NULL, misalignment, never-opened, closed and other-build fur_duals, overlaps,
-//! each refusal status of a corrupt blob, 3000 mutated blobs).
+//! each refusal status of a corrupt blob, 3000 mutated blobs) and pairs it with LUTs through
+//! `fur_dual_check_lut` (the LUT it was computed from, another LUT, blobs recording another
+//! source or none, closed handles).
 //!
 //! The same clients also run under Valgrind memcheck and built with
 //! `-fsanitize=address,undefined`: any error report fails those tests. Where `valgrind` or
@@ -493,7 +495,10 @@ fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
         &f.lib,
         &dual_exe,
     );
-    let run = Command::new(&dual_exe).arg(f.dual_path()).output().unwrap();
+    let run = Command::new(&dual_exe)
+        .args([f.dual_path(), f.lut_path(), f.small_path()])
+        .output()
+        .unwrap();
     check_dual_c_output(&run, &f.dual);
     compile(
         "c++",
@@ -573,7 +578,10 @@ fn c_and_cpp_clients_are_clean_under_valgrind_memcheck() {
         &f.lib,
         &dual_cpp_exe,
     );
-    check_dual_c_output(&memcheck(&dual_exe, &[f.dual_path()]), &f.dual);
+    check_dual_c_output(
+        &memcheck(&dual_exe, &[f.dual_path(), f.lut_path(), f.small_path()]),
+        &f.dual,
+    );
     check_dual_cpp_output(&memcheck(&dual_cpp_exe, &[f.dual_path()]), &f.dual);
 }
 
@@ -644,6 +652,9 @@ fn c_and_cpp_clients_are_clean_under_address_and_undefined_sanitizers() {
         &f.lib,
         &dual_cpp_exe,
     );
-    check_dual_c_output(&run(&dual_exe, &[f.dual_path()]), &f.dual);
+    check_dual_c_output(
+        &run(&dual_exe, &[f.dual_path(), f.lut_path(), f.small_path()]),
+        &f.dual,
+    );
     check_dual_cpp_output(&run(&dual_cpp_exe, &[f.dual_path()]), &f.dual);
 }

@@ -162,7 +162,9 @@ pub struct RenderArgs {
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
 
-    /// Render with this baked LUT (.exr or .furlut) instead of a preset.
+    /// Render with this baked LUT (.exr or .furlut) instead of a preset. `dual` reads the
+    /// .furdual of the same name beside it (written by `bake`) if there is one, refused unless
+    /// it was computed from this LUT; otherwise it computes the tables from the LUT.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "presets", "set"])]
     pub lut: Option<PathBuf>,
 

@@ -9,6 +9,7 @@ use crate::error::Error;
 use crate::json;
 use crate::source::{preset_model, read_lut};
 use bake::fsutil;
+use bake::lutfile::read_dual;
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
 use bcsdf_core::lut::LutResolution;
@@ -19,6 +20,7 @@ use render::{
 };
 use serde_json::json;
 use std::io::Write;
+use std::path::Path;
 
 /// Runs `viewer render`.
 pub fn run(args: &RenderArgs) -> Result<(), Error> {
@@ -75,9 +77,14 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         let blob = read_lut(path)?;
         let baked = BakedBcsdf::from_bytes(&blob)
             .map_err(|e| Error::input(format!("{}: {e}", path.display())))?;
+        let stored = if args.compare || args.method == MethodArg::Dual {
+            stored_dual(path, &baked)?
+        } else {
+            None
+        };
         (
             path.display().to_string(),
-            trace(&scene, &baked, &settings, args)?,
+            trace(&scene, &baked, stored, &settings, args)?,
         )
     } else {
         // clap requires --preset without --lut.
@@ -91,13 +98,13 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         };
         let model = preset_model(preset, &args.presets, &args.set, &profile_args)?;
         let r = match evaluator {
-            Evaluator::Analytic => trace(&scene, &model.model(), &settings, args)?,
+            Evaluator::Analytic => trace(&scene, &model.model(), None, &settings, args)?,
             Evaluator::Baked => {
                 let input = preset_input(preset, &args.presets, &args.set)?;
                 let blob = bake::tables::bake(&model, &input, LutResolution::DEFAULT);
                 let baked = BakedBcsdf::from_bytes(&blob)
                     .map_err(|e| Error::Failure(format!("the LUT baked in memory: {e}")))?;
-                trace(&scene, &baked, &settings, args)?
+                trace(&scene, &baked, None, &settings, args)?
             }
         };
         (preset.to_string(), r)
@@ -298,12 +305,32 @@ fn method_name(m: MethodArg) -> &'static str {
     }
 }
 
+/// The `.furdual` that `bake` wrote beside the LUT at `lut_path` (same name, extension
+/// `furdual`), decoded, if there is one: what an engine loads with the LUT. Refused unless
+/// it was computed from that LUT (`DualLut::check_lut`, docs/model.md §13 "Stored tables").
+fn stored_dual(lut_path: &Path, lut: &BakedBcsdf) -> Result<Option<Box<DualLut>>, Error> {
+    let file = lut_path.with_extension(bake::pipeline::DUAL_EXTENSION);
+    if !file.is_file() {
+        return Ok(None);
+    }
+    let dual = read_dual(&file).map_err(|e| Error::input(e.to_string()))?;
+    dual.check_lut(lut).map_err(|e| {
+        Error::input(format!(
+            "{}: {e} ({}); re-bake the pair with `bake`, or move the .furdual away to compute the tables from the LUT",
+            file.display(),
+            lut_path.display()
+        ))
+    })?;
+    Ok(Some(dual))
+}
+
 /// Renders with one evaluator and the method of `args`, or path, dual and single with
-/// `--compare` (for `dual`, the tables are computed from that evaluator first, docs/model.md
-/// §13).
+/// `--compare`. For `dual` the term reads `stored` (the `.furdual` beside `--lut`, see
+/// [`stored_dual`]), or else tables computed from the evaluator first (docs/model.md §13).
 fn trace<B: Bcsdf + Sync>(
     scene: &render::scene::Scene,
     bcsdf: &B,
+    stored: Option<Box<DualLut>>,
     settings: &Settings,
     args: &RenderArgs,
 ) -> Result<Vec<(MethodArg, Render)>, Error> {
@@ -313,13 +340,19 @@ fn trace<B: Bcsdf + Sync>(
         core::slice::from_ref(&args.method)
     };
     // What an engine loads: the tables through the `.furdual` blob (f16).
-    let mut lut = Box::new(DualLut::EMPTY);
-    if kinds.contains(&MethodArg::Dual) {
-        let mut tables = Box::new(DualTables::ZERO);
-        tables.compute(bcsdf, Quadrature::DEFAULT);
-        lut.decode(&encode(&tables, Attenuation::Coat, 0))
-            .map_err(|e| Error::input(e.to_string()))?;
-    }
+    let lut = match stored {
+        Some(lut) => lut,
+        None => {
+            let mut lut = Box::new(DualLut::EMPTY);
+            if kinds.contains(&MethodArg::Dual) {
+                let mut tables = Box::new(DualTables::ZERO);
+                tables.compute(bcsdf, Quadrature::DEFAULT);
+                lut.decode(&encode(&tables, Attenuation::Coat, 0))
+                    .map_err(|e| Error::input(e.to_string()))?;
+            }
+            lut
+        }
+    };
     let mut out = Vec::new();
     for &kind in kinds {
         let method = match kind {

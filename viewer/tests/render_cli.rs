@@ -16,21 +16,15 @@ fn render(out: &Path, threads: &str) -> Output {
     render_with(out, threads, &[])
 }
 
+/// The small patch every render here draws: 300 fibers, 2 spp, 16 × 12 pixels.
+const SMALL_PATCH: [&str; 10] = [
+    "--scene", "patch", "--fibers", "300", "--spp", "2", "--width", "16", "--height", "12",
+];
+
 fn render_with(out: &Path, threads: &str, extra: &[&str]) -> Output {
-    let mut args = vec![
-        "render",
-        "--scene",
-        "patch",
-        "--preset",
-        "human-hair",
-        "--fibers",
-        "300",
-        "--spp",
-        "2",
-        "--width",
-        "16",
-        "--height",
-        "12",
+    let mut args = vec!["render", "--preset", "human-hair"];
+    args.extend_from_slice(&SMALL_PATCH);
+    args.extend_from_slice(&[
         "--max-depth",
         "6",
         "--threads",
@@ -38,7 +32,7 @@ fn render_with(out: &Path, threads: &str, extra: &[&str]) -> Output {
         "--no-cache",
         "--out",
         out.to_str().unwrap(),
-    ];
+    ]);
     args.extend_from_slice(extra);
     viewer(&args)
 }
@@ -224,4 +218,72 @@ fn bad_input_exits_2_with_one_error_line() {
     }
     // Nothing was rendered into the folder.
     assert!(!Path::new(out).join("render.exr").exists());
+}
+
+/// `--lut FILE` with `dual`: the `.furdual` of the same name beside it (what `bake` writes
+/// with the LUT) is what the term reads, and only if it was computed from that LUT
+/// (`DualLut::check_lut`); without one the tables are computed from the LUT.
+#[test]
+fn dual_reads_the_furdual_beside_the_lut_only_if_it_was_computed_from_it() {
+    use bcsdf_core::baked::BakedBcsdf;
+    use bcsdf_core::dual::{encode, Attenuation, DualTables, Quadrature};
+    use bcsdf_core::lut::LutResolution;
+    use bcsdf_core::{presets, FurParams};
+
+    let dir = tempfile::tempdir().unwrap();
+    // Human hair: no medulla, so no photon profiles to simulate.
+    let preset = presets::find("human-hair").unwrap();
+    let params = FurParams::new(&preset.input).unwrap();
+    let (model, _) =
+        bake::profiles::build_model(params, &bake::profiles::ProfileOptions::default()).unwrap();
+    let blob = bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT);
+    let lut_path = dir.path().join("hair.furlut");
+    std::fs::write(&lut_path, &blob).unwrap();
+    let baked = BakedBcsdf::from_bytes(&blob).unwrap();
+    let mut tables = Box::new(DualTables::ZERO);
+    tables.compute(
+        &baked,
+        Quadrature {
+            theta_steps: 16,
+            phi_steps: 8,
+        },
+    );
+    let dual_path = dir.path().join("hair.furdual");
+    let render = |name: &str| {
+        let out = dir.path().join(name);
+        let mut args = vec!["render", "--lut", lut_path.to_str().unwrap()];
+        args.extend_from_slice(&SMALL_PATCH);
+        args.extend_from_slice(&["--method", "dual", "--out", out.to_str().unwrap()]);
+        let o = viewer(&args);
+        (o, out.join("render.exr"))
+    };
+
+    // No .furdual: the tables come from the LUT.
+    let (o, computed) = render("computed");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // The pair bake would write (coarser tables here): read, so the image changes.
+    std::fs::write(
+        &dual_path,
+        encode(&tables, Attenuation::Coat, baked.checksum()),
+    )
+    .unwrap();
+    let (o, stored) = render("stored");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ne!(
+        std::fs::read(&computed).unwrap(),
+        std::fs::read(&stored).unwrap()
+    );
+    // Tables of another LUT, and tables that record none: refused, naming the file.
+    for source in [baked.checksum() ^ 1, 0] {
+        std::fs::write(&dual_path, encode(&tables, Attenuation::Coat, source)).unwrap();
+        let (o, exr) = render(&format!("refused-{source}"));
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(
+            stderr.starts_with("error: ") && stderr.contains("hair.furdual"),
+            "{stderr}"
+        );
+        assert!(!exr.exists());
+    }
 }

@@ -304,6 +304,16 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         &self.header
     }
 
+    /// The LUT's checksum ([`lut::checksum`], docs/lut.md "Header"): FNV-1a 64 of every byte
+    /// but the checksum field, read from the header, which [`BakedBcsdf::from_bytes`] checked
+    /// against the bytes. What a `.furdual` blob records as its source
+    /// ([`crate::dual::DualLut::check_lut`]).
+    #[must_use]
+    pub fn checksum(&self) -> u64 {
+        let field = self.blob.get(lut::CHECKSUM).unwrap_or(&[]);
+        u64::from_le_bytes(field.try_into().unwrap_or([0; 8]))
+    }
+
     /// The validated parameters the tables were baked from.
     #[must_use]
     pub fn params(&self) -> &FurParams {

@@ -24,8 +24,10 @@
 //! stored as standard deviations, not variances: the narrowest (0.1°) stays a normal half.
 
 use super::{coat_decay, local_backscatter, Attenuation, DualTables, PHI_NODES, THETA_NODES};
+use crate::baked::BakedBcsdf;
 use crate::lobes::FAMILY_COUNT;
 use crate::lut::{fnv1a64, fnv1a64_continue};
+use crate::math::Math;
 use core::fmt;
 
 /// The first eight bytes of a `.furdual` blob.
@@ -77,6 +79,14 @@ pub enum DualError {
     Checksum,
     /// A stored value is infinite, NaN or outside its field's range (the half's index).
     Value(usize),
+    /// The blob was not computed from the LUT it is paired with ([`DualLut::check_lut`]):
+    /// the source checksum it records (0: none recorded) and the LUT's.
+    Source {
+        /// The blob's source checksum.
+        recorded: u64,
+        /// The LUT's checksum.
+        lut: u64,
+    },
 }
 
 impl fmt::Display for DualError {
@@ -106,6 +116,14 @@ impl fmt::Display for DualError {
             DualError::Value(i) => write!(
                 f,
                 "dual-scattering blob holds an invalid value (half {i}: infinite, NaN or out of range)"
+            ),
+            DualError::Source { recorded: 0, lut } => write!(
+                f,
+                "dual-scattering blob records no source LUT, so it cannot be paired with LUT {lut:016x}"
+            ),
+            DualError::Source { recorded, lut } => write!(
+                f,
+                "dual-scattering blob was computed from LUT {recorded:016x}, not from this LUT {lut:016x}"
             ),
         }
     }
@@ -337,5 +355,24 @@ impl DualLut {
     #[must_use]
     pub fn source(&self) -> u64 {
         self.source
+    }
+
+    /// Whether these tables were computed from `lut` ([`DualLut::source`] equal to
+    /// [`BakedBcsdf::checksum`]): what an engine checks once after loading a `.furdual` and a
+    /// `.furlut` as a pair (docs/model.md §13 "Stored tables"), so that tables left over from
+    /// another bake or another preset are refused instead of shading with the wrong fur.
+    ///
+    /// # Errors
+    /// [`DualError::Source`] when the checksums differ or the blob records no source (0).
+    pub fn check_lut<M: Math>(&self, lut: &BakedBcsdf<'_, M>) -> Result<(), DualError> {
+        let sum = lut.checksum();
+        if self.source != 0 && self.source == sum {
+            Ok(())
+        } else {
+            Err(DualError::Source {
+                recorded: self.source,
+                lut: sum,
+            })
+        }
     }
 }

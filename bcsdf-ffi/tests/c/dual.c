@@ -2,7 +2,7 @@
  * C99 client of fur_bcsdf.h's dual-scattering entry points (fur_dual), driven by
  * bcsdf-ffi/tests/c_programs.rs.
  *
- *   dual DUAL_FILE
+ *   dual DUAL_FILE LUT_FILE OTHER_LUT_FILE
  *
  * Opens DUAL_FILE (a .furdual blob) into a heap-allocated fur_dual, frees the file's bytes
  * (nothing is borrowed), evaluates a fixed set of angles, fiber counts (0, fractional, large,
@@ -12,7 +12,9 @@
  * bit. Then checks bad input: NULL arguments for every function, misaligned pointers,
  * never-opened (zeroed, FUR_DUAL_INIT, 0xa5-filled), closed and other-build fur_duals,
  * overlapping buffers, corrupt blobs (each refusal status), and 3000 mutated blobs, each of
- * which must be refused. Prints "dual-bad-input ok" and exits 0 when every check holds.
+ * which must be refused. Pairs the fur_dual with fur_luts through fur_dual_check_lut: the LUT
+ * the blob was computed from (LUT_FILE), another LUT (OTHER_LUT_FILE), blobs recording another
+ * source or none, and closed handles. Prints "dual-bad-input ok" and exits 0 when every check holds.
  * Run plain, under Valgrind memcheck and built with -fsanitize=address,undefined.
  */
 #include "fur_bcsdf.h"
@@ -151,8 +153,8 @@ int main(int argc, char **argv) {
     const float wi[3] = {0.3f, 0.8f, 0.2f}, wr[3] = {-0.6f, 0.7f, -0.1f}, t[3] = {0.0f, 0.2f, 1.0f};
     int refused = 0, m;
 
-    if (argc != 2) {
-        fprintf(stderr, "usage: dual DUAL_FILE\n");
+    if (argc != 4) {
+        fprintf(stderr, "usage: dual DUAL_FILE LUT_FILE OTHER_LUT_FILE\n");
         return 2;
     }
     init_queries();
@@ -343,7 +345,46 @@ int main(int argc, char **argv) {
     EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 1.0f, 1.0f, rgb) == FUR_OK);
     EXPECT(fur_dual_close(other) == FUR_OK);
 
-    for (m = FUR_ERR_DUAL_LENGTH; m <= FUR_ERR_DUAL_INVALID; m++) {
+    /* Pairing with LUTs (fur_dual_check_lut): the LUT the blob was computed from, another
+     * LUT, blobs that record another source (bytes 40..48) or none, closed handles. */
+    {
+        size_t lut_len = 0, other_len = 0;
+        unsigned char *lut_bytes = read_file(argv[2], &lut_len);
+        unsigned char *other_bytes = read_file(argv[3], &other_len);
+        fur_lut lut = FUR_LUT_INIT, other_lut = FUR_LUT_INIT, never = FUR_LUT_INIT;
+        if (!lut_bytes || !other_bytes) {
+            fprintf(stderr, "cannot read the LUT files\n");
+            return 2;
+        }
+        EXPECT(fur_lut_open(lut_bytes, lut_len, &lut) == FUR_OK);
+        EXPECT(fur_lut_open(other_bytes, other_len, &other_lut) == FUR_OK);
+        EXPECT(fur_dual_check_lut(dual, &lut) == FUR_OK);
+        EXPECT(fur_dual_check_lut(dual, &other_lut) == FUR_ERR_DUAL_SOURCE);
+        copy[44] ^= 0x10; /* another source, resealed: opens, pairs with neither */
+        reseal(copy, len);
+        EXPECT(fur_dual_open(copy, len, other) == FUR_OK);
+        EXPECT(fur_dual_check_lut(other, &lut) == FUR_ERR_DUAL_SOURCE);
+        EXPECT(fur_dual_check_lut(other, &other_lut) == FUR_ERR_DUAL_SOURCE);
+        memset(copy + 40, 0, 8); /* no source recorded */
+        reseal(copy, len);
+        EXPECT(fur_dual_open(copy, len, other) == FUR_OK);
+        EXPECT(fur_dual_check_lut(other, &lut) == FUR_ERR_DUAL_SOURCE);
+        EXPECT(fur_dual_close(other) == FUR_OK);
+        memcpy(copy, bytes, len);
+        EXPECT(fur_dual_check_lut(other, &lut) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_dual_check_lut(dual, &never) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_dual_check_lut(NULL, &lut) == FUR_ERR_NULL);
+        EXPECT(fur_dual_check_lut(dual, NULL) == FUR_ERR_NULL);
+        EXPECT(fur_dual_check_lut(dual, (const fur_lut *)(const void *)((const char *)&lut + 4)) ==
+               FUR_ERR_ALIGNMENT);
+        EXPECT(fur_lut_close(&lut) == FUR_OK);
+        EXPECT(fur_dual_check_lut(dual, &lut) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_lut_close(&other_lut) == FUR_OK);
+        free(other_bytes);
+        free(lut_bytes);
+    }
+
+    for (m = FUR_ERR_DUAL_LENGTH; m <= FUR_ERR_DUAL_SOURCE; m++) {
         const char *s = fur_status_str(m);
         EXPECT(strcmp(s, "unknown status") != 0 && strstr(s, "dual") != NULL);
     }

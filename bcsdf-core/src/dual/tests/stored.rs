@@ -96,6 +96,47 @@ fn a_damaged_blob_is_refused_and_leaves_the_evaluator_alone() {
 }
 
 #[test]
+fn check_lut_pairs_a_blob_with_the_lut_it_records_and_no_other() {
+    use crate::baked::{tests as luts, BakedBcsdf};
+    use std::string::ToString;
+    let bytes = luts::random();
+    let lut = BakedBcsdf::from_bytes(&bytes).unwrap();
+    // The header's checksum is the bytes' (from_bytes checked it; read, not recomputed).
+    assert_eq!(lut.checksum(), crate::lut::checksum(&bytes));
+    let other_bytes = luts::random_with(Closure::Energy);
+    let other = BakedBcsdf::from_bytes(&other_bytes).unwrap();
+    assert_ne!(other.checksum(), lut.checksum());
+
+    let t = absorbing_tables();
+    let decoded = |source: u64| {
+        let mut d = Box::new(DualLut::EMPTY);
+        d.decode(&encode(&t, Attenuation::Coat, source)).unwrap();
+        d
+    };
+    let paired = decoded(lut.checksum());
+    assert_eq!(paired.check_lut(&lut), Ok(()));
+    let e = paired.check_lut(&other).unwrap_err();
+    assert_eq!(
+        e,
+        DualError::Source {
+            recorded: lut.checksum(),
+            lut: other.checksum()
+        }
+    );
+    assert!(e.to_string().contains("not from this LUT"), "{e}");
+    // A blob that records no source (0) pairs with no LUT.
+    let e = decoded(0).check_lut(&lut).unwrap_err();
+    assert_eq!(
+        e,
+        DualError::Source {
+            recorded: 0,
+            lut: lut.checksum()
+        }
+    );
+    assert!(e.to_string().contains("records no source"), "{e}");
+}
+
+#[test]
 fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
     // The term recomputed from the decoded node values with f64 Gaussians (independent of
     // the lane code): back half, n = 2.5, default density.

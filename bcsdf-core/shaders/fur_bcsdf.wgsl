@@ -103,7 +103,11 @@ fn fur_cos_within_half_pi(x: f32) -> f32 {
         acc = acc * y - 0.5;
         return acc * y + 1.0;
     }
-    let r = (1.57079637 - a) + -4.37113883e-8;
+    // pi/2 - a = (PIO2_HI - a) + PIO2_LO, with PIO2_LO behind a select the compiler cannot
+    // resolve (a <= pi/2 here): written as a constant, llvmpipe folds the two constants into
+    // one float and r near the pole loses its relative precision (1/cos^2 at 89.4 deg was
+    // 8e-6 off the CPU; 3e-7 with this form).
+    let r = (1.57079637 - a) + select(-4.37113883e-8, 0.0, a > 4.0);
     let y = r * r;
     var acc = 1.0 / 362880.0;
     acc = acc * y - 1.0 / 5040.0;
@@ -1061,6 +1065,11 @@ const FUR_DUAL_MAX_DENSITY: f32 = 4.0;
 const FUR_DUAL_MIN_VARIANCE: f32 = 3.0e-6;
 // ln 2 as an f32 (core::f32::consts::LN_2).
 const FUR_LN2: f32 = 0.693147182;
+// log2 e, ln 2 in two parts (math::exp_neg_saturating's reduction) and 1/sqrt(2 pi).
+const FUR_LOG2_E: f32 = 1.44269502;
+const FUR_LN2_HI: f32 = 0.693359375;
+const FUR_LN2_LO: f32 = -2.1219444e-4;
+const FUR_INV_SQRT_TAU: f32 = 0.3989423;
 
 // Half h of the blob's tables (counted from the first half after the header).
 fn fur_dual_half(h: u32) -> f32 {
@@ -1109,11 +1118,43 @@ fn fur_dual_ng(g: u32, l: FurLoc, p: FurLoc) -> vec3<f32> {
     return lo + (hi - lo) * l.w;
 }
 
-// The normalised Gaussian G(d; sqrt(v)) = e^(-d^2/2v)/sqrt(2 pi v) per channel, v kept at or
-// above dual::MIN_VARIANCE.
+// 1/sqrt(v) for normal v > 0, the operations of math::rsqrt_newton on the CPU: the
+// bit-level first guess 0x5f375a86 - bits/2, then three Newton steps y(1.5 - v y^2/2).
+fn fur_rsqrt_newton(v: vec3<f32>) -> vec3<f32> {
+    var y = bitcast<vec3<f32>>(vec3<u32>(0x5f375a86u) - (bitcast<vec3<u32>>(v) >> vec3<u32>(1u)));
+    let h = 0.5 * v;
+    y = y * (1.5 - h * y * y);
+    y = y * (1.5 - h * y * y);
+    return y * (1.5 - h * y * y);
+}
+
+// e^-x for x >= 0, the operations of math::exp_neg_saturating on the CPU: x = k ln 2 - r with
+// k = round(x log2 e) and ln 2 in two parts (exact products), Cephes' polynomial for e^r, and
+// 2^-k by ldexp; 0 above 87. Not the built-in exp, whose error grows with |x| (3 + 2|x| ulp
+// allowed): the Gaussians' exponents reach tens at grazing angles.
+fn fur_exp_neg(x_in: vec3<f32>) -> vec3<f32> {
+    let x = min(max(x_in, vec3<f32>(0.0)), vec3<f32>(87.0));
+    let k = round(x * FUR_LOG2_E);
+    let r = (k * FUR_LN2_HI - x) + k * FUR_LN2_LO;
+    let z = r * r;
+    var p = vec3<f32>(1.9875692e-4);
+    p = p * r + 1.3981999e-3;
+    p = p * r + 8.333452e-3;
+    p = p * r + 4.1665796e-2;
+    p = p * r + 0.16666665;
+    p = p * r + 0.5;
+    let e = p * z + r + 1.0;
+    return select(ldexp(e, -vec3<i32>(k)), vec3<f32>(0.0), x_in > vec3<f32>(87.0));
+}
+
+// The normalised Gaussian G(d; sqrt(v)) = e^(-d^2/2v)/sqrt(2 pi v) per channel, v kept in
+// [dual::MIN_VARIANCE, 1e30], as the CPU's lanes compute it: s = 1/sqrt(v), z = d s,
+// e^(-z^2/2) s/sqrt(2 pi).
 fn fur_dual_gauss(d: vec3<f32>, v_in: vec3<f32>) -> vec3<f32> {
-    let v = max(v_in, vec3<f32>(FUR_DUAL_MIN_VARIANCE));
-    return exp(-(d * d / (2.0 * v))) / sqrt(FUR_TAU * v);
+    let v = clamp(v_in, vec3<f32>(FUR_DUAL_MIN_VARIANCE), vec3<f32>(1e30));
+    let s = fur_rsqrt_newton(v);
+    let z = d * s;
+    return fur_exp_neg(0.5 * z * z) * s * FUR_INV_SQRT_TAU;
 }
 
 // A fiber count or density factor as the CPU's contract takes it: NaN and values <= 0 give
@@ -1174,7 +1215,7 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, d_f_in: f
         let along = fur_dual_theta(-theta_i);
         let log2_mu = fur_dual_field(along, FUR_DUAL_LOG2_DECAY);
         let beta_f = fur_dual_field(along, FUR_DUAL_BETA_F);
-        let t_f = exp(-(-n * FUR_LN2 * log2_mu));
+        let t_f = fur_exp_neg(-n * FUR_LN2 * log2_mu);
         let spread = max(t_f - direct, zero) * d_f;
         if (any(spread > zero)) {
             let s2f = n * beta_f * beta_f;

@@ -20,6 +20,10 @@ use std::f32::consts::{FRAC_PI_2, PI};
 use std::path::PathBuf;
 
 const RELATIVE: f32 = 1e-5;
+/// The pdf's bound within 1e-2 rad of the poles, where p/cos θ_i magnifies a last-bit
+/// difference in π/2 − |θ_i| or a sampled direction: 2.8e-6 measured on llvmpipe; 5.4e-4
+/// (and 1.9e-4 for the samples' pdfs) while the shader let the compiler fold π/2's low part.
+const POLE_RELATIVE: f32 = 1e-4;
 
 /// The preset's LUT in `closure` (the energy closure reads the LUT's 1/Z_g table).
 fn lut(name: &str, closure: Closure) -> Vec<u8> {
@@ -257,9 +261,9 @@ fn gpu_pdf_and_samples_match_cpu() {
         let mut worst_pole = 0.0f32;
         for (i, (c, x)) in cpu.iter().zip(&got).enumerate() {
             // Within 1e-2 rad of the fiber axis (where S itself runs on the guarded 1/cos²θ_i)
-            // the solid-angle conversion p/cos θ_i magnifies
-            // the last bit of π/2 − |θ_i| (formed with a two-float π/2, which a shader compiler
-            // may re-associate): checked separately, at 1e-2.
+            // the solid-angle conversion p/cos θ_i magnifies the last bit of π/2 − |θ_i|
+            // (formed with a two-float π/2, whose low part the shader hides from constant
+            // folding): checked separately, at POLE_RELATIVE.
             if q[i][0].abs() > FRAC_PI_2 - 1e-2 {
                 let e = (x - c).abs() / c.max(1e-3 * peak);
                 worst_pole = worst_pole.max(if e.is_nan() { f32::INFINITY } else { e });
@@ -281,7 +285,7 @@ fn gpu_pdf_and_samples_match_cpu() {
         );
         assert!(worst <= RELATIVE, "{}: pdf {worst}", preset.name);
         assert!(
-            worst_pole <= 1e-2,
+            worst_pole <= POLE_RELATIVE,
             "{}: pdf near the poles {worst_pole}",
             preset.name
         );
@@ -343,7 +347,7 @@ fn gpu_pdf_and_samples_match_cpu() {
         );
         assert!(worst_pdf <= RELATIVE, "{}: pdf {worst_pdf}", preset.name);
         assert!(
-            worst_pole_pdf <= 1e-2,
+            worst_pole_pdf <= POLE_RELATIVE,
             "{}: pdf {worst_pole_pdf}",
             preset.name
         );

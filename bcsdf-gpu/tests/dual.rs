@@ -269,9 +269,10 @@ fn gpu_dual_matches_cpu() {
         let got = g.eval_dirs(&vq).unwrap();
         let (e, at, abs) = worst(&cpu, &got);
         println!(
-            "{name}: {} vector queries, worst relative difference {e:.2e}, largest absolute \
-             difference {abs:.2e}",
-            vq.len()
+            "{name}: {} vector queries, worst relative difference {e:.2e} at {:?}, largest \
+             absolute difference {abs:.2e}",
+            vq.len(),
+            vq[at]
         );
         assert!(
             e <= RELATIVE,

@@ -122,6 +122,10 @@ static const float FUR_DUAL_MAX_FIBERS = 1000000.0;
 static const float FUR_DUAL_MAX_DENSITY = 4.0;
 static const float FUR_DUAL_MIN_VARIANCE = 3e-6;
 static const float FUR_LN2_ = 0.6931472;
+static const float FUR_LOG2_E = 1.442695;
+static const float FUR_LN2_HI = 0.6933594;
+static const float FUR_LN2_LO = -0.00021219444;
+static const float FUR_INV_SQRT_TAU = 0.3989423;
 
 ByteAddressBuffer fur_lut : register(t0);
 ByteAddressBuffer fur_dual : register(t3);
@@ -189,28 +193,28 @@ float fur_cos_within_half_pi(float x_1)
 
     float a_4 = abs(x_1);
     if ((a_4 <= 0.7853982)) {
-        float y_2 = (a_4 * a_4);
+        float y_3 = (a_4 * a_4);
         float _e7 = acc;
-        acc = ((_e7 * y_2) + 2.4801588e-5);
+        acc = ((_e7 * y_3) + 2.4801588e-5);
         float _e11 = acc;
-        acc = ((_e11 * y_2) - 0.0013888889);
+        acc = ((_e11 * y_3) - 0.0013888889);
         float _e15 = acc;
-        acc = ((_e15 * y_2) + 0.041666668);
+        acc = ((_e15 * y_3) + 0.041666668);
         float _e19 = acc;
-        acc = ((_e19 * y_2) - 0.5);
+        acc = ((_e19 * y_3) - 0.5);
         float _e23 = acc;
-        return ((_e23 * y_2) + 1.0);
+        return ((_e23 * y_3) + 1.0);
     }
-    float r_13 = ((1.5707964 - a_4) + -4.371139e-8);
-    float y_3 = (r_13 * r_13);
-    float _e34 = acc_1;
-    acc_1 = ((_e34 * y_3) - 0.0001984127);
+    float r_13 = ((1.5707964 - a_4) + ((a_4 > 4.0) ? 0.0 : -4.371139e-8));
+    float y_4 = (r_13 * r_13);
     float _e38 = acc_1;
-    acc_1 = ((_e38 * y_3) + 0.008333334);
+    acc_1 = ((_e38 * y_4) - 0.0001984127);
     float _e42 = acc_1;
-    acc_1 = ((_e42 * y_3) - 0.16666667);
+    acc_1 = ((_e42 * y_4) + 0.008333334);
     float _e46 = acc_1;
-    return (((_e46 * y_3) * r_13) + r_13);
+    acc_1 = ((_e46 * y_4) - 0.16666667);
+    float _e50 = acc_1;
+    return (((_e50 * y_4) * r_13) + r_13);
 }
 
 float fur_wrap_angle(float x_2)
@@ -805,9 +809,9 @@ FurDirAngles fur_angles_from_dirs(float3 wi, float3 wr, float3 u)
     float b_3 = dot(wr, un);
     const float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
     const float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
-    float y_4 = dot(un, cross(wi, wr));
+    float y_5 = dot(un, cross(wi, wr));
     float x_12 = (dot(wi, wr) - (a_6 * b_3));
-    const float _e64 = fur_atan2_(y_4, x_12);
+    const float _e64 = fur_atan2_(y_5, x_12);
     const FurDirAngles furdirangles_2 = ConstructFurDirAngles(_e51, _e58, abs(_e64), true);
     return furdirangles_2;
 }
@@ -1744,9 +1748,9 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1)
     float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
     float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p_2 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
+    float p_3 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
     const float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p_2 * _e70);
+    float pg = (p_3 * _e70);
     const float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
     return _e76;
 }
@@ -2004,10 +2008,64 @@ float3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p)
     return (lo_4 + ((hi_3 - lo_4) * l_5.w));
 }
 
+float3 fur_rsqrt_newton(float3 v_1)
+{
+    float3 y_2 = (float3)0;
+
+    y_2 = asfloat(((1597463174u).xxx - (asuint(v_1) >> (1u).xxx)));
+    float3 h_3 = (0.5 * v_1);
+    float3 _e12 = y_2;
+    float3 _e13 = y_2;
+    float3 _e15 = y_2;
+    y_2 = (_e12 * ((1.5).xxx - ((h_3 * _e13) * _e15)));
+    float3 _e21 = y_2;
+    float3 _e22 = y_2;
+    float3 _e24 = y_2;
+    y_2 = (_e21 * ((1.5).xxx - ((h_3 * _e22) * _e24)));
+    float3 _e30 = y_2;
+    float3 _e31 = y_2;
+    float3 _e33 = y_2;
+    return (_e30 * ((1.5).xxx - ((h_3 * _e31) * _e33)));
+}
+
+int3 naga_neg(int3 val) {
+    return asint(-asuint(val));
+}
+
+int3 naga_f2i32(float3 value) {
+    return int3(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+float3 fur_exp_neg(float3 x_in)
+{
+    float3 p_1 = (0.00019875693).xxx;
+
+    float3 x_13 = min(max(x_in, (0.0).xxx), (87.0).xxx);
+    float3 k_13 = round((x_13 * FUR_LOG2_E));
+    float3 r_15 = (((k_13 * FUR_LN2_HI) - x_13) + (k_13 * FUR_LN2_LO));
+    float3 z_1 = (r_15 * r_15);
+    float3 _e20 = p_1;
+    p_1 = ((_e20 * r_15) + (0.0013981999).xxx);
+    float3 _e25 = p_1;
+    p_1 = ((_e25 * r_15) + (0.008333452).xxx);
+    float3 _e30 = p_1;
+    p_1 = ((_e30 * r_15) + (0.041665796).xxx);
+    float3 _e35 = p_1;
+    p_1 = ((_e35 * r_15) + (0.16666666).xxx);
+    float3 _e40 = p_1;
+    p_1 = ((_e40 * r_15) + (0.5).xxx);
+    float3 _e45 = p_1;
+    float3 e = (((_e45 * z_1) + r_15) + (1.0).xxx);
+    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e, naga_neg(naga_f2i32(k_13))));
+}
+
 float3 fur_dual_gauss(float3 d_6, float3 v_in)
 {
-    float3 v_2 = max(v_in, (3e-6).xxx);
-    return (exp(-(((d_6 * d_6) / (2.0 * v_2)))) / sqrt((FUR_TAU * v_2)));
+    float3 v_3 = clamp(v_in, (3e-6).xxx, (1e30).xxx);
+    const float3 _e7 = fur_rsqrt_newton(v_3);
+    float3 z_2 = (d_6 * _e7);
+    const float3 _e12 = fur_exp_neg(((0.5 * z_2) * z_2));
+    return ((_e12 * _e7) * FUR_INV_SQRT_TAU);
 }
 
 float fur_dual_clean(float x_10, float top)
@@ -2027,7 +2085,7 @@ float fur_dual_clean(float x_10, float top)
 float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fibers, float d_f_in, float d_b_in)
 {
     float3 out_4 = (float3)0;
-    float p_1 = (float)0;
+    float p_2 = (float)0;
     float3 f_s = (float3)0;
     uint g_6 = 0u;
 
@@ -2039,7 +2097,7 @@ float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fib
     const float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
     const float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
     const float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_13 = (theta_i_5 + theta_r_8);
+    float x_14 = (theta_i_5 + theta_r_8);
     const float _e17 = fur_cos_within_half_pi(theta_i_5);
     float inv_cos2_1 = (1.0 / max((_e17 * _e17), FUR_MIN_COS2_));
     float direct = clamp((1.0 - _e11), 0.0, 1.0);
@@ -2050,7 +2108,7 @@ float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fib
     const float3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_);
     const float3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_);
     const float3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B);
-    float3 d_back = ((x_13).xxx - _e42);
+    float3 d_back = ((x_14).xxx - _e42);
     float3 s_b = (((1.0).xxx + (_e15 * _e38)) * _e40);
     float3 v_back = (s_b * s_b);
     float back_scale = ((_e15 * inv_cos2_1) / FUR_PI);
@@ -2063,18 +2121,18 @@ float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fib
         const FurLoc _e64 = fur_dual_theta(-(theta_i_5));
         const float3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY);
         const float3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F);
-        float3 t_f = exp(-(((-(_e11) * FUR_LN2_) * _e66)));
-        float3 spread = (max((t_f - (direct).xxx), zero) * _e13);
+        const float3 _e73 = fur_exp_neg(((-(_e11) * FUR_LN2_) * _e66));
+        float3 spread = (max((_e73 - (direct).xxx), zero) * _e13);
         if (any((spread > zero))) {
             float3 s2f = ((_e11 * _e68) * _e68);
-            p_1 = (abs_phi_2 * FUR_DUAL_PHI_SCALE);
-            float _e86 = p_1;
-            float _e89 = p_1;
-            p_1 = ((_e89 > 0.0) ? min(_e86, 31.0) : 0.0);
-            float _e94 = p_1;
-            uint j_7 = min(naga_f2u32(_e94), 30u);
-            float _e98 = p_1;
-            FurLoc at_phi = ConstructFurLoc(j_7, (_e98 - float(j_7)));
+            p_2 = (abs_phi_2 * FUR_DUAL_PHI_SCALE);
+            float _e85 = p_2;
+            float _e88 = p_2;
+            p_2 = ((_e88 > 0.0) ? min(_e85, 31.0) : 0.0);
+            float _e93 = p_2;
+            uint j_7 = min(naga_f2u32(_e93), 30u);
+            float _e97 = p_2;
+            FurLoc at_phi = ConstructFurLoc(j_7, (_e97 - float(j_7)));
             f_s = zero;
             uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
             bool loop_init_16 = true;
@@ -2082,44 +2140,44 @@ float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fib
                 if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
                 loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
                 if (!loop_init_16) {
-                    uint _e126 = g_6;
-                    g_6 = (_e126 + 1u);
+                    uint _e125 = g_6;
+                    g_6 = (_e125 + 1u);
                 }
                 loop_init_16 = false;
-                uint _e105 = g_6;
-                if ((_e105 < 4u)) {
+                uint _e104 = g_6;
+                if ((_e104 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e109 = g_6;
-                    const float3 _e111 = fur_dual_field(_e28, (FUR_DUAL_MEAN + _e109));
-                    uint _e113 = g_6;
-                    const float3 _e115 = fur_dual_field(_e28, (FUR_DUAL_SD + _e113));
-                    uint _e116 = g_6;
-                    const float3 _e117 = fur_dual_ng(_e116, _e28, at_phi);
-                    float3 v_3 = ((_e115 * _e115) + s2f);
-                    float3 _e120 = f_s;
-                    const float3 _e123 = fur_dual_gauss(((x_13).xxx - _e111), v_3);
-                    f_s = (_e120 + (_e117 * _e123));
+                    uint _e108 = g_6;
+                    const float3 _e110 = fur_dual_field(_e28, (FUR_DUAL_MEAN + _e108));
+                    uint _e112 = g_6;
+                    const float3 _e114 = fur_dual_field(_e28, (FUR_DUAL_SD + _e112));
+                    uint _e115 = g_6;
+                    const float3 _e116 = fur_dual_ng(_e115, _e28, at_phi);
+                    float3 v_4 = ((_e114 * _e114) + s2f);
+                    float3 _e119 = f_s;
+                    const float3 _e122 = fur_dual_gauss(((x_14).xxx - _e110), v_4);
+                    f_s = (_e119 + (_e116 * _e122));
                 }
             }
-            const float3 _e130 = fur_dual_gauss(d_back, (v_back + s2f));
-            float3 _e131 = out_4;
-            float3 _e132 = f_s;
-            out_4 = (_e131 + (spread * ((_e132 * inv_cos2_1) + ((back_scale * _e36) * _e130))));
+            const float3 _e129 = fur_dual_gauss(d_back, (v_back + s2f));
+            float3 _e130 = out_4;
+            float3 _e131 = f_s;
+            out_4 = (_e130 + (spread * ((_e131 * inv_cos2_1) + ((back_scale * _e36) * _e129))));
         }
     }
-    float _e140 = out_4.x;
-    const bool _e141 = fur_finite(_e140);
-    float _e143 = out_4.y;
-    const bool _e144 = fur_finite(_e143);
-    float _e146 = out_4.z;
-    const bool _e147 = fur_finite(_e146);
-    bool3 finite = bool3(_e141, _e144, _e147);
+    float _e139 = out_4.x;
+    const bool _e140 = fur_finite(_e139);
+    float _e142 = out_4.y;
+    const bool _e143 = fur_finite(_e142);
+    float _e145 = out_4.z;
+    const bool _e146 = fur_finite(_e145);
+    bool3 finite = bool3(_e140, _e143, _e146);
+    float3 _e148 = out_4;
     float3 _e149 = out_4;
-    float3 _e150 = out_4;
-    return ((finite & (_e150 > zero)) ? _e149 : zero);
+    return ((finite & (_e149 > zero)) ? _e148 : zero);
 }
 
 float3 fur_eval_dual_dirs(float3 wi_2, float3 wr_2, float3 u_6, float fibers_1, float d_f, float d_b)
@@ -2175,14 +2233,14 @@ void fur_store(uint q, FurFamilies f_2)
     return;
 }
 
-void fur_store_rgb(uint q_1, float3 v_1)
+void fur_store_rgb(uint q_1, float3 v_2)
 {
     uint k_10 = 3u;
 
     uint base_2 = (16u * q_1);
-    fur_results.Store(base_2*4, asuint(v_1.x));
-    fur_results.Store((base_2 + 1u)*4, asuint(v_1.y));
-    fur_results.Store((base_2 + 2u)*4, asuint(v_1.z));
+    fur_results.Store(base_2*4, asuint(v_2.x));
+    fur_results.Store((base_2 + 1u)*4, asuint(v_2.y));
+    fur_results.Store((base_2 + 2u)*4, asuint(v_2.z));
     uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
     bool loop_init_18 = true;
     while(true) {

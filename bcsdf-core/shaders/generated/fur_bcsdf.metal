@@ -112,9 +112,9 @@ struct FurParts {
     char _pad1[12];
     type_14 ranges;
 };
-typedef metal::float4 type_16[1];
-typedef float type_17[1];
-struct type_18 {
+typedef metal::float4 type_17[1];
+typedef float type_18[1];
+struct type_19 {
     metal::float3 inner[5];
 };
 constant float FUR_PI = 3.1415927;
@@ -144,6 +144,10 @@ constant float FUR_DUAL_MAX_FIBERS = 1000000.0;
 constant float FUR_DUAL_MAX_DENSITY = 4.0;
 constant float FUR_DUAL_MIN_VARIANCE = 0.000003;
 constant float FUR_LN2_ = 0.6931472;
+constant float FUR_LOG2_E = 1.442695;
+constant float FUR_LN2_HI = 0.6933594;
+constant float FUR_LN2_LO = -0.00021219444;
+constant float FUR_INV_SQRT_TAU = 0.3989423;
 
 FurAxis fur_axis(
     bool centred,
@@ -202,28 +206,28 @@ float fur_cos_within_half_pi(
     float acc_1 = 0.0000027557319;
     float a_4 = metal::abs(x_1);
     if (a_4 <= 0.7853982) {
-        float y_2 = a_4 * a_4;
+        float y_3 = a_4 * a_4;
         float _e7 = acc;
-        acc = (_e7 * y_2) + 0.000024801588;
+        acc = (_e7 * y_3) + 0.000024801588;
         float _e11 = acc;
-        acc = (_e11 * y_2) - 0.0013888889;
+        acc = (_e11 * y_3) - 0.0013888889;
         float _e15 = acc;
-        acc = (_e15 * y_2) + 0.041666668;
+        acc = (_e15 * y_3) + 0.041666668;
         float _e19 = acc;
-        acc = (_e19 * y_2) - 0.5;
+        acc = (_e19 * y_3) - 0.5;
         float _e23 = acc;
-        return (_e23 * y_2) + 1.0;
+        return (_e23 * y_3) + 1.0;
     }
-    float r_13 = (1.5707964 - a_4) + -0.00000004371139;
-    float y_3 = r_13 * r_13;
-    float _e34 = acc_1;
-    acc_1 = (_e34 * y_3) - 0.0001984127;
+    float r_13 = (1.5707964 - a_4) + ((a_4 > 4.0) ? 0.0 : -0.00000004371139);
+    float y_4 = r_13 * r_13;
     float _e38 = acc_1;
-    acc_1 = (_e38 * y_3) + 0.008333334;
+    acc_1 = (_e38 * y_4) - 0.0001984127;
     float _e42 = acc_1;
-    acc_1 = (_e42 * y_3) - 0.16666667;
+    acc_1 = (_e42 * y_4) + 0.008333334;
     float _e46 = acc_1;
-    return ((_e46 * y_3) * r_13) + r_13;
+    acc_1 = (_e46 * y_4) - 0.16666667;
+    float _e50 = acc_1;
+    return ((_e50 * y_4) * r_13) + r_13;
 }
 
 float fur_wrap_angle(
@@ -786,9 +790,9 @@ FurDirAngles fur_angles_from_dirs(
     float b_3 = metal::dot(wr, un);
     float _e51 = fur_asin(metal::clamp(a_6 * (1.0 / ni), -1.0, 1.0));
     float _e58 = fur_asin(metal::clamp(b_3 * (1.0 / nr), -1.0, 1.0));
-    float y_4 = metal::dot(un, metal::cross(wi, wr));
+    float y_5 = metal::dot(un, metal::cross(wi, wr));
     float x_12 = metal::dot(wi, wr) - (a_6 * b_3);
-    float _e64 = fur_atan2_(y_4, x_12);
+    float _e64 = fur_atan2_(y_5, x_12);
     return FurDirAngles {_e51, _e58, metal::abs(_e64), true};
 }
 
@@ -1788,9 +1792,9 @@ float fur_density_of(
     float mean2_ = ((l_3.n.inner[6] + l_3.n.inner[7]) + l_3.n.inner[8]) * 0.33333334;
     float mean3_ = ((l_3.n.inner[9] + l_3.n.inner[10]) + l_3.n.inner[11]) * 0.33333334;
     float ms_1 = l_3.ms.inner[0] + (l_3.front * (l_3.ms.inner[1] - l_3.ms.inner[0]));
-    float p_2 = (((l_3.m.inner[0] * mean0_) + (l_3.m.inner[1] * mean1_)) + (l_3.m.inner[2] * mean2_)) + (ms_1 * mean3_);
+    float p_3 = (((l_3.m.inner[0] * mean0_) + (l_3.m.inner[1] * mean1_)) + (l_3.m.inner[2] * mean2_)) + (ms_1 * mean3_);
     float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = p_2 * _e70;
+    float pg = p_3 * _e70;
     float _e76 = fur_positive((pg / w_2) / metal::max(cos_theta_i_1, 0.000001));
     return _e76;
 }
@@ -2056,12 +2060,66 @@ metal::float3 fur_dual_ng(
     return lo_4 + ((hi_3 - lo_4) * l_5.w);
 }
 
+metal::float3 fur_rsqrt_newton(
+    metal::float3 v_1
+) {
+    metal::float3 y_2 = {};
+    y_2 = as_type<metal::float3>(metal::uint3(1597463174u) - (as_type<metal::uint3>(v_1) >> metal::uint3(1u)));
+    metal::float3 h_3 = 0.5 * v_1;
+    metal::float3 _e12 = y_2;
+    metal::float3 _e13 = y_2;
+    metal::float3 _e15 = y_2;
+    y_2 = _e12 * (metal::float3(1.5) - ((h_3 * _e13) * _e15));
+    metal::float3 _e21 = y_2;
+    metal::float3 _e22 = y_2;
+    metal::float3 _e24 = y_2;
+    y_2 = _e21 * (metal::float3(1.5) - ((h_3 * _e22) * _e24));
+    metal::float3 _e30 = y_2;
+    metal::float3 _e31 = y_2;
+    metal::float3 _e33 = y_2;
+    return _e30 * (metal::float3(1.5) - ((h_3 * _e31) * _e33));
+}
+
+metal::int3 naga_f2i32(metal::float3 value) {
+    return static_cast<metal::int3>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::int3 naga_neg(metal::int3 val) {
+    return as_type<metal::int3>(-as_type<metal::uint3>(val));
+}
+
+metal::float3 fur_exp_neg(
+    metal::float3 x_in
+) {
+    metal::float3 p_1 = metal::float3(0.00019875693);
+    metal::float3 x_13 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
+    metal::float3 k_13 = metal::rint(x_13 * FUR_LOG2_E);
+    metal::float3 r_15 = ((k_13 * FUR_LN2_HI) - x_13) + (k_13 * FUR_LN2_LO);
+    metal::float3 z_1 = r_15 * r_15;
+    metal::float3 _e20 = p_1;
+    p_1 = (_e20 * r_15) + metal::float3(0.0013981999);
+    metal::float3 _e25 = p_1;
+    p_1 = (_e25 * r_15) + metal::float3(0.008333452);
+    metal::float3 _e30 = p_1;
+    p_1 = (_e30 * r_15) + metal::float3(0.041665796);
+    metal::float3 _e35 = p_1;
+    p_1 = (_e35 * r_15) + metal::float3(0.16666666);
+    metal::float3 _e40 = p_1;
+    p_1 = (_e40 * r_15) + metal::float3(0.5);
+    metal::float3 _e45 = p_1;
+    metal::float3 e = ((_e45 * z_1) + r_15) + metal::float3(1.0);
+    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_13))), metal::float3(0.0), x_in > metal::float3(87.0));
+}
+
 metal::float3 fur_dual_gauss(
     metal::float3 d_6,
     metal::float3 v_in
 ) {
-    metal::float3 v_2 = metal::max(v_in, metal::float3(0.000003));
-    return metal::exp(-(((d_6 * d_6) / (2.0 * v_2)))) / metal::sqrt(FUR_TAU * v_2);
+    metal::float3 v_3 = metal::clamp(v_in, metal::float3(0.000003), metal::float3(1000000000000000000000000000000.0));
+    metal::float3 _e7 = fur_rsqrt_newton(v_3);
+    metal::float3 z_2 = d_6 * _e7;
+    metal::float3 _e12 = fur_exp_neg((0.5 * z_2) * z_2);
+    return (_e12 * _e7) * FUR_INV_SQRT_TAU;
 }
 
 float fur_dual_clean(
@@ -2090,7 +2148,7 @@ metal::float3 fur_eval_dual(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 out_4 = {};
-    float p_1 = {};
+    float p_2 = {};
     metal::float3 f_s = {};
     uint g_6 = 0u;
     metal::float3 zero = metal::float3(0.0);
@@ -2101,7 +2159,7 @@ metal::float3 fur_eval_dual(
     float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
     float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
     float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_13 = theta_i_5 + theta_r_8;
+    float x_14 = theta_i_5 + theta_r_8;
     float _e17 = fur_cos_within_half_pi(theta_i_5);
     float inv_cos2_1 = 1.0 / metal::max(_e17 * _e17, FUR_MIN_COS2_);
     float direct = metal::clamp(1.0 - _e11, 0.0, 1.0);
@@ -2112,7 +2170,7 @@ metal::float3 fur_eval_dual(
     metal::float3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
     metal::float3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_, fur_dual, _buffer_sizes);
     metal::float3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B, fur_dual, _buffer_sizes);
-    metal::float3 d_back = metal::float3(x_13) - _e42;
+    metal::float3 d_back = metal::float3(x_14) - _e42;
     metal::float3 s_b = (metal::float3(1.0) + (_e15 * _e38)) * _e40;
     metal::float3 v_back = s_b * s_b;
     float back_scale = (_e15 * inv_cos2_1) / FUR_PI;
@@ -2125,18 +2183,18 @@ metal::float3 fur_eval_dual(
         FurLoc _e64 = fur_dual_theta(-(theta_i_5));
         metal::float3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
         metal::float3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F, fur_dual, _buffer_sizes);
-        metal::float3 t_f = metal::exp(-(((-(_e11) * FUR_LN2_) * _e66)));
-        metal::float3 spread = metal::max(t_f - metal::float3(direct), zero) * _e13;
+        metal::float3 _e73 = fur_exp_neg((-(_e11) * FUR_LN2_) * _e66);
+        metal::float3 spread = metal::max(_e73 - metal::float3(direct), zero) * _e13;
         if (metal::any(spread > zero)) {
             metal::float3 s2f = (_e11 * _e68) * _e68;
-            p_1 = abs_phi_2 * FUR_DUAL_PHI_SCALE;
-            float _e86 = p_1;
-            float _e89 = p_1;
-            p_1 = (_e89 > 0.0) ? metal::min(_e86, 31.0) : 0.0;
-            float _e94 = p_1;
-            uint j_7 = metal::min(naga_f2u32(_e94), 30u);
-            float _e98 = p_1;
-            FurLoc at_phi = FurLoc {j_7, _e98 - static_cast<float>(j_7)};
+            p_2 = abs_phi_2 * FUR_DUAL_PHI_SCALE;
+            float _e85 = p_2;
+            float _e88 = p_2;
+            p_2 = (_e88 > 0.0) ? metal::min(_e85, 31.0) : 0.0;
+            float _e93 = p_2;
+            uint j_7 = metal::min(naga_f2u32(_e93), 30u);
+            float _e97 = p_2;
+            FurLoc at_phi = FurLoc {j_7, _e97 - static_cast<float>(j_7)};
             f_s = zero;
             uint2 loop_bound_17 = uint2(4294967295u);
             bool loop_init_16 = true;
@@ -2144,44 +2202,44 @@ metal::float3 fur_eval_dual(
                 if (metal::all(loop_bound_17 == uint2(0u))) { break; }
                 loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
                 if (!loop_init_16) {
-                    uint _e126 = g_6;
-                    g_6 = _e126 + 1u;
+                    uint _e125 = g_6;
+                    g_6 = _e125 + 1u;
                 }
                 loop_init_16 = false;
-                uint _e105 = g_6;
-                if (_e105 < 4u) {
+                uint _e104 = g_6;
+                if (_e104 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e109 = g_6;
-                    metal::float3 _e111 = fur_dual_field(_e28, FUR_DUAL_MEAN + _e109, fur_dual, _buffer_sizes);
-                    uint _e113 = g_6;
-                    metal::float3 _e115 = fur_dual_field(_e28, FUR_DUAL_SD + _e113, fur_dual, _buffer_sizes);
-                    uint _e116 = g_6;
-                    metal::float3 _e117 = fur_dual_ng(_e116, _e28, at_phi, fur_dual, _buffer_sizes);
-                    metal::float3 v_3 = (_e115 * _e115) + s2f;
-                    metal::float3 _e120 = f_s;
-                    metal::float3 _e123 = fur_dual_gauss(metal::float3(x_13) - _e111, v_3);
-                    f_s = _e120 + (_e117 * _e123);
+                    uint _e108 = g_6;
+                    metal::float3 _e110 = fur_dual_field(_e28, FUR_DUAL_MEAN + _e108, fur_dual, _buffer_sizes);
+                    uint _e112 = g_6;
+                    metal::float3 _e114 = fur_dual_field(_e28, FUR_DUAL_SD + _e112, fur_dual, _buffer_sizes);
+                    uint _e115 = g_6;
+                    metal::float3 _e116 = fur_dual_ng(_e115, _e28, at_phi, fur_dual, _buffer_sizes);
+                    metal::float3 v_4 = (_e114 * _e114) + s2f;
+                    metal::float3 _e119 = f_s;
+                    metal::float3 _e122 = fur_dual_gauss(metal::float3(x_14) - _e110, v_4);
+                    f_s = _e119 + (_e116 * _e122);
                 }
             }
-            metal::float3 _e130 = fur_dual_gauss(d_back, v_back + s2f);
-            metal::float3 _e131 = out_4;
-            metal::float3 _e132 = f_s;
-            out_4 = _e131 + (spread * ((_e132 * inv_cos2_1) + ((back_scale * _e36) * _e130)));
+            metal::float3 _e129 = fur_dual_gauss(d_back, v_back + s2f);
+            metal::float3 _e130 = out_4;
+            metal::float3 _e131 = f_s;
+            out_4 = _e130 + (spread * ((_e131 * inv_cos2_1) + ((back_scale * _e36) * _e129)));
         }
     }
-    float _e140 = out_4.x;
-    bool _e141 = fur_finite(_e140);
-    float _e143 = out_4.y;
-    bool _e144 = fur_finite(_e143);
-    float _e146 = out_4.z;
-    bool _e147 = fur_finite(_e146);
-    metal::bool3 finite = metal::bool3(_e141, _e144, _e147);
+    float _e139 = out_4.x;
+    bool _e140 = fur_finite(_e139);
+    float _e142 = out_4.y;
+    bool _e143 = fur_finite(_e142);
+    float _e145 = out_4.z;
+    bool _e146 = fur_finite(_e145);
+    metal::bool3 finite = metal::bool3(_e140, _e143, _e146);
+    metal::float3 _e148 = out_4;
     metal::float3 _e149 = out_4;
-    metal::float3 _e150 = out_4;
-    return metal::select(zero, _e149, finite & (_e150 > zero));
+    return metal::select(zero, _e148, finite & (_e149 > zero));
 }
 
 metal::float3 fur_eval_dual_dirs(
@@ -2205,12 +2263,12 @@ metal::float3 fur_eval_dual_dirs(
 void fur_store(
     uint q,
     FurFamilies f_2,
-    device type_17& fur_results,
+    device type_18& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint k_9 = 0u;
     uint base_1 = 16u * q;
-    type_18 parts = type_18 {{f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total}};
+    type_19 parts = type_19 {{f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total}};
     uint2 loop_bound_18 = uint2(4294967295u);
     bool loop_init_17 = true;
     while(true) {
@@ -2244,15 +2302,15 @@ void fur_store(
 
 void fur_store_rgb(
     uint q_1,
-    metal::float3 v_1,
-    device type_17& fur_results,
+    metal::float3 v_2,
+    device type_18& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint k_10 = 3u;
     uint base_2 = 16u * q_1;
-    fur_results[base_2] = v_1.x;
-    fur_results[base_2 + 1u] = v_1.y;
-    fur_results[base_2 + 2u] = v_1.z;
+    fur_results[base_2] = v_2.x;
+    fur_results[base_2 + 1u] = v_2.y;
+    fur_results[base_2 + 2u] = v_2.z;
     uint2 loop_bound_19 = uint2(4294967295u);
     bool loop_init_18 = true;
     while(true) {
@@ -2281,8 +2339,8 @@ struct fur_eval_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_eval_main(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_16 const& fur_queries [[user(fake0)]]
-, device type_17& fur_results [[user(fake0)]]
+, device type_17 const& fur_queries [[user(fake0)]]
+, device type_18& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_2 = id.x;
@@ -2301,8 +2359,8 @@ struct fur_eval_dirs_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_eval_dirs_main(
   metal::uint3 id_1 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_16 const& fur_queries [[user(fake0)]]
-, device type_17& fur_results [[user(fake0)]]
+, device type_17 const& fur_queries [[user(fake0)]]
+, device type_18& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_3 = id_1.x;
@@ -2323,8 +2381,8 @@ struct fur_sample_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_sample_main(
   metal::uint3 id_2 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_16 const& fur_queries [[user(fake0)]]
-, device type_17& fur_results [[user(fake0)]]
+, device type_17 const& fur_queries [[user(fake0)]]
+, device type_18& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_4 = id_2.x;
@@ -2351,8 +2409,8 @@ struct fur_pdf_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_pdf_main(
   metal::uint3 id_3 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_16 const& fur_queries [[user(fake0)]]
-, device type_17& fur_results [[user(fake0)]]
+, device type_17 const& fur_queries [[user(fake0)]]
+, device type_18& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_5 = id_3.x;
@@ -2371,8 +2429,8 @@ struct fur_dual_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_dual_main(
   metal::uint3 id_4 [[thread_position_in_grid]]
 , device type_1 const& fur_dual [[user(fake0)]]
-, device type_16 const& fur_queries [[user(fake0)]]
-, device type_17& fur_results [[user(fake0)]]
+, device type_17 const& fur_queries [[user(fake0)]]
+, device type_18& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_6 = id_4.x;
@@ -2392,8 +2450,8 @@ struct fur_dual_dirs_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_dual_dirs_main(
   metal::uint3 id_5 [[thread_position_in_grid]]
 , device type_1 const& fur_dual [[user(fake0)]]
-, device type_16 const& fur_queries [[user(fake0)]]
-, device type_17& fur_results [[user(fake0)]]
+, device type_17 const& fur_queries [[user(fake0)]]
+, device type_18& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_7 = id_5.x;

@@ -102,12 +102,16 @@ const float FUR_DUAL_MAX_FIBERS = 1000000.0;
 const float FUR_DUAL_MAX_DENSITY = 4.0;
 const float FUR_DUAL_MIN_VARIANCE = 3e-6;
 const float FUR_LN2_ = 0.6931472;
+const float FUR_LOG2_E = 1.442695;
+const float FUR_LN2_HI = 0.6933594;
+const float FUR_LN2_LO = -0.00021219444;
+const float FUR_INV_SQRT_TAU = 0.3989423;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_16_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_17_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_17_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_18_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -126,28 +130,28 @@ float fur_cos_within_half_pi(float x_1) {
     float acc_1 = 2.7557319e-6;
     float a_4 = abs(x_1);
     if ((a_4 <= 0.7853982)) {
-        float y_2 = (a_4 * a_4);
+        float y_3 = (a_4 * a_4);
         float _e7 = acc;
-        acc = ((_e7 * y_2) + 2.4801588e-5);
+        acc = ((_e7 * y_3) + 2.4801588e-5);
         float _e11 = acc;
-        acc = ((_e11 * y_2) - 0.0013888889);
+        acc = ((_e11 * y_3) - 0.0013888889);
         float _e15 = acc;
-        acc = ((_e15 * y_2) + 0.041666668);
+        acc = ((_e15 * y_3) + 0.041666668);
         float _e19 = acc;
-        acc = ((_e19 * y_2) - 0.5);
+        acc = ((_e19 * y_3) - 0.5);
         float _e23 = acc;
-        return ((_e23 * y_2) + 1.0);
+        return ((_e23 * y_3) + 1.0);
     }
-    float r_13 = ((1.5707964 - a_4) + -4.371139e-8);
-    float y_3 = (r_13 * r_13);
-    float _e34 = acc_1;
-    acc_1 = ((_e34 * y_3) - 0.0001984127);
+    float r_13 = ((1.5707964 - a_4) + ((a_4 > 4.0) ? 0.0 : -4.371139e-8));
+    float y_4 = (r_13 * r_13);
     float _e38 = acc_1;
-    acc_1 = ((_e38 * y_3) + 0.008333334);
+    acc_1 = ((_e38 * y_4) - 0.0001984127);
     float _e42 = acc_1;
-    acc_1 = ((_e42 * y_3) - 0.16666667);
+    acc_1 = ((_e42 * y_4) + 0.008333334);
     float _e46 = acc_1;
-    return (((_e46 * y_3) * r_13) + r_13);
+    acc_1 = ((_e46 * y_4) - 0.16666667);
+    float _e50 = acc_1;
+    return (((_e50 * y_4) * r_13) + r_13);
 }
 
 float fur_wrap_angle(float x_2) {
@@ -387,9 +391,9 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float b_3 = dot(wr, un);
     float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
-    float y_4 = dot(un, cross(wi, wr));
+    float y_5 = dot(un, cross(wi, wr));
     float x_11 = (dot(wi, wr) - (a_6 * b_3));
-    float _e64 = fur_atan2_(y_4, x_11);
+    float _e64 = fur_atan2_(y_5, x_11);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -754,9 +758,9 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
     float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
     float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p_2 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
+    float p_3 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
     float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p_2 * _e70);
+    float pg = (p_3 * _e70);
     float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
     return _e76;
 }
@@ -810,9 +814,51 @@ vec3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p) {
     return (lo_4 + ((hi_3 - lo_4) * l_5.w));
 }
 
+vec3 fur_rsqrt_newton(vec3 v_1) {
+    vec3 y_2 = vec3(0.0);
+    y_2 = uintBitsToFloat((uvec3(1597463174u) - (floatBitsToUint(v_1) >> uvec3(1u))));
+    vec3 h_3 = (0.5 * v_1);
+    vec3 _e12 = y_2;
+    vec3 _e13 = y_2;
+    vec3 _e15 = y_2;
+    y_2 = (_e12 * (vec3(1.5) - ((h_3 * _e13) * _e15)));
+    vec3 _e21 = y_2;
+    vec3 _e22 = y_2;
+    vec3 _e24 = y_2;
+    y_2 = (_e21 * (vec3(1.5) - ((h_3 * _e22) * _e24)));
+    vec3 _e30 = y_2;
+    vec3 _e31 = y_2;
+    vec3 _e33 = y_2;
+    return (_e30 * (vec3(1.5) - ((h_3 * _e31) * _e33)));
+}
+
+vec3 fur_exp_neg(vec3 x_in) {
+    vec3 p_1 = vec3(0.00019875693);
+    vec3 x_12 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_12 = roundEven((x_12 * FUR_LOG2_E));
+    vec3 r_15 = (((k_12 * FUR_LN2_HI) - x_12) + (k_12 * FUR_LN2_LO));
+    vec3 z_1 = (r_15 * r_15);
+    vec3 _e20 = p_1;
+    p_1 = ((_e20 * r_15) + vec3(0.0013981999));
+    vec3 _e25 = p_1;
+    p_1 = ((_e25 * r_15) + vec3(0.008333452));
+    vec3 _e30 = p_1;
+    p_1 = ((_e30 * r_15) + vec3(0.041665796));
+    vec3 _e35 = p_1;
+    p_1 = ((_e35 * r_15) + vec3(0.16666666));
+    vec3 _e40 = p_1;
+    p_1 = ((_e40 * r_15) + vec3(0.5));
+    vec3 _e45 = p_1;
+    vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
+    return mix(ldexp(e, -(ivec3(k_12))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+}
+
 vec3 fur_dual_gauss(vec3 d_6, vec3 v_in) {
-    vec3 v_2 = max(v_in, vec3(3e-6));
-    return (exp(-(((d_6 * d_6) / (2.0 * v_2)))) / sqrt((FUR_TAU * v_2)));
+    vec3 v_3 = clamp(v_in, vec3(3e-6), vec3(1e30));
+    vec3 _e7 = fur_rsqrt_newton(v_3);
+    vec3 z_2 = (d_6 * _e7);
+    vec3 _e12 = fur_exp_neg(((0.5 * z_2) * z_2));
+    return ((_e12 * _e7) * FUR_INV_SQRT_TAU);
 }
 
 float fur_dual_clean(float x_10, float top) {
@@ -829,7 +875,7 @@ float fur_dual_clean(float x_10, float top) {
 
 vec3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fibers, float d_f_in, float d_b_in) {
     vec3 out_4 = vec3(0.0);
-    float p_1 = 0.0;
+    float p_2 = 0.0;
     vec3 f_s = vec3(0.0);
     uint g_6 = 0u;
     vec3 zero = vec3(0.0);
@@ -840,7 +886,7 @@ vec3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fiber
     float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
     float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
     float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_12 = (theta_i_5 + theta_r_8);
+    float x_13 = (theta_i_5 + theta_r_8);
     float _e17 = fur_cos_within_half_pi(theta_i_5);
     float inv_cos2_ = (1.0 / max((_e17 * _e17), FUR_MIN_COS2_));
     float direct = clamp((1.0 - _e11), 0.0, 1.0);
@@ -851,7 +897,7 @@ vec3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fiber
     vec3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_);
     vec3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_);
     vec3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B);
-    vec3 d_back = (vec3(x_12) - _e42);
+    vec3 d_back = (vec3(x_13) - _e42);
     vec3 s_b = ((vec3(1.0) + (_e15 * _e38)) * _e40);
     vec3 v_back = (s_b * s_b);
     float back_scale = ((_e15 * inv_cos2_) / FUR_PI);
@@ -864,60 +910,60 @@ vec3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fiber
         FurLoc _e64 = fur_dual_theta(-(theta_i_5));
         vec3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY);
         vec3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F);
-        vec3 t_f = exp(-(((-(_e11) * FUR_LN2_) * _e66)));
-        vec3 spread = (max((t_f - vec3(direct)), zero) * _e13);
+        vec3 _e73 = fur_exp_neg(((-(_e11) * FUR_LN2_) * _e66));
+        vec3 spread = (max((_e73 - vec3(direct)), zero) * _e13);
         if (any(greaterThan(spread, zero))) {
             vec3 s2f = ((_e11 * _e68) * _e68);
-            p_1 = (abs_phi * FUR_DUAL_PHI_SCALE);
-            float _e86 = p_1;
-            float _e89 = p_1;
-            p_1 = ((_e89 > 0.0) ? min(_e86, 31.0) : 0.0);
-            float _e94 = p_1;
-            uint j_7 = min(uint(_e94), 30u);
-            float _e98 = p_1;
-            FurLoc at_phi = FurLoc(j_7, (_e98 - float(j_7)));
+            p_2 = (abs_phi * FUR_DUAL_PHI_SCALE);
+            float _e85 = p_2;
+            float _e88 = p_2;
+            p_2 = ((_e88 > 0.0) ? min(_e85, 31.0) : 0.0);
+            float _e93 = p_2;
+            uint j_7 = min(uint(_e93), 30u);
+            float _e97 = p_2;
+            FurLoc at_phi = FurLoc(j_7, (_e97 - float(j_7)));
             f_s = zero;
             bool loop_init_4 = true;
             while(true) {
                 if (!loop_init_4) {
-                    uint _e126 = g_6;
-                    g_6 = (_e126 + 1u);
+                    uint _e125 = g_6;
+                    g_6 = (_e125 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e105 = g_6;
-                if ((_e105 < 4u)) {
+                uint _e104 = g_6;
+                if ((_e104 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e109 = g_6;
-                    vec3 _e111 = fur_dual_field(_e28, (FUR_DUAL_MEAN + _e109));
-                    uint _e113 = g_6;
-                    vec3 _e115 = fur_dual_field(_e28, (FUR_DUAL_SD + _e113));
-                    uint _e116 = g_6;
-                    vec3 _e117 = fur_dual_ng(_e116, _e28, at_phi);
-                    vec3 v_3 = ((_e115 * _e115) + s2f);
-                    vec3 _e120 = f_s;
-                    vec3 _e123 = fur_dual_gauss((vec3(x_12) - _e111), v_3);
-                    f_s = (_e120 + (_e117 * _e123));
+                    uint _e108 = g_6;
+                    vec3 _e110 = fur_dual_field(_e28, (FUR_DUAL_MEAN + _e108));
+                    uint _e112 = g_6;
+                    vec3 _e114 = fur_dual_field(_e28, (FUR_DUAL_SD + _e112));
+                    uint _e115 = g_6;
+                    vec3 _e116 = fur_dual_ng(_e115, _e28, at_phi);
+                    vec3 v_4 = ((_e114 * _e114) + s2f);
+                    vec3 _e119 = f_s;
+                    vec3 _e122 = fur_dual_gauss((vec3(x_13) - _e110), v_4);
+                    f_s = (_e119 + (_e116 * _e122));
                 }
             }
-            vec3 _e130 = fur_dual_gauss(d_back, (v_back + s2f));
-            vec3 _e131 = out_4;
-            vec3 _e132 = f_s;
-            out_4 = (_e131 + (spread * ((_e132 * inv_cos2_) + ((back_scale * _e36) * _e130))));
+            vec3 _e129 = fur_dual_gauss(d_back, (v_back + s2f));
+            vec3 _e130 = out_4;
+            vec3 _e131 = f_s;
+            out_4 = (_e130 + (spread * ((_e131 * inv_cos2_) + ((back_scale * _e36) * _e129))));
         }
     }
-    float _e140 = out_4.x;
-    bool _e141 = fur_finite(_e140);
-    float _e143 = out_4.y;
-    bool _e144 = fur_finite(_e143);
-    float _e146 = out_4.z;
-    bool _e147 = fur_finite(_e146);
-    bvec3 finite = bvec3(_e141, _e144, _e147);
+    float _e139 = out_4.x;
+    bool _e140 = fur_finite(_e139);
+    float _e142 = out_4.y;
+    bool _e143 = fur_finite(_e142);
+    float _e145 = out_4.z;
+    bool _e146 = fur_finite(_e145);
+    bvec3 finite = bvec3(_e140, _e143, _e146);
+    vec3 _e148 = out_4;
     vec3 _e149 = out_4;
-    vec3 _e150 = out_4;
-    return mix(zero, _e149, bvec3(finite.x && greaterThan(_e150, zero).x, finite.y && greaterThan(_e150, zero).y, finite.z && greaterThan(_e150, zero).z));
+    return mix(zero, _e148, bvec3(finite.x && greaterThan(_e149, zero).x, finite.y && greaterThan(_e149, zero).y, finite.z && greaterThan(_e149, zero).z));
 }
 
 vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float d_f, float d_b) {
@@ -961,12 +1007,12 @@ void fur_store(uint q, FurFamilies f_2) {
     return;
 }
 
-void fur_store_rgb(uint q_1, vec3 v_1) {
+void fur_store_rgb(uint q_1, vec3 v_2) {
     uint k_10 = 3u;
     uint base_1 = (16u * q_1);
-    _group_0_binding_2_cs[base_1] = v_1.x;
-    _group_0_binding_2_cs[(base_1 + 1u)] = v_1.y;
-    _group_0_binding_2_cs[(base_1 + 2u)] = v_1.z;
+    _group_0_binding_2_cs[base_1] = v_2.x;
+    _group_0_binding_2_cs[(base_1 + 1u)] = v_2.y;
+    _group_0_binding_2_cs[(base_1 + 2u)] = v_2.z;
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {

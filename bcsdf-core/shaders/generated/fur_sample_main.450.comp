@@ -102,12 +102,16 @@ const float FUR_DUAL_MAX_FIBERS = 1000000.0;
 const float FUR_DUAL_MAX_DENSITY = 4.0;
 const float FUR_DUAL_MIN_VARIANCE = 3e-6;
 const float FUR_LN2_ = 0.6931472;
+const float FUR_LOG2_E = 1.442695;
+const float FUR_LN2_HI = 0.6933594;
+const float FUR_LN2_LO = -0.00021219444;
+const float FUR_INV_SQRT_TAU = 0.3989423;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
-layout(std430) readonly buffer type_16_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_17_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_17_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_18_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -142,28 +146,28 @@ float fur_cos_within_half_pi(float x_1) {
     float acc_1 = 2.7557319e-6;
     float a_4 = abs(x_1);
     if ((a_4 <= 0.7853982)) {
-        float y_2 = (a_4 * a_4);
+        float y_3 = (a_4 * a_4);
         float _e7 = acc;
-        acc = ((_e7 * y_2) + 2.4801588e-5);
+        acc = ((_e7 * y_3) + 2.4801588e-5);
         float _e11 = acc;
-        acc = ((_e11 * y_2) - 0.0013888889);
+        acc = ((_e11 * y_3) - 0.0013888889);
         float _e15 = acc;
-        acc = ((_e15 * y_2) + 0.041666668);
+        acc = ((_e15 * y_3) + 0.041666668);
         float _e19 = acc;
-        acc = ((_e19 * y_2) - 0.5);
+        acc = ((_e19 * y_3) - 0.5);
         float _e23 = acc;
-        return ((_e23 * y_2) + 1.0);
+        return ((_e23 * y_3) + 1.0);
     }
-    float r_13 = ((1.5707964 - a_4) + -4.371139e-8);
-    float y_3 = (r_13 * r_13);
-    float _e34 = acc_1;
-    acc_1 = ((_e34 * y_3) - 0.0001984127);
+    float r_13 = ((1.5707964 - a_4) + ((a_4 > 4.0) ? 0.0 : -4.371139e-8));
+    float y_4 = (r_13 * r_13);
     float _e38 = acc_1;
-    acc_1 = ((_e38 * y_3) + 0.008333334);
+    acc_1 = ((_e38 * y_4) - 0.0001984127);
     float _e42 = acc_1;
-    acc_1 = ((_e42 * y_3) - 0.16666667);
+    acc_1 = ((_e42 * y_4) + 0.008333334);
     float _e46 = acc_1;
-    return (((_e46 * y_3) * r_13) + r_13);
+    acc_1 = ((_e46 * y_4) - 0.16666667);
+    float _e50 = acc_1;
+    return (((_e50 * y_4) * r_13) + r_13);
 }
 
 float fur_wrap_angle(float x_2) {
@@ -652,9 +656,9 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float b_3 = dot(wr, un);
     float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
-    float y_4 = dot(un, cross(wi, wr));
+    float y_5 = dot(un, cross(wi, wr));
     float x_12 = (dot(wi, wr) - (a_6 * b_3));
-    float _e64 = fur_atan2_(y_4, x_12);
+    float _e64 = fur_atan2_(y_5, x_12);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -1455,9 +1459,9 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
     float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
     float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p_2 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
+    float p_3 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
     float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p_2 * _e70);
+    float pg = (p_3 * _e70);
     float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
     return _e76;
 }
@@ -1648,9 +1652,51 @@ FurLoc fur_dual_theta(float theta) {
     return FurLoc(k_12, (_e21 - float(k_12)));
 }
 
+vec3 fur_rsqrt_newton(vec3 v_1) {
+    vec3 y_2 = vec3(0.0);
+    y_2 = uintBitsToFloat((uvec3(1597463174u) - (floatBitsToUint(v_1) >> uvec3(1u))));
+    vec3 h_3 = (0.5 * v_1);
+    vec3 _e12 = y_2;
+    vec3 _e13 = y_2;
+    vec3 _e15 = y_2;
+    y_2 = (_e12 * (vec3(1.5) - ((h_3 * _e13) * _e15)));
+    vec3 _e21 = y_2;
+    vec3 _e22 = y_2;
+    vec3 _e24 = y_2;
+    y_2 = (_e21 * (vec3(1.5) - ((h_3 * _e22) * _e24)));
+    vec3 _e30 = y_2;
+    vec3 _e31 = y_2;
+    vec3 _e33 = y_2;
+    return (_e30 * (vec3(1.5) - ((h_3 * _e31) * _e33)));
+}
+
+vec3 fur_exp_neg(vec3 x_in) {
+    vec3 p_1 = vec3(0.00019875693);
+    vec3 x_13 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_13 = roundEven((x_13 * FUR_LOG2_E));
+    vec3 r_15 = (((k_13 * FUR_LN2_HI) - x_13) + (k_13 * FUR_LN2_LO));
+    vec3 z_1 = (r_15 * r_15);
+    vec3 _e20 = p_1;
+    p_1 = ((_e20 * r_15) + vec3(0.0013981999));
+    vec3 _e25 = p_1;
+    p_1 = ((_e25 * r_15) + vec3(0.008333452));
+    vec3 _e30 = p_1;
+    p_1 = ((_e30 * r_15) + vec3(0.041665796));
+    vec3 _e35 = p_1;
+    p_1 = ((_e35 * r_15) + vec3(0.16666666));
+    vec3 _e40 = p_1;
+    p_1 = ((_e40 * r_15) + vec3(0.5));
+    vec3 _e45 = p_1;
+    vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
+    return mix(ldexp(e, -(ivec3(k_13))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+}
+
 vec3 fur_dual_gauss(vec3 d_6, vec3 v_in) {
-    vec3 v_2 = max(v_in, vec3(3e-6));
-    return (exp(-(((d_6 * d_6) / (2.0 * v_2)))) / sqrt((FUR_TAU * v_2)));
+    vec3 v_3 = clamp(v_in, vec3(3e-6), vec3(1e30));
+    vec3 _e7 = fur_rsqrt_newton(v_3);
+    vec3 z_2 = (d_6 * _e7);
+    vec3 _e12 = fur_exp_neg(((0.5 * z_2) * z_2));
+    return ((_e12 * _e7) * FUR_INV_SQRT_TAU);
 }
 
 float fur_dual_clean(float x_10, float top) {
@@ -1697,12 +1743,12 @@ void fur_store(uint q, FurFamilies f_2) {
     return;
 }
 
-void fur_store_rgb(uint q_1, vec3 v_1) {
+void fur_store_rgb(uint q_1, vec3 v_2) {
     uint k_10 = 3u;
     uint base_2 = (16u * q_1);
-    _group_0_binding_2_cs[base_2] = v_1.x;
-    _group_0_binding_2_cs[(base_2 + 1u)] = v_1.y;
-    _group_0_binding_2_cs[(base_2 + 2u)] = v_1.z;
+    _group_0_binding_2_cs[base_2] = v_2.x;
+    _group_0_binding_2_cs[(base_2 + 1u)] = v_2.y;
+    _group_0_binding_2_cs[(base_2 + 2u)] = v_2.z;
     bool loop_init_17 = true;
     while(true) {
         if (!loop_init_17) {

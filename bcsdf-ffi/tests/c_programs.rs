@@ -442,24 +442,56 @@ fn tools_required() -> bool {
     std::env::var_os("FUR_BCSDF_REQUIRE_TOOLS").is_some()
 }
 
+/// The four clients (eval.c, eval.cpp, dual.c, dual.cpp), compiled into one folder.
+struct Clients {
+    eval: PathBuf,
+    eval_cpp: PathBuf,
+    dual: PathBuf,
+    dual_cpp: PathBuf,
+}
+
+impl Clients {
+    /// Compiles the four clients into `dir` with `c_flags` (cc) and `cpp_flags` (c++).
+    fn build(dir: &Path, c_flags: &[&str], cpp_flags: &[&str]) -> Clients {
+        let lib = &fixture().lib;
+        let one = |compiler: &str, flags: &[&str], source: &str, name: &str| {
+            let exe = dir.join(name);
+            compile(
+                compiler,
+                flags,
+                &manifest().join("tests/c").join(source),
+                lib,
+                &exe,
+            );
+            exe
+        };
+        Clients {
+            eval: one("cc", c_flags, "eval.c", "eval"),
+            eval_cpp: one("c++", cpp_flags, "eval.cpp", "eval_cpp"),
+            dual: one("cc", c_flags, "dual.c", "dual"),
+            dual_cpp: one("c++", cpp_flags, "dual.cpp", "dual_cpp"),
+        }
+    }
+
+    /// Runs each client on the fixture's files through `run` (the program and its
+    /// arguments: plainly, under Valgrind, with the sanitizers' options) and checks its
+    /// output against the Rust API.
+    fn check(&self, run: impl Fn(&Path, &[PathBuf]) -> Output) {
+        let f = fixture();
+        let (lut, small, dual) = (f.lut_path(), f.small_path(), f.dual_path());
+        check_c_output(&run(&self.eval, &[lut.clone(), small.clone()]), &f.blob);
+        check_cpp_output(&run(&self.eval_cpp, std::slice::from_ref(&lut)), &f.blob);
+        check_dual_c_output(&run(&self.dual, &[dual.clone(), lut, small]), &f.dual);
+        check_dual_cpp_output(&run(&self.dual_cpp, &[dual]), &f.dual);
+    }
+}
+
 #[test]
 fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
     let f = fixture();
     let dir = tempfile::tempdir().unwrap();
-    let c_exe = dir.path().join("eval");
-    compile(
-        "cc",
-        &C_FLAGS,
-        &manifest().join("tests/c/eval.c"),
-        &f.lib,
-        &c_exe,
-    );
-    let run = Command::new(&c_exe)
-        .arg(f.lut_path())
-        .arg(f.small_path())
-        .output()
-        .unwrap();
-    check_c_output(&run, &f.blob);
+    Clients::build(dir.path(), &C_FLAGS, &CPP_FLAGS)
+        .check(|exe, args| Command::new(exe).args(args).output().unwrap());
 
     // The README's example compiles as C99 and refuses a non-LUT with a status message.
     let example = dir.path().join("shade");
@@ -475,43 +507,6 @@ fn c_and_cpp_clients_agree_with_rust_bit_for_bit() {
     assert!(
         String::from_utf8_lossy(&run.stderr).contains("LUT refused: the LUT bytes are truncated")
     );
-
-    let cpp_exe = dir.path().join("eval_cpp");
-    compile(
-        "c++",
-        &CPP_FLAGS,
-        &manifest().join("tests/c/eval.cpp"),
-        &f.lib,
-        &cpp_exe,
-    );
-    let run = Command::new(&cpp_exe).arg(f.lut_path()).output().unwrap();
-    check_cpp_output(&run, &f.blob);
-
-    let (dual_exe, dual_cpp_exe) = (dir.path().join("dual"), dir.path().join("dual_cpp"));
-    compile(
-        "cc",
-        &C_FLAGS,
-        &manifest().join("tests/c/dual.c"),
-        &f.lib,
-        &dual_exe,
-    );
-    let run = Command::new(&dual_exe)
-        .args([f.dual_path(), f.lut_path(), f.small_path()])
-        .output()
-        .unwrap();
-    check_dual_c_output(&run, &f.dual);
-    compile(
-        "c++",
-        &CPP_FLAGS,
-        &manifest().join("tests/c/dual.cpp"),
-        &f.lib,
-        &dual_cpp_exe,
-    );
-    let run = Command::new(&dual_cpp_exe)
-        .arg(f.dual_path())
-        .output()
-        .unwrap();
-    check_dual_cpp_output(&run, &f.dual);
 }
 
 #[test]
@@ -525,28 +520,12 @@ fn c_and_cpp_clients_are_clean_under_valgrind_memcheck() {
         eprintln!("skipped: valgrind is not installed");
         return;
     }
-    let f = fixture();
     let dir = tempfile::tempdir().unwrap();
-    let (c_exe, cpp_exe) = (dir.path().join("eval"), dir.path().join("eval_cpp"));
     let c_flags: Vec<&str> = C_FLAGS.iter().copied().chain(["-g"]).collect();
     let cpp_flags: Vec<&str> = CPP_FLAGS.iter().copied().chain(["-g"]).collect();
-    compile(
-        "cc",
-        &c_flags,
-        &manifest().join("tests/c/eval.c"),
-        &f.lib,
-        &c_exe,
-    );
-    compile(
-        "c++",
-        &cpp_flags,
-        &manifest().join("tests/c/eval.cpp"),
-        &f.lib,
-        &cpp_exe,
-    );
     // Any memcheck error (invalid read or write, uninitialised value used, bad free,
     // a definite or indirect leak) exits with 99.
-    let memcheck = |exe: &Path, args: &[PathBuf]| {
+    Clients::build(dir.path(), &c_flags, &cpp_flags).check(|exe, args| {
         Command::new("valgrind")
             .args([
                 "--tool=memcheck",
@@ -559,37 +538,13 @@ fn c_and_cpp_clients_are_clean_under_valgrind_memcheck() {
             .args(args)
             .output()
             .unwrap()
-    };
-    check_c_output(&memcheck(&c_exe, &[f.lut_path(), f.small_path()]), &f.blob);
-    check_cpp_output(&memcheck(&cpp_exe, &[f.lut_path()]), &f.blob);
-
-    let (dual_exe, dual_cpp_exe) = (dir.path().join("dual"), dir.path().join("dual_cpp"));
-    compile(
-        "cc",
-        &c_flags,
-        &manifest().join("tests/c/dual.c"),
-        &f.lib,
-        &dual_exe,
-    );
-    compile(
-        "c++",
-        &cpp_flags,
-        &manifest().join("tests/c/dual.cpp"),
-        &f.lib,
-        &dual_cpp_exe,
-    );
-    check_dual_c_output(
-        &memcheck(&dual_exe, &[f.dual_path(), f.lut_path(), f.small_path()]),
-        &f.dual,
-    );
-    check_dual_cpp_output(&memcheck(&dual_cpp_exe, &[f.dual_path()]), &f.dual);
+    });
 }
 
 #[test]
 fn c_and_cpp_clients_are_clean_under_address_and_undefined_sanitizers() {
     let f = fixture();
     let dir = tempfile::tempdir().unwrap();
-    let (c_exe, cpp_exe) = (dir.path().join("eval"), dir.path().join("eval_cpp"));
     let sanitize = [
         "-g",
         "-fsanitize=address,undefined",
@@ -597,12 +552,13 @@ fn c_and_cpp_clients_are_clean_under_address_and_undefined_sanitizers() {
         "-fno-omit-frame-pointer",
     ];
     let c_flags: Vec<&str> = C_FLAGS.iter().chain(&sanitize).copied().collect();
+    // Whether the compiler has the sanitizer runtimes at all.
     let out = try_compile(
         "cc",
         &c_flags,
         &manifest().join("tests/c/eval.c"),
         &f.lib,
-        &c_exe,
+        &dir.path().join("probe"),
     );
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
@@ -615,15 +571,8 @@ fn c_and_cpp_clients_are_clean_under_address_and_undefined_sanitizers() {
         return;
     }
     let cpp_flags: Vec<&str> = CPP_FLAGS.iter().chain(&sanitize).copied().collect();
-    compile(
-        "c++",
-        &cpp_flags,
-        &manifest().join("tests/c/eval.cpp"),
-        &f.lib,
-        &cpp_exe,
-    );
     // Any report stops the program with a failing status.
-    let run = |exe: &Path, args: &[PathBuf]| {
+    Clients::build(dir.path(), &c_flags, &cpp_flags).check(|exe, args| {
         Command::new(exe)
             .args(args)
             .env("ASAN_OPTIONS", "detect_leaks=1:halt_on_error=1:exitcode=98")
@@ -633,28 +582,5 @@ fn c_and_cpp_clients_are_clean_under_address_and_undefined_sanitizers() {
             )
             .output()
             .unwrap()
-    };
-    check_c_output(&run(&c_exe, &[f.lut_path(), f.small_path()]), &f.blob);
-    check_cpp_output(&run(&cpp_exe, &[f.lut_path()]), &f.blob);
-
-    let (dual_exe, dual_cpp_exe) = (dir.path().join("dual"), dir.path().join("dual_cpp"));
-    compile(
-        "cc",
-        &c_flags,
-        &manifest().join("tests/c/dual.c"),
-        &f.lib,
-        &dual_exe,
-    );
-    compile(
-        "c++",
-        &cpp_flags,
-        &manifest().join("tests/c/dual.cpp"),
-        &f.lib,
-        &dual_cpp_exe,
-    );
-    check_dual_c_output(
-        &run(&dual_exe, &[f.dual_path(), f.lut_path(), f.small_path()]),
-        &f.dual,
-    );
-    check_dual_cpp_output(&run(&dual_cpp_exe, &[f.dual_path()]), &f.dual);
+    });
 }

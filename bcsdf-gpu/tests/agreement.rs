@@ -8,54 +8,21 @@
 //! Without an adapter the tests print "skipped: no GPU adapter" and pass, unless
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
 
-use bake::profiles::{build_model, scale_budget, ProfileOptions};
+mod common;
+
 use bcsdf_core::baked::BakedBcsdf;
-use bcsdf_core::lut::LutResolution;
-use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
-use bcsdf_core::{presets, Angles, Bcsdf, Closure, FurParams, FurParamsInput};
-use bcsdf_gpu::{GpuError, GpuFamilies, GpuLut};
+use bcsdf_core::{presets, Angles, Bcsdf, Closure};
+use bcsdf_gpu::{GpuFamilies, GpuLut};
+use common::{or_skip, preset_lut};
 use std::f32::consts::{FRAC_PI_2, PI};
-use std::path::PathBuf;
 
 const RELATIVE: f32 = 1e-5;
 /// The pdf's bound within 1e-2 rad of the poles, where p/cos θ_i magnifies a last-bit
 /// difference in π/2 − |θ_i| or a sampled direction: 2.8e-6 measured on llvmpipe; 5.4e-4
 /// (and 1.9e-4 for the samples' pdfs) while the shader let the compiler fold π/2's low part.
 const POLE_RELATIVE: f32 = 1e-4;
-
-/// The preset's LUT in `closure` (the energy closure reads the LUT's 1/Z_g table).
-fn lut(name: &str, closure: Closure) -> Vec<u8> {
-    let preset = presets::find(name).unwrap();
-    let input = FurParamsInput {
-        closure,
-        ..preset.input
-    };
-    let opts = ProfileOptions {
-        budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
-        cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
-        ..ProfileOptions::default()
-    };
-    let (model, _) = build_model(FurParams::new(&input).unwrap(), &opts).unwrap();
-    bake::tables::bake(&model, &input, LutResolution::DEFAULT)
-}
-
-/// The GPU LUT, or None (after printing why) when the machine has no adapter and the GPU is
-/// not required.
-fn gpu(bytes: &[u8], wgsl: &str) -> Option<GpuLut> {
-    match GpuLut::with_shader(bytes, wgsl) {
-        Ok(g) => Some(g),
-        Err(e @ GpuError::NoAdapter(_)) => {
-            if std::env::var("FUR_BCSDF_REQUIRE_GPU").as_deref() == Ok("1") {
-                panic!("FUR_BCSDF_REQUIRE_GPU=1 but {e}");
-            }
-            println!("skipped: no GPU adapter ({e})");
-            None
-        }
-        Err(e) => panic!("{e}"),
-    }
-}
 
 fn queries() -> Vec<[f32; 3]> {
     let mut q = Vec::new();
@@ -140,8 +107,8 @@ fn gpu_matches_cpu_for_every_preset() {
         .flat_map(|p| Closure::ALL.map(|c| (p, c)))
     {
         println!("{} in the {closure:?} closure:", preset.name);
-        let bytes = lut(preset.name, closure);
-        let Some(g) = gpu(&bytes, FUR_BCSDF_WGSL) else {
+        let bytes = preset_lut(preset.name, closure);
+        let Some(g) = or_skip(GpuLut::with_shader(&bytes, FUR_BCSDF_WGSL)) else {
             return;
         };
         let cpu_lut = BakedBcsdf::from_bytes(&bytes).unwrap();
@@ -216,13 +183,13 @@ fn gpu_matches_cpu_for_every_preset() {
 
 #[test]
 fn an_off_by_one_table_index_is_caught() {
-    let bytes = lut("human-hair", Closure::Report);
+    let bytes = preset_lut("human-hair", Closure::Report);
     let wrong = FUR_BCSDF_WGSL.replace(
         "let b = fur_half(m0 + 3u * (lm.i + 1u) + ch);",
         "let b = fur_half(m0 + 3u * (lm.i + 2u) + ch);",
     );
     assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation applies");
-    let Some(g) = gpu(&bytes, &wrong) else {
+    let Some(g) = or_skip(GpuLut::with_shader(&bytes, &wrong)) else {
         return;
     };
     let cpu_lut = BakedBcsdf::from_bytes(&bytes).unwrap();
@@ -244,8 +211,8 @@ fn gpu_pdf_and_samples_match_cpu() {
         .flat_map(|p| Closure::ALL.map(|c| (p, c)))
     {
         println!("{} in the {closure:?} closure:", preset.name);
-        let bytes = lut(preset.name, closure);
-        let Some(g) = gpu(&bytes, FUR_BCSDF_WGSL) else {
+        let bytes = preset_lut(preset.name, closure);
+        let Some(g) = or_skip(GpuLut::with_shader(&bytes, FUR_BCSDF_WGSL)) else {
             return;
         };
         let cpu_lut = BakedBcsdf::from_bytes(&bytes).unwrap();

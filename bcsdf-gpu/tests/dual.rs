@@ -13,17 +13,16 @@
 //! Without an adapter the tests print "skipped: no GPU adapter" and pass, unless
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
 
-use bake::profiles::{build_model, scale_budget, ProfileOptions};
+mod common;
+
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
-use bcsdf_core::lut::LutResolution;
-use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
-use bcsdf_core::{presets, Angles, FurParams};
+use bcsdf_core::{presets, Angles};
 use bcsdf_gpu::{DualDirsQuery, DualQuery, GpuDual, GpuError};
+use common::{or_skip, preset_lut};
 use std::f32::consts::{FRAC_PI_2, PI};
-use std::path::PathBuf;
 
 const RELATIVE: f32 = 1e-5;
 
@@ -57,14 +56,7 @@ const DENSITIES: [Density; 5] = [
 /// The preset's baked LUT (a small photon budget, profiles cached like `tests/agreement.rs`)
 /// and its `.furdual` blob (tables from the LUT at a 32 × 16 quadrature, `Coat`).
 fn lut_and_blob(name: &str) -> (Vec<u8>, Vec<u8>) {
-    let preset = presets::find(name).unwrap();
-    let opts = ProfileOptions {
-        budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
-        cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
-        ..ProfileOptions::default()
-    };
-    let (model, _) = build_model(FurParams::new(&preset.input).unwrap(), &opts).unwrap();
-    let bytes = bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT);
+    let bytes = preset_lut(name, presets::find(name).unwrap().input.closure);
     let baked = BakedBcsdf::from_bytes(&bytes).unwrap();
     let mut tables = Box::new(DualTables::ZERO);
     tables.compute(
@@ -76,22 +68,6 @@ fn lut_and_blob(name: &str) -> (Vec<u8>, Vec<u8>) {
     );
     let blob = encode(&tables, Attenuation::Coat, 0).to_vec();
     (bytes, blob)
-}
-
-/// The GPU evaluator, or None (after printing why) when the machine has no adapter and the
-/// GPU is not required.
-fn gpu(blob: &[u8], wgsl: &str) -> Option<GpuDual> {
-    match GpuDual::with_shader(blob, wgsl) {
-        Ok(g) => Some(g),
-        Err(e @ GpuError::NoAdapter(_)) => {
-            if std::env::var("FUR_BCSDF_REQUIRE_GPU").as_deref() == Ok("1") {
-                panic!("FUR_BCSDF_REQUIRE_GPU=1 but {e}");
-            }
-            println!("skipped: no GPU adapter ({e})");
-            None
-        }
-        Err(e) => panic!("{e}"),
-    }
 }
 
 fn angle_queries() -> Vec<DualQuery> {
@@ -230,7 +206,7 @@ fn worst(cpu: &[[f32; 3]], gpu: &[[f32; 3]]) -> (f32, usize, f32) {
 fn gpu_dual_matches_cpu() {
     for name in ["dog", "human-hair"] {
         let (bytes, blob) = lut_and_blob(name);
-        let Some(g) = gpu(&blob, FUR_BCSDF_WGSL) else {
+        let Some(g) = or_skip(GpuDual::with_shader(&blob, FUR_BCSDF_WGSL)) else {
             return;
         };
         let baked = BakedBcsdf::from_bytes(&bytes).unwrap();
@@ -303,7 +279,7 @@ fn a_perturbed_constant_is_caught() {
         "const FUR_LN2: f32 = 0.693216497;",
     );
     assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation applies");
-    let Some(g) = gpu(&blob, &wrong) else {
+    let Some(g) = or_skip(GpuDual::with_shader(&blob, &wrong)) else {
         return;
     };
     let mut lut = Box::new(DualLut::EMPTY);

@@ -1,0 +1,43 @@
+//! What the GPU tests (`agreement.rs`, `dual.rs`) share: a preset's LUT at test size and the
+//! rule for a machine without an adapter.
+
+use bake::profiles::{build_model, scale_budget, ProfileOptions};
+use bcsdf_core::lut::LutResolution;
+use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::{presets, Closure, FurParams, FurParamsInput};
+use bcsdf_gpu::GpuError;
+use std::path::PathBuf;
+
+/// The preset's LUT in `closure` at the default resolution, from medulla profiles at 2 % of
+/// the default photon budget (cached in the target folder across test runs).
+pub fn preset_lut(name: &str, closure: Closure) -> Vec<u8> {
+    let preset = presets::find(name).unwrap();
+    let input = FurParamsInput {
+        closure,
+        ..preset.input
+    };
+    let opts = ProfileOptions {
+        budget: scale_budget(PhotonBudget::DEFAULT, 0.02).unwrap(),
+        cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
+        ..ProfileOptions::default()
+    };
+    let (model, _) = build_model(FurParams::new(&input).unwrap(), &opts).unwrap();
+    bake::tables::bake(&model, &input, LutResolution::DEFAULT)
+}
+
+/// The GPU evaluator `made` built, or None (after printing why) when the machine has no
+/// adapter and the GPU is not required (`FUR_BCSDF_REQUIRE_GPU=1`, set by `.ci/run`, makes
+/// a missing adapter a failure). Any other error fails the test.
+pub fn or_skip<T>(made: Result<T, GpuError>) -> Option<T> {
+    match made {
+        Ok(g) => Some(g),
+        Err(e @ GpuError::NoAdapter(_)) => {
+            if std::env::var("FUR_BCSDF_REQUIRE_GPU").as_deref() == Ok("1") {
+                panic!("FUR_BCSDF_REQUIRE_GPU=1 but {e}");
+            }
+            println!("skipped: no GPU adapter ({e})");
+            None
+        }
+        Err(e) => panic!("{e}"),
+    }
+}

@@ -304,10 +304,10 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         &self.header
     }
 
-    /// The LUT's checksum ([`lut::checksum`], docs/lut.md "Header"): FNV-1a 64 of every byte
-    /// but the checksum field, read from the header, which [`BakedBcsdf::from_bytes`] checked
-    /// against the bytes. What a `.furdual` blob records as its source
-    /// ([`crate::dual::DualLut::check_lut`]).
+    /// The LUT's checksum ([`lut::checksum`], docs/lut.md "Byte layout and validation"):
+    /// FNV-1a 64 of every byte but the checksum field, read from the header, which
+    /// [`BakedBcsdf::from_bytes`] checked against the bytes. What a `.furdual` blob records as
+    /// its source ([`crate::dual::DualLut::check_lut`]).
     #[must_use]
     pub fn checksum(&self) -> u64 {
         let field = self.blob.get(lut::CHECKSUM).unwrap_or(&[]);

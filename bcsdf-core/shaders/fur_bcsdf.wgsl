@@ -1105,7 +1105,8 @@ fn fur_dual_field(l: FurLoc, f: u32) -> vec3<f32> {
     return a + (b - a) * l.w;
 }
 
-// N^G of family g at the theta and |phi| positions (DualLut::n_g): bilinear, |phi| first.
+// N^G of family g at the theta and |phi| positions (DualLut::n_g): bilinear, the four
+// corners weighted as dual's bilinear_weights does, summed in the same order.
 fn fur_dual_ng(g: u32, l: FurLoc, p: FurLoc) -> vec3<f32> {
     let row0 = (g * FUR_DUAL_THETA_NODES + l.i) * FUR_DUAL_PHI_NODES + p.i;
     let row1 = row0 + FUR_DUAL_PHI_NODES;
@@ -1113,9 +1114,9 @@ fn fur_dual_ng(g: u32, l: FurLoc, p: FurLoc) -> vec3<f32> {
     let t01 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * (row0 + 1u));
     let t10 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * row1);
     let t11 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * (row1 + 1u));
-    let lo = t00 + (t01 - t00) * p.w;
-    let hi = t10 + (t11 - t10) * p.w;
-    return lo + (hi - lo) * l.w;
+    let w = l.w;
+    let v = p.w;
+    return (1.0 - w) * (1.0 - v) * t00 + (1.0 - w) * v * t01 + w * (1.0 - v) * t10 + w * v * t11;
 }
 
 // 1/sqrt(v) for normal v > 0, the operations of math::rsqrt_newton on the CPU: the

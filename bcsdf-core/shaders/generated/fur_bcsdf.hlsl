@@ -2003,9 +2003,9 @@ float3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p)
     const float3 _e24 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row0_ + 1u))));
     const float3 _e29 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row1_)));
     const float3 _e36 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row1_ + 1u))));
-    float3 lo_4 = (_e17 + ((_e24 - _e17) * p.w));
-    float3 hi_3 = (_e29 + ((_e36 - _e29) * p.w));
-    return (lo_4 + ((hi_3 - lo_4) * l_5.w));
+    float w_6 = l_5.w;
+    float v_3 = p.w;
+    return ((((((1.0 - w_6) * (1.0 - v_3)) * _e17) + (((1.0 - w_6) * v_3) * _e24)) + ((w_6 * (1.0 - v_3)) * _e29)) + ((w_6 * v_3) * _e36));
 }
 
 float3 fur_rsqrt_newton(float3 v_1)
@@ -2061,8 +2061,8 @@ float3 fur_exp_neg(float3 x_in)
 
 float3 fur_dual_gauss(float3 d_6, float3 v_in)
 {
-    float3 v_3 = clamp(v_in, (3e-6).xxx, (1e30).xxx);
-    const float3 _e7 = fur_rsqrt_newton(v_3);
+    float3 v_4 = clamp(v_in, (3e-6).xxx, (1e30).xxx);
+    const float3 _e7 = fur_rsqrt_newton(v_4);
     float3 z_2 = (d_6 * _e7);
     const float3 _e12 = fur_exp_neg(((0.5 * z_2) * z_2));
     return ((_e12 * _e7) * FUR_INV_SQRT_TAU);
@@ -2156,9 +2156,9 @@ float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fib
                     const float3 _e114 = fur_dual_field(_e28, (FUR_DUAL_SD + _e112));
                     uint _e115 = g_6;
                     const float3 _e116 = fur_dual_ng(_e115, _e28, at_phi);
-                    float3 v_4 = ((_e114 * _e114) + s2f);
+                    float3 v_5 = ((_e114 * _e114) + s2f);
                     float3 _e119 = f_s;
-                    const float3 _e122 = fur_dual_gauss(((x_14).xxx - _e110), v_4);
+                    const float3 _e122 = fur_dual_gauss(((x_14).xxx - _e110), v_5);
                     f_s = (_e119 + (_e116 * _e122));
                 }
             }

@@ -2055,9 +2055,9 @@ metal::float3 fur_dual_ng(
     metal::float3 _e24 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * (row0_ + 1u)), fur_dual, _buffer_sizes);
     metal::float3 _e29 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * row1_), fur_dual, _buffer_sizes);
     metal::float3 _e36 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * (row1_ + 1u)), fur_dual, _buffer_sizes);
-    metal::float3 lo_4 = _e17 + ((_e24 - _e17) * p.w);
-    metal::float3 hi_3 = _e29 + ((_e36 - _e29) * p.w);
-    return lo_4 + ((hi_3 - lo_4) * l_5.w);
+    float w_6 = l_5.w;
+    float v_3 = p.w;
+    return (((((1.0 - w_6) * (1.0 - v_3)) * _e17) + (((1.0 - w_6) * v_3) * _e24)) + ((w_6 * (1.0 - v_3)) * _e29)) + ((w_6 * v_3) * _e36);
 }
 
 metal::float3 fur_rsqrt_newton(
@@ -2115,8 +2115,8 @@ metal::float3 fur_dual_gauss(
     metal::float3 d_6,
     metal::float3 v_in
 ) {
-    metal::float3 v_3 = metal::clamp(v_in, metal::float3(0.000003), metal::float3(1000000000000000000000000000000.0));
-    metal::float3 _e7 = fur_rsqrt_newton(v_3);
+    metal::float3 v_4 = metal::clamp(v_in, metal::float3(0.000003), metal::float3(1000000000000000000000000000000.0));
+    metal::float3 _e7 = fur_rsqrt_newton(v_4);
     metal::float3 z_2 = d_6 * _e7;
     metal::float3 _e12 = fur_exp_neg((0.5 * z_2) * z_2);
     return (_e12 * _e7) * FUR_INV_SQRT_TAU;
@@ -2218,9 +2218,9 @@ metal::float3 fur_eval_dual(
                     metal::float3 _e114 = fur_dual_field(_e28, FUR_DUAL_SD + _e112, fur_dual, _buffer_sizes);
                     uint _e115 = g_6;
                     metal::float3 _e116 = fur_dual_ng(_e115, _e28, at_phi, fur_dual, _buffer_sizes);
-                    metal::float3 v_4 = (_e114 * _e114) + s2f;
+                    metal::float3 v_5 = (_e114 * _e114) + s2f;
                     metal::float3 _e119 = f_s;
-                    metal::float3 _e122 = fur_dual_gauss(metal::float3(x_14) - _e110, v_4);
+                    metal::float3 _e122 = fur_dual_gauss(metal::float3(x_14) - _e110, v_5);
                     f_s = _e119 + (_e116 * _e122);
                 }
             }

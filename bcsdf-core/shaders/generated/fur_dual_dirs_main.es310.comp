@@ -811,9 +811,9 @@ vec3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p) {
     vec3 _e24 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row0_ + 1u))));
     vec3 _e29 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row1_)));
     vec3 _e36 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row1_ + 1u))));
-    vec3 lo_4 = (_e17 + ((_e24 - _e17) * p.w));
-    vec3 hi_3 = (_e29 + ((_e36 - _e29) * p.w));
-    return (lo_4 + ((hi_3 - lo_4) * l_5.w));
+    float w_4 = l_5.w;
+    float v_3 = p.w;
+    return ((((((1.0 - w_4) * (1.0 - v_3)) * _e17) + (((1.0 - w_4) * v_3) * _e24)) + ((w_4 * (1.0 - v_3)) * _e29)) + ((w_4 * v_3) * _e36));
 }
 
 vec3 fur_rsqrt_newton(vec3 v_1) {
@@ -856,8 +856,8 @@ vec3 fur_exp_neg(vec3 x_in) {
 }
 
 vec3 fur_dual_gauss(vec3 d_6, vec3 v_in) {
-    vec3 v_3 = clamp(v_in, vec3(3e-6), vec3(1e30));
-    vec3 _e7 = fur_rsqrt_newton(v_3);
+    vec3 v_4 = clamp(v_in, vec3(3e-6), vec3(1e30));
+    vec3 _e7 = fur_rsqrt_newton(v_4);
     vec3 z_2 = (d_6 * _e7);
     vec3 _e12 = fur_exp_neg(((0.5 * z_2) * z_2));
     return ((_e12 * _e7) * FUR_INV_SQRT_TAU);
@@ -944,9 +944,9 @@ vec3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fiber
                     vec3 _e114 = fur_dual_field(_e28, (FUR_DUAL_SD + _e112));
                     uint _e115 = g_6;
                     vec3 _e116 = fur_dual_ng(_e115, _e28, at_phi);
-                    vec3 v_4 = ((_e114 * _e114) + s2f);
+                    vec3 v_5 = ((_e114 * _e114) + s2f);
                     vec3 _e119 = f_s;
-                    vec3 _e122 = fur_dual_gauss((vec3(x_13) - _e110), v_4);
+                    vec3 _e122 = fur_dual_gauss((vec3(x_13) - _e110), v_5);
                     f_s = (_e119 + (_e116 * _e122));
                 }
             }

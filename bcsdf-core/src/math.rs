@@ -244,6 +244,34 @@ pub fn rsqrt_newton(x: f32) -> f32 {
     y * (1.5 - half * y * y)
 }
 
+/// erf x in plain f32 arithmetic, for lane loops ([`crate::dual`]) and its WGSL twin
+/// (`shaders/fur_bcsdf.wgsl`, `fur_erf`): Abramowitz and Stegun 7.1.26,
+/// erf |x| = 1 − (a₁t + a₂t² + a₃t³ + a₄t⁴ + a₅t⁵)·e^(−x²), t = 1/(1 + p|x|), whose error is
+/// at most 1.5e-7, and the sign of x put back (erf is odd). Within 1e-6 of erf x in f32
+/// (6.5e-7 measured by the crate's unit test: the rounding of 1 − poly·e^(−x²)); one division, [`exp_neg_saturating`] and no branch.
+/// NaN gives a value in [−1, 1], never NaN.
+#[inline(always)]
+#[must_use]
+pub fn erf_polynomial(x: f32) -> f32 {
+    const P: f32 = 0.327_591_1;
+    const A: [f32; 5] = [
+        0.254_829_6,
+        -0.284_496_74,
+        1.421_413_7,
+        -1.453_152,
+        1.061_405_4,
+    ];
+    // max/min, not clamp or abs: NaN becomes 0 here. |x| ≤ 10 loses nothing (erf 10 = 1 in
+    // f32) and keeps x² finite.
+    #[allow(clippy::manual_clamp)]
+    let a = x.max(-x).max(0.0).min(10.0);
+    let t = 1.0 / (1.0 + P * a);
+    let poly = ((((A[4] * t + A[3]) * t + A[2]) * t + A[1]) * t + A[0]) * t;
+    let e = 1.0 - poly * exp_neg_saturating(a * a);
+    // The sign bit of x onto e ≥ 0.
+    f32::from_bits(e.to_bits() | (x.to_bits() & 0x8000_0000))
+}
+
 /// The polynomial of [`exp_neg_polynomial`] for x ∈ [0, 87].
 #[inline(always)]
 fn exp_neg_reduced(x: f32) -> f32 {

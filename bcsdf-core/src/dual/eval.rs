@@ -3,12 +3,16 @@
 //! (lerps, the six Gaussians) runs as straight-line lane loops.
 
 use super::blob::{A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, SD, SIGMA_B0};
-use super::{theta_position, Density, DualLut, MAX_FIBERS, MIN_VARIANCE, PHI_NODES};
+use super::coat::{backscatter_factor, downward_flux, reflectance_squared};
+use super::{theta_position, Density, DualLut, Fibers, MIN_VARIANCE, PHI_NODES};
 use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::FAMILY_COUNT;
-use crate::math::{cos_within_half_pi, exp_neg_saturating, rsqrt_newton, wrap_angle, Libm, PI};
+use crate::math::{
+    cos_within_half_pi, erf_polynomial, exp_neg_saturating, rsqrt_newton, wrap_angle, Libm, PI,
+};
 use crate::model::inv_cos2_theta_i;
 use crate::spectrum::Rgb;
+use core::f32::consts::{FRAC_1_SQRT_2, LN_2};
 
 type Lanes = [f32; 4];
 
@@ -30,18 +34,45 @@ fn bilinear_weights(w: f32, v: f32) -> [f32; 4] {
 /// 1/√(2π).
 const INV_SQRT_TAU: f32 = 0.398_942_3;
 
-/// The normalised Gaussian G(d; √v) = e^(−d²/2v)/√(2πv) per lane, v kept in
-/// [[`MIN_VARIANCE`], 1e30]: with s = 1/√v ([`rsqrt_newton`]), e^(−(ds)²/2)·s/√(2π), no
-/// division or square root, so the lane loop vectorises.
+/// Lower bound of the mass [`gauss_reachable`] divides by: a lobe centred far outside the
+/// reachable range is not blown up.
+const MIN_REACHABLE_MASS: f32 = 0.05;
+
+/// The normalised Gaussian G(d; √v) = e^(−d²/2v)/√(2πv) per lane, divided by its mass over
+/// the x = θ_i + θ_r the caller can reach (θ_i ∈ [−π/2, π/2]), given d = x − mean at
+/// `ti` = θ_i. v is kept in [[`MIN_VARIANCE`], 1e30]; with s = 1/√v ([`rsqrt_newton`]),
+/// G = e^(−(ds)²/2)·s/√(2π), and the mass is ½(erf z₊ − erf z₋), z_± = (d − θ_i ± π/2)·s/√2
+/// ([`erf_polynomial`]), kept at or above [`MIN_REACHABLE_MASS`]. No square root, no branch:
+/// the lane loop vectorises.
 #[inline(always)]
-fn gauss<const L: usize>(d: &[f32; L], v: &[f32; L]) -> [f32; L] {
+pub(super) fn gauss_reachable<const L: usize>(d: &[f32; L], v: &[f32; L], ti: f32) -> [f32; L] {
     let mut out = [0.0f32; L];
     for c in 0..L {
         let s = rsqrt_newton(v[c].clamp(MIN_VARIANCE, 1e30));
         let z = d[c] * s;
-        out[c] = exp_neg_saturating(0.5 * z * z) * s * INV_SQRT_TAU;
+        let g = exp_neg_saturating(0.5 * z * z) * s * INV_SQRT_TAU;
+        let centre = (d[c] - ti) * s * FRAC_1_SQRT_2;
+        let half_range = 0.5 * PI * s * FRAC_1_SQRT_2;
+        let mass =
+            0.5 * (erf_polynomial(centre + half_range) - erf_polynomial(centre - half_range));
+        out[c] = g / mass.max(MIN_REACHABLE_MASS);
     }
     out
+}
+
+/// μ = 2^(log₂ μ) and t = ā_f = √(ā_f²) of one channel from the stored fields, in lane
+/// arithmetic ([`exp_neg_saturating`], [`rsqrt_newton`]).
+#[inline(always)]
+fn decay_and_forward(log2_mu: f32, a_f2: f32) -> (f32, f32) {
+    let mu = power_of_decay(log2_mu, 1.0);
+    let a = a_f2.clamp(0.0, 1.0);
+    (mu, a * rsqrt_newton(a.max(1e-30)))
+}
+
+/// μᵏ = e^(−k·ln 2·(−log₂ μ)) for k ≥ 0 (log₂ μ ≤ 0).
+#[inline(always)]
+fn power_of_decay(log2_mu: f32, k: f32) -> f32 {
+    exp_neg_saturating(-k * LN_2 * log2_mu)
 }
 
 impl DualLut {
@@ -63,29 +94,30 @@ impl DualLut {
     /// The dual-scattering term to add to single scattering (docs/model.md §13), RGB, in S's
     /// units (the caller multiplies by cos θ_i and the light's radiance like S).
     ///
-    /// `fibers` is the number of fibers between the shading point and the light (the shadow
-    /// ray's count, or an engine's deep-opacity-map count; fractional values are allowed).
-    /// With V = clamp(1 − fibers, 0, 1) the fraction of direct light (what a shadow ray
-    /// gives), the shading is S·V + this term, which is
+    /// `fibers` holds n, the fibers between the shading point and the light (the shadow ray's
+    /// count, or an engine's deep-opacity-map count; fractional values are allowed), and m,
+    /// the fibers beyond the point along −ω_i (the coat below). With V = clamp(1 − n, 0, 1)
+    /// the fraction of direct light (what a shadow ray gives), the shading is S·V + this
+    /// term, which is
     ///
     /// V·d_b·f_back(0) + (T_f − V)·d_f·(f_s^scatter(σ_f²) + d_b·f_back(σ_f²)),
     ///
-    /// - T_f = μⁿ, μ the stored decay at −θ_i (the light's path leaves the fibers above at
-    ///   θ ≈ −θ_i), σ_f² = n·β_f²(−θ_i);
-    /// - f_s^scatter(s²) = Σ_g N^G_g(θ_r, φ)·G(x − mean_g; sd_g² + s²)/cos²θ_i, x = θ_i + θ_r;
-    /// - f_back(s²) = A·G(x − Δ_b; σ_b² + s²)/(π cos²θ_i), σ_b = (1 + d_b ā_f²)·σ_b0, A the
-    ///   stored back-half or front-half energy of the local backscatter at θ_r.
+    /// - T_f = μⁿ(1 − ρ²μ²ᵐ)/(1 − ρ²μ²⁽ⁿ⁺ᵐ⁾) ([`super::coat::downward_flux`]), μ the stored
+    ///   decay and ρ² from μ and ā_f, at −θ_i (the light's path leaves the fibers above at
+    ///   θ ≈ −θ_i); σ_f² = n·β_f²(−θ_i);
+    /// - f_s^scatter(s²) = Σ_g N^G_g(θ_r, φ)·Ĝ(x − mean_g; sd_g² + s²)/cos²θ_i, x = θ_i + θ_r;
+    /// - f_back(s²) = A·k_m·Ĝ(x − Δ_b; σ_b² + s²)/(π cos²θ_i), σ_b = (1 + d_b ā_f²)·σ_b0, A the
+    ///   stored back-half or front-half energy of the local backscatter at θ_r and k_m its
+    ///   factor for m fibers below ([`super::coat::backscatter_factor`]);
+    /// - Ĝ a Gaussian divided by its mass over the x the caller can reach at this θ_r
+    ///   (θ_i ∈ [−π/2, π/2]; the mass kept at or above 0.05), so that each lobe returns its
+    ///   stored energy.
     ///
-    /// Contract: `fibers` NaN or below 0 is 0 (unoccluded), above [`MAX_FIBERS`] (or +∞) is
-    /// [`MAX_FIBERS`]; the density factors as in [`Density`]. The result is finite and ≥ 0 for
-    /// every input; nothing panics or allocates.
+    /// Contract: the counts as in [`Fibers`]; the density factors as in [`Density`]. The
+    /// result is finite and ≥ 0 for every input; nothing panics or allocates.
     #[must_use]
-    pub fn eval(&self, angles: &Angles, fibers: f32, density: Density) -> Rgb {
-        let n = if fibers > 0.0 {
-            fibers.min(MAX_FIBERS)
-        } else {
-            0.0
-        };
+    pub fn eval(&self, angles: &Angles, fibers: Fibers, density: Density) -> Rgb {
+        let (n, m) = fibers.sanitized();
         let (d_f, d_b) = density.sanitized();
         let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
         let x = ti + tr;
@@ -95,8 +127,15 @@ impl DualLut {
         let here = theta_position(tr);
         let abs_phi = wrap_angle(phi).abs();
         let back_half = abs_phi < 0.5 * PI;
-        let half = self.field(here, if back_half { BACK } else { FRONT });
+        let stored = self.field(here, if back_half { BACK } else { FRONT });
+        // The coat below at θ_r: m layers instead of the semi-infinite stack.
+        let log2_mu_here = self.field(here, LOG2_DECAY);
         let a_f2 = self.field(here, A_F2);
+        let half: Lanes = core::array::from_fn(|c| {
+            let (mu, t) = decay_and_forward(log2_mu_here[c], a_f2[c]);
+            let mu_2m = power_of_decay(log2_mu_here[c], 2.0 * m);
+            stored[c] * backscatter_factor(mu, t, reflectance_squared(mu, t), mu_2m)
+        });
         let sigma_b0 = self.field(here, SIGMA_B0);
         let delta = self.field(here, DELTA_B);
         let d_back: Lanes = core::array::from_fn(|c| x - delta[c]);
@@ -108,7 +147,7 @@ impl DualLut {
         let back_scale = d_b * inv_cos2 / PI;
         let mut out = [0.0f32; 4];
         if direct > 0.0 {
-            let g = gauss(&d_back, &v_back);
+            let g = gauss_reachable(&d_back, &v_back, ti);
             for c in 0..4 {
                 out[c] = direct * back_scale * half[c] * g[c];
             }
@@ -116,10 +155,13 @@ impl DualLut {
         if n > 0.0 {
             let along = theta_position(-ti);
             let log2_mu = self.field(along, LOG2_DECAY);
+            let a_f2_along = self.field(along, A_F2);
             let beta_f = self.field(along, BETA_F);
             let spread: Lanes = core::array::from_fn(|c| {
-                // μⁿ = e^(−n·ln 2·(−log₂ μ)), log₂ μ ≤ 0.
-                let t_f = exp_neg_saturating(-n * core::f32::consts::LN_2 * log2_mu[c]);
+                let (mu, t) = decay_and_forward(log2_mu[c], a_f2_along[c]);
+                let mu_n = power_of_decay(log2_mu[c], n);
+                let mu_2m = power_of_decay(log2_mu[c], 2.0 * m);
+                let t_f = downward_flux(mu_n, mu_2m, reflectance_squared(mu, t));
                 (t_f - direct).max(0.0) * d_f
             });
             if spread.iter().any(|&s| s > 0.0) {
@@ -148,7 +190,7 @@ impl DualLut {
                     d[4 * FAMILY_COUNT + c] = d_back[c];
                     v[4 * FAMILY_COUNT + c] = v_back[c] + s2f[c];
                 }
-                let gv = gauss(&d, &v);
+                let gv = gauss_reachable(&d, &v, ti);
                 let mut f_s = [0.0f32; 4];
                 for g in 0..FAMILY_COUNT {
                     let ng = self.n_g(g, here.0, j, &corners);
@@ -180,7 +222,7 @@ impl DualLut {
         wi: Vec3,
         wr: Vec3,
         tangent: Vec3,
-        fibers: f32,
+        fibers: Fibers,
         density: Density,
     ) -> Rgb {
         self.try_eval_dirs(wi, wr, tangent, fibers, density)
@@ -197,7 +239,7 @@ impl DualLut {
         wi: Vec3,
         wr: Vec3,
         tangent: Vec3,
-        fibers: f32,
+        fibers: Fibers,
         density: Density,
     ) -> Result<Rgb, AngleError> {
         let [ti, tr, phi] = polynomial_angles::<Libm>(wi, wr, tangent)?;

@@ -10,11 +10,13 @@
 //! - [`DualLut`]: what an engine keeps, the quantities [`DualLut::eval`] reads at each θ node,
 //!   derived from the tables for one [`Attenuation`] and stored as f16 in a `.furdual` blob of
 //!   [`BLOB_LEN`] bytes ([`encode`], [`DualLut::decode`]; format in `blob.rs`).
-//! - [`DualLut::eval`]: the term to add, from the angles, the number of fibers between the
-//!   shading point and the light, and the density factors d_f, d_b ([`Density`]). No panic, no
-//!   NaN, no allocation.
+//! - [`DualLut::eval`]: the term to add, from the angles, the fibers between the shading
+//!   point and the light and below it ([`Fibers`]), and the density factors d_f, d_b
+//!   ([`Density`]). No panic, no NaN, no allocation.
+//! - [`coat`]: the finite coat's closed forms (n fibers above, m below over a black floor).
 
 pub(crate) mod blob;
+pub mod coat;
 mod eval;
 mod tables;
 #[cfg(test)]
@@ -142,6 +144,56 @@ pub fn semi_infinite_reflectance(t: f32, r: f32) -> f32 {
         v.clamp(0.0, 1.0)
     } else {
         0.0
+    }
+}
+
+/// The per-light fiber counts at a shading point that [`DualLut::eval`] takes (docs/model.md
+/// §13, "The coat below"): what an engine reads from its deep opacity map or voxel density
+/// along the light's direction, and what the renderer's shadow rays count.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fibers {
+    /// n: the fibers between the shading point and the light (fractional allowed). NaN or
+    /// below 0 is 0 (unoccluded), above [`MAX_FIBERS`] (or +∞) is [`MAX_FIBERS`].
+    pub to_light: f32,
+    /// m: the fibers beyond the shading point, on the line from the light through it (along
+    /// −ω_i), up to the skin or out of the coat: the coat below, which sends light back up.
+    /// Below 0 is 0 (the point lies on the skin); NaN, +∞ and anything above [`MAX_FIBERS`]
+    /// is [`MAX_FIBERS`], a semi-infinite coat ([`Fibers::deep`]).
+    pub below: f32,
+}
+
+impl Fibers {
+    /// `to_light` fibers toward the light and `below` beyond the point.
+    #[must_use]
+    pub const fn new(to_light: f32, below: f32) -> Fibers {
+        Fibers { to_light, below }
+    }
+
+    /// `to_light` fibers toward the light over a semi-infinite coat (below = +∞): for a
+    /// caller that does not know how deep the coat is.
+    #[must_use]
+    pub const fn deep(to_light: f32) -> Fibers {
+        Fibers {
+            to_light,
+            below: f32::INFINITY,
+        }
+    }
+
+    /// (n, m) in [0, [`MAX_FIBERS`]] by the contract of the fields.
+    fn sanitized(self) -> (f32, f32) {
+        let n = if self.to_light > 0.0 {
+            self.to_light.min(MAX_FIBERS)
+        } else {
+            0.0
+        };
+        let m = if self.below >= 0.0 {
+            self.below.min(MAX_FIBERS)
+        } else if self.below < 0.0 {
+            0.0
+        } else {
+            MAX_FIBERS // NaN
+        };
+        (n, m)
     }
 }
 

@@ -287,3 +287,23 @@ fn rsqrt_newton_is_within_four_ulp() {
     std::eprintln!("rsqrt_newton: worst {worst:.2} ulp");
     assert!(worst <= 4.0, "worst {worst} ulp");
 }
+
+#[test]
+fn erf_polynomial_is_within_1e_6() {
+    // Every 257th float from 1e-6 to 12, both signs, against f64's erf; 0, NaN, ±∞ too.
+    let mut worst = 0.0f64;
+    let (lo, hi) = (1e-6f32.to_bits(), 12f32.to_bits());
+    for bits in (lo..=hi).step_by(257).chain([hi]) {
+        for x in [f32::from_bits(bits), -f32::from_bits(bits)] {
+            let want = libm::erf(f64::from(x));
+            worst = worst.max((f64::from(erf_polynomial(x)) - want).abs());
+        }
+    }
+    std::eprintln!("erf_polynomial: worst {worst:.2e}");
+    assert!(worst <= 1e-6, "worst {worst:e}");
+    assert!(erf_polynomial(0.0).abs() <= 1e-7);
+    assert_eq!(erf_polynomial(-0.7), -erf_polynomial(0.7));
+    assert_eq!(erf_polynomial(f32::INFINITY), 1.0);
+    assert_eq!(erf_polynomial(f32::NEG_INFINITY), -1.0);
+    assert!(erf_polynomial(f32::NAN).abs() <= 1.0);
+}

@@ -1,5 +1,6 @@
 //! Unit tests of dual scattering: the tables by quadrature, the term's properties through the
-//! blob; the attenuation ([`attenuation`]) and the stored blob ([`stored`]) in their own files.
+//! blob; the attenuation ([`attenuation`]), the finite coat ([`coat`]) and the stored blob
+//! ([`stored`]) in their own files.
 
 extern crate std;
 use super::*;
@@ -46,9 +47,9 @@ fn lut_of(tables: &DualTables, attenuation: Attenuation) -> Box<DualLut> {
     lut
 }
 
-/// `lut_of(t, att).eval(a, n, d)`.
+/// `lut_of(t, att).eval(a, n, d)` over a semi-infinite coat ([`Fibers::deep`]).
 fn eval(t: &DualTables, a: &Angles, n: f32, d: Density, att: Attenuation) -> Rgb {
-    lut_of(t, att).eval(a, n, d)
+    lut_of(t, att).eval(a, Fibers::deep(n), d)
 }
 
 #[test]
@@ -303,11 +304,13 @@ fn degenerate_input_stays_finite() {
         ];
         for a in &angles {
             for &n in &counts {
-                for &d_f in &dens {
-                    for &d_b in &dens {
-                        for lut in &luts {
-                            let v = lut.eval(a, n, Density { d_f, d_b });
-                            assert!(v.0.iter().all(|x| x.is_finite() && *x >= 0.0), "{v:?}");
+                for &m in &counts {
+                    for &d_f in &dens {
+                        for &d_b in &dens {
+                            for lut in &luts {
+                                let v = lut.eval(a, Fibers::new(n, m), Density { d_f, d_b });
+                                assert!(v.0.iter().all(|x| x.is_finite() && *x >= 0.0), "{v:?}");
+                            }
                         }
                     }
                 }
@@ -351,4 +354,5 @@ fn the_local_backscatter_is_zinkes_series() {
 }
 
 mod attenuation;
+mod coat;
 mod stored;

@@ -138,43 +138,76 @@ fn check_lut_pairs_a_blob_with_the_lut_it_records_and_no_other() {
 
 #[test]
 fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
-    // The term recomputed from the decoded node values with f64 Gaussians (independent of
-    // the lane code): back half, n = 2.5, default density.
+    // The term recomputed from the decoded node values in f64, independent of the lane
+    // code: Gaussians normalised over the reachable x by f64 erf, and the finite coat by the
+    // adding recursion of layers (t, r), r recovered from μ + 1/μ = (1 + t² − r²)/t. Back
+    // half, n = 3 above, m = 2 below, default density.
     let t = absorbing_tables();
     let lut = lut_of(&t, Attenuation::Coat);
-    let (ti, tr, phi, n) = (0.31f32, -0.22f32, 0.7f32, 2.5f32);
-    let got = lut.eval(&Angles::new(ti, tr, phi).unwrap(), n, Density::DEFAULT);
-    let g = |d: f64, v: f64| (-d * d / (2.0 * v)).exp() / (2.0 * std::f64::consts::PI * v).sqrt();
+    let (ti, tr, phi, n, m) = (0.31f32, -0.22f32, 0.7f32, 3u32, 2u32);
+    let fibers = Fibers::new(n as f32, m as f32);
+    let got = lut.eval(&Angles::new(ti, tr, phi).unwrap(), fibers, Density::DEFAULT);
+    let pi = std::f64::consts::PI;
+    let g = |d: f64, v: f64| (-d * d / (2.0 * v)).exp() / (2.0 * pi * v).sqrt();
+    // g divided by its mass over x ∈ [θ_r − π/2, θ_r + π/2].
+    let g_hat = |d: f64, v: f64| {
+        let v = v.max(f64::from(MIN_VARIANCE));
+        let mean = f64::from(ti + tr) - d;
+        let z = |x: f64| (x - mean) / (2.0 * v).sqrt();
+        let mass =
+            0.5 * (libm::erf(z(f64::from(tr) + pi / 2.0)) - libm::erf(z(f64::from(tr) - pi / 2.0)));
+        g(d, v) / mass.max(0.05)
+    };
     let lerp_at = |theta: f32, f: usize, c: usize| {
         let (k, w) = theta_position(theta);
         f64::from(lut.nodes[k][f][c]) * f64::from(1.0 - w)
             + f64::from(lut.nodes[k + 1][f][c]) * f64::from(w)
     };
+    // (R_k, T_k) of k layers by the adding recursion.
+    let stack = |t: f64, r: f64, k: u32| {
+        let (mut rk, mut tk) = (0.0f64, 1.0f64);
+        for _ in 0..k {
+            let den = 1.0 - rk * r;
+            (rk, tk) = (rk + tk * tk * r / den, tk * t / den);
+        }
+        (rk, tk)
+    };
+    let layer = |theta: f32, c: usize| {
+        let mu = lerp_at(theta, blob::LOG2_DECAY, c).exp2();
+        let t = lerp_at(theta, blob::A_F2, c).sqrt();
+        let r = (1.0 + t * t - t * (mu + 1.0 / mu)).max(0.0).sqrt();
+        (t, r)
+    };
     for c in 0..3 {
         let x = f64::from(ti + tr);
         let inv = 1.0 / f64::from(ti).cos().powi(2);
-        let mu = lerp_at(-ti, blob::LOG2_DECAY, c).exp2();
+        // Light reaching the point: n layers above, m below over a black floor.
+        let (t_a, r_a) = layer(-ti, c);
+        let (r_n, t_n) = stack(t_a, r_a, n);
+        let (r_m, _) = stack(t_a, r_a, m);
+        let d_flux = t_n / (1.0 - r_n * r_m);
+        // The local backscatter's energy with m layers below instead of the deep coat.
+        let (t_h, r_h) = layer(tr, c);
+        let up = |rr: f64| rr * t_h / (1.0 - r_h * rr);
+        let factor = up(stack(t_h, r_h, m).0) / up(stack(t_h, r_h, 20_000).0);
         let s2 = f64::from(n) * lerp_at(-ti, blob::BETA_F, c).powi(2);
         let sb = (1.0 + lerp_at(tr, blob::A_F2, c)) * lerp_at(tr, blob::SIGMA_B0, c);
-        let back = lerp_at(tr, blob::BACK, c);
+        let back = lerp_at(tr, blob::BACK, c) * factor;
         let db = x - lerp_at(tr, blob::DELTA_B, c);
         let mut fs = 0.0;
         for fam in 0..FAMILY_COUNT {
             let (k, w) = theta_position(tr);
-            let p = f64::from(phi) * (PHI_NODES - 1) as f64 / std::f64::consts::PI;
+            let p = f64::from(phi) * (PHI_NODES - 1) as f64 / pi;
             let (j, v) = (p as usize, p - p.floor());
             let tab = &lut.n_g[fam];
             let at = |kk: usize, jj: usize| f64::from(tab[kk][jj][c]);
             let ng = (at(k, j) * (1.0 - v) + at(k, j + 1) * v) * f64::from(1.0 - w)
                 + (at(k + 1, j) * (1.0 - v) + at(k + 1, j + 1) * v) * f64::from(w);
-            let m = lerp_at(tr, blob::MEAN + fam, c);
+            let mean = lerp_at(tr, blob::MEAN + fam, c);
             let sd = lerp_at(tr, blob::SD + fam, c);
-            fs += ng * g(x - m, (sd * sd + s2).max(f64::from(MIN_VARIANCE)));
+            fs += ng * g_hat(x - mean, sd * sd + s2);
         }
-        let want = mu.powf(f64::from(n))
-            * (fs * inv
-                + back * g(db, (sb * sb + s2).max(f64::from(MIN_VARIANCE))) * inv
-                    / std::f64::consts::PI);
+        let want = d_flux * (fs * inv + back * g_hat(db, sb * sb + s2) * inv / pi);
         let err = (f64::from(got[c]) - want).abs() / want;
         assert!(err < 1e-4, "channel {c}: {} vs {want} ({err:e})", got[c]);
     }

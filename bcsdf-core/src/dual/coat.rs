@@ -1,0 +1,79 @@
+//! The finite coat (docs/model.md §13, "The coat below"): the fibers around a shading point
+//! as a stack of identical two-stream layers, n between the point and the light and m below
+//! it (away from the light) over a black floor, in closed form so that fractional counts
+//! cost no loop. Per channel, from what a `.furdual` stores: the per-fiber decay μ of the
+//! semi-infinite stack and the layer's forward fraction t = ā_f.
+//!
+//! One layer transmits t and reflects r. In the semi-infinite stack (reflectance ρ = R_∞)
+//! the light decays by μ per layer, and one layer on top of it gives the two balances
+//! μ(1 − rρ) = t (what passes the layer, with its reflections on the stack below) and
+//! ρ(1 − tμ) = r (ρ = r + tρμ), so r never has to be recovered:
+//! rρ = 1 − t/μ and ρ² = (μ − t)/(μ(1 − tμ)).
+//! For n layers, R_n = ρ(1 − μ²ⁿ)/(1 − ρ²μ²ⁿ) and T_n = μⁿ(1 − ρ²)/(1 − ρ²μ²ⁿ) (the
+//! adding recursion's closed form); over a black floor the m layers below reflect R_m.
+
+/// Smallest denominator the closed forms divide by; below it (a lossless or nearly lossless
+/// layer with no fibers in the way) they keep the semi-infinite coat's value.
+const TINY: f32 = 1e-6;
+
+/// ρ² = R_∞², the semi-infinite stack's reflectance squared, from its decay `mu` = μ and the
+/// layer's forward fraction `t`: (μ − t)/(μ(1 − tμ)), kept in [0, 1]; 0 when μ(1 − tμ) is
+/// below 1e-6 (no transmission, or t = μ = 1: a layer that reflects nothing).
+#[inline(always)]
+#[must_use]
+pub fn reflectance_squared(mu: f32, t: f32) -> f32 {
+    let den = mu * (1.0 - t * mu);
+    let v = (mu - t) / den.max(TINY);
+    // max/min, not clamp: NaN becomes 0.
+    #[allow(clippy::manual_clamp)]
+    let v = v.max(0.0).min(1.0);
+    if den > TINY {
+        v
+    } else {
+        0.0
+    }
+}
+
+/// The downward flux at a point under n layers with m layers below it over a black floor,
+/// D = T_n/(1 − R_n R_m) = μⁿ(1 − ρ²μ²ᵐ)/(1 − ρ²μ²⁽ⁿ⁺ᵐ⁾), from `mu_n` = μⁿ,
+/// `mu_2m` = μ²ᵐ and `rho2` = ρ². μⁿ when m is infinite (the semi-infinite coat) and T_n
+/// when m = 0; in [0, μⁿ]. A denominator below 1e-6 keeps μⁿ.
+#[inline(always)]
+#[must_use]
+pub fn downward_flux(mu_n: f32, mu_2m: f32, rho2: f32) -> f32 {
+    let num = 1.0 - rho2 * mu_2m;
+    let den = 1.0 - rho2 * mu_n * mu_n * mu_2m;
+    let d = mu_n * (num / den.max(TINY));
+    // max/min, not clamp: NaN becomes 0.
+    #[allow(clippy::manual_clamp)]
+    let d = d.max(0.0).min(mu_n);
+    if den > TINY {
+        d
+    } else {
+        mu_n
+    }
+}
+
+/// The local backscatter's energy with m layers below instead of the semi-infinite coat, as
+/// a factor on the stored energy (docs/model.md §13): the light the coat below sends up,
+/// U = R t/(1 − rR), with R_m = ρ·g, g = (1 − μ²ᵐ)/(1 − ρ²μ²ᵐ), in place of ρ:
+/// U_m/U_∞ = g(1 − rρ)/(1 − rρ·g), rρ = 1 − t/μ. From `mu` = μ, `t`, `rho2` = ρ² and
+/// `mu_2m` = μ²ᵐ: 1 for an infinite m, 0 for m = 0; in [0, 1]. A denominator below 1e-6
+/// (a lossless layer at m = 0, or no transmission) gives 1.
+#[inline(always)]
+#[must_use]
+pub fn backscatter_factor(mu: f32, t: f32, rho2: f32, mu_2m: f32) -> f32 {
+    let g_den = 1.0 - rho2 * mu_2m;
+    let g = (1.0 - mu_2m) / g_den.max(TINY);
+    #[allow(clippy::manual_clamp)]
+    let r_rho = (1.0 - t / mu.max(TINY)).max(0.0).min(1.0);
+    let den = 1.0 - r_rho * g;
+    let f = g * (1.0 - r_rho) / den.max(TINY);
+    #[allow(clippy::manual_clamp)]
+    let f = f.max(0.0).min(1.0);
+    if g_den > TINY && den > TINY {
+        f
+    } else {
+        1.0
+    }
+}

@@ -1,0 +1,164 @@
+//! The finite coat's closed forms ([`crate::dual::coat`]) against the adding recursion of
+//! two-stream layers, and the reachable-range normalisation of the term's Gaussians.
+
+use super::super::coat::{backscatter_factor, downward_flux, reflectance_squared};
+use super::super::eval::gauss_reachable;
+use super::*;
+
+/// (R_k, T_k) of k layers (t, r) by the adding recursion, in f64.
+fn stack(t: f64, r: f64, k: u32) -> (f64, f64) {
+    let (mut rk, mut tk) = (0.0f64, 1.0f64);
+    for _ in 0..k {
+        let den = 1.0 - rk * r;
+        (rk, tk) = (rk + tk * tk * r / den, tk * t / den);
+    }
+    (rk, tk)
+}
+
+const LAYERS: [(f32, f32); 5] = [
+    (0.537, 0.455),
+    (0.66, 0.25),
+    (0.3, 0.28),
+    (0.9, 0.0999),
+    (0.5, 0.0),
+];
+
+#[test]
+fn the_closed_forms_are_the_adding_recursion() {
+    for (t, r) in LAYERS {
+        let mu = coat_decay(Attenuation::Coat, t, r);
+        let rho2 = reflectance_squared(mu, t);
+        let (r_inf, _) = stack(f64::from(t), f64::from(r), 100_000);
+        // f32 and nearly lossless layers (0.9, 0.0999): μ − t cancels, so 1e-4.
+        assert!(
+            (f64::from(rho2) - r_inf * r_inf).abs() < 1e-4,
+            "(t, r) = ({t}, {r}): ρ² {rho2} vs {}",
+            r_inf * r_inf
+        );
+        let up = |rr: f64| rr * f64::from(t) / (1.0 - f64::from(r) * rr);
+        for n in 0..12u32 {
+            for m in [0u32, 1, 2, 5, 11, 40] {
+                let (r_n, t_n) = stack(f64::from(t), f64::from(r), n);
+                let (r_m, _) = stack(f64::from(t), f64::from(r), m);
+                let want = t_n / (1.0 - r_n * r_m);
+                let mu_n = mu.powi(n as i32);
+                let mu_2m = mu.powi(2 * m as i32);
+                let got = downward_flux(mu_n, mu_2m, rho2);
+                assert!(
+                    (f64::from(got) - want).abs() < 1e-5 + 1e-4 * want,
+                    "(t, r) = ({t}, {r}), n = {n}, m = {m}: D {got} vs {want}"
+                );
+                if r > 0.0 {
+                    let want = up(r_m) / up(r_inf);
+                    let got = backscatter_factor(mu, t, rho2, mu_2m);
+                    assert!(
+                        (f64::from(got) - want).abs() < 1e-4,
+                        "(t, r) = ({t}, {r}), m = {m}: factor {got} vs {want}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_limits_are_the_deep_coat_and_the_bare_skin() {
+    for (t, r) in LAYERS {
+        let mu = coat_decay(Attenuation::Coat, t, r);
+        let rho2 = reflectance_squared(mu, t);
+        for n in [0.0f32, 0.5, 3.0, 20.0] {
+            let mu_n = mu.powf(n);
+            // m = ∞: the semi-infinite coat's μⁿ; more fibers below never darken.
+            assert_eq!(downward_flux(mu_n, 0.0, rho2), mu_n);
+            let mut last = 0.0;
+            for m in [0.0f32, 0.5, 1.0, 4.0, 30.0] {
+                let d = downward_flux(mu_n, mu.powf(2.0 * m), rho2);
+                assert!(
+                    d >= last && d <= mu_n,
+                    "n {n} m {m}: {d} after {last}, μⁿ {mu_n}"
+                );
+                last = d;
+            }
+        }
+        assert_eq!(backscatter_factor(mu, t, rho2, 0.0), 1.0);
+        assert_eq!(backscatter_factor(mu, t, rho2, 1.0), 0.0);
+    }
+    // Degenerate layers: lossless (μ = 1), opaque (t = 0), NaN: finite, in range.
+    for (mu, t) in [
+        (1.0f32, 0.6f32),
+        (1.0, 1.0),
+        (0.0, 0.0),
+        (f32::NAN, 0.5),
+        (0.5, f32::NAN),
+    ] {
+        let rho2 = reflectance_squared(mu, t);
+        assert!((0.0..=1.0).contains(&rho2), "ρ² {rho2}");
+        for q in [0.0f32, 0.5, 1.0] {
+            let d = downward_flux(mu.min(1.0).max(0.0), q, rho2);
+            let k = backscatter_factor(mu, t, rho2, q);
+            assert!(
+                d.is_finite() && (0.0..=1.0).contains(&k),
+                "μ {mu} t {t} q {q}: {d} {k}"
+            );
+        }
+    }
+}
+
+#[test]
+fn each_gaussian_keeps_its_mass_over_the_reachable_range() {
+    // ∫ Ĝ(θ_i + θ_r − mean; v) dθ_i over θ_i ∈ [−π/2, π/2] is 1 (midpoint rule), wherever
+    // the lobe's mass in range is above the 0.05 floor; below it, the floor.
+    let steps = 20_000;
+    for (tr, mean, v) in [
+        (0.0f32, 0.1f32, 0.01f32),
+        (1.2, 0.3, 0.2),
+        (-1.4, -0.2, 0.5),
+        (0.4, 2.4, 0.05),
+        (0.0, 0.0, 2.0),
+    ] {
+        let h = PI / steps as f32;
+        let total: f64 = (0..steps)
+            .map(|i| {
+                let ti = -0.5 * PI + (i as f32 + 0.5) * h;
+                let d = ti + tr - mean;
+                f64::from(gauss_reachable(&[d], &[v], ti)[0]) * f64::from(h)
+            })
+            .sum();
+        let g = |x: f64| libm::erf(x / f64::from(2.0 * v).sqrt());
+        let mass = 0.5
+            * (g(f64::from(tr - mean) + std::f64::consts::FRAC_PI_2)
+                - g(f64::from(tr - mean) - std::f64::consts::FRAC_PI_2));
+        let want = if mass >= 0.05 { 1.0 } else { mass / 0.05 };
+        assert!(
+            (total - want).abs() < 2e-4,
+            "θ_r {tr} mean {mean} v {v}: {total} (mass {mass})"
+        );
+    }
+}
+
+#[test]
+fn the_coat_below_lights_the_point() {
+    // Through the evaluator: with no fibers below the point (m = 0, bare skin) nothing comes
+    // back up, so unoccluded light gets no local backscatter; more fibers below give more.
+    let t = absorbing_tables();
+    let lut = lut_of(&t, Attenuation::Coat);
+    let a = Angles::new(0.3, -0.2, 0.4).unwrap();
+    let d = Density::DEFAULT;
+    assert_eq!(lut.eval(&a, Fibers::new(0.0, 0.0), d), Rgb::ZERO);
+    for n in [0.0f32, 2.0] {
+        let first = lut.eval(&a, Fibers::new(n, 0.5), d);
+        assert!(first.0.iter().all(|&v| v > 0.0), "{first:?}");
+        let mut last = first;
+        for m in [2.0f32, 8.0, f32::INFINITY] {
+            let v = lut.eval(&a, Fibers::new(n, m), d);
+            for c in 0..3 {
+                assert!(v[c] >= last[c], "n {n} m {m}: {v:?} after {last:?}");
+            }
+            last = v;
+        }
+        assert!(last[0] > 1.2 * first[0], "{last:?} vs {first:?}");
+        // NaN below is the deep coat.
+        assert_eq!(lut.eval(&a, Fibers::new(n, f32::NAN), d), last);
+        assert_eq!(lut.eval(&a, Fibers::deep(n), d), last);
+    }
+}

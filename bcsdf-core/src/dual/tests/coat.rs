@@ -94,7 +94,8 @@ fn the_limits_are_the_deep_coat_and_the_bare_skin() {
         let rho2 = reflectance_squared(mu, t);
         assert!((0.0..=1.0).contains(&rho2), "ρ² {rho2}");
         for q in [0.0f32, 0.5, 1.0] {
-            let d = downward_flux(mu.min(1.0).max(0.0), q, rho2);
+            let mu_n = if mu.is_nan() { 0.0 } else { mu.clamp(0.0, 1.0) };
+            let d = downward_flux(mu_n, q, rho2);
             let k = backscatter_factor(mu, t, rho2, q);
             assert!(
                 d.is_finite() && (0.0..=1.0).contains(&k),

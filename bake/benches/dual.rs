@@ -6,7 +6,8 @@
 //! - `dual_term/<preset>/<n>`: `DualLut::eval` with the shipped `Attenuation::Coat` and
 //!   `Density::DEFAULT` from tables computed from that LUT (through the `.furdual` blob), at
 //!   fiber counts n = 0 (unoccluded: the local backscatter only), 1.5 and 6 (the spread term
-//!   too: six Gaussians per channel).
+//!   too: six Gaussians per channel), each with m = 3 fibers below (the finite coat; its
+//!   cost does not depend on m).
 //!
 //! One query per iteration from the fixed list of 256 directions of `bench_support`, index
 //! masked. `cargo bench -p bake --bench dual`.
@@ -15,7 +16,7 @@ use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
-use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
+use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Fibers, Quadrature};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Angles, FurParams};
@@ -54,7 +55,8 @@ fn bench(c: &mut Criterion) {
                 b.iter(|| {
                     let a = &qs[i & 255];
                     i += 1;
-                    black_box(lut.eval(black_box(a), black_box(n), Density::DEFAULT))
+                    let counts = Fibers::new(black_box(n), black_box(3.0));
+                    black_box(lut.eval(black_box(a), counts, Density::DEFAULT))
                 })
             });
         }

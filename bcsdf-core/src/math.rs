@@ -244,6 +244,30 @@ pub fn rsqrt_newton(x: f32) -> f32 {
     y * (1.5 - half * y * y)
 }
 
+/// p of [`erf_polynomial`] (Abramowitz and Stegun 7.1.26); the shader's `FUR_ERF_P`.
+pub(crate) const ERF_P: f32 = 0.327_591_1;
+/// a₁ … a₅ of [`erf_polynomial`]; the shader's `FUR_ERF_A1` … `FUR_ERF_A5`.
+pub(crate) const ERF_A: [f32; 5] = [
+    0.254_829_6,
+    -0.284_496_74,
+    1.421_413_7,
+    -1.453_152,
+    1.061_405_4,
+];
+/// ln 2 split in two floats for [`exp_neg_polynomial`]'s reduction; the shader's
+/// `FUR_LN2_HI`, `FUR_LN2_LO`.
+pub(crate) const LN2_SPLIT: [f32; 2] = [0.693_359_4, -2.121_944_4e-4];
+/// [`exp_neg_polynomial`]'s polynomial in r, Horner from the highest degree (then
+/// e = p·r² + r + 1); the literals of the shader's `fur_exp_neg`, in this order.
+pub(crate) const EXP_NEG_POLY: [f32; 6] = [
+    1.987_569_2e-4,
+    1.398_199_9e-3,
+    8.333_452e-3,
+    4.166_579_6e-2,
+    0.166_666_65,
+    0.5,
+];
+
 /// erf x in plain f32 arithmetic, for lane loops ([`crate::dual`]) and its WGSL twin
 /// (`shaders/fur_bcsdf.wgsl`, `fur_erf`): Abramowitz and Stegun 7.1.26,
 /// erf |x| = 1 − (a₁t + a₂t² + a₃t³ + a₄t⁴ + a₅t⁵)·e^(−x²), t = 1/(1 + p|x|), whose error is
@@ -253,14 +277,8 @@ pub fn rsqrt_newton(x: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn erf_polynomial(x: f32) -> f32 {
-    const P: f32 = 0.327_591_1;
-    const A: [f32; 5] = [
-        0.254_829_6,
-        -0.284_496_74,
-        1.421_413_7,
-        -1.453_152,
-        1.061_405_4,
-    ];
+    const P: f32 = ERF_P;
+    const A: [f32; 5] = ERF_A;
     // max/min, not clamp or abs: NaN becomes 0 here. |x| ≤ 10 loses nothing (erf 10 = 1 in
     // f32) and keeps x² finite.
     #[allow(clippy::manual_clamp)]
@@ -275,8 +293,8 @@ pub fn erf_polynomial(x: f32) -> f32 {
 /// The polynomial of [`exp_neg_polynomial`] for x ∈ [0, 87].
 #[inline(always)]
 fn exp_neg_reduced(x: f32) -> f32 {
-    const LN2_HI: f32 = 0.693_359_4;
-    const LN2_LO: f32 = -2.121_944_4e-4;
+    const LN2_HI: f32 = LN2_SPLIT[0];
+    const LN2_LO: f32 = LN2_SPLIT[1];
     const LOG2_E: f32 = core::f32::consts::LOG2_E;
     // k = round(x / ln 2) ∈ [0, 126]: adding 1.5·2²³ rounds to an integer, which then sits
     // in the low mantissa bits (cheaper than a saturating float-to-int conversion).
@@ -286,12 +304,13 @@ fn exp_neg_reduced(x: f32) -> f32 {
     let k = shifted.to_bits().wrapping_sub(ROUND.to_bits());
     let r = (kf * LN2_HI - x) + kf * LN2_LO;
     let z = r * r;
-    let mut p = 1.987_569_2e-4;
-    p = p * r + 1.398_199_9e-3;
-    p = p * r + 8.333_452e-3;
-    p = p * r + 4.166_579_6e-2;
-    p = p * r + 0.166_666_65;
-    p = p * r + 0.5;
+    let c = EXP_NEG_POLY;
+    let mut p = c[0];
+    p = p * r + c[1];
+    p = p * r + c[2];
+    p = p * r + c[3];
+    p = p * r + c[4];
+    p = p * r + c[5];
     let e = p * z + r + 1.0;
     e * f32::from_bits((127 - k) << 23)
 }

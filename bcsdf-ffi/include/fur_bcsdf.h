@@ -313,16 +313,24 @@ enum fur_status fur_dual_check_lut(const struct fur_dual *FUR_RESTRICT dual,
 /**
  * The dual-scattering term (docs/model.md §13), RGB, into `out_rgb[3]`, from angles
  * (radians, as `fur_eval_far`): the light that reaches the shading point through `fibers`
- * other fibers.
+ * other fibers, in a coat `fibers_below` fibers deep beneath the point.
  *
- * `fibers` is the number of fibers between the shading point and the light (a shadow ray's
- * count, or a deep opacity map's / voxel density's estimate; fractional values are fine;
- * NaN or negative is 0, i.e. unoccluded; above 10^6, or +infinity, is 10^6). `d_f` and
- * `d_b` are the forward and backward density factors (1 and 1 is the shipped default; NaN
- * or negative is 0; above 4 is 4). The result is the term to ADD to single scattering:
- * shade with S * V + result, where S is `fur_eval_far`'s value and
- * V = clamp(1 - fibers, 0, 1) the fraction of direct light; the result is in S's units
- * (multiply it, like S, by cos(theta_i) and the light's radiance). Finite and >= 0.
+ * `fibers` is n, the number of fibers between the shading point and the light (a shadow
+ * ray's count, or a deep opacity map's / voxel density's estimate; fractional values are
+ * fine): NaN or negative is 0 (unoccluded), above 10^6 (or +infinity) is 10^6.
+ * `fibers_below` is m, the number of fibers beyond the shading point on the line from the
+ * light through it (along -wi, away from the light), up to the skin or out of the coat: the
+ * coat below, which sends light back up (fractional values are fine). Negative is 0 (the point lies on the
+ * skin); NaN, +infinity and anything above 10^6 is 10^6, a semi-infinite coat: pass
+ * INFINITY when the depth is not known. That is the coat of the previous version of this
+ * function, which had no `fibers_below`; its values changed anyway, since every Gaussian
+ * is now normalised over the angles the caller can reach. `d_f` and `d_b` are the forward
+ * and backward density factors (1 and 1 is the shipped default; NaN or negative is 0; above
+ * 4 is 4). The result is the term to ADD to single scattering: shade with S * V + result,
+ * where S is `fur_eval_far`'s value and V = clamp(1 - fibers, 0, 1) the fraction of direct
+ * light; the result is in S's units (multiply it, like S, by cos(theta_i) and the light's
+ * radiance). Finite and >= 0. The value is `DualLut::eval` with
+ * `Fibers::new(fibers, fibers_below)`, bit for bit.
  *
  * Invalid angles write 0 and return `FUR_ERR_ANGLE`. `out_rgb` must not overlap `*dual`
  * (`FUR_ERR_OVERLAP`, nothing written).
@@ -336,6 +344,7 @@ enum fur_status fur_eval_dual(const struct fur_dual *FUR_RESTRICT dual,
                               float theta_r,
                               float phi,
                               float fibers,
+                              float fibers_below,
                               float d_f,
                               float d_b,
                               float *FUR_RESTRICT out_rgb);
@@ -343,12 +352,14 @@ enum fur_status fur_eval_dual(const struct fur_dual *FUR_RESTRICT dual,
 /**
  * `fur_eval_dual` from world-space vectors (as `fur_eval_far_dirs`): `wi` toward the light,
  * `wr` toward the viewer, `tangent` the fiber direction (none needs unit length), into
- * `out_rgb[3]`; `fibers`, `d_f`, `d_b` and the result as in `fur_eval_dual` (add it to
- * S * V, multiply by cos(theta_i) and the light's radiance). The angles are those
- * `DualLut::eval_dirs` converts to (the baked evaluator's conversion). A vector with a
- * component that is not finite, or of zero (below the smallest normal float) or overflowing
- * length, writes 0 and returns `FUR_ERR_DIRECTION`. `out_rgb` must not
- * overlap the three vectors or `*dual` (`FUR_ERR_OVERLAP`, nothing written).
+ * `out_rgb[3]`; `fibers` (n, toward the light), `fibers_below` (m, beyond the point along
+ * -wi; INFINITY or NaN for a semi-infinite coat), `d_f`, `d_b` and the result as in
+ * `fur_eval_dual`, with the same contract (add it to S * V, multiply by cos(theta_i) and
+ * the light's radiance). The angles are those `DualLut::eval_dirs` converts to (the baked
+ * evaluator's conversion). A vector with a component that is not finite, or of zero (below
+ * the smallest normal float) or overflowing length, writes 0 and returns
+ * `FUR_ERR_DIRECTION`. `out_rgb` must not overlap the three vectors or `*dual`
+ * (`FUR_ERR_OVERLAP`, nothing written).
  *
  * # Safety
  * `dual` is NULL or points to an initialised `fur_dual`; each vector is NULL or points to 3
@@ -359,6 +370,7 @@ enum fur_status fur_eval_dual_dirs(const struct fur_dual *FUR_RESTRICT dual,
                                    const float *FUR_RESTRICT wr,
                                    const float *FUR_RESTRICT tangent,
                                    float fibers,
+                                   float fibers_below,
                                    float d_f,
                                    float d_b,
                                    float *FUR_RESTRICT out_rgb);

@@ -13,7 +13,7 @@
 use crate::args::{check_ptr, disjoint, open_bytes, read3, write3, Region};
 use crate::handle::build_tag;
 use crate::{fur_dual, fur_lut, fur_status};
-use bcsdf_core::dual::{Density, DualError, DualLut, DUAL_FORMAT_VERSION};
+use bcsdf_core::dual::{Density, DualError, DualLut, Fibers, DUAL_FORMAT_VERSION};
 use bcsdf_core::Angles;
 use core::mem::{align_of, offset_of, size_of, MaybeUninit};
 
@@ -239,16 +239,24 @@ fn density(d_f: f32, d_b: f32) -> Density {
 
 /// The dual-scattering term (docs/model.md §13), RGB, into `out_rgb[3]`, from angles
 /// (radians, as `fur_eval_far`): the light that reaches the shading point through `fibers`
-/// other fibers.
+/// other fibers, in a coat `fibers_below` fibers deep beneath the point.
 ///
-/// `fibers` is the number of fibers between the shading point and the light (a shadow ray's
-/// count, or a deep opacity map's / voxel density's estimate; fractional values are fine;
-/// NaN or negative is 0, i.e. unoccluded; above 10^6, or +infinity, is 10^6). `d_f` and
-/// `d_b` are the forward and backward density factors (1 and 1 is the shipped default; NaN
-/// or negative is 0; above 4 is 4). The result is the term to ADD to single scattering:
-/// shade with S * V + result, where S is `fur_eval_far`'s value and
-/// V = clamp(1 - fibers, 0, 1) the fraction of direct light; the result is in S's units
-/// (multiply it, like S, by cos(theta_i) and the light's radiance). Finite and >= 0.
+/// `fibers` is n, the number of fibers between the shading point and the light (a shadow
+/// ray's count, or a deep opacity map's / voxel density's estimate; fractional values are
+/// fine): NaN or negative is 0 (unoccluded), above 10^6 (or +infinity) is 10^6.
+/// `fibers_below` is m, the number of fibers beyond the shading point on the line from the
+/// light through it (along -wi, away from the light), up to the skin or out of the coat: the
+/// coat below, which sends light back up (fractional values are fine). Negative is 0 (the point lies on the
+/// skin); NaN, +infinity and anything above 10^6 is 10^6, a semi-infinite coat: pass
+/// INFINITY when the depth is not known. That is the coat of the previous version of this
+/// function, which had no `fibers_below`; its values changed anyway, since every Gaussian
+/// is now normalised over the angles the caller can reach. `d_f` and `d_b` are the forward
+/// and backward density factors (1 and 1 is the shipped default; NaN or negative is 0; above
+/// 4 is 4). The result is the term to ADD to single scattering: shade with S * V + result,
+/// where S is `fur_eval_far`'s value and V = clamp(1 - fibers, 0, 1) the fraction of direct
+/// light; the result is in S's units (multiply it, like S, by cos(theta_i) and the light's
+/// radiance). Finite and >= 0. The value is `DualLut::eval` with
+/// `Fibers::new(fibers, fibers_below)`, bit for bit.
 ///
 /// Invalid angles write 0 and return `FUR_ERR_ANGLE`. `out_rgb` must not overlap `*dual`
 /// (`FUR_ERR_OVERLAP`, nothing written).
@@ -257,13 +265,14 @@ fn density(d_f: f32, d_b: f32) -> Density {
 /// `dual` is NULL or points to an initialised `fur_dual`; `out_rgb` is NULL or points to 3
 /// writable floats.
 #[no_mangle]
-#[allow(clippy::too_many_arguments)] // the C signature: three angles, the count, two factors
+#[allow(clippy::too_many_arguments)] // the C signature: three angles, two counts, two factors
 pub unsafe extern "C" fn fur_eval_dual(
     dual: *const fur_dual,
     theta_i: f32,
     theta_r: f32,
     phi: f32,
     fibers: f32,
+    fibers_below: f32,
     d_f: f32,
     d_b: f32,
     out_rgb: *mut f32,
@@ -274,7 +283,9 @@ pub unsafe extern "C" fn fur_eval_dual(
     tri!(disjoint(Region::of(out_rgb, 3), &[open.region]));
     let (v, status) = match Angles::new(theta_i, theta_r, phi) {
         Ok(a) => (
-            open.lut.eval(&a, fibers, density(d_f, d_b)).0,
+            open.lut
+                .eval(&a, Fibers::new(fibers, fibers_below), density(d_f, d_b))
+                .0,
             fur_status::FUR_OK,
         ),
         Err(_) => ([0.0; 3], fur_status::FUR_ERR_ANGLE),
@@ -287,24 +298,27 @@ pub unsafe extern "C" fn fur_eval_dual(
 
 /// `fur_eval_dual` from world-space vectors (as `fur_eval_far_dirs`): `wi` toward the light,
 /// `wr` toward the viewer, `tangent` the fiber direction (none needs unit length), into
-/// `out_rgb[3]`; `fibers`, `d_f`, `d_b` and the result as in `fur_eval_dual` (add it to
-/// S * V, multiply by cos(theta_i) and the light's radiance). The angles are those
-/// `DualLut::eval_dirs` converts to (the baked evaluator's conversion). A vector with a
-/// component that is not finite, or of zero (below the smallest normal float) or overflowing
-/// length, writes 0 and returns `FUR_ERR_DIRECTION`. `out_rgb` must not
-/// overlap the three vectors or `*dual` (`FUR_ERR_OVERLAP`, nothing written).
+/// `out_rgb[3]`; `fibers` (n, toward the light), `fibers_below` (m, beyond the point along
+/// -wi; INFINITY or NaN for a semi-infinite coat), `d_f`, `d_b` and the result as in
+/// `fur_eval_dual`, with the same contract (add it to S * V, multiply by cos(theta_i) and
+/// the light's radiance). The angles are those `DualLut::eval_dirs` converts to (the baked
+/// evaluator's conversion). A vector with a component that is not finite, or of zero (below
+/// the smallest normal float) or overflowing length, writes 0 and returns
+/// `FUR_ERR_DIRECTION`. `out_rgb` must not overlap the three vectors or `*dual`
+/// (`FUR_ERR_OVERLAP`, nothing written).
 ///
 /// # Safety
 /// `dual` is NULL or points to an initialised `fur_dual`; each vector is NULL or points to 3
 /// readable floats; `out_rgb` is NULL or points to 3 writable floats.
 #[no_mangle]
-#[allow(clippy::too_many_arguments)] // the C signature: three vectors, the count, two factors
+#[allow(clippy::too_many_arguments)] // the C signature: three vectors, two counts, two factors
 pub unsafe extern "C" fn fur_eval_dual_dirs(
     dual: *const fur_dual,
     wi: *const f32,
     wr: *const f32,
     tangent: *const f32,
     fibers: f32,
+    fibers_below: f32,
     d_f: f32,
     d_b: f32,
     out_rgb: *mut f32,
@@ -327,9 +341,10 @@ pub unsafe extern "C" fn fur_eval_dual_dirs(
     tri!(disjoint(Region::of(out_rgb, 3), &inputs));
     // `DualLut::try_eval_dirs`: the Rust API's value bit for bit, and its verdict on the
     // directions from the same conversion (0 written for rejected ones).
+    let counts = Fibers::new(fibers, fibers_below);
     let (v, status) = match open
         .lut
-        .try_eval_dirs(wi_v, wr_v, t_v, fibers, density(d_f, d_b))
+        .try_eval_dirs(wi_v, wr_v, t_v, counts, density(d_f, d_b))
     {
         Ok(v) => (v.0, fur_status::FUR_OK),
         Err(_) => ([0.0; 3], fur_status::FUR_ERR_DIRECTION),
@@ -385,7 +400,7 @@ mod tests {
         // its length, `out` 3 writable floats; the vectors are live arrays.
         unsafe {
             assert_eq!(
-                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, 1.0, 1.0, out),
+                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, f32::INFINITY, 1.0, 1.0, out),
                 fur_status::FUR_ERR_NOT_OPEN
             );
             assert_eq!(
@@ -406,29 +421,76 @@ mod tests {
             );
             let a = Angles::new(0.3, -0.2, 2.5).unwrap();
             for n in [0.0, 0.5, 2.0, f32::NAN] {
+                for m in [0.0, 2.5, f32::INFINITY, f32::NAN] {
+                    assert_eq!(
+                        fur_eval_dual(p, 0.3, -0.2, 2.5, n, m, 1.0, 1.0, out),
+                        fur_status::FUR_OK
+                    );
+                    let w = want.eval(&a, Fibers::new(n, m), Density::DEFAULT).0;
+                    assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
+                }
+            }
+            // The count below matters: no fibers below reflect less than the deep coat.
+            let mut deep = [0.0f32; 3];
+            assert_eq!(
+                fur_eval_dual(
+                    p,
+                    0.3,
+                    -0.2,
+                    2.5,
+                    2.0,
+                    f32::INFINITY,
+                    1.0,
+                    1.0,
+                    deep.as_mut_ptr()
+                ),
+                fur_status::FUR_OK
+            );
+            assert!(deep.iter().any(|&v| v > 0.0));
+            assert_eq!(
+                fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 0.0, 1.0, 1.0, out),
+                fur_status::FUR_OK
+            );
+            assert!(rgb.iter().zip(&deep).all(|(s, d)| s < d));
+            let (wi, wr, t) = ([0.3f32, 0.8, 0.2], [-0.6f32, 0.7, -0.1], [0.0f32, 0.2, 1.0]);
+            for m in [0.0, 2.5, f32::INFINITY] {
                 assert_eq!(
-                    fur_eval_dual(p, 0.3, -0.2, 2.5, n, 1.0, 1.0, out),
+                    fur_eval_dual_dirs(
+                        p,
+                        wi.as_ptr(),
+                        wr.as_ptr(),
+                        t.as_ptr(),
+                        2.0,
+                        m,
+                        0.5,
+                        2.0,
+                        out
+                    ),
                     fur_status::FUR_OK
                 );
-                let w = want.eval(&a, n, Density::DEFAULT).0;
+                let w = want
+                    .eval_dirs(
+                        wi,
+                        wr,
+                        t,
+                        Fibers::new(2.0, m),
+                        Density { d_f: 0.5, d_b: 2.0 },
+                    )
+                    .0;
                 assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
             }
             assert_eq!(
-                fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 1.0, 1.0, out),
-                fur_status::FUR_OK
-            );
-            assert!(rgb.iter().any(|&v| v > 0.0));
-            let (wi, wr, t) = ([0.3f32, 0.8, 0.2], [-0.6f32, 0.7, -0.1], [0.0f32, 0.2, 1.0]);
-            assert_eq!(
-                fur_eval_dual_dirs(p, wi.as_ptr(), wr.as_ptr(), t.as_ptr(), 2.0, 0.5, 2.0, out),
-                fur_status::FUR_OK
-            );
-            let w = want
-                .eval_dirs(wi, wr, t, 2.0, Density { d_f: 0.5, d_b: 2.0 })
-                .0;
-            assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
-            assert_eq!(
-                fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 1.0, 1.0, p.cast::<f32>().add(8)),
+                fur_eval_dual(
+                    p,
+                    0.3,
+                    -0.2,
+                    2.5,
+                    2.0,
+                    0.0,
+                    1.0,
+                    1.0,
+                    p.cast::<f32>().add(8)
+                ),
                 fur_status::FUR_ERR_OVERLAP
             );
 
@@ -451,7 +513,7 @@ mod tests {
                 fur_status::FUR_ERR_DUAL_FORMAT
             );
             assert_eq!(
-                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, 1.0, 1.0, out),
+                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, f32::INFINITY, 1.0, 1.0, out),
                 fur_status::FUR_ERR_NOT_OPEN
             );
 
@@ -462,13 +524,13 @@ mod tests {
             );
             (*p)._opaque[1] ^= 1;
             assert_eq!(
-                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, 1.0, 1.0, out),
+                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, f32::INFINITY, 1.0, 1.0, out),
                 fur_status::FUR_ERR_OTHER_BUILD
             );
             (*p)._opaque[1] ^= 1;
             assert_eq!(fur_dual_close(p), fur_status::FUR_OK);
             assert_eq!(
-                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, 1.0, 1.0, out),
+                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, f32::INFINITY, 1.0, 1.0, out),
                 fur_status::FUR_ERR_NOT_OPEN
             );
         }

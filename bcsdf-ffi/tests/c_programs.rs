@@ -8,7 +8,8 @@
 //!
 //! The dual-scattering clients (`tests/c/dual.c`, `tests/c/dual.cpp`) run on a `.furdual`
 //! blob computed here from the same baked LUT, and are compared with `DualLut::eval` and
-//! `DualLut::eval_dirs` bit for bit (statuses too); dual.c drives `fur_dual_*` with bad
+//! `DualLut::eval_dirs` bit for bit (statuses too), with fiber counts toward the light and
+//! below the point (`Fibers`: finite coats and the semi-infinite one); dual.c drives `fur_dual_*` with bad
 //! input (NULL, misalignment, never-opened, closed and other-build fur_duals, overlaps,
 //! each refusal status of a corrupt blob, 3000 mutated blobs) and pairs it with LUTs through
 //! `fur_dual_check_lut` (the LUT it was computed from, another LUT, blobs recording another
@@ -21,7 +22,7 @@
 
 use bake::profiles::{build_model, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
-use bcsdf_core::dual::{self, Attenuation, Density, DualLut, DualTables, Quadrature};
+use bcsdf_core::dual::{self, Attenuation, Density, DualLut, DualTables, Fibers, Quadrature};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::{presets, Angles, Bcsdf, FurParams, Libm};
 use std::path::{Path, PathBuf};
@@ -171,7 +172,8 @@ fn expected(blob: &[u8]) -> Vec<String> {
     out
 }
 
-// The queries dual.c evaluates (its TI, TR, PH, FIBERS, DF/DB, WI/WR/WT, DIR_FIBERS).
+// The queries dual.c evaluates (its TI, TR, PH, FIBERS, BELOW, DF/DB, WI/WR/WT, DIR_FIBERS,
+// DIR_BELOW).
 const DUAL_TI: [f32; 8] = [0.5, -0.3, 1.2, 0.0, -1.5, 0.25, 2.0, 0.4];
 const DUAL_TR: [f32; 8] = [-0.35, 0.1, -1.0, 0.0, 1.4, 0.6, 0.1, -0.2];
 const DUAL_PH: [f32; 8] = [0.785, 3.0, -2.0, 0.0, 1.0, -0.1, 0.3, 7.0];
@@ -186,6 +188,9 @@ const DUAL_FIBERS: [f32; 9] = [
     f32::NAN,
     -3.0,
 ];
+// The fibers below the point: on the skin, fractional, finite, semi-infinite (+inf and NaN),
+// negative (0), above MAX_FIBERS.
+const DUAL_BELOW: [f32; 7] = [0.0, 2.5, 7.0, f32::INFINITY, f32::NAN, -2.0, 1.0e7];
 const DUAL_DENSITY: [(f32, f32); 4] = [(1.0, 1.0), (0.5, 2.0), (f32::NAN, -1.0), (10.0, 10.0)];
 type Dirs = ([f32; 3], [f32; 3], [f32; 3]);
 const DUAL_DIRS: [Dirs; 7] = [
@@ -198,6 +203,7 @@ const DUAL_DIRS: [Dirs; 7] = [
     ([1.0e20, 1.0e20, -1.0e20], [0.5, -0.5, 0.1], [0.0, 0.0, 3.0]),
 ];
 const DUAL_DIR_FIBERS: [f32; 4] = [0.0, 0.5, 3.0, f32::NAN];
+const DUAL_DIR_BELOW: [f32; 4] = [0.0, 2.5, 7.0, f32::INFINITY];
 // fur_status values the dual entry points return for these queries.
 const FUR_OK: i32 = 0;
 const FUR_ERR_ANGLE: i32 = 10;
@@ -234,9 +240,16 @@ fn rgb_line(prefix: String, status: i32, v: [f32; 3]) -> String {
 }
 
 /// `DualLut::eval` from angles, and the status `fur_eval_dual` returns.
-fn dual_at(d: &DualLut, ti: f32, tr: f32, ph: f32, n: f32, density: Density) -> (i32, [f32; 3]) {
+fn dual_at(
+    d: &DualLut,
+    ti: f32,
+    tr: f32,
+    ph: f32,
+    fibers: Fibers,
+    density: Density,
+) -> (i32, [f32; 3]) {
     match Angles::new(ti, tr, ph) {
-        Ok(a) => (FUR_OK, d.eval(&a, n, density).0),
+        Ok(a) => (FUR_OK, d.eval(&a, fibers, density).0),
         Err(_) => (FUR_ERR_ANGLE, [0.0; 3]),
     }
 }
@@ -247,28 +260,34 @@ fn expected_dual(blob: &[u8]) -> Vec<String> {
     let mut out = Vec::new();
     for i in 0..DUAL_TI.len() {
         for (f, &n) in DUAL_FIBERS.iter().enumerate() {
-            for (k, &(d_f, d_b)) in DUAL_DENSITY.iter().enumerate() {
-                let (st, v) = dual_at(
-                    &d,
-                    DUAL_TI[i],
-                    DUAL_TR[i],
-                    DUAL_PH[i],
-                    n,
-                    Density { d_f, d_b },
-                );
-                out.push(rgb_line(format!("dual {i} {f} {k}"), st, v));
+            for (b, &m) in DUAL_BELOW.iter().enumerate() {
+                for (k, &(d_f, d_b)) in DUAL_DENSITY.iter().enumerate() {
+                    let (st, v) = dual_at(
+                        &d,
+                        DUAL_TI[i],
+                        DUAL_TR[i],
+                        DUAL_PH[i],
+                        Fibers::new(n, m),
+                        Density { d_f, d_b },
+                    );
+                    out.push(rgb_line(format!("dual {i} {f} {b} {k}"), st, v));
+                }
             }
         }
     }
     for (i, &(wi, wr, t)) in DUAL_DIRS.iter().enumerate() {
+        // The status: whether the directions are accepted (eval_dirs gives 0 otherwise).
+        let st = match Angles::from_directions::<Libm>(wi, wr, t) {
+            Ok(_) => FUR_OK,
+            Err(_) => FUR_ERR_DIRECTION,
+        };
         for (f, &n) in DUAL_DIR_FIBERS.iter().enumerate() {
-            let v = d.eval_dirs(wi, wr, t, n, Density::DEFAULT).0;
-            // The status: whether the directions are accepted (eval_dirs gives 0 otherwise).
-            let st = match Angles::from_directions::<Libm>(wi, wr, t) {
-                Ok(_) => FUR_OK,
-                Err(_) => FUR_ERR_DIRECTION,
-            };
-            out.push(rgb_line(format!("dualdirs {i} {f}"), st, v));
+            for (b, &m) in DUAL_DIR_BELOW.iter().enumerate() {
+                let v = d
+                    .eval_dirs(wi, wr, t, Fibers::new(n, m), Density::DEFAULT)
+                    .0;
+                out.push(rgb_line(format!("dualdirs {i} {f} {b}"), st, v));
+            }
         }
     }
     out
@@ -278,18 +297,36 @@ fn expected_dual(blob: &[u8]) -> Vec<String> {
 fn expected_dual_cpp(blob: &[u8]) -> Vec<String> {
     let d = decoded(blob);
     let fibers = [0.0, 0.25, 3.5, f32::INFINITY, f32::NAN];
+    let below = [0.0, 2.5, 7.0, f32::INFINITY, f32::NAN];
     let mut out = Vec::new();
     for i in 0..3 {
         for (f, &n) in fibers.iter().enumerate() {
-            let (st, v) = dual_at(&d, DUAL_TI[i], DUAL_TR[i], DUAL_PH[i], n, Density::DEFAULT);
-            out.push(rgb_line(format!("cppdual {i} {f}"), st, v));
+            for (b, &m) in below.iter().enumerate() {
+                let (st, v) = dual_at(
+                    &d,
+                    DUAL_TI[i],
+                    DUAL_TR[i],
+                    DUAL_PH[i],
+                    Fibers::new(n, m),
+                    Density::DEFAULT,
+                );
+                out.push(rgb_line(format!("cppdual {i} {f} {b}"), st, v));
+            }
         }
     }
     let (wi, wr, t) = DUAL_DIRS[0];
-    let v = d
-        .eval_dirs(wi, wr, t, 2.0, Density { d_f: 0.5, d_b: 2.0 })
-        .0;
-    out.push(rgb_line("cppdualdirs".into(), FUR_OK, v));
+    for (b, &m) in below[..4].iter().enumerate() {
+        let v = d
+            .eval_dirs(
+                wi,
+                wr,
+                t,
+                Fibers::new(2.0, m),
+                Density { d_f: 0.5, d_b: 2.0 },
+            )
+            .0;
+        out.push(rgb_line(format!("cppdualdirs {b}"), FUR_OK, v));
+    }
     out.push(
         "cppdual refused: the bytes are not a dual-scattering (.furdual) blob (bad magic)".into(),
     );
@@ -416,7 +453,7 @@ fn check_dual_c_output(run: &Output, blob: &[u8]) {
     );
     let lines: Vec<&str> = stdout.lines().collect();
     let want = expected_dual(blob);
-    assert_eq!(want.len(), 8 * 9 * 4 + 7 * 4);
+    assert_eq!(want.len(), 8 * 9 * 7 * 4 + 7 * 4 * 4);
     assert_eq!(&lines[..want.len()], &want[..]);
     assert_eq!(
         &lines[want.len()..],

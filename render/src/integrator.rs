@@ -389,7 +389,8 @@ fn trace<S: Scatterer>(
                 if p_light > 0.0 {
                     row.rays += 1;
                     if let Some(n) = scene.fibers_crossed(&next_origin, &wl, next_from) {
-                        let f = method.fiber_light(fiber, &wl, &wr, &tangent, n);
+                        let below = || scene.fibers_below(&next_origin, &wl, next_from);
+                        let f = method.fiber_light(fiber, &wl, &wr, &tangent, n, below);
                         let le = lights.radiance(&wl);
                         let value: [f32; 3] = core::array::from_fn(|c| f[c] * le[c]);
                         add(&mut l, &mut row.orders, order, &beta, &value, 1.0 / p_light);
@@ -452,7 +453,8 @@ fn trace<S: Scatterer>(
                 let Some(n) = scene.fibers_before_surface(&next_origin, &s.wi, next_from) else {
                     break;
                 };
-                let f = method.fiber_light(fiber, &s.wi, &wr, &tangent, n);
+                let below = || scene.fibers_below(&next_origin, &s.wi, next_from);
+                let f = method.fiber_light(fiber, &s.wi, &wr, &tangent, n, below);
                 f.map(|v| v / s.pdf)
             }
         };

@@ -20,7 +20,7 @@
 //! drawn per vertex are those of `path`, so a render is the same bits for any thread count.
 
 use crate::scatter::Scatterer;
-use bcsdf_core::dual::{Density, DualLut};
+use bcsdf_core::dual::{Density, DualLut, Fibers};
 use bcsdf_core::{Angles, Libm};
 use core::fmt;
 use core::str::FromStr;
@@ -99,7 +99,8 @@ impl Method<'_> {
 
     /// What a fiber returns toward `wr` for unit radiance from `wi` when the ray toward the
     /// light (or surface) crossed `fibers` fibers: S·cos θ_i·V, plus D·cos θ_i for `dual`
-    /// (RGB, ≥ 0, finite).
+    /// (RGB, ≥ 0, finite), whose coat below the point `below` counts (called for `dual`
+    /// only: [`crate::scene::Scene::fibers_below`] casts one more ray).
     pub(crate) fn fiber_light<S: Scatterer>(
         &self,
         fiber: &S,
@@ -107,6 +108,7 @@ impl Method<'_> {
         wr: &Vector3<f32>,
         tangent: &Vector3<f32>,
         fibers: u32,
+        below: impl FnOnce() -> u32,
     ) -> [f32; 3] {
         let mut value = if fibers == 0 {
             fiber.eval(wi, wr, tangent).0
@@ -118,7 +120,8 @@ impl Method<'_> {
                 Angles::from_directions::<Libm>((*wi).into(), (*wr).into(), (*tangent).into())
             {
                 let cos = a.theta_i().cos().max(0.0);
-                let d = lut.eval(&a, fibers as f32, *density);
+                let counts = Fibers::new(fibers as f32, below() as f32);
+                let d = lut.eval(&a, counts, *density);
                 for c in 0..3 {
                     let v = d[c] * cos;
                     if v.is_finite() && v > 0.0 {

@@ -168,6 +168,24 @@ impl Scene {
         Some(self.count_fibers(origin, dir, from, f32::INFINITY))
     }
 
+    /// The fibers beyond `origin` (other than `from`) on the line from a light through it:
+    /// along −`toward_light` up to the first surface (skin, ground) or out of the scene. The
+    /// coat below the shading point, m of [`bcsdf_core::dual::Fibers`] (docs/model.md §13,
+    /// "The coat below").
+    #[must_use]
+    pub fn fibers_below(
+        &self,
+        origin: &Vector3<f32>,
+        toward_light: &Vector3<f32>,
+        from: Option<u32>,
+    ) -> u32 {
+        let away = -toward_light;
+        let t_max = self
+            .intersect_surfaces(origin, &away)
+            .map_or(f32::INFINITY, |s| s.t);
+        self.count_fibers(origin, &away, from, t_max)
+    }
+
     /// The distinct fibers (other than `from`) on the unit ray before distance `t_max`.
     fn count_fibers(
         &self,

@@ -137,7 +137,8 @@ pub enum Method {
     /// Unidirectional path tracing with next-event estimation and MIS (the reference).
     Path,
     /// `single`, with rays toward a fiber's lights and surfaces that count the fibers they
-    /// cross, plus the dual-scattering term (tables computed from the evaluator first).
+    /// cross (and, away from the light, the fibers of the coat below), plus the
+    /// dual-scattering term (tables computed from the evaluator first).
     Dual,
     /// No fiber-to-fiber light: at a fiber, light sampling with a binary shadow ray and a
     /// bounce only to a surface no fiber hides (skin and ground path traced as in `path`).

@@ -77,7 +77,7 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         let blob = read_lut(path)?;
         let baked = BakedBcsdf::from_bytes(&blob)
             .map_err(|e| Error::input(format!("{}: {e}", path.display())))?;
-        let stored = if args.compare || args.method == MethodArg::Dual {
+        let stored = if methods(args).contains(&MethodArg::Dual) {
             stored_dual(path, &baked)?
         } else {
             None
@@ -324,6 +324,16 @@ fn stored_dual(lut_path: &Path, lut: &BakedBcsdf) -> Result<Option<Box<DualLut>>
     Ok(Some(dual))
 }
 
+/// The methods `args` renders: its `--method`, or path, dual and single with `--compare`
+/// (the one place that decides whether the dual tables are needed).
+fn methods(args: &RenderArgs) -> &[MethodArg] {
+    if args.compare {
+        &[MethodArg::Path, MethodArg::Dual, MethodArg::Single]
+    } else {
+        core::slice::from_ref(&args.method)
+    }
+}
+
 /// Renders with one evaluator and the method of `args`, or path, dual and single with
 /// `--compare`. For `dual` the term reads `stored` (the `.furdual` beside `--lut`, see
 /// [`stored_dual`]), or else tables computed from the evaluator first (docs/model.md §13).
@@ -334,11 +344,7 @@ fn trace<B: Bcsdf + Sync>(
     settings: &Settings,
     args: &RenderArgs,
 ) -> Result<Vec<(MethodArg, Render)>, Error> {
-    let kinds: &[MethodArg] = if args.compare {
-        &[MethodArg::Path, MethodArg::Dual, MethodArg::Single]
-    } else {
-        core::slice::from_ref(&args.method)
-    };
+    let kinds = methods(args);
     // What an engine loads: the tables through the `.furdual` blob (f16).
     let lut = match stored {
         Some(lut) => lut,

@@ -307,3 +307,78 @@ fn erf_polynomial_is_within_1e_6() {
     assert_eq!(erf_polynomial(f32::NEG_INFINITY), -1.0);
     assert!(erf_polynomial(f32::NAN).abs() <= 1.0);
 }
+
+/// The f32 value of `const NAME: f32 = literal;` in the shader.
+fn wgsl_const(name: &str) -> f32 {
+    let src = crate::shader::FUR_BCSDF_WGSL;
+    let key = std::format!("const {name}: f32 = ");
+    let at = src
+        .find(&key)
+        .unwrap_or_else(|| panic!("{name} not in the shader"))
+        + key.len();
+    let end = at + src[at..].find(';').unwrap();
+    src[at..end].trim().parse().unwrap()
+}
+
+/// The float literals (digits with a '.', an optional exponent) in the body of the shader
+/// function `name`, in order.
+fn wgsl_literals(name: &str) -> std::vec::Vec<f32> {
+    let src = crate::shader::FUR_BCSDF_WGSL;
+    let at = src
+        .find(&std::format!("fn {name}("))
+        .unwrap_or_else(|| panic!("{name} not in the shader"));
+    let body = &src[at..at + src[at..].find("\n}").unwrap()];
+    let b = body.as_bytes();
+    let mut out = std::vec::Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        let word_start = i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_');
+        if b[i].is_ascii_digit() && word_start {
+            let mut j = i;
+            while j < b.len()
+                && (b[j].is_ascii_digit()
+                    || b[j] == b'.'
+                    || b[j] == b'e'
+                    || (b[j] == b'-' && b[j - 1] == b'e'))
+            {
+                j += 1;
+            }
+            if body[i..j].contains('.') {
+                out.push(body[i..j].parse().unwrap());
+            }
+            i = j;
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+#[test]
+fn the_shader_twins_use_the_same_coefficients() {
+    // The WGSL `fur_exp_neg` and `fur_erf` repeat exp_neg_reduced's and erf_polynomial's
+    // operations on purpose (the GPU = CPU parity rests on it); their constants must be
+    // these to the bit, so a coefficient edited on one side only fails here, not only when
+    // the drift exceeds the GPU test's 1e-5.
+    assert_eq!(wgsl_const("FUR_LN2_HI"), LN2_SPLIT[0]);
+    assert_eq!(wgsl_const("FUR_LN2_LO"), LN2_SPLIT[1]);
+    assert_eq!(wgsl_const("FUR_LOG2_E"), core::f32::consts::LOG2_E);
+    // fur_exp_neg's literals: the clamp bounds 0.0 and 87.0, the polynomial, then 1.0,
+    // 0.0 and 87.0 of the result's select.
+    let exp = wgsl_literals("fur_exp_neg");
+    let poly: std::vec::Vec<f32> = exp
+        .iter()
+        .copied()
+        .filter(|v| *v > 0.0 && *v < 1.0)
+        .collect();
+    assert_eq!(poly, EXP_NEG_POLY, "fur_exp_neg's literals {exp:?}");
+    assert_eq!(wgsl_const("FUR_ERF_P"), ERF_P);
+    for (k, a) in ERF_A.iter().enumerate() {
+        assert_eq!(
+            wgsl_const(&std::format!("FUR_ERF_A{}", k + 1)),
+            *a,
+            "a{}",
+            k + 1
+        );
+    }
+}

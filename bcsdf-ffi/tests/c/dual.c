@@ -5,9 +5,11 @@
  *   dual DUAL_FILE LUT_FILE OTHER_LUT_FILE
  *
  * Opens DUAL_FILE (a .furdual blob) into a heap-allocated fur_dual, frees the file's bytes
- * (nothing is borrowed), evaluates a fixed set of angles, fiber counts (0, fractional, large,
- * infinite, NaN, negative) and density factors through fur_eval_dual, and a fixed set of
- * directions (degenerate ones included) through fur_eval_dual_dirs, and prints the status and
+ * (nothing is borrowed), evaluates a fixed set of angles, fiber counts toward the light (0,
+ * fractional, large, infinite, NaN, negative), fiber counts below the point (0, fractional,
+ * finite, infinite i.e. a semi-infinite coat, NaN, negative, large) and density factors
+ * through fur_eval_dual, and a fixed set of directions (degenerate ones included) and counts
+ * through fur_eval_dual_dirs, and prints the status and
  * the float bits (hex) for the Rust test to compare with DualLut::eval / eval_dirs bit for
  * bit. Then checks bad input: NULL arguments for every function, misaligned pointers,
  * never-opened (zeroed, FUR_DUAL_INIT, 0xa5-filled), closed and other-build fur_duals,
@@ -32,6 +34,8 @@ static const float TR[N_ANGLES] = {-0.35f, 0.1f, -1.0f, 0.0f, 1.4f, 0.6f, 0.1f, 
 static const float PH[N_ANGLES] = {0.785f, 3.0f, -2.0f, 0.0f, 1.0f, -0.1f, 0.3f, 7.0f};
 #define N_FIBERS 9
 static float FIBERS[N_FIBERS]; /* set in main: INFINITY and NAN are not constant in C99 */
+#define N_BELOW 7
+static float BELOW[N_BELOW];
 #define N_DENSITY 4
 static float DF[N_DENSITY];
 static float DB[N_DENSITY];
@@ -41,6 +45,8 @@ static float WR[N_DIRS][3];
 static float WT[N_DIRS][3];
 #define N_DIR_FIBERS 4
 static float DIR_FIBERS[N_DIR_FIBERS];
+#define N_DIR_BELOW 4
+static float DIR_BELOW[N_DIR_BELOW];
 
 static void set3(float *v, float x, float y, float z) {
     v[0] = x;
@@ -53,6 +59,15 @@ static void init_queries(void) {
     memcpy(FIBERS, fibers, sizeof fibers);
     FIBERS[6] = INFINITY;
     FIBERS[7] = NAN;
+    /* The coat below: on the skin, fractional, finite, semi-infinite (INFINITY and NaN),
+     * negative (0), beyond the largest count (10^6). */
+    BELOW[0] = 0.0f;
+    BELOW[1] = 2.5f;
+    BELOW[2] = 7.0f;
+    BELOW[3] = INFINITY;
+    BELOW[4] = NAN;
+    BELOW[5] = -2.0f;
+    BELOW[6] = 1.0e7f;
     DF[0] = 1.0f, DB[0] = 1.0f;
     DF[1] = 0.5f, DB[1] = 2.0f;
     DF[2] = NAN, DB[2] = -1.0f;
@@ -71,6 +86,10 @@ static void init_queries(void) {
     DIR_FIBERS[1] = 0.5f;
     DIR_FIBERS[2] = 3.0f;
     DIR_FIBERS[3] = NAN;
+    DIR_BELOW[0] = 0.0f;
+    DIR_BELOW[1] = 2.5f;
+    DIR_BELOW[2] = 7.0f;
+    DIR_BELOW[3] = INFINITY;
 }
 
 #if defined(__GNUC__)
@@ -110,7 +129,7 @@ static int is_zero(const fur_dual *d) {
 }
 
 int main(int argc, char **argv) {
-    size_t len = 0, i, f, k;
+    size_t len = 0, i, f, b, k;
     unsigned char *bytes, *copy;
     fur_dual *dual, *other;
     float rgb[3];
@@ -153,32 +172,44 @@ int main(int argc, char **argv) {
 
     for (i = 0; i < N_ANGLES; i++)
         for (f = 0; f < N_FIBERS; f++)
-            for (k = 0; k < N_DENSITY; k++) {
+            for (b = 0; b < N_BELOW; b++)
+                for (k = 0; k < N_DENSITY; k++) {
+                    fur_status st;
+                    rgb[0] = rgb[1] = rgb[2] = -1.0f;
+                    st = fur_eval_dual(dual, TI[i], TR[i], PH[i], FIBERS[f], BELOW[b], DF[k], DB[k],
+                                       rgb);
+                    printf("dual %u %u %u %u %d %08x %08x %08x\n", (unsigned)i, (unsigned)f,
+                           (unsigned)b, (unsigned)k, (int)st, bits(rgb[0]), bits(rgb[1]),
+                           bits(rgb[2]));
+                }
+    for (i = 0; i < N_DIRS; i++)
+        for (f = 0; f < N_DIR_FIBERS; f++)
+            for (b = 0; b < N_DIR_BELOW; b++) {
                 fur_status st;
                 rgb[0] = rgb[1] = rgb[2] = -1.0f;
-                st = fur_eval_dual(dual, TI[i], TR[i], PH[i], FIBERS[f], DF[k], DB[k], rgb);
-                printf("dual %u %u %u %d %08x %08x %08x\n", (unsigned)i, (unsigned)f, (unsigned)k,
-                       (int)st, bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
+                st = fur_eval_dual_dirs(dual, WI[i], WR[i], WT[i], DIR_FIBERS[f], DIR_BELOW[b], 1.0f,
+                                        1.0f, rgb);
+                printf("dualdirs %u %u %u %d %08x %08x %08x\n", (unsigned)i, (unsigned)f,
+                       (unsigned)b, (int)st, bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
             }
-    for (i = 0; i < N_DIRS; i++)
-        for (f = 0; f < N_DIR_FIBERS; f++) {
-            fur_status st;
-            rgb[0] = rgb[1] = rgb[2] = -1.0f;
-            st = fur_eval_dual_dirs(dual, WI[i], WR[i], WT[i], DIR_FIBERS[f], 1.0f, 1.0f, rgb);
-            printf("dualdirs %u %u %d %08x %08x %08x\n", (unsigned)i, (unsigned)f, (int)st,
-                   bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
-        }
     /* A copy made by value is another open fur_dual with the same results. */
     {
         float a[3], b[3];
         memcpy(other, dual, sizeof *dual);
-        EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 1.0f, 1.0f, a) == FUR_OK);
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 1.0f, 1.0f, b) == FUR_OK);
+        EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, a) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, b) == FUR_OK);
         EXPECT(memcmp(a, b, sizeof a) == 0);
         EXPECT(a[0] > 0.0f || a[1] > 0.0f || a[2] > 0.0f);
+        /* The coat below matters: a point on the skin (0 below) gets less back from it than
+         * one over a semi-infinite coat; NaN below is the semi-infinite coat. */
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 0.0f, 1.0f, 1.0f, a) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, INFINITY, 1.0f, 1.0f, b) == FUR_OK);
+        EXPECT(a[0] < b[0] && a[1] < b[1] && a[2] < b[2]);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, NAN, 1.0f, 1.0f, a) == FUR_OK);
+        EXPECT(memcmp(a, b, sizeof a) == 0);
         EXPECT(fur_dual_close(other) == FUR_OK);
         EXPECT(is_zero(other));
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 1.0f, 1.0f, b) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, b) == FUR_OK);
     }
 
     /* NULL arguments for every function. */
@@ -187,32 +218,32 @@ int main(int argc, char **argv) {
     EXPECT(fur_dual_open(copy, len, NULL) == FUR_ERR_NULL);
     EXPECT(fur_dual_open(copy, 0, other) == FUR_ERR_LENGTH);
     EXPECT(fur_dual_close(NULL) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual(NULL, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, NULL) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(NULL, wi, wr, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(dual, NULL, wr, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(dual, wi, NULL, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(dual, wi, wr, NULL, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 1.0f, 1.0f, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual(NULL, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(NULL, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(dual, NULL, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(dual, wi, NULL, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(dual, wi, wr, NULL, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL) == FUR_ERR_NULL);
 
     /* Misaligned pointers. */
-    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, misaligned) == FUR_ERR_ALIGNMENT);
-    EXPECT(fur_eval_dual_dirs(dual, misaligned, wr, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_ALIGNMENT);
-    EXPECT(fur_eval_dual(( const fur_dual *)((const char *)dual + 4), 0.1f, 0.2f, 0.3f, 1.0f, 1.0f,
+    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, misaligned) == FUR_ERR_ALIGNMENT);
+    EXPECT(fur_eval_dual_dirs(dual, misaligned, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_ALIGNMENT);
+    EXPECT(fur_eval_dual(( const fur_dual *)((const char *)dual + 4), 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f,
                          1.0f, rgb) == FUR_ERR_ALIGNMENT);
     EXPECT(fur_dual_open(copy, len, (fur_dual *)(void *)((char *)other + 4)) == FUR_ERR_ALIGNMENT);
     EXPECT(fur_dual_close((fur_dual *)(void *)((char *)other + 4)) == FUR_ERR_ALIGNMENT);
 
     /* Bad angles and directions: 0 written. */
     rgb[0] = -1.0f;
-    EXPECT(fur_eval_dual(dual, 2.0f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_ANGLE && rgb[0] == 0.0f);
+    EXPECT(fur_eval_dual(dual, 2.0f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_ANGLE && rgb[0] == 0.0f);
     rgb[0] = -1.0f;
-    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, INFINITY, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_ANGLE &&
+    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, INFINITY, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_ANGLE &&
            rgb[0] == 0.0f);
     {
         const float zero[3] = {0.0f, 0.0f, 0.0f};
         rgb[0] = -1.0f;
-        EXPECT(fur_eval_dual_dirs(dual, zero, wr, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_DIRECTION &&
+        EXPECT(fur_eval_dual_dirs(dual, zero, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_DIRECTION &&
                rgb[0] == 0.0f);
     }
 
@@ -221,14 +252,14 @@ int main(int argc, char **argv) {
     {
         float v[4] = {0.3f, 0.8f, 0.2f, 0.0f};
         unsigned char *big = (unsigned char *)malloc(sizeof(fur_dual) + len);
-        EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f,
+        EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f,
                              (float *)opaque(&dual->_opaque[100])) == FUR_ERR_OVERLAP);
-        EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 1.0f, 1.0f,
+        EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f,
                                   (float *)opaque(&dual->_opaque[FUR_DUAL_WORDS - 1])) ==
                FUR_ERR_OVERLAP);
-        EXPECT(fur_eval_dual_dirs(dual, v, wr, t, 1.0f, 1.0f, 1.0f, (float *)opaque(v + 1)) ==
+        EXPECT(fur_eval_dual_dirs(dual, v, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, (float *)opaque(v + 1)) ==
                FUR_ERR_OVERLAP);
-        EXPECT(fur_eval_dual_dirs(dual, wi, wr, v, 1.0f, 1.0f, 1.0f, (float *)opaque(v + 2)) ==
+        EXPECT(fur_eval_dual_dirs(dual, wi, wr, v, 1.0f, 2.5f, 1.0f, 1.0f, (float *)opaque(v + 2)) ==
                FUR_ERR_OVERLAP);
         EXPECT(v[0] == 0.3f && v[1] == 0.8f && v[2] == 0.2f && v[3] == 0.0f);
         if (!big) return 2;
@@ -238,34 +269,34 @@ int main(int argc, char **argv) {
         EXPECT(memcmp(big + sizeof(fur_dual) - 8, bytes, len) == 0);
         free(big);
         /* The fur_dual still evaluates. */
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 1.0f, 1.0f, 1.0f, rgb) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_OK);
     }
 
     /* Never opened: calloc'd, FUR_DUAL_INIT, 0xa5-filled. */
     memset(other, 0, sizeof *other);
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
     {
         static fur_dual init = FUR_DUAL_INIT;
-        EXPECT(fur_eval_dual(&init, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
-        EXPECT(fur_eval_dual_dirs(&init, wi, wr, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_eval_dual(&init, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_eval_dual_dirs(&init, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
     }
     memset(other, 0xa5, sizeof *other);
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
-    EXPECT(fur_eval_dual_dirs(other, wi, wr, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual_dirs(other, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
 
     /* Another build's fur_dual: word 1 holds the build tag; a changed check word (3) or
      * source (2) is not an open fur_dual. */
     memcpy(other, dual, sizeof *dual);
     other->_opaque[1] ^= 1u;
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_OTHER_BUILD);
-    EXPECT(fur_eval_dual_dirs(other, wi, wr, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_OTHER_BUILD);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_OTHER_BUILD);
+    EXPECT(fur_eval_dual_dirs(other, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_OTHER_BUILD);
     other->_opaque[1] ^= 1u;
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_OK);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_OK);
     other->_opaque[3] ^= 1u;
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
     other->_opaque[3] ^= 1u;
     other->_opaque[2] ^= 1u;
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
     EXPECT(fur_dual_close(other) == FUR_OK);
     EXPECT(is_zero(other));
 
@@ -276,7 +307,7 @@ int main(int argc, char **argv) {
         memcpy(other, dual, sizeof *dual);                      \
         EXPECT(fur_dual_open(copy, (n), other) == (status));    \
         EXPECT(is_zero(other));                                 \
-        EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN); \
+        EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN); \
         memcpy(copy, bytes, len);                               \
     } while (0)
     REFUSED(len - 1, FUR_ERR_DUAL_LENGTH);
@@ -308,7 +339,7 @@ int main(int argc, char **argv) {
     reseal(copy, len);
     EXPECT(memcmp(copy, bytes, len) == 0);
     EXPECT(fur_dual_open(copy, len, other) == FUR_OK);
-    EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 1.0f, 1.0f, rgb) == FUR_OK);
+    EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_OK);
     EXPECT(fur_dual_close(other) == FUR_OK);
 
     /* Pairing with LUTs (fur_dual_check_lut): the LUT the blob was computed from, another
@@ -374,7 +405,7 @@ int main(int argc, char **argv) {
         }
         st = fur_dual_open(copy, n, other);
         if (st >= FUR_ERR_DUAL_LENGTH && st <= FUR_ERR_DUAL_INVALID &&
-            fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN)
+            fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN)
             refused++;
         else if (n == 0 && st == FUR_ERR_LENGTH)
             refused++;
@@ -385,8 +416,8 @@ int main(int argc, char **argv) {
     /* Closed: refused, and reads nothing else. */
     EXPECT(fur_dual_close(dual) == FUR_OK);
     EXPECT(is_zero(dual));
-    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
-    EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
     EXPECT(fur_dual_close(dual) == FUR_OK);
 
     free(copy);

@@ -3,7 +3,8 @@
 //   dual_cpp DUAL_FILE
 // Opens the .furdual blob from a std::vector that is destroyed right after (nothing is
 // borrowed) into a heap-allocated fur_dual owned by a RAII wrapper, evaluates a few queries
-// and prints the status and float bits for the Rust test to compare with DualLut bit for bit.
+// (fiber counts toward the light and below the point, finite and semi-infinite coats) and
+// prints the status and float bits for the Rust test to compare with DualLut bit for bit.
 #include "fur_bcsdf.h"
 
 #include <array>
@@ -67,24 +68,33 @@ int main(int argc, char **argv) {
     }
     const std::array<float, 5> fibers{0.0f, 0.25f, 3.5f, std::numeric_limits<float>::infinity(),
                                       std::numeric_limits<float>::quiet_NaN()};
+    // The coat below: on the skin, fractional, finite, semi-infinite (INFINITY and NaN).
+    const std::array<float, 5> below{0.0f, 2.5f, 7.0f, std::numeric_limits<float>::infinity(),
+                                     std::numeric_limits<float>::quiet_NaN()};
     for (std::size_t i = 0; i < TI.size(); ++i) {
         for (std::size_t f = 0; f < fibers.size(); ++f) {
-            std::array<float, 3> rgb{};
-            fur_status st = fur_eval_dual(dual->get(), TI[i], TR[i], PH[i], fibers[f], 1.0f, 1.0f, rgb.data());
-            std::printf("cppdual %zu %zu %d %08x %08x %08x\n", i, f, static_cast<int>(st), bits(rgb[0]),
-                        bits(rgb[1]), bits(rgb[2]));
+            for (std::size_t b = 0; b < below.size(); ++b) {
+                std::array<float, 3> rgb{};
+                fur_status st = fur_eval_dual(dual->get(), TI[i], TR[i], PH[i], fibers[f], below[b], 1.0f,
+                                              1.0f, rgb.data());
+                std::printf("cppdual %zu %zu %zu %d %08x %08x %08x\n", i, f, b, static_cast<int>(st),
+                            bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
+            }
         }
     }
     const std::array<float, 3> wi{0.3f, 0.8f, 0.2f}, wr{-0.6f, 0.7f, -0.1f}, t{0.0f, 0.2f, 1.0f};
     std::array<float, 3> rgb{};
-    fur_status st = fur_eval_dual_dirs(dual->get(), wi.data(), wr.data(), t.data(), 2.0f, 0.5f, 2.0f, rgb.data());
-    std::printf("cppdualdirs %d %08x %08x %08x\n", static_cast<int>(st), bits(rgb[0]), bits(rgb[1]),
-                bits(rgb[2]));
+    for (std::size_t b = 0; b < 4; ++b) {
+        fur_status st = fur_eval_dual_dirs(dual->get(), wi.data(), wr.data(), t.data(), 2.0f, below[b], 0.5f,
+                                           2.0f, rgb.data());
+        std::printf("cppdualdirs %zu %d %08x %08x %08x\n", b, static_cast<int>(st), bits(rgb[0]),
+                    bits(rgb[1]), bits(rgb[2]));
+    }
     // A corrupt blob is refused with its status, the fur_dual left closed.
     std::vector<unsigned char> bad(FUR_DUAL_BLOB_LEN, 0);
     Dual refused(bad);
     if (refused.status() != FUR_ERR_DUAL_FORMAT) return 1;
-    if (fur_eval_dual(refused.get(), 0.1f, 0.2f, 0.3f, 1.0f, 1.0f, 1.0f, rgb.data()) != FUR_ERR_NOT_OPEN) return 1;
+    if (fur_eval_dual(refused.get(), 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb.data()) != FUR_ERR_NOT_OPEN) return 1;
     std::printf("cppdual refused: %s\n", fur_status_str(refused.status()));
     return 0;
 }

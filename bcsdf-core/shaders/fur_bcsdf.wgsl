@@ -1031,8 +1031,11 @@ fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
 // little-endian f16 halves, read with unpack2x16float (exact, as the CPU's f16 -> f32):
 // - the node fields, [theta node k (64)][field f (15)][channel c (3)];
 // - N^G, [family g (4)][theta node k (64)][phi node j (32)][channel c (3)].
-// Every step mirrors `DualLut::eval` in the same order; the Gaussians use the built-in exp
-// where the CPU has its polynomial `exp_neg_saturating` (a few ulp apart).
+// Every step mirrors `DualLut::eval` in the same order, with the CPU's lane functions ported
+// operation for operation: rsqrt_newton (fur_rsqrt_newton), exp_neg_saturating
+// (fur_exp_neg), erf_polynomial (fur_erf) and the finite coat's closed forms of
+// dual/coat.rs (fur_reflectance_squared, fur_downward_flux, fur_backscatter_factor). What
+// remains between the two is the GPU's rounding of division and fused multiply-adds.
 
 @group(0) @binding(3) var<storage, read> fur_dual: array<u32>;
 
@@ -1063,6 +1066,11 @@ const FUR_DUAL_PHI_SCALE: f32 = 9.86760616;
 const FUR_DUAL_MAX_FIBERS: f32 = 1.0e6;
 const FUR_DUAL_MAX_DENSITY: f32 = 4.0;
 const FUR_DUAL_MIN_VARIANCE: f32 = 3.0e-6;
+// The smallest mass a Gaussian is divided by (dual::eval's MIN_REACHABLE_MASS): a lobe
+// centred far outside the reachable range is not blown up.
+const FUR_DUAL_MIN_MASS: f32 = 0.05;
+// The smallest denominator the finite coat's closed forms divide by (dual::coat's TINY).
+const FUR_DUAL_TINY: f32 = 1e-6;
 // ln 2 as an f32 (core::f32::consts::LN_2).
 const FUR_LN2: f32 = 0.693147182;
 // log2 e, ln 2 in two parts (math::exp_neg_saturating's reduction) and 1/sqrt(2 pi).
@@ -1070,6 +1078,15 @@ const FUR_LOG2_E: f32 = 1.44269502;
 const FUR_LN2_HI: f32 = 0.693359375;
 const FUR_LN2_LO: f32 = -2.1219444e-4;
 const FUR_INV_SQRT_TAU: f32 = 0.3989423;
+// 1/sqrt(2) as an f32 (core::f32::consts::FRAC_1_SQRT_2).
+const FUR_FRAC_1_SQRT_2: f32 = 0.707106769;
+// math::erf_polynomial's constants (Abramowitz and Stegun 7.1.26): p and a1 ... a5.
+const FUR_ERF_P: f32 = 0.3275911;
+const FUR_ERF_A1: f32 = 0.2548296;
+const FUR_ERF_A2: f32 = -0.28449674;
+const FUR_ERF_A3: f32 = 1.4214137;
+const FUR_ERF_A4: f32 = -1.453152;
+const FUR_ERF_A5: f32 = 1.0614054;
 
 // Half h of the blob's tables (counted from the first half after the header).
 fn fur_dual_half(h: u32) -> f32 {
@@ -1085,6 +1102,11 @@ fn fur_dual_rgb(h: u32) -> vec3<f32> {
 // True for NaN, on the bits (see fur_finite).
 fn fur_is_nan(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u;
+}
+
+// fur_is_nan per channel.
+fn fur_is_nan3(x: vec3<f32>) -> vec3<bool> {
+    return (bitcast<vec3<u32>>(x) & vec3<u32>(0x7fffffffu)) > vec3<u32>(0x7f800000u);
 }
 
 // Linear interpolation position of theta on the theta axis (dual::theta_position):
@@ -1148,14 +1170,95 @@ fn fur_exp_neg(x_in: vec3<f32>) -> vec3<f32> {
     return select(ldexp(e, -vec3<i32>(k)), vec3<f32>(0.0), x_in > vec3<f32>(87.0));
 }
 
-// The normalised Gaussian G(d; sqrt(v)) = e^(-d^2/2v)/sqrt(2 pi v) per channel, v kept in
-// [dual::MIN_VARIANCE, 1e30], as the CPU's lanes compute it: s = 1/sqrt(v), z = d s,
-// e^(-z^2/2) s/sqrt(2 pi).
-fn fur_dual_gauss(d: vec3<f32>, v_in: vec3<f32>) -> vec3<f32> {
+// erf x per channel, the operations of math::erf_polynomial on the CPU (Abramowitz and
+// Stegun 7.1.26, error at most 1.5e-7): with a = |x| kept in [0, 10] (NaN gives 0; erf 10
+// is 1 in f32) and t = 1/(1 + p a),
+//   erf a = 1 - (a1 t + a2 t^2 + a3 t^3 + a4 t^4 + a5 t^5) e^(-a^2)
+// (Horner from a5, then times t), and the sign bit of x put back onto it (erf is odd).
+fn fur_erf(x: vec3<f32>) -> vec3<f32> {
+    let a = select(min(abs(x), vec3<f32>(10.0)), vec3<f32>(0.0), fur_is_nan3(x));
+    let t = 1.0 / (1.0 + FUR_ERF_P * a);
+    let poly = ((((FUR_ERF_A5 * t + FUR_ERF_A4) * t + FUR_ERF_A3) * t + FUR_ERF_A2) * t + FUR_ERF_A1) * t;
+    let e = 1.0 - poly * fur_exp_neg(a * a);
+    let sign = bitcast<vec3<u32>>(x) & vec3<u32>(0x80000000u);
+    return bitcast<vec3<f32>>(bitcast<vec3<u32>>(e) | sign);
+}
+
+// x per channel kept in [0, top] by max then min, NaN giving 0 (the CPU's
+// x.max(0.0).min(top), which a GPU's max need not reproduce for NaN).
+fn fur_dual_between(x: vec3<f32>, top: vec3<f32>) -> vec3<f32> {
+    return select(min(max(x, vec3<f32>(0.0)), top), vec3<f32>(0.0), fur_is_nan3(x));
+}
+
+// The normalised Gaussian G(d; sqrt(v)) = e^(-d^2/2v)/sqrt(2 pi v) per channel, divided by
+// its mass over the x = theta_i + theta_r the caller can reach (theta_i in [-pi/2, pi/2]),
+// given d = x - mean (dual::eval's gauss_reachable). v is kept in [dual::MIN_VARIANCE,
+// 1e30]; with s = 1/sqrt(v) (fur_rsqrt_newton) and z = d s:
+//   G = e^(-z^2/2) s/sqrt(2 pi),
+//   mass = (erf z+ - erf z-)/2, z+- = (d - theta_i +- pi/2) s/sqrt(2) (fur_erf),
+// the mass kept at or above 0.05, so that each lobe returns its stored energy.
+fn fur_dual_gauss(d: vec3<f32>, v_in: vec3<f32>, theta_i: f32) -> vec3<f32> {
     let v = clamp(v_in, vec3<f32>(FUR_DUAL_MIN_VARIANCE), vec3<f32>(1e30));
     let s = fur_rsqrt_newton(v);
     let z = d * s;
-    return fur_exp_neg(0.5 * z * z) * s * FUR_INV_SQRT_TAU;
+    let g = fur_exp_neg(0.5 * z * z) * s * FUR_INV_SQRT_TAU;
+    let centre = (d - theta_i) * s * FUR_FRAC_1_SQRT_2;
+    let half_range = FUR_HALF_PI * s * FUR_FRAC_1_SQRT_2;
+    let mass = 0.5 * (fur_erf(centre + half_range) - fur_erf(centre - half_range));
+    return g / max(mass, vec3<f32>(FUR_DUAL_MIN_MASS));
+}
+
+// mu^k = e^(-k ln 2 (-log2 mu)) per channel for k >= 0 (log2 mu <= 0), from the stored
+// log2 mu (dual::eval's power_of_decay).
+fn fur_dual_power(log2_mu: vec3<f32>, k: f32) -> vec3<f32> {
+    return fur_exp_neg(-k * FUR_LN2 * log2_mu);
+}
+
+// t = a_f = sqrt(a_f^2) per channel, the layer's forward fraction, from the stored a_f^2
+// kept in [0, 1]: a_f^2/sqrt(a_f^2) by fur_rsqrt_newton (dual::eval's decay_and_forward).
+fn fur_dual_forward(a_f2: vec3<f32>) -> vec3<f32> {
+    let a = clamp(a_f2, vec3<f32>(0.0), vec3<f32>(1.0));
+    return a * fur_rsqrt_newton(max(a, vec3<f32>(1e-30)));
+}
+
+// The finite coat (docs/model.md §13, "The coat below"; dual/coat.rs): the fibers around a
+// shading point as identical two-stream layers, n above it toward the light and m below it
+// over a black floor. Per channel from the stored decay mu of the semi-infinite stack and
+// the layer's forward fraction t; rho = R_inf, the semi-infinite stack's reflectance.
+
+// rho^2 = (mu - t)/(mu (1 - t mu)), from mu(1 - r rho) = t and rho(1 - t mu) = r, kept in
+// [0, 1] (NaN 0); 0 when mu (1 - t mu) is at or below 1e-6 (dual::coat::reflectance_squared).
+fn fur_reflectance_squared(mu: vec3<f32>, t: vec3<f32>) -> vec3<f32> {
+    let den = mu * (1.0 - t * mu);
+    let v = fur_dual_between((mu - t) / max(den, vec3<f32>(FUR_DUAL_TINY)), vec3<f32>(1.0));
+    return select(vec3<f32>(0.0), v, den > vec3<f32>(FUR_DUAL_TINY));
+}
+
+// The downward flux under n layers with m below over a black floor,
+//   D = T_n/(1 - R_n R_m) = mu^n (1 - rho^2 mu^2m)/(1 - rho^2 mu^2(n+m)),
+// from mu^n, mu^2m and rho^2, kept in [0, mu^n] (NaN 0); mu^n when the denominator is at or
+// below 1e-6 (dual::coat::downward_flux). mu^n for an infinite m, T_n for m = 0.
+fn fur_downward_flux(mu_n: vec3<f32>, mu_2m: vec3<f32>, rho2: vec3<f32>) -> vec3<f32> {
+    let num = 1.0 - rho2 * mu_2m;
+    let den = 1.0 - rho2 * mu_n * mu_n * mu_2m;
+    let d = mu_n * (num / max(den, vec3<f32>(FUR_DUAL_TINY)));
+    return select(mu_n, fur_dual_between(d, mu_n), den > vec3<f32>(FUR_DUAL_TINY));
+}
+
+// The local backscatter's energy with m layers below instead of the semi-infinite coat, as
+// a factor on the stored energy: with g = (1 - mu^2m)/(1 - rho^2 mu^2m) (R_m = rho g) and
+// r rho = 1 - t/mu (kept in [0, 1]),
+//   k_m = g (1 - r rho)/(1 - r rho g),
+// kept in [0, 1] (NaN 0); 1 when either denominator is at or below 1e-6
+// (dual::coat::backscatter_factor). 1 for an infinite m, 0 for m = 0.
+fn fur_backscatter_factor(mu: vec3<f32>, t: vec3<f32>, rho2: vec3<f32>, mu_2m: vec3<f32>) -> vec3<f32> {
+    let tiny = vec3<f32>(FUR_DUAL_TINY);
+    let g_den = 1.0 - rho2 * mu_2m;
+    let g = (1.0 - mu_2m) / max(g_den, tiny);
+    let r_rho = fur_dual_between(1.0 - t / max(mu, tiny), vec3<f32>(1.0));
+    let den = 1.0 - r_rho * g;
+    let f = fur_dual_between(g * (1.0 - r_rho) / max(den, tiny), vec3<f32>(1.0));
+    return select(vec3<f32>(1.0), f, (g_den > tiny) & (den > tiny));
 }
 
 // A fiber count or density factor as the CPU's contract takes it: NaN and values <= 0 give
@@ -1164,28 +1267,47 @@ fn fur_dual_clean(x: f32, top: f32) -> f32 {
     return select(0.0, min(x, top), !fur_is_nan(x) && x > 0.0);
 }
 
+// The fibers below the point as dual::Fibers takes them: values < 0 give 0 (the point lies
+// on the skin); NaN, +inf and values above 1e6 give 1e6 (a semi-infinite coat).
+fn fur_dual_below(x: f32) -> f32 {
+    let deep = select(0.0, FUR_DUAL_MAX_FIBERS, fur_is_nan(x));
+    return select(deep, min(x, FUR_DUAL_MAX_FIBERS), !fur_is_nan(x) && x >= 0.0);
+}
+
 // The dual-scattering term to add to single scattering (DualLut::eval, docs/model.md §13),
 // RGB, in S's units (the caller multiplies by cos theta_i and the light's radiance like S).
 // `fibers` is n, the number of fibers between the shading point and the light (fractional
-// allowed); d_f, d_b the density factors (dual::Density; 1 and 1 by default). With
+// allowed); `fibers_below` is m, the fibers beyond the point along -omega_i, down to the skin
+// or out of the coat (the coat below, which sends light back up; +inf for a semi-infinite
+// coat); d_f, d_b the density factors (dual::Density; 1 and 1 by default). With
 // V = clamp(1 - n, 0, 1) the direct fraction (what a shadow ray gives), the shading is
 // S V + this term:
 //
 //   D = V d_b f_back(0) + (T_f - V) d_f (f_s^scatter(sigma_f^2) + d_b f_back(sigma_f^2)),
-//   T_f = mu^n, mu the stored decay at -theta_i; sigma_f^2 = n beta_f^2(-theta_i);
-//   f_s^scatter(s^2) = sum_g N^G_g(theta_r, |phi|) G(x - mean_g; sd_g^2 + s^2)/cos^2 theta_i,
-//   f_back(s^2) = A G(x - Delta_b; sigma_b^2 + s^2)/(pi cos^2 theta_i),
+//
+// - the light that reaches the point through n fibers above, m below over a black floor:
+//   T_f = mu^n (1 - rho^2 mu^2m)/(1 - rho^2 mu^2(n+m)) (fur_downward_flux), mu the stored
+//   decay and rho^2 from mu and a_f (fur_reflectance_squared), both at -theta_i (the light's
+//   path leaves the fibers above at theta ~ -theta_i); its spread sigma_f^2 = n beta_f^2(-theta_i);
+// - the fibers' scattering of it:
+//   f_s^scatter(s^2) = sum_g N^G_g(theta_r, |phi|) G^(x - mean_g; sd_g^2 + s^2)/cos^2 theta_i;
+// - the local backscatter:
+//   f_back(s^2) = A k_m G^(x - Delta_b; sigma_b^2 + s^2)/(pi cos^2 theta_i),
 //   sigma_b = (1 + d_b a_f^2) sigma_b0, x = theta_i + theta_r, A the stored back-half energy
-//   for |phi| < pi/2, the front-half one otherwise.
+//   for |phi| < pi/2, the front-half one otherwise, and k_m its factor for m fibers below
+//   (fur_backscatter_factor), at theta_r;
+// - G^ a Gaussian divided by its mass over the x reachable at this theta_r (fur_dual_gauss).
 //
 // Invalid angles (as fur_eval_far) give 0; n NaN or < 0 is 0, n > 1e6 (or +inf) is 1e6;
-// densities likewise, clamped to 4. The result is finite and >= 0.
-fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, d_f_in: f32, d_b_in: f32) -> vec3<f32> {
+// m < 0 is 0, m NaN, +inf or > 1e6 is 1e6; densities NaN or < 0 are 0, clamped to 4. The
+// result is finite and >= 0.
+fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, fibers_below: f32, d_f_in: f32, d_b_in: f32) -> vec3<f32> {
     let zero = vec3<f32>(0.0);
     if (!fur_valid(theta_i, theta_r, phi_in)) {
         return zero;
     }
     let n = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    let m = fur_dual_below(fibers_below);
     let d_f = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
     let d_b = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
     let x = theta_i + theta_r;
@@ -1195,10 +1317,18 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, d_f_in: f
     let direct = clamp(1.0 - n, 0.0, 1.0);
     let here = fur_dual_theta(theta_r);
     let abs_phi = abs(fur_wrap_angle(phi_in));
-    // The local backscatter: A (back half for |phi| < pi/2, else front), Delta_b, and
-    // sigma_b^2 = ((1 + d_b a_f^2) sigma_b0)^2.
-    let half_energy = fur_dual_field(here, select(FUR_DUAL_FRONT, FUR_DUAL_BACK, abs_phi < FUR_HALF_PI));
+    // The local backscatter at theta_r: the stored energy (back half for |phi| < pi/2, else
+    // front) times k_m for the m layers below instead of the semi-infinite stack, from
+    // mu = 2^(log2 mu), t = sqrt(a_f^2), rho^2 and mu^2m.
+    let stored = fur_dual_field(here, select(FUR_DUAL_FRONT, FUR_DUAL_BACK, abs_phi < FUR_HALF_PI));
+    let log2_mu_here = fur_dual_field(here, FUR_DUAL_LOG2_DECAY);
     let a_f2 = fur_dual_field(here, FUR_DUAL_A_F2);
+    let mu_here = fur_dual_power(log2_mu_here, 1.0);
+    let t_here = fur_dual_forward(a_f2);
+    let mu_2m_here = fur_dual_power(log2_mu_here, 2.0 * m);
+    let rho2_here = fur_reflectance_squared(mu_here, t_here);
+    let half_energy = stored * fur_backscatter_factor(mu_here, t_here, rho2_here, mu_2m_here);
+    // Delta_b and sigma_b^2 = ((1 + d_b a_f^2) sigma_b0)^2.
     let sigma_b0 = fur_dual_field(here, FUR_DUAL_SIGMA_B0);
     let delta = fur_dual_field(here, FUR_DUAL_DELTA_B);
     let d_back = x - delta;
@@ -1209,14 +1339,20 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, d_f_in: f
     var out = zero;
     // V d_b f_back(0).
     if (direct > 0.0) {
-        out = direct * back_scale * half_energy * fur_dual_gauss(d_back, v_back);
+        out = direct * back_scale * half_energy * fur_dual_gauss(d_back, v_back, theta_i);
     }
     if (n > 0.0) {
-        // T_f = mu^n = e^(-n ln2 (-log2 mu)) and sigma_f^2 = n beta_f^2, both at -theta_i.
+        // T_f through n layers above and m below (fur_downward_flux) and
+        // sigma_f^2 = n beta_f^2, both at -theta_i.
         let along = fur_dual_theta(-theta_i);
         let log2_mu = fur_dual_field(along, FUR_DUAL_LOG2_DECAY);
+        let a_f2_along = fur_dual_field(along, FUR_DUAL_A_F2);
         let beta_f = fur_dual_field(along, FUR_DUAL_BETA_F);
-        let t_f = fur_exp_neg(-n * FUR_LN2 * log2_mu);
+        let mu = fur_dual_power(log2_mu, 1.0);
+        let t = fur_dual_forward(a_f2_along);
+        let mu_n = fur_dual_power(log2_mu, n);
+        let mu_2m = fur_dual_power(log2_mu, 2.0 * m);
+        let t_f = fur_downward_flux(mu_n, mu_2m, fur_reflectance_squared(mu, t));
         let spread = max(t_f - direct, zero) * d_f;
         if (any(spread > zero)) {
             let s2f = n * beta_f * beta_f;
@@ -1232,10 +1368,10 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, d_f_in: f
                 let sd = fur_dual_field(here, FUR_DUAL_SD + g);
                 let ng = fur_dual_ng(g, here, at_phi);
                 let v = sd * sd + s2f;
-                f_s = f_s + ng * fur_dual_gauss(x - mean, v);
+                f_s = f_s + ng * fur_dual_gauss(x - mean, v, theta_i);
             }
             // (T_f - V) d_f (f_s^scatter(sigma_f^2) + d_b f_back(sigma_f^2)).
-            let gb = fur_dual_gauss(d_back, v_back + s2f);
+            let gb = fur_dual_gauss(d_back, v_back + s2f, theta_i);
             out = out + spread * (f_s * inv_cos2 + back_scale * half_energy * gb);
         }
     }
@@ -1247,18 +1383,19 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, d_f_in: f
 // fur_eval_dual from world-space vectors: wi toward the light, wr toward the viewer, u the
 // fiber tangent (any lengths), at the angles of fur_angles_from_dirs (the baked
 // evaluator's polynomial conversion, `BakedBcsdf::angles_from_dirs`); 0 for unusable vectors.
-fn fur_eval_dual_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>, fibers: f32, d_f: f32, d_b: f32) -> vec3<f32> {
+fn fur_eval_dual_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>, fibers: f32, fibers_below: f32, d_f: f32, d_b: f32) -> vec3<f32> {
     let a = fur_angles_from_dirs(wi, wr, u);
     if (!a.ok) {
         return vec3<f32>(0.0);
     }
-    return fur_eval_dual(a.theta_i, a.theta_r, a.phi, fibers, d_f, d_b);
+    return fur_eval_dual(a.theta_i, a.theta_r, a.phi, fibers, fibers_below, d_f, d_b);
 }
 
 // ---- Entry points for the tests and `viewer probe --gpu` (bindings 1 and 2; 3 for dual) ----
 
 // Queries: (theta_i, theta_r, phi, unused) per evaluation; or, for fur_eval_dirs_main,
-// three vec4 per evaluation (wi, wr, tangent; w unused).
+// three vec4 per evaluation (wi, wr, tangent; w unused); the sampling, pdf and
+// dual-scattering layouts at their entry points.
 @group(0) @binding(1) var<storage, read> fur_queries: array<vec4<f32>>;
 // Results: 16 floats per evaluation: R, TT, TRT, scattered (RGB each), total (RGB), 0.
 @group(0) @binding(2) var<storage, read_write> fur_results: array<f32>;
@@ -1342,8 +1479,8 @@ fn fur_pdf_main(@builtin(global_invocation_id) id: vec3<u32>) {
 }
 
 // Dual-scattering queries (bindings 1, 2 and 3): two vec4 per evaluation,
-// (theta_i, theta_r, phi, fibers) and (d_f, d_b, unused, unused); results: RGB in the first
-// three of 16 floats, the rest 0.
+// (theta_i, theta_r, phi, fibers) and (d_f, d_b, fibers_below, unused); results: RGB in the
+// first three of 16 floats, the rest 0.
 @compute @workgroup_size(64)
 fn fur_dual_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let q = id.x;
@@ -1352,19 +1489,21 @@ fn fur_dual_main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     let a = fur_queries[2u * q];
     let d = fur_queries[2u * q + 1u];
-    fur_store_rgb(q, fur_eval_dual(a.x, a.y, a.z, a.w, d.x, d.y));
+    fur_store_rgb(q, fur_eval_dual(a.x, a.y, a.z, a.w, d.z, d.x, d.y));
 }
 
-// Dual-scattering vector queries (bindings 1, 2 and 3): three vec4 per evaluation,
-// (wi, fibers), (wr, d_f), (tangent, d_b); results as fur_dual_main.
+// Dual-scattering vector queries (bindings 1, 2 and 3): four vec4 per evaluation,
+// (wi, fibers), (wr, d_f), (tangent, d_b), (fibers_below, unused, unused, unused); results
+// as fur_dual_main.
 @compute @workgroup_size(64)
 fn fur_dual_dirs_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let q = id.x;
-    if (3u * q + 2u >= arrayLength(&fur_queries)) {
+    if (4u * q + 3u >= arrayLength(&fur_queries)) {
         return;
     }
-    let wi = fur_queries[3u * q];
-    let wr = fur_queries[3u * q + 1u];
-    let u = fur_queries[3u * q + 2u];
-    fur_store_rgb(q, fur_eval_dual_dirs(wi.xyz, wr.xyz, u.xyz, wi.w, wr.w, u.w));
+    let wi = fur_queries[4u * q];
+    let wr = fur_queries[4u * q + 1u];
+    let u = fur_queries[4u * q + 2u];
+    let below = fur_queries[4u * q + 3u];
+    fur_store_rgb(q, fur_eval_dual_dirs(wi.xyz, wr.xyz, u.xyz, wi.w, below.x, wr.w, u.w));
 }

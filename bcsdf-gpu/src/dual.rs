@@ -3,17 +3,17 @@
 //! own storage buffer (binding 3), checked against `bcsdf_core::dual::DualLut::eval`.
 
 use crate::{device, dispatch, pipelines, words_buffer, GpuError, MAX_DISPATCH};
-use bcsdf_core::dual::{Density, DualLut};
+use bcsdf_core::dual::{Density, DualLut, Fibers};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
 
 /// Entry point evaluating dual-scattering angle queries: two vec4 per query,
-/// `(theta_i, theta_r, phi, fibers)` and `(d_f, d_b, _, _)`; RGB in the first three floats
-/// of each result.
+/// `(theta_i, theta_r, phi, fibers.to_light)` and `(d_f, d_b, fibers.below, _)`; RGB in the
+/// first three floats of each result.
 pub const ENTRY_DUAL: &str = "fur_dual_main";
 
-/// Entry point evaluating dual-scattering vector queries: three vec4 per query,
-/// `(wi, fibers)`, `(wr, d_f)`, `(tangent, d_b)`; RGB in the first three floats of each
-/// result.
+/// Entry point evaluating dual-scattering vector queries: four vec4 per query,
+/// `(wi, fibers.to_light)`, `(wr, d_f)`, `(tangent, d_b)`, `(fibers.below, _, _, _)`; RGB in
+/// the first three floats of each result.
 pub const ENTRY_DUAL_DIRS: &str = "fur_dual_dirs_main";
 
 /// The binding of the `.furdual` words in the shader (group 0).
@@ -24,9 +24,9 @@ const DUAL_BINDING: u32 = 3;
 pub struct DualQuery {
     /// θ_i, θ_r, φ (radians).
     pub angles: [f32; 3],
-    /// Fibers between the shading point and the light (any f32: the contract of
-    /// `DualLut::eval` maps NaN, negative and huge counts).
-    pub fibers: f32,
+    /// The fibers between the shading point and the light and below it (any f32s: the
+    /// contract of [`Fibers`] maps NaN, negative and huge counts).
+    pub fibers: Fibers,
     /// The density factors d_f, d_b.
     pub density: Density,
 }
@@ -40,8 +40,9 @@ pub struct DualDirsQuery {
     pub wr: [f32; 3],
     /// The fiber tangent (any length).
     pub tangent: [f32; 3],
-    /// Fibers between the shading point and the light.
-    pub fibers: f32,
+    /// The fibers between the shading point and the light and below it (any f32s, as in
+    /// [`DualQuery::fibers`]).
+    pub fibers: Fibers,
     /// The density factors d_f, d_b.
     pub density: Density,
 }
@@ -106,8 +107,8 @@ impl GpuDual {
                 .flat_map(|q| {
                     let [ti, tr, phi] = q.angles;
                     [
-                        [ti, tr, phi, q.fibers],
-                        [q.density.d_f, q.density.d_b, 0.0, 0.0],
+                        [ti, tr, phi, q.fibers.to_light],
+                        [q.density.d_f, q.density.d_b, q.fibers.below, 0.0],
                     ]
                 })
                 .collect();
@@ -130,9 +131,10 @@ impl GpuDual {
                 .flat_map(|q| {
                     let w = |v: [f32; 3], x: f32| [v[0], v[1], v[2], x];
                     [
-                        w(q.wi, q.fibers),
+                        w(q.wi, q.fibers.to_light),
                         w(q.wr, q.density.d_f),
                         w(q.tangent, q.density.d_b),
+                        [q.fibers.below, 0.0, 0.0, 0.0],
                     ]
                 })
                 .collect();

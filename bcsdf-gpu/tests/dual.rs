@@ -3,12 +3,16 @@
 //! and human-hair presets: tables computed from each preset's baked LUT (small quadrature),
 //! encoded to a `.furdual` blob, decoded on the CPU and bound on the GPU. Queries: random
 //! angles and edge angles (θ at ±90°, φ at 0, ±π/2, ±π, 7; NaN and out-of-range angles, 0 on
-//! both sides), fiber counts 0, 0.25, 0.5, 1, 3.7, 50, 10⁶, +∞, NaN, −2 and densities default,
-//! (0.5, 2), (4, 0), (7, NaN), (−1, 1); and random vectors at the same counts and densities.
+//! both sides), fiber counts toward the light 0, 0.25, 0.5, 1, 3.7, 50, 10⁶, +∞, NaN, −2, each
+//! paired with every count below (the finite coat: 0, 0.5, 2.5, 7, 40, 10⁷, +∞, NaN, −3), and
+//! densities default, (0.5, 2), (4, 0), (7, NaN), (−1, 1); and random vectors at the same
+//! counts and densities.
 //!
 //! Tolerance, as `tests/agreement.rs` states it, relative: per channel,
 //! |gpu − cpu| ≤ 1e-5·max(cpu, 1e-3·peak), peak the largest CPU value of that channel over
-//! the preset's queries. A shader with one constant perturbed must fail the same check.
+//! the preset's queries. A shader with one constant perturbed, one that ignores the fibers
+//! below or one without the Gaussians' normalisation over the reachable range must fail the
+//! same check.
 //!
 //! Without an adapter the tests print "skipped: no GPU adapter" and pass, unless
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
@@ -16,7 +20,7 @@
 mod common;
 
 use bcsdf_core::baked::BakedBcsdf;
-use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
+use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Fibers, Quadrature};
 use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
 use bcsdf_core::{presets, Angles};
@@ -38,6 +42,16 @@ const FIBERS: [f32; 10] = [
     f32::NAN,
     -2.0,
 ];
+
+/// Counts below the point, paired with every count of [`FIBERS`] (9 and 10 are coprime):
+/// the bare skin, fractional and whole counts, one past the coat's depth of effect, one
+/// above `MAX_FIBERS`, the semi-infinite coat (+∞, NaN) and a negative count.
+const BELOW: [f32; 9] = [0.0, 0.5, 2.5, 7.0, 40.0, 1e7, f32::INFINITY, f32::NAN, -3.0];
+
+/// The counts of query `k`: every (to_light, below) pair once in 90 consecutive queries.
+fn fibers(k: usize) -> Fibers {
+    Fibers::new(FIBERS[k % FIBERS.len()], BELOW[k % BELOW.len()])
+}
 
 const DENSITIES: [Density; 5] = [
     Density::DEFAULT,
@@ -115,7 +129,7 @@ fn angle_queries() -> Vec<DualQuery> {
             let k = 4 * i + s;
             q.push(DualQuery {
                 angles,
-                fibers: FIBERS[k % FIBERS.len()],
+                fibers: fibers(k),
                 density: DENSITIES[(k / FIBERS.len()) % DENSITIES.len()],
             });
         }
@@ -134,7 +148,7 @@ fn dirs_queries() -> Vec<DualDirsQuery> {
             wi,
             wr,
             tangent,
-            fibers: FIBERS[k % FIBERS.len()],
+            fibers: fibers(k),
             density: DENSITIES[(k / FIBERS.len()) % DENSITIES.len()],
         });
     }
@@ -150,7 +164,7 @@ fn dirs_queries() -> Vec<DualDirsQuery> {
             wi,
             wr,
             tangent: t,
-            fibers: 3.7,
+            fibers: Fibers::new(3.7, 2.5),
             density: Density::DEFAULT,
         });
     }
@@ -158,7 +172,7 @@ fn dirs_queries() -> Vec<DualDirsQuery> {
         wi: [0.3, 0.1, 0.0],
         wr: [0.1, 0.3, 0.2],
         tangent: [0.0; 3],
-        fibers: 1.0,
+        fibers: Fibers::new(1.0, 0.5),
         density: Density::DEFAULT,
     });
     q
@@ -271,28 +285,43 @@ fn gpu_dual_matches_cpu() {
 }
 
 #[test]
-fn a_perturbed_constant_is_caught() {
+fn a_wrong_shader_is_caught() {
     let (_, blob) = lut_and_blob("dog");
-    // ln 2 off by 1e-4 (relative): T_f = μⁿ moves wherever the spread term matters.
-    let wrong = FUR_BCSDF_WGSL.replace(
-        "const FUR_LN2: f32 = 0.693147182;",
-        "const FUR_LN2: f32 = 0.693216497;",
-    );
-    assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation applies");
-    let Some(g) = or_skip(GpuDual::with_shader(&blob, &wrong)) else {
-        return;
-    };
     let mut lut = Box::new(DualLut::EMPTY);
     lut.decode(&blob).unwrap();
     let q = angle_queries();
     let cpu: Vec<[f32; 3]> = q.iter().map(|a| cpu_angles(&lut, a)).collect();
-    let got = g.eval(&q).unwrap();
-    let (e, _, _) = worst(&cpu, &got);
-    println!("perturbed ln 2: worst relative difference {e:.2e}");
-    assert!(
-        e > RELATIVE,
-        "the agreement check missed a wrong constant ({e})"
-    );
+    let mutations = [
+        // T_f = μⁿ(…) moves wherever the spread term matters.
+        (
+            "ln 2 off by 1e-4 (relative)",
+            "const FUR_LN2: f32 = 0.693147182;",
+            "const FUR_LN2: f32 = 0.693216497;",
+        ),
+        // A semi-infinite coat below whatever the query says.
+        (
+            "the fibers below ignored",
+            "let m = fur_dual_below(fibers_below);",
+            "let m = FUR_DUAL_MAX_FIBERS;",
+        ),
+        // Plain normalised Gaussians, as before the finite coat.
+        (
+            "no normalisation over the reachable range",
+            "return g / max(mass, vec3<f32>(FUR_DUAL_MIN_MASS));",
+            "return g;",
+        ),
+    ];
+    for (what, from, to) in mutations {
+        let wrong = FUR_BCSDF_WGSL.replace(from, to);
+        assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation {what} applies");
+        let Some(g) = or_skip(GpuDual::with_shader(&blob, &wrong)) else {
+            return;
+        };
+        let got = g.eval(&q).unwrap();
+        let (e, _, _) = worst(&cpu, &got);
+        println!("{what}: worst relative difference {e:.2e}");
+        assert!(e > RELATIVE, "the agreement check missed {what} ({e})");
+    }
 }
 
 #[test]

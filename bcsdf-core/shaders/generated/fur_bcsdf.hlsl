@@ -121,11 +121,20 @@ static const float FUR_DUAL_PHI_SCALE = 9.867606;
 static const float FUR_DUAL_MAX_FIBERS = 1000000.0;
 static const float FUR_DUAL_MAX_DENSITY = 4.0;
 static const float FUR_DUAL_MIN_VARIANCE = 3e-6;
+static const float FUR_DUAL_MIN_MASS = 0.05;
+static const float FUR_DUAL_TINY = 1e-6;
 static const float FUR_LN2_ = 0.6931472;
 static const float FUR_LOG2_E = 1.442695;
 static const float FUR_LN2_HI = 0.6933594;
 static const float FUR_LN2_LO = -0.00021219444;
 static const float FUR_INV_SQRT_TAU = 0.3989423;
+static const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
+static const float FUR_ERF_P = 0.3275911;
+static const float FUR_ERF_A1_ = 0.2548296;
+static const float FUR_ERF_A2_ = -0.28449675;
+static const float FUR_ERF_A3_ = 1.4214137;
+static const float FUR_ERF_A4_ = -1.453152;
+static const float FUR_ERF_A5_ = 1.0614054;
 
 ByteAddressBuffer fur_lut : register(t0);
 ByteAddressBuffer fur_dual : register(t3);
@@ -390,9 +399,9 @@ FurDensity fur_density(uint d)
     uint _e74 = at;
     at = (_e74 + ((16u * _e4) * _e29));
     if ((d < 9u)) {
-        uint x_11 = (d - 7u);
+        uint x_15 = (d - 7u);
         uint _e83 = at;
-        const FurDensity furdensity_2 = ConstructFurDensity((_e83 + (((4u * x_11) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_11, 1u);
+        const FurDensity furdensity_2 = ConstructFurDensity((_e83 + (((4u * x_15) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_15, 1u);
         return furdensity_2;
     }
     uint _e98 = at;
@@ -732,9 +741,9 @@ float fur_atan2_(float y_1, float x_5)
     float ax_4 = abs(x_5);
     float ay = abs(y_1);
     float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_9 = (a_5 * a_5);
-    const float _e10 = fur_atan_poly(t_9);
-    r = (a_5 + (a_5 * (t_9 * _e10)));
+    float t_11 = (a_5 * a_5);
+    const float _e10 = fur_atan_poly(t_11);
+    r = (a_5 + (a_5 * (t_11 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -810,8 +819,8 @@ FurDirAngles fur_angles_from_dirs(float3 wi, float3 wr, float3 u)
     const float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
     const float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_5 = dot(un, cross(wi, wr));
-    float x_12 = (dot(wi, wr) - (a_6 * b_3));
-    const float _e64 = fur_atan2_(y_5, x_12);
+    float x_16 = (dot(wi, wr) - (a_6 * b_3));
+    const float _e64 = fur_atan2_(y_5, x_16);
     const FurDirAngles furdirangles_2 = ConstructFurDirAngles(_e51, _e58, abs(_e64), true);
     return furdirangles_2;
 }
@@ -1231,8 +1240,8 @@ float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_3)
 {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
     const float _e7 = fur_unit(u_3);
-    float t_10 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    const float _e14 = fur_rows_invert(r_9, t_10);
+    float t_12 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    const float _e14 = fur_rows_invert(r_9, t_12);
     return _e14;
 }
 
@@ -1274,7 +1283,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_11[3] = Constructarray3_float_(0.11270166, 0.5, 0.8872983);
+    float t_13[3] = Constructarray3_float_(0.11270166, 0.5, 0.8872983);
     float w_4[3] = Constructarray3_float_(0.2777778, 0.44444445, 0.2777778);
     uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
@@ -1293,7 +1302,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_11[min(uint(_e33), 2u)] * len_5);
+            float d_8 = (t_13[min(uint(_e33), 2u)] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             const float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -1507,18 +1516,18 @@ float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_4)
         return _e19.z;
     }
     float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
-    float t_12 = (t0_1 - g_2.s.y);
-    if (!((t_12 <= mid))) {
+    float t_14 = (t0_1 - g_2.s.y);
+    if (!((t_14 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        const float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_12, mid)));
+        const float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_14, mid)));
         return _e50;
     }
-    const float3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_12 - mid));
+    const float3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_14 - mid));
     return _e57.z;
 }
 
@@ -1939,9 +1948,9 @@ FurSample fur_sample_far(float theta_r_7, float3 u_5)
     }
     const FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_11 = (max(cos(_e189), 0.0) / _e178);
+    float k_12 = (max(cos(_e189), 0.0) / _e178);
     float _e194 = theta_i_4;
-    out_3 = ConstructFurSample(_e194, _e173, _e178, max((_e188.total * k_11), (0.0).xxx), family, true);
+    out_3 = ConstructFurSample(_e194, _e173, _e178, max((_e188.total * k_12), (0.0).xxx), family, true);
     FurSample _e202 = out_3;
     const FurSample fursample_3 = _e202;
     return fursample_3;
@@ -1967,6 +1976,11 @@ bool fur_is_nan(float x_9)
     return ((asuint(x_9) & 2147483647u) > 2139095040u);
 }
 
+bool3 fur_is_nan3_(float3 x_10)
+{
+    return ((asuint(x_10) & (2147483647u).xxx) > (2139095040u).xxx);
+}
+
 uint naga_f2u32(float value) {
     return uint(clamp(value, 0.0, 4294967000.0));
 }
@@ -1982,9 +1996,9 @@ FurLoc fur_dual_theta(float theta)
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_12 = min(naga_f2u32(_e17), 62u);
+    uint k_13 = min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    const FurLoc furloc_1 = ConstructFurLoc(k_12, (_e21 - float(k_12)));
+    const FurLoc furloc_1 = ConstructFurLoc(k_13, (_e21 - float(k_13)));
     return furloc_1;
 }
 
@@ -2040,9 +2054,9 @@ float3 fur_exp_neg(float3 x_in)
 {
     float3 p_1 = (0.00019875693).xxx;
 
-    float3 x_13 = min(max(x_in, (0.0).xxx), (87.0).xxx);
-    float3 k_13 = round((x_13 * FUR_LOG2_E));
-    float3 r_15 = (((k_13 * FUR_LN2_HI) - x_13) + (k_13 * FUR_LN2_LO));
+    float3 x_17 = min(max(x_in, (0.0).xxx), (87.0).xxx);
+    float3 k_14 = round((x_17 * FUR_LOG2_E));
+    float3 r_15 = (((k_14 * FUR_LN2_HI) - x_17) + (k_14 * FUR_LN2_LO));
     float3 z_1 = (r_15 * r_15);
     float3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + (0.0013981999).xxx);
@@ -2056,33 +2070,113 @@ float3 fur_exp_neg(float3 x_in)
     p_1 = ((_e40 * r_15) + (0.5).xxx);
     float3 _e45 = p_1;
     float3 e = (((_e45 * z_1) + r_15) + (1.0).xxx);
-    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e, naga_neg(naga_f2i32(k_13))));
+    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e, naga_neg(naga_f2i32(k_14))));
 }
 
-float3 fur_dual_gauss(float3 d_6, float3 v_in)
+float3 fur_erf(float3 x_11)
+{
+    const bool3 _e7 = fur_is_nan3_(x_11);
+    float3 a_8 = (_e7 ? (0.0).xxx : min(abs(x_11), (10.0).xxx));
+    float3 t_15 = ((1.0).xxx / ((1.0).xxx + (FUR_ERF_P * a_8)));
+    float3 poly_1 = (((((((((FUR_ERF_A5_ * t_15) + (-1.453152).xxx) * t_15) + (1.4214137).xxx) * t_15) + (-0.28449675).xxx) * t_15) + (0.2548296).xxx) * t_15);
+    const float3 _e36 = fur_exp_neg((a_8 * a_8));
+    float3 e_1 = ((1.0).xxx - (poly_1 * _e36));
+    uint3 sign_ = (asuint(x_11) & (2147483648u).xxx);
+    return asfloat((asuint(e_1) | sign_));
+}
+
+float3 fur_dual_between(float3 x_12, float3 top)
+{
+    const bool3 _e8 = fur_is_nan3_(x_12);
+    return (_e8 ? (0.0).xxx : min(max(x_12, (0.0).xxx), top));
+}
+
+float3 fur_dual_gauss(float3 d_6, float3 v_in, float theta_i_5)
 {
     float3 v_4 = clamp(v_in, (3e-6).xxx, (1e30).xxx);
-    const float3 _e7 = fur_rsqrt_newton(v_4);
-    float3 z_2 = (d_6 * _e7);
-    const float3 _e12 = fur_exp_neg(((0.5 * z_2) * z_2));
-    return ((_e12 * _e7) * FUR_INV_SQRT_TAU);
+    const float3 _e8 = fur_rsqrt_newton(v_4);
+    float3 z_2 = (d_6 * _e8);
+    const float3 _e13 = fur_exp_neg(((0.5 * z_2) * z_2));
+    float3 g_7 = ((_e13 * _e8) * FUR_INV_SQRT_TAU);
+    float3 centre = (((d_6 - (theta_i_5).xxx) * _e8) * FUR_FRAC_1_SQRT_2_);
+    float3 half_range = ((FUR_HALF_PI * _e8) * FUR_FRAC_1_SQRT_2_);
+    const float3 _e27 = fur_erf((centre + half_range));
+    const float3 _e29 = fur_erf((centre - half_range));
+    float3 mass_1 = (0.5 * (_e27 - _e29));
+    return (g_7 / max(mass_1, (0.05).xxx));
 }
 
-float fur_dual_clean(float x_10, float top)
+float3 fur_dual_power(float3 log2_mu, float k_9)
+{
+    const float3 _e6 = fur_exp_neg(((-(k_9) * FUR_LN2_) * log2_mu));
+    return _e6;
+}
+
+float3 fur_dual_forward(float3 a_f2_)
+{
+    float3 a_9 = clamp(a_f2_, (0.0).xxx, (1.0).xxx);
+    const float3 _e9 = fur_rsqrt_newton(max(a_9, (1e-30).xxx));
+    return (a_9 * _e9);
+}
+
+float3 fur_reflectance_squared(float3 mu, float3 t_9)
+{
+    float3 den_1 = (mu * ((1.0).xxx - (t_9 * mu)));
+    const float3 _e14 = fur_dual_between(((mu - t_9) / max(den_1, (1e-6).xxx)), (1.0).xxx);
+    return ((den_1 > (1e-6).xxx) ? _e14 : (0.0).xxx);
+}
+
+float3 fur_downward_flux(float3 mu_n, float3 mu_2m, float3 rho2_)
+{
+    float3 num = ((1.0).xxx - (rho2_ * mu_2m));
+    float3 den_2 = ((1.0).xxx - (((rho2_ * mu_n) * mu_n) * mu_2m));
+    float3 d_9 = (mu_n * (num / max(den_2, (1e-6).xxx)));
+    const float3 _e18 = fur_dual_between(d_9, mu_n);
+    return ((den_2 > (1e-6).xxx) ? _e18 : mu_n);
+}
+
+float3 fur_backscatter_factor(float3 mu_1, float3 t_10, float3 rho2_1, float3 mu_2m_1)
+{
+    float3 tiny = (1e-6).xxx;
+    float3 g_den = ((1.0).xxx - (rho2_1 * mu_2m_1));
+    float3 g_8 = (((1.0).xxx - mu_2m_1) / max(g_den, tiny));
+    const float3 _e22 = fur_dual_between(((1.0).xxx - (t_10 / max(mu_1, tiny))), (1.0).xxx);
+    float3 den_3 = ((1.0).xxx - (_e22 * g_8));
+    const float3 _e35 = fur_dual_between(((g_8 * ((1.0).xxx - _e22)) / max(den_3, tiny)), (1.0).xxx);
+    return (((g_den > tiny) & (den_3 > tiny)) ? _e35 : (1.0).xxx);
+}
+
+float fur_dual_clean(float x_13, float top_1)
 {
     bool local_27 = (bool)0;
 
-    const bool _e3 = fur_is_nan(x_10);
+    const bool _e3 = fur_is_nan(x_13);
     if (!(_e3)) {
-        local_27 = (x_10 > 0.0);
+        local_27 = (x_13 > 0.0);
     } else {
         local_27 = false;
     }
     bool _e10 = local_27;
-    return (_e10 ? min(x_10, top) : 0.0);
+    return (_e10 ? min(x_13, top_1) : 0.0);
 }
 
-float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fibers, float d_f_in, float d_b_in)
+float fur_dual_below(float x_14)
+{
+    bool local_28 = (bool)0;
+
+    const bool _e2 = fur_is_nan(x_14);
+    float deep = (_e2 ? FUR_DUAL_MAX_FIBERS : 0.0);
+    const bool _e7 = fur_is_nan(x_14);
+    if (!(_e7)) {
+        local_28 = (x_14 >= 0.0);
+    } else {
+        local_28 = false;
+    }
+    bool _e14 = local_28;
+    return (_e14 ? min(x_14, FUR_DUAL_MAX_FIBERS) : deep);
+}
+
+float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fibers, float fibers_below, float d_f_in, float d_b_in)
 {
     float3 out_4 = (float3)0;
     float p_2 = (float)0;
@@ -2090,49 +2184,63 @@ float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fib
     uint g_6 = 0u;
 
     float3 zero = (0.0).xxx;
-    const bool _e8 = fur_valid(theta_i_5, theta_r_8, phi_in_1);
-    if (!(_e8)) {
+    const bool _e9 = fur_valid(theta_i_6, theta_r_8, phi_in_1);
+    if (!(_e9)) {
         return zero;
     }
-    const float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
-    const float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
-    const float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_14 = (theta_i_5 + theta_r_8);
-    const float _e17 = fur_cos_within_half_pi(theta_i_5);
-    float inv_cos2_1 = (1.0 / max((_e17 * _e17), FUR_MIN_COS2_));
-    float direct = clamp((1.0 - _e11), 0.0, 1.0);
-    const FurLoc _e28 = fur_dual_theta(theta_r_8);
-    const float _e29 = fur_wrap_angle(phi_in_1);
-    float abs_phi_2 = abs(_e29);
-    const float3 _e36 = fur_dual_field(_e28, ((abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
-    const float3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_);
-    const float3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_);
-    const float3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B);
-    float3 d_back = ((x_14).xxx - _e42);
-    float3 s_b = (((1.0).xxx + (_e15 * _e38)) * _e40);
+    const float _e12 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    const float _e13 = fur_dual_below(fibers_below);
+    const float _e15 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    const float _e17 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    float x_18 = (theta_i_6 + theta_r_8);
+    const float _e19 = fur_cos_within_half_pi(theta_i_6);
+    float inv_cos2_1 = (1.0 / max((_e19 * _e19), FUR_MIN_COS2_));
+    float direct = clamp((1.0 - _e12), 0.0, 1.0);
+    const FurLoc _e30 = fur_dual_theta(theta_r_8);
+    const float _e31 = fur_wrap_angle(phi_in_1);
+    float abs_phi_2 = abs(_e31);
+    const float3 _e38 = fur_dual_field(_e30, ((abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
+    const float3 _e40 = fur_dual_field(_e30, FUR_DUAL_LOG2_DECAY);
+    const float3 _e42 = fur_dual_field(_e30, FUR_DUAL_A_F2_);
+    const float3 _e44 = fur_dual_power(_e40, 1.0);
+    const float3 _e45 = fur_dual_forward(_e42);
+    const float3 _e48 = fur_dual_power(_e40, (2.0 * _e13));
+    const float3 _e49 = fur_reflectance_squared(_e44, _e45);
+    const float3 _e50 = fur_backscatter_factor(_e44, _e45, _e49, _e48);
+    float3 half_energy = (_e38 * _e50);
+    const float3 _e53 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_);
+    const float3 _e55 = fur_dual_field(_e30, FUR_DUAL_DELTA_B);
+    float3 d_back = ((x_18).xxx - _e55);
+    float3 s_b = (((1.0).xxx + (_e17 * _e42)) * _e53);
     float3 v_back = (s_b * s_b);
-    float back_scale = ((_e15 * inv_cos2_1) / FUR_PI);
+    float back_scale = ((_e17 * inv_cos2_1) / FUR_PI);
     out_4 = zero;
     if ((direct > 0.0)) {
-        const float3 _e59 = fur_dual_gauss(d_back, v_back);
-        out_4 = (((direct * back_scale) * _e36) * _e59);
+        const float3 _e72 = fur_dual_gauss(d_back, v_back, theta_i_6);
+        out_4 = (((direct * back_scale) * half_energy) * _e72);
     }
-    if ((_e11 > 0.0)) {
-        const FurLoc _e64 = fur_dual_theta(-(theta_i_5));
-        const float3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY);
-        const float3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F);
-        const float3 _e73 = fur_exp_neg(((-(_e11) * FUR_LN2_) * _e66));
-        float3 spread = (max((_e73 - (direct).xxx), zero) * _e13);
+    if ((_e12 > 0.0)) {
+        const FurLoc _e77 = fur_dual_theta(-(theta_i_6));
+        const float3 _e79 = fur_dual_field(_e77, FUR_DUAL_LOG2_DECAY);
+        const float3 _e81 = fur_dual_field(_e77, FUR_DUAL_A_F2_);
+        const float3 _e83 = fur_dual_field(_e77, FUR_DUAL_BETA_F);
+        const float3 _e85 = fur_dual_power(_e79, 1.0);
+        const float3 _e86 = fur_dual_forward(_e81);
+        const float3 _e87 = fur_dual_power(_e79, _e12);
+        const float3 _e90 = fur_dual_power(_e79, (2.0 * _e13));
+        const float3 _e91 = fur_reflectance_squared(_e85, _e86);
+        const float3 _e92 = fur_downward_flux(_e87, _e90, _e91);
+        float3 spread = (max((_e92 - (direct).xxx), zero) * _e15);
         if (any((spread > zero))) {
-            float3 s2f = ((_e11 * _e68) * _e68);
+            float3 s2f = ((_e12 * _e83) * _e83);
             p_2 = (abs_phi_2 * FUR_DUAL_PHI_SCALE);
-            float _e85 = p_2;
-            float _e88 = p_2;
-            p_2 = ((_e88 > 0.0) ? min(_e85, 31.0) : 0.0);
-            float _e93 = p_2;
-            uint j_7 = min(naga_f2u32(_e93), 30u);
-            float _e97 = p_2;
-            FurLoc at_phi = ConstructFurLoc(j_7, (_e97 - float(j_7)));
+            float _e104 = p_2;
+            float _e107 = p_2;
+            p_2 = ((_e107 > 0.0) ? min(_e104, 31.0) : 0.0);
+            float _e112 = p_2;
+            uint j_7 = min(naga_f2u32(_e112), 30u);
+            float _e116 = p_2;
+            FurLoc at_phi = ConstructFurLoc(j_7, (_e116 - float(j_7)));
             f_s = zero;
             uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
             bool loop_init_16 = true;
@@ -2140,54 +2248,54 @@ float3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fib
                 if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
                 loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
                 if (!loop_init_16) {
-                    uint _e125 = g_6;
-                    g_6 = (_e125 + 1u);
+                    uint _e144 = g_6;
+                    g_6 = (_e144 + 1u);
                 }
                 loop_init_16 = false;
-                uint _e104 = g_6;
-                if ((_e104 < 4u)) {
+                uint _e123 = g_6;
+                if ((_e123 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e108 = g_6;
-                    const float3 _e110 = fur_dual_field(_e28, (FUR_DUAL_MEAN + _e108));
-                    uint _e112 = g_6;
-                    const float3 _e114 = fur_dual_field(_e28, (FUR_DUAL_SD + _e112));
-                    uint _e115 = g_6;
-                    const float3 _e116 = fur_dual_ng(_e115, _e28, at_phi);
-                    float3 v_5 = ((_e114 * _e114) + s2f);
-                    float3 _e119 = f_s;
-                    const float3 _e122 = fur_dual_gauss(((x_14).xxx - _e110), v_5);
-                    f_s = (_e119 + (_e116 * _e122));
+                    uint _e127 = g_6;
+                    const float3 _e129 = fur_dual_field(_e30, (FUR_DUAL_MEAN + _e127));
+                    uint _e131 = g_6;
+                    const float3 _e133 = fur_dual_field(_e30, (FUR_DUAL_SD + _e131));
+                    uint _e134 = g_6;
+                    const float3 _e135 = fur_dual_ng(_e134, _e30, at_phi);
+                    float3 v_5 = ((_e133 * _e133) + s2f);
+                    float3 _e138 = f_s;
+                    const float3 _e141 = fur_dual_gauss(((x_18).xxx - _e129), v_5, theta_i_6);
+                    f_s = (_e138 + (_e135 * _e141));
                 }
             }
-            const float3 _e129 = fur_dual_gauss(d_back, (v_back + s2f));
-            float3 _e130 = out_4;
-            float3 _e131 = f_s;
-            out_4 = (_e130 + (spread * ((_e131 * inv_cos2_1) + ((back_scale * _e36) * _e129))));
+            const float3 _e148 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
+            float3 _e149 = out_4;
+            float3 _e150 = f_s;
+            out_4 = (_e149 + (spread * ((_e150 * inv_cos2_1) + ((back_scale * half_energy) * _e148))));
         }
     }
-    float _e139 = out_4.x;
-    const bool _e140 = fur_finite(_e139);
-    float _e142 = out_4.y;
-    const bool _e143 = fur_finite(_e142);
-    float _e145 = out_4.z;
-    const bool _e146 = fur_finite(_e145);
-    bool3 finite = bool3(_e140, _e143, _e146);
-    float3 _e148 = out_4;
-    float3 _e149 = out_4;
-    return ((finite & (_e149 > zero)) ? _e148 : zero);
+    float _e158 = out_4.x;
+    const bool _e159 = fur_finite(_e158);
+    float _e161 = out_4.y;
+    const bool _e162 = fur_finite(_e161);
+    float _e164 = out_4.z;
+    const bool _e165 = fur_finite(_e164);
+    bool3 finite = bool3(_e159, _e162, _e165);
+    float3 _e167 = out_4;
+    float3 _e168 = out_4;
+    return ((finite & (_e168 > zero)) ? _e167 : zero);
 }
 
-float3 fur_eval_dual_dirs(float3 wi_2, float3 wr_2, float3 u_6, float fibers_1, float d_f, float d_b)
+float3 fur_eval_dual_dirs(float3 wi_2, float3 wr_2, float3 u_6, float fibers_1, float fibers_below_1, float d_f, float d_b)
 {
-    const FurDirAngles _e6 = fur_angles_from_dirs(wi_2, wr_2, u_6);
-    if (!(_e6.ok)) {
+    const FurDirAngles _e7 = fur_angles_from_dirs(wi_2, wr_2, u_6);
+    if (!(_e7.ok)) {
         return (0.0).xxx;
     }
-    const float3 _e14 = fur_eval_dual(_e6.theta_i, _e6.theta_r, _e6.phi, fibers_1, d_f, d_b);
-    return _e14;
+    const float3 _e15 = fur_eval_dual(_e7.theta_i, _e7.theta_r, _e7.phi, fibers_1, fibers_below_1, d_f, d_b);
+    return _e15;
 }
 
 typedef float3 ret_Constructarray5_float3_[5];
@@ -2198,7 +2306,7 @@ ret_Constructarray5_float3_ Constructarray5_float3_(float3 arg0, float3 arg1, fl
 
 void fur_store(uint q, FurFamilies f_2)
 {
-    uint k_9 = 0u;
+    uint k_10 = 0u;
 
     uint base_1 = (16u * q);
     float3 parts[5] = Constructarray5_float3_(f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
@@ -2208,24 +2316,24 @@ void fur_store(uint q, FurFamilies f_2)
         if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e46 = k_9;
-            k_9 = (_e46 + 1u);
+            uint _e46 = k_10;
+            k_10 = (_e46 + 1u);
         }
         loop_init_17 = false;
-        uint _e12 = k_9;
+        uint _e12 = k_10;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_9;
-            uint _e21 = k_9;
+            uint _e17 = k_10;
+            uint _e21 = k_10;
             fur_results.Store((base_1 + (3u * _e17))*4, asuint(parts[min(uint(_e21), 4u)].x));
-            uint _e26 = k_9;
-            uint _e32 = k_9;
+            uint _e26 = k_10;
+            uint _e32 = k_10;
             fur_results.Store(((base_1 + (3u * _e26)) + 1u)*4, asuint(parts[min(uint(_e32), 4u)].y));
-            uint _e37 = k_9;
-            uint _e43 = k_9;
+            uint _e37 = k_10;
+            uint _e43 = k_10;
             fur_results.Store(((base_1 + (3u * _e37)) + 2u)*4, asuint(parts[min(uint(_e43), 4u)].z));
         }
     }
@@ -2235,7 +2343,7 @@ void fur_store(uint q, FurFamilies f_2)
 
 void fur_store_rgb(uint q_1, float3 v_2)
 {
-    uint k_10 = 3u;
+    uint k_11 = 3u;
 
     uint base_2 = (16u * q_1);
     fur_results.Store(base_2*4, asuint(v_2.x));
@@ -2247,17 +2355,17 @@ void fur_store_rgb(uint q_1, float3 v_2)
         if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e27 = k_10;
-            k_10 = (_e27 + 1u);
+            uint _e27 = k_11;
+            k_11 = (_e27 + 1u);
         }
         loop_init_18 = false;
-        uint _e19 = k_10;
+        uint _e19 = k_11;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_10;
+            uint _e23 = k_11;
             fur_results.Store((base_2 + _e23)*4, asuint(0.0));
         }
     }
@@ -2278,8 +2386,8 @@ void fur_eval_main(uint3 id : SV_DispatchThreadID)
     if ((q_2 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_8 = asfloat(fur_queries.Load4(q_2*16));
-    const FurFamilies _e11 = fur_eval_far(a_8.x, a_8.y, a_8.z);
+    float4 a_10 = asfloat(fur_queries.Load4(q_2*16));
+    const FurFamilies _e11 = fur_eval_far(a_10.x, a_10.y, a_10.z);
     fur_store(q_2, _e11);
     return;
 }
@@ -2306,8 +2414,8 @@ void fur_sample_main(uint3 id_2 : SV_DispatchThreadID)
     if ((q_4 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_9 = asfloat(fur_queries.Load4(q_4*16));
-    const FurSample _e10 = fur_sample_far(a_9.x, a_9.yzw);
+    float4 a_11 = asfloat(fur_queries.Load4(q_4*16));
+    const FurSample _e10 = fur_sample_far(a_11.x, a_11.yzw);
     uint base_3 = (16u * q_4);
     fur_results.Store(base_3*4, asuint(_e10.theta_i));
     fur_results.Store((base_3 + 1u)*4, asuint(_e10.phi));
@@ -2327,8 +2435,8 @@ void fur_pdf_main(uint3 id_3 : SV_DispatchThreadID)
     if ((q_5 >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_10 = asfloat(fur_queries.Load4(q_5*16));
-    const float _e15 = fur_pdf_far(a_10.x, a_10.y, a_10.z);
+    float4 a_12 = asfloat(fur_queries.Load4(q_5*16));
+    const float _e15 = fur_pdf_far(a_12.x, a_12.y, a_12.z);
     fur_results.Store((16u * q_5)*4, asuint(_e15));
     return;
 }
@@ -2340,10 +2448,10 @@ void fur_dual_main(uint3 id_4 : SV_DispatchThreadID)
     if ((((2u * q_6) + 1u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 a_11 = asfloat(fur_queries.Load4((2u * q_6)*16));
-    float4 d_9 = asfloat(fur_queries.Load4(((2u * q_6) + 1u)*16));
-    const float3 _e27 = fur_eval_dual(a_11.x, a_11.y, a_11.z, a_11.w, d_9.x, d_9.y);
-    fur_store_rgb(q_6, _e27);
+    float4 a_13 = asfloat(fur_queries.Load4((2u * q_6)*16));
+    float4 d_10 = asfloat(fur_queries.Load4(((2u * q_6) + 1u)*16));
+    const float3 _e28 = fur_eval_dual(a_13.x, a_13.y, a_13.z, a_13.w, d_10.z, d_10.x, d_10.y);
+    fur_store_rgb(q_6, _e28);
     return;
 }
 
@@ -2351,13 +2459,14 @@ void fur_dual_main(uint3 id_4 : SV_DispatchThreadID)
 void fur_dual_dirs_main(uint3 id_5 : SV_DispatchThreadID)
 {
     uint q_7 = id_5.x;
-    if ((((3u * q_7) + 2u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+    if ((((4u * q_7) + 3u) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
         return;
     }
-    float4 wi_3 = asfloat(fur_queries.Load4((3u * q_7)*16));
-    float4 wr_3 = asfloat(fur_queries.Load4(((3u * q_7) + 1u)*16));
-    float4 u_8 = asfloat(fur_queries.Load4(((3u * q_7) + 2u)*16));
-    const float3 _e34 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, wr_3.w, u_8.w);
-    fur_store_rgb(q_7, _e34);
+    float4 wi_3 = asfloat(fur_queries.Load4((4u * q_7)*16));
+    float4 wr_3 = asfloat(fur_queries.Load4(((4u * q_7) + 1u)*16));
+    float4 u_8 = asfloat(fur_queries.Load4(((4u * q_7) + 2u)*16));
+    float4 below = asfloat(fur_queries.Load4(((4u * q_7) + 3u)*16));
+    const float3 _e42 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, below.x, wr_3.w, u_8.w);
+    fur_store_rgb(q_7, _e42);
     return;
 }

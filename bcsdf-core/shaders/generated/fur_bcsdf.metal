@@ -143,11 +143,20 @@ constant float FUR_DUAL_PHI_SCALE = 9.867606;
 constant float FUR_DUAL_MAX_FIBERS = 1000000.0;
 constant float FUR_DUAL_MAX_DENSITY = 4.0;
 constant float FUR_DUAL_MIN_VARIANCE = 0.000003;
+constant float FUR_DUAL_MIN_MASS = 0.05;
+constant float FUR_DUAL_TINY = 0.000001;
 constant float FUR_LN2_ = 0.6931472;
 constant float FUR_LOG2_E = 1.442695;
 constant float FUR_LN2_HI = 0.6933594;
 constant float FUR_LN2_LO = -0.00021219444;
 constant float FUR_INV_SQRT_TAU = 0.3989423;
+constant float FUR_FRAC_1_SQRT_2_ = 0.70710677;
+constant float FUR_ERF_P = 0.3275911;
+constant float FUR_ERF_A1_ = 0.2548296;
+constant float FUR_ERF_A2_ = -0.28449675;
+constant float FUR_ERF_A3_ = 1.4214137;
+constant float FUR_ERF_A4_ = -1.453152;
+constant float FUR_ERF_A5_ = 1.0614054;
 
 FurAxis fur_axis(
     bool centred,
@@ -383,9 +392,9 @@ FurDensity fur_density(
     uint _e74 = at;
     at = _e74 + ((16u * _e4) * _e29);
     if (d < 9u) {
-        uint x_11 = d - 7u;
+        uint x_15 = d - 7u;
         uint _e83 = at;
-        return FurDensity {_e83 + (((4u * x_11) * _e10) * _e31), _e31, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_11, 1u};
+        return FurDensity {_e83 + (((4u * x_15) * _e10) * _e31), _e31, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_15, 1u};
     }
     uint _e98 = at;
     at = _e98 + ((8u * _e10) * _e31);
@@ -722,9 +731,9 @@ float fur_atan2_(
     float ax_4 = metal::abs(x_5);
     float ay = metal::abs(y_1);
     float a_5 = metal::min(ax_4, ay) / metal::max(metal::max(ax_4, ay), 0.000000000000000000000000000000000000011754944);
-    float t_9 = a_5 * a_5;
-    float _e10 = fur_atan_poly(t_9);
-    r = a_5 + (a_5 * (t_9 * _e10));
+    float t_11 = a_5 * a_5;
+    float _e10 = fur_atan_poly(t_11);
+    r = a_5 + (a_5 * (t_11 * _e10));
     float _e15 = r;
     float _e17 = r;
     r = (ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15;
@@ -791,8 +800,8 @@ FurDirAngles fur_angles_from_dirs(
     float _e51 = fur_asin(metal::clamp(a_6 * (1.0 / ni), -1.0, 1.0));
     float _e58 = fur_asin(metal::clamp(b_3 * (1.0 / nr), -1.0, 1.0));
     float y_5 = metal::dot(un, metal::cross(wi, wr));
-    float x_12 = metal::dot(wi, wr) - (a_6 * b_3);
-    float _e64 = fur_atan2_(y_5, x_12);
+    float x_16 = metal::dot(wi, wr) - (a_6 * b_3);
+    float _e64 = fur_atan2_(y_5, x_16);
     return FurDirAngles {_e51, _e58, metal::abs(_e64), true};
 }
 
@@ -1262,8 +1271,8 @@ float fur_rows_invert_between(
 ) {
     float inset_2 = (t1_ - t0_) * 0.0000009536743;
     float _e7 = fur_unit(u_3);
-    float t_10 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
-    float _e14 = fur_rows_invert(r_9, t_10, fur_lut, _buffer_sizes);
+    float t_12 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
+    float _e14 = fur_rows_invert(r_9, t_12, fur_lut, _buffer_sizes);
     return _e14;
 }
 
@@ -1306,7 +1315,7 @@ float fur_sliver_piece_mass(
         return 0.0;
     }
     float slope = (v1_6 - v0_6) / len0_;
-    type_5 t_11 = type_5 {{0.11270166, 0.5, 0.8872983}};
+    type_5 t_13 = type_5 {{0.11270166, 0.5, 0.8872983}};
     type_5 w_4 = type_5 {{0.2777778, 0.44444445, 0.2777778}};
     uint2 loop_bound_9 = uint2(4294967295u);
     bool loop_init_8 = true;
@@ -1325,7 +1334,7 @@ float fur_sliver_piece_mass(
         }
         {
             uint _e33 = k_5;
-            float d_8 = t_11.inner[_e33] * len_5;
+            float d_8 = t_13.inner[_e33] * len_5;
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep((x0_ - pole) + d_8);
@@ -1554,18 +1563,18 @@ float fur_rows_invert_kept(
         return _e19.z;
     }
     float mid = metal::max((g_2.raw - g_2.s.x) - g_2.s.z, 0.0);
-    float t_12 = t0_1 - g_2.s.y;
-    if (!((t_12 <= mid))) {
+    float t_14 = t0_1 - g_2.s.y;
+    if (!((t_14 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_12, mid), fur_lut, _buffer_sizes);
+        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_14, mid), fur_lut, _buffer_sizes);
         return _e50;
     }
-    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_12 - mid, fur_lut, _buffer_sizes);
+    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_14 - mid, fur_lut, _buffer_sizes);
     return _e57.z;
 }
 
@@ -1977,9 +1986,9 @@ FurSample fur_sample_far(
     }
     FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_11 = metal::max(metal::cos(_e189), 0.0) / _e178;
+    float k_12 = metal::max(metal::cos(_e189), 0.0) / _e178;
     float _e194 = theta_i_4;
-    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_11, metal::float3(0.0)), family, true};
+    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_12, metal::float3(0.0)), family, true};
     FurSample _e202 = out_3;
     return _e202;
 }
@@ -2011,6 +2020,12 @@ bool fur_is_nan(
     return (as_type<uint>(x_9) & 2147483647u) > 2139095040u;
 }
 
+metal::bool3 fur_is_nan3_(
+    metal::float3 x_10
+) {
+    return (as_type<metal::uint3>(x_10) & metal::uint3(2147483647u)) > metal::uint3(2139095040u);
+}
+
 uint naga_f2u32(float value) {
     return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
 }
@@ -2026,9 +2041,9 @@ FurLoc fur_dual_theta(
     float _e14 = t_8;
     t_8 = metal::min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_12 = metal::min(naga_f2u32(_e17), 62u);
+    uint k_13 = metal::min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc {k_12, _e21 - static_cast<float>(k_12)};
+    return FurLoc {k_13, _e21 - static_cast<float>(k_13)};
 }
 
 metal::float3 fur_dual_field(
@@ -2092,9 +2107,9 @@ metal::float3 fur_exp_neg(
     metal::float3 x_in
 ) {
     metal::float3 p_1 = metal::float3(0.00019875693);
-    metal::float3 x_13 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
-    metal::float3 k_13 = metal::rint(x_13 * FUR_LOG2_E);
-    metal::float3 r_15 = ((k_13 * FUR_LN2_HI) - x_13) + (k_13 * FUR_LN2_LO);
+    metal::float3 x_17 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
+    metal::float3 k_14 = metal::rint(x_17 * FUR_LOG2_E);
+    metal::float3 r_15 = ((k_14 * FUR_LN2_HI) - x_17) + (k_14 * FUR_LN2_LO);
     metal::float3 z_1 = r_15 * r_15;
     metal::float3 _e20 = p_1;
     p_1 = (_e20 * r_15) + metal::float3(0.0013981999);
@@ -2108,40 +2123,137 @@ metal::float3 fur_exp_neg(
     p_1 = (_e40 * r_15) + metal::float3(0.5);
     metal::float3 _e45 = p_1;
     metal::float3 e = ((_e45 * z_1) + r_15) + metal::float3(1.0);
-    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_13))), metal::float3(0.0), x_in > metal::float3(87.0));
+    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_14))), metal::float3(0.0), x_in > metal::float3(87.0));
+}
+
+metal::float3 fur_erf(
+    metal::float3 x_11
+) {
+    metal::bool3 _e7 = fur_is_nan3_(x_11);
+    metal::float3 a_8 = metal::select(metal::min(metal::abs(x_11), metal::float3(10.0)), metal::float3(0.0), _e7);
+    metal::float3 t_15 = metal::float3(1.0) / (metal::float3(1.0) + (FUR_ERF_P * a_8));
+    metal::float3 poly_1 = ((((((((FUR_ERF_A5_ * t_15) + metal::float3(-1.453152)) * t_15) + metal::float3(1.4214137)) * t_15) + metal::float3(-0.28449675)) * t_15) + metal::float3(0.2548296)) * t_15;
+    metal::float3 _e36 = fur_exp_neg(a_8 * a_8);
+    metal::float3 e_1 = metal::float3(1.0) - (poly_1 * _e36);
+    metal::uint3 sign = as_type<metal::uint3>(x_11) & metal::uint3(2147483648u);
+    return as_type<metal::float3>(as_type<metal::uint3>(e_1) | sign);
+}
+
+metal::float3 fur_dual_between(
+    metal::float3 x_12,
+    metal::float3 top
+) {
+    metal::bool3 _e8 = fur_is_nan3_(x_12);
+    return metal::select(metal::min(metal::max(x_12, metal::float3(0.0)), top), metal::float3(0.0), _e8);
 }
 
 metal::float3 fur_dual_gauss(
     metal::float3 d_6,
-    metal::float3 v_in
+    metal::float3 v_in,
+    float theta_i_5
 ) {
     metal::float3 v_4 = metal::clamp(v_in, metal::float3(0.000003), metal::float3(1000000000000000000000000000000.0));
-    metal::float3 _e7 = fur_rsqrt_newton(v_4);
-    metal::float3 z_2 = d_6 * _e7;
-    metal::float3 _e12 = fur_exp_neg((0.5 * z_2) * z_2);
-    return (_e12 * _e7) * FUR_INV_SQRT_TAU;
+    metal::float3 _e8 = fur_rsqrt_newton(v_4);
+    metal::float3 z_2 = d_6 * _e8;
+    metal::float3 _e13 = fur_exp_neg((0.5 * z_2) * z_2);
+    metal::float3 g_7 = (_e13 * _e8) * FUR_INV_SQRT_TAU;
+    metal::float3 centre = ((d_6 - metal::float3(theta_i_5)) * _e8) * FUR_FRAC_1_SQRT_2_;
+    metal::float3 half_range = (FUR_HALF_PI * _e8) * FUR_FRAC_1_SQRT_2_;
+    metal::float3 _e27 = fur_erf(centre + half_range);
+    metal::float3 _e29 = fur_erf(centre - half_range);
+    metal::float3 mass_1 = 0.5 * (_e27 - _e29);
+    return g_7 / metal::max(mass_1, metal::float3(0.05));
+}
+
+metal::float3 fur_dual_power(
+    metal::float3 log2_mu,
+    float k_9
+) {
+    metal::float3 _e6 = fur_exp_neg((-(k_9) * FUR_LN2_) * log2_mu);
+    return _e6;
+}
+
+metal::float3 fur_dual_forward(
+    metal::float3 a_f2_
+) {
+    metal::float3 a_9 = metal::clamp(a_f2_, metal::float3(0.0), metal::float3(1.0));
+    metal::float3 _e9 = fur_rsqrt_newton(metal::max(a_9, metal::float3(0.000000000000000000000000000001)));
+    return a_9 * _e9;
+}
+
+metal::float3 fur_reflectance_squared(
+    metal::float3 mu,
+    metal::float3 t_9
+) {
+    metal::float3 den_1 = mu * (metal::float3(1.0) - (t_9 * mu));
+    metal::float3 _e14 = fur_dual_between((mu - t_9) / metal::max(den_1, metal::float3(0.000001)), metal::float3(1.0));
+    return metal::select(metal::float3(0.0), _e14, den_1 > metal::float3(0.000001));
+}
+
+metal::float3 fur_downward_flux(
+    metal::float3 mu_n,
+    metal::float3 mu_2m,
+    metal::float3 rho2_
+) {
+    metal::float3 num = metal::float3(1.0) - (rho2_ * mu_2m);
+    metal::float3 den_2 = metal::float3(1.0) - (((rho2_ * mu_n) * mu_n) * mu_2m);
+    metal::float3 d_9 = mu_n * (num / metal::max(den_2, metal::float3(0.000001)));
+    metal::float3 _e18 = fur_dual_between(d_9, mu_n);
+    return metal::select(mu_n, _e18, den_2 > metal::float3(0.000001));
+}
+
+metal::float3 fur_backscatter_factor(
+    metal::float3 mu_1,
+    metal::float3 t_10,
+    metal::float3 rho2_1,
+    metal::float3 mu_2m_1
+) {
+    metal::float3 tiny = metal::float3(0.000001);
+    metal::float3 g_den = metal::float3(1.0) - (rho2_1 * mu_2m_1);
+    metal::float3 g_8 = (metal::float3(1.0) - mu_2m_1) / metal::max(g_den, tiny);
+    metal::float3 _e22 = fur_dual_between(metal::float3(1.0) - (t_10 / metal::max(mu_1, tiny)), metal::float3(1.0));
+    metal::float3 den_3 = metal::float3(1.0) - (_e22 * g_8);
+    metal::float3 _e35 = fur_dual_between((g_8 * (metal::float3(1.0) - _e22)) / metal::max(den_3, tiny), metal::float3(1.0));
+    return metal::select(metal::float3(1.0), _e35, (g_den > tiny) & (den_3 > tiny));
 }
 
 float fur_dual_clean(
-    float x_10,
-    float top
+    float x_13,
+    float top_1
 ) {
     bool local_27 = {};
-    bool _e3 = fur_is_nan(x_10);
+    bool _e3 = fur_is_nan(x_13);
     if (!(_e3)) {
-        local_27 = x_10 > 0.0;
+        local_27 = x_13 > 0.0;
     } else {
         local_27 = false;
     }
     bool _e10 = local_27;
-    return _e10 ? metal::min(x_10, top) : 0.0;
+    return _e10 ? metal::min(x_13, top_1) : 0.0;
+}
+
+float fur_dual_below(
+    float x_14
+) {
+    bool local_28 = {};
+    bool _e2 = fur_is_nan(x_14);
+    float deep = _e2 ? FUR_DUAL_MAX_FIBERS : 0.0;
+    bool _e7 = fur_is_nan(x_14);
+    if (!(_e7)) {
+        local_28 = x_14 >= 0.0;
+    } else {
+        local_28 = false;
+    }
+    bool _e14 = local_28;
+    return _e14 ? metal::min(x_14, FUR_DUAL_MAX_FIBERS) : deep;
 }
 
 metal::float3 fur_eval_dual(
-    float theta_i_5,
+    float theta_i_6,
     float theta_r_8,
     float phi_in_1,
     float fibers,
+    float fibers_below,
     float d_f_in,
     float d_b_in,
     device type_1 const& fur_dual,
@@ -2152,49 +2264,63 @@ metal::float3 fur_eval_dual(
     metal::float3 f_s = {};
     uint g_6 = 0u;
     metal::float3 zero = metal::float3(0.0);
-    bool _e8 = fur_valid(theta_i_5, theta_r_8, phi_in_1);
-    if (!(_e8)) {
+    bool _e9 = fur_valid(theta_i_6, theta_r_8, phi_in_1);
+    if (!(_e9)) {
         return zero;
     }
-    float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
-    float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
-    float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_14 = theta_i_5 + theta_r_8;
-    float _e17 = fur_cos_within_half_pi(theta_i_5);
-    float inv_cos2_1 = 1.0 / metal::max(_e17 * _e17, FUR_MIN_COS2_);
-    float direct = metal::clamp(1.0 - _e11, 0.0, 1.0);
-    FurLoc _e28 = fur_dual_theta(theta_r_8);
-    float _e29 = fur_wrap_angle(phi_in_1);
-    float abs_phi_2 = metal::abs(_e29);
-    metal::float3 _e36 = fur_dual_field(_e28, (abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT, fur_dual, _buffer_sizes);
-    metal::float3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
-    metal::float3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_, fur_dual, _buffer_sizes);
-    metal::float3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B, fur_dual, _buffer_sizes);
-    metal::float3 d_back = metal::float3(x_14) - _e42;
-    metal::float3 s_b = (metal::float3(1.0) + (_e15 * _e38)) * _e40;
+    float _e12 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    float _e13 = fur_dual_below(fibers_below);
+    float _e15 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    float _e17 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    float x_18 = theta_i_6 + theta_r_8;
+    float _e19 = fur_cos_within_half_pi(theta_i_6);
+    float inv_cos2_1 = 1.0 / metal::max(_e19 * _e19, FUR_MIN_COS2_);
+    float direct = metal::clamp(1.0 - _e12, 0.0, 1.0);
+    FurLoc _e30 = fur_dual_theta(theta_r_8);
+    float _e31 = fur_wrap_angle(phi_in_1);
+    float abs_phi_2 = metal::abs(_e31);
+    metal::float3 _e38 = fur_dual_field(_e30, (abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT, fur_dual, _buffer_sizes);
+    metal::float3 _e40 = fur_dual_field(_e30, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
+    metal::float3 _e42 = fur_dual_field(_e30, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
+    metal::float3 _e44 = fur_dual_power(_e40, 1.0);
+    metal::float3 _e45 = fur_dual_forward(_e42);
+    metal::float3 _e48 = fur_dual_power(_e40, 2.0 * _e13);
+    metal::float3 _e49 = fur_reflectance_squared(_e44, _e45);
+    metal::float3 _e50 = fur_backscatter_factor(_e44, _e45, _e49, _e48);
+    metal::float3 half_energy = _e38 * _e50;
+    metal::float3 _e53 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_, fur_dual, _buffer_sizes);
+    metal::float3 _e55 = fur_dual_field(_e30, FUR_DUAL_DELTA_B, fur_dual, _buffer_sizes);
+    metal::float3 d_back = metal::float3(x_18) - _e55;
+    metal::float3 s_b = (metal::float3(1.0) + (_e17 * _e42)) * _e53;
     metal::float3 v_back = s_b * s_b;
-    float back_scale = (_e15 * inv_cos2_1) / FUR_PI;
+    float back_scale = (_e17 * inv_cos2_1) / FUR_PI;
     out_4 = zero;
     if (direct > 0.0) {
-        metal::float3 _e59 = fur_dual_gauss(d_back, v_back);
-        out_4 = ((direct * back_scale) * _e36) * _e59;
+        metal::float3 _e72 = fur_dual_gauss(d_back, v_back, theta_i_6);
+        out_4 = ((direct * back_scale) * half_energy) * _e72;
     }
-    if (_e11 > 0.0) {
-        FurLoc _e64 = fur_dual_theta(-(theta_i_5));
-        metal::float3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
-        metal::float3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F, fur_dual, _buffer_sizes);
-        metal::float3 _e73 = fur_exp_neg((-(_e11) * FUR_LN2_) * _e66);
-        metal::float3 spread = metal::max(_e73 - metal::float3(direct), zero) * _e13;
+    if (_e12 > 0.0) {
+        FurLoc _e77 = fur_dual_theta(-(theta_i_6));
+        metal::float3 _e79 = fur_dual_field(_e77, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
+        metal::float3 _e81 = fur_dual_field(_e77, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
+        metal::float3 _e83 = fur_dual_field(_e77, FUR_DUAL_BETA_F, fur_dual, _buffer_sizes);
+        metal::float3 _e85 = fur_dual_power(_e79, 1.0);
+        metal::float3 _e86 = fur_dual_forward(_e81);
+        metal::float3 _e87 = fur_dual_power(_e79, _e12);
+        metal::float3 _e90 = fur_dual_power(_e79, 2.0 * _e13);
+        metal::float3 _e91 = fur_reflectance_squared(_e85, _e86);
+        metal::float3 _e92 = fur_downward_flux(_e87, _e90, _e91);
+        metal::float3 spread = metal::max(_e92 - metal::float3(direct), zero) * _e15;
         if (metal::any(spread > zero)) {
-            metal::float3 s2f = (_e11 * _e68) * _e68;
+            metal::float3 s2f = (_e12 * _e83) * _e83;
             p_2 = abs_phi_2 * FUR_DUAL_PHI_SCALE;
-            float _e85 = p_2;
-            float _e88 = p_2;
-            p_2 = (_e88 > 0.0) ? metal::min(_e85, 31.0) : 0.0;
-            float _e93 = p_2;
-            uint j_7 = metal::min(naga_f2u32(_e93), 30u);
-            float _e97 = p_2;
-            FurLoc at_phi = FurLoc {j_7, _e97 - static_cast<float>(j_7)};
+            float _e104 = p_2;
+            float _e107 = p_2;
+            p_2 = (_e107 > 0.0) ? metal::min(_e104, 31.0) : 0.0;
+            float _e112 = p_2;
+            uint j_7 = metal::min(naga_f2u32(_e112), 30u);
+            float _e116 = p_2;
+            FurLoc at_phi = FurLoc {j_7, _e116 - static_cast<float>(j_7)};
             f_s = zero;
             uint2 loop_bound_17 = uint2(4294967295u);
             bool loop_init_16 = true;
@@ -2202,44 +2328,44 @@ metal::float3 fur_eval_dual(
                 if (metal::all(loop_bound_17 == uint2(0u))) { break; }
                 loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
                 if (!loop_init_16) {
-                    uint _e125 = g_6;
-                    g_6 = _e125 + 1u;
+                    uint _e144 = g_6;
+                    g_6 = _e144 + 1u;
                 }
                 loop_init_16 = false;
-                uint _e104 = g_6;
-                if (_e104 < 4u) {
+                uint _e123 = g_6;
+                if (_e123 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e108 = g_6;
-                    metal::float3 _e110 = fur_dual_field(_e28, FUR_DUAL_MEAN + _e108, fur_dual, _buffer_sizes);
-                    uint _e112 = g_6;
-                    metal::float3 _e114 = fur_dual_field(_e28, FUR_DUAL_SD + _e112, fur_dual, _buffer_sizes);
-                    uint _e115 = g_6;
-                    metal::float3 _e116 = fur_dual_ng(_e115, _e28, at_phi, fur_dual, _buffer_sizes);
-                    metal::float3 v_5 = (_e114 * _e114) + s2f;
-                    metal::float3 _e119 = f_s;
-                    metal::float3 _e122 = fur_dual_gauss(metal::float3(x_14) - _e110, v_5);
-                    f_s = _e119 + (_e116 * _e122);
+                    uint _e127 = g_6;
+                    metal::float3 _e129 = fur_dual_field(_e30, FUR_DUAL_MEAN + _e127, fur_dual, _buffer_sizes);
+                    uint _e131 = g_6;
+                    metal::float3 _e133 = fur_dual_field(_e30, FUR_DUAL_SD + _e131, fur_dual, _buffer_sizes);
+                    uint _e134 = g_6;
+                    metal::float3 _e135 = fur_dual_ng(_e134, _e30, at_phi, fur_dual, _buffer_sizes);
+                    metal::float3 v_5 = (_e133 * _e133) + s2f;
+                    metal::float3 _e138 = f_s;
+                    metal::float3 _e141 = fur_dual_gauss(metal::float3(x_18) - _e129, v_5, theta_i_6);
+                    f_s = _e138 + (_e135 * _e141);
                 }
             }
-            metal::float3 _e129 = fur_dual_gauss(d_back, v_back + s2f);
-            metal::float3 _e130 = out_4;
-            metal::float3 _e131 = f_s;
-            out_4 = _e130 + (spread * ((_e131 * inv_cos2_1) + ((back_scale * _e36) * _e129)));
+            metal::float3 _e148 = fur_dual_gauss(d_back, v_back + s2f, theta_i_6);
+            metal::float3 _e149 = out_4;
+            metal::float3 _e150 = f_s;
+            out_4 = _e149 + (spread * ((_e150 * inv_cos2_1) + ((back_scale * half_energy) * _e148)));
         }
     }
-    float _e139 = out_4.x;
-    bool _e140 = fur_finite(_e139);
-    float _e142 = out_4.y;
-    bool _e143 = fur_finite(_e142);
-    float _e145 = out_4.z;
-    bool _e146 = fur_finite(_e145);
-    metal::bool3 finite = metal::bool3(_e140, _e143, _e146);
-    metal::float3 _e148 = out_4;
-    metal::float3 _e149 = out_4;
-    return metal::select(zero, _e148, finite & (_e149 > zero));
+    float _e158 = out_4.x;
+    bool _e159 = fur_finite(_e158);
+    float _e161 = out_4.y;
+    bool _e162 = fur_finite(_e161);
+    float _e164 = out_4.z;
+    bool _e165 = fur_finite(_e164);
+    metal::bool3 finite = metal::bool3(_e159, _e162, _e165);
+    metal::float3 _e167 = out_4;
+    metal::float3 _e168 = out_4;
+    return metal::select(zero, _e167, finite & (_e168 > zero));
 }
 
 metal::float3 fur_eval_dual_dirs(
@@ -2247,17 +2373,18 @@ metal::float3 fur_eval_dual_dirs(
     metal::float3 wr_2,
     metal::float3 u_6,
     float fibers_1,
+    float fibers_below_1,
     float d_f,
     float d_b,
     device type_1 const& fur_dual,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FurDirAngles _e6 = fur_angles_from_dirs(wi_2, wr_2, u_6);
-    if (!(_e6.ok)) {
+    FurDirAngles _e7 = fur_angles_from_dirs(wi_2, wr_2, u_6);
+    if (!(_e7.ok)) {
         return metal::float3(0.0);
     }
-    metal::float3 _e14 = fur_eval_dual(_e6.theta_i, _e6.theta_r, _e6.phi, fibers_1, d_f, d_b, fur_dual, _buffer_sizes);
-    return _e14;
+    metal::float3 _e15 = fur_eval_dual(_e7.theta_i, _e7.theta_r, _e7.phi, fibers_1, fibers_below_1, d_f, d_b, fur_dual, _buffer_sizes);
+    return _e15;
 }
 
 void fur_store(
@@ -2266,7 +2393,7 @@ void fur_store(
     device type_18& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_9 = 0u;
+    uint k_10 = 0u;
     uint base_1 = 16u * q;
     type_19 parts = type_19 {{f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total}};
     uint2 loop_bound_18 = uint2(4294967295u);
@@ -2275,24 +2402,24 @@ void fur_store(
         if (metal::all(loop_bound_18 == uint2(0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e46 = k_9;
-            k_9 = _e46 + 1u;
+            uint _e46 = k_10;
+            k_10 = _e46 + 1u;
         }
         loop_init_17 = false;
-        uint _e12 = k_9;
+        uint _e12 = k_10;
         if (_e12 < 5u) {
         } else {
             break;
         }
         {
-            uint _e17 = k_9;
-            uint _e21 = k_9;
+            uint _e17 = k_10;
+            uint _e21 = k_10;
             fur_results[base_1 + (3u * _e17)] = parts.inner[_e21].x;
-            uint _e26 = k_9;
-            uint _e32 = k_9;
+            uint _e26 = k_10;
+            uint _e32 = k_10;
             fur_results[(base_1 + (3u * _e26)) + 1u] = parts.inner[_e32].y;
-            uint _e37 = k_9;
-            uint _e43 = k_9;
+            uint _e37 = k_10;
+            uint _e43 = k_10;
             fur_results[(base_1 + (3u * _e37)) + 2u] = parts.inner[_e43].z;
         }
     }
@@ -2306,7 +2433,7 @@ void fur_store_rgb(
     device type_18& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_10 = 3u;
+    uint k_11 = 3u;
     uint base_2 = 16u * q_1;
     fur_results[base_2] = v_2.x;
     fur_results[base_2 + 1u] = v_2.y;
@@ -2317,17 +2444,17 @@ void fur_store_rgb(
         if (metal::all(loop_bound_19 == uint2(0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e27 = k_10;
-            k_10 = _e27 + 1u;
+            uint _e27 = k_11;
+            k_11 = _e27 + 1u;
         }
         loop_init_18 = false;
-        uint _e19 = k_10;
+        uint _e19 = k_11;
         if (_e19 < 16u) {
         } else {
             break;
         }
         {
-            uint _e23 = k_10;
+            uint _e23 = k_11;
             fur_results[base_2 + _e23] = 0.0;
         }
     }
@@ -2347,8 +2474,8 @@ struct fur_eval_mainInput {
     if (q_2 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_8 = fur_queries[q_2];
-    FurFamilies _e11 = fur_eval_far(a_8.x, a_8.y, a_8.z, fur_lut, _buffer_sizes);
+    metal::float4 a_10 = fur_queries[q_2];
+    FurFamilies _e11 = fur_eval_far(a_10.x, a_10.y, a_10.z, fur_lut, _buffer_sizes);
     fur_store(q_2, _e11, fur_results, _buffer_sizes);
     return;
 }
@@ -2389,8 +2516,8 @@ struct fur_sample_mainInput {
     if (q_4 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_9 = fur_queries[q_4];
-    FurSample _e10 = fur_sample_far(a_9.x, a_9.yzw, fur_lut, _buffer_sizes);
+    metal::float4 a_11 = fur_queries[q_4];
+    FurSample _e10 = fur_sample_far(a_11.x, a_11.yzw, fur_lut, _buffer_sizes);
     uint base_3 = 16u * q_4;
     fur_results[base_3] = _e10.theta_i;
     fur_results[base_3 + 1u] = _e10.phi;
@@ -2417,8 +2544,8 @@ struct fur_pdf_mainInput {
     if (q_5 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_10 = fur_queries[q_5];
-    float _e15 = fur_pdf_far(a_10.x, a_10.y, a_10.z, fur_lut, _buffer_sizes);
+    metal::float4 a_12 = fur_queries[q_5];
+    float _e15 = fur_pdf_far(a_12.x, a_12.y, a_12.z, fur_lut, _buffer_sizes);
     fur_results[16u * q_5] = _e15;
     return;
 }
@@ -2437,10 +2564,10 @@ struct fur_dual_mainInput {
     if (((2u * q_6) + 1u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_11 = fur_queries[2u * q_6];
-    metal::float4 d_9 = fur_queries[(2u * q_6) + 1u];
-    metal::float3 _e27 = fur_eval_dual(a_11.x, a_11.y, a_11.z, a_11.w, d_9.x, d_9.y, fur_dual, _buffer_sizes);
-    fur_store_rgb(q_6, _e27, fur_results, _buffer_sizes);
+    metal::float4 a_13 = fur_queries[2u * q_6];
+    metal::float4 d_10 = fur_queries[(2u * q_6) + 1u];
+    metal::float3 _e28 = fur_eval_dual(a_13.x, a_13.y, a_13.z, a_13.w, d_10.z, d_10.x, d_10.y, fur_dual, _buffer_sizes);
+    fur_store_rgb(q_6, _e28, fur_results, _buffer_sizes);
     return;
 }
 
@@ -2455,13 +2582,14 @@ struct fur_dual_dirs_mainInput {
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_7 = id_5.x;
-    if (((3u * q_7) + 2u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+    if (((4u * q_7) + 3u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 wi_3 = fur_queries[3u * q_7];
-    metal::float4 wr_3 = fur_queries[(3u * q_7) + 1u];
-    metal::float4 u_8 = fur_queries[(3u * q_7) + 2u];
-    metal::float3 _e34 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, wr_3.w, u_8.w, fur_dual, _buffer_sizes);
-    fur_store_rgb(q_7, _e34, fur_results, _buffer_sizes);
+    metal::float4 wi_3 = fur_queries[4u * q_7];
+    metal::float4 wr_3 = fur_queries[(4u * q_7) + 1u];
+    metal::float4 u_8 = fur_queries[(4u * q_7) + 2u];
+    metal::float4 below = fur_queries[(4u * q_7) + 3u];
+    metal::float3 _e42 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, below.x, wr_3.w, u_8.w, fur_dual, _buffer_sizes);
+    fur_store_rgb(q_7, _e42, fur_results, _buffer_sizes);
     return;
 }

@@ -101,11 +101,20 @@ const float FUR_DUAL_PHI_SCALE = 9.867606;
 const float FUR_DUAL_MAX_FIBERS = 1000000.0;
 const float FUR_DUAL_MAX_DENSITY = 4.0;
 const float FUR_DUAL_MIN_VARIANCE = 3e-6;
+const float FUR_DUAL_MIN_MASS = 0.05;
+const float FUR_DUAL_TINY = 1e-6;
 const float FUR_LN2_ = 0.6931472;
 const float FUR_LOG2_E = 1.442695;
 const float FUR_LN2_HI = 0.6933594;
 const float FUR_LN2_LO = -0.00021219444;
 const float FUR_INV_SQRT_TAU = 0.3989423;
+const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
+const float FUR_ERF_P = 0.3275911;
+const float FUR_ERF_A1_ = 0.2548296;
+const float FUR_ERF_A2_ = -0.28449675;
+const float FUR_ERF_A3_ = 1.4214137;
+const float FUR_ERF_A4_ = -1.453152;
+const float FUR_ERF_A5_ = 1.0614054;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_3_cs[]; };
 
@@ -327,9 +336,9 @@ float fur_atan2_(float y_1, float x_5) {
     float ax_4 = abs(x_5);
     float ay = abs(y_1);
     float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_9 = (a_5 * a_5);
-    float _e10 = fur_atan_poly(t_9);
-    r = (a_5 + (a_5 * (t_9 * _e10)));
+    float t_11 = (a_5 * a_5);
+    float _e10 = fur_atan_poly(t_11);
+    r = (a_5 + (a_5 * (t_11 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -392,8 +401,8 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_5 = dot(un, cross(wi, wr));
-    float x_11 = (dot(wi, wr) - (a_6 * b_3));
-    float _e64 = fur_atan2_(y_5, x_11);
+    float x_15 = (dot(wi, wr) - (a_6 * b_3));
+    float _e64 = fur_atan2_(y_5, x_15);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -623,7 +632,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_10[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float t_12[3] = float[3](0.11270166, 0.5, 0.8872983);
     float w_3[3] = float[3](0.2777778, 0.44444445, 0.2777778);
     bool loop_init_2 = true;
     while(true) {
@@ -639,7 +648,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_10[_e33] * len_5);
+            float d_8 = (t_12[_e33] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -782,6 +791,10 @@ bool fur_is_nan(float x_9) {
     return ((floatBitsToUint(x_9) & 2147483647u) > 2139095040u);
 }
 
+bvec3 fur_is_nan3_(vec3 x_10) {
+    return greaterThan((floatBitsToUint(x_10) & uvec3(2147483647u)), uvec3(2139095040u));
+}
+
 FurLoc fur_dual_theta(float theta) {
     float t_8 = 0.0;
     t_8 = (((theta + FUR_HALF_PI) * FUR_DUAL_THETA_SCALE) - 0.5);
@@ -791,9 +804,9 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_11 = min(uint(_e17), 62u);
+    uint k_12 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_11, (_e21 - float(k_11)));
+    return FurLoc(k_12, (_e21 - float(k_12)));
 }
 
 vec3 fur_dual_field(FurLoc l_4, uint f_1) {
@@ -834,9 +847,9 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
 
 vec3 fur_exp_neg(vec3 x_in) {
     vec3 p_1 = vec3(0.00019875693);
-    vec3 x_12 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_12 = roundEven((x_12 * FUR_LOG2_E));
-    vec3 r_15 = (((k_12 * FUR_LN2_HI) - x_12) + (k_12 * FUR_LN2_LO));
+    vec3 x_16 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_13 = roundEven((x_16 * FUR_LOG2_E));
+    vec3 r_15 = (((k_13 * FUR_LN2_HI) - x_16) + (k_13 * FUR_LN2_LO));
     vec3 z_1 = (r_15 * r_15);
     vec3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + vec3(0.0013981999));
@@ -850,156 +863,241 @@ vec3 fur_exp_neg(vec3 x_in) {
     p_1 = ((_e40 * r_15) + vec3(0.5));
     vec3 _e45 = p_1;
     vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_12))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+    return mix(ldexp(e, -(ivec3(k_13))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
-vec3 fur_dual_gauss(vec3 d_6, vec3 v_in) {
+vec3 fur_erf(vec3 x_11) {
+    bvec3 _e7 = fur_is_nan3_(x_11);
+    vec3 a_7 = mix(min(abs(x_11), vec3(10.0)), vec3(0.0), _e7);
+    vec3 t_13 = (vec3(1.0) / (vec3(1.0) + (FUR_ERF_P * a_7)));
+    vec3 poly_1 = (((((((((FUR_ERF_A5_ * t_13) + vec3(-1.453152)) * t_13) + vec3(1.4214137)) * t_13) + vec3(-0.28449675)) * t_13) + vec3(0.2548296)) * t_13);
+    vec3 _e36 = fur_exp_neg((a_7 * a_7));
+    vec3 e_1 = (vec3(1.0) - (poly_1 * _e36));
+    uvec3 sign_ = (floatBitsToUint(x_11) & uvec3(2147483648u));
+    return uintBitsToFloat((floatBitsToUint(e_1) | sign_));
+}
+
+vec3 fur_dual_between(vec3 x_12, vec3 top) {
+    bvec3 _e8 = fur_is_nan3_(x_12);
+    return mix(min(max(x_12, vec3(0.0)), top), vec3(0.0), _e8);
+}
+
+vec3 fur_dual_gauss(vec3 d_6, vec3 v_in, float theta_i_5) {
     vec3 v_4 = clamp(v_in, vec3(3e-6), vec3(1e30));
-    vec3 _e7 = fur_rsqrt_newton(v_4);
-    vec3 z_2 = (d_6 * _e7);
-    vec3 _e12 = fur_exp_neg(((0.5 * z_2) * z_2));
-    return ((_e12 * _e7) * FUR_INV_SQRT_TAU);
+    vec3 _e8 = fur_rsqrt_newton(v_4);
+    vec3 z_2 = (d_6 * _e8);
+    vec3 _e13 = fur_exp_neg(((0.5 * z_2) * z_2));
+    vec3 g_7 = ((_e13 * _e8) * FUR_INV_SQRT_TAU);
+    vec3 centre = (((d_6 - vec3(theta_i_5)) * _e8) * FUR_FRAC_1_SQRT_2_);
+    vec3 half_range = ((FUR_HALF_PI * _e8) * FUR_FRAC_1_SQRT_2_);
+    vec3 _e27 = fur_erf((centre + half_range));
+    vec3 _e29 = fur_erf((centre - half_range));
+    vec3 mass = (0.5 * (_e27 - _e29));
+    return (g_7 / max(mass, vec3(0.05)));
 }
 
-float fur_dual_clean(float x_10, float top) {
+vec3 fur_dual_power(vec3 log2_mu, float k_9) {
+    vec3 _e6 = fur_exp_neg(((-(k_9) * FUR_LN2_) * log2_mu));
+    return _e6;
+}
+
+vec3 fur_dual_forward(vec3 a_f2_) {
+    vec3 a_8 = clamp(a_f2_, vec3(0.0), vec3(1.0));
+    vec3 _e9 = fur_rsqrt_newton(max(a_8, vec3(1e-30)));
+    return (a_8 * _e9);
+}
+
+vec3 fur_reflectance_squared(vec3 mu, vec3 t_9) {
+    vec3 den_1 = (mu * (vec3(1.0) - (t_9 * mu)));
+    vec3 _e14 = fur_dual_between(((mu - t_9) / max(den_1, vec3(1e-6))), vec3(1.0));
+    return mix(vec3(0.0), _e14, greaterThan(den_1, vec3(1e-6)));
+}
+
+vec3 fur_downward_flux(vec3 mu_n, vec3 mu_2m, vec3 rho2_) {
+    vec3 num = (vec3(1.0) - (rho2_ * mu_2m));
+    vec3 den_2 = (vec3(1.0) - (((rho2_ * mu_n) * mu_n) * mu_2m));
+    vec3 d_9 = (mu_n * (num / max(den_2, vec3(1e-6))));
+    vec3 _e18 = fur_dual_between(d_9, mu_n);
+    return mix(mu_n, _e18, greaterThan(den_2, vec3(1e-6)));
+}
+
+vec3 fur_backscatter_factor(vec3 mu_1, vec3 t_10, vec3 rho2_1, vec3 mu_2m_1) {
+    vec3 tiny = vec3(1e-6);
+    vec3 g_den = (vec3(1.0) - (rho2_1 * mu_2m_1));
+    vec3 g_8 = ((vec3(1.0) - mu_2m_1) / max(g_den, tiny));
+    vec3 _e22 = fur_dual_between((vec3(1.0) - (t_10 / max(mu_1, tiny))), vec3(1.0));
+    vec3 den_3 = (vec3(1.0) - (_e22 * g_8));
+    vec3 _e35 = fur_dual_between(((g_8 * (vec3(1.0) - _e22)) / max(den_3, tiny)), vec3(1.0));
+    return mix(vec3(1.0), _e35, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
+}
+
+float fur_dual_clean(float x_13, float top_1) {
     bool local_27 = false;
-    bool _e3 = fur_is_nan(x_10);
+    bool _e3 = fur_is_nan(x_13);
     if (!(_e3)) {
-        local_27 = (x_10 > 0.0);
+        local_27 = (x_13 > 0.0);
     } else {
         local_27 = false;
     }
     bool _e10 = local_27;
-    return (_e10 ? min(x_10, top) : 0.0);
+    return (_e10 ? min(x_13, top_1) : 0.0);
 }
 
-vec3 fur_eval_dual(float theta_i_5, float theta_r_8, float phi_in_1, float fibers, float d_f_in, float d_b_in) {
+float fur_dual_below(float x_14) {
+    bool local_28 = false;
+    bool _e2 = fur_is_nan(x_14);
+    float deep = (_e2 ? FUR_DUAL_MAX_FIBERS : 0.0);
+    bool _e7 = fur_is_nan(x_14);
+    if (!(_e7)) {
+        local_28 = (x_14 >= 0.0);
+    } else {
+        local_28 = false;
+    }
+    bool _e14 = local_28;
+    return (_e14 ? min(x_14, FUR_DUAL_MAX_FIBERS) : deep);
+}
+
+vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fibers, float fibers_below, float d_f_in, float d_b_in) {
     vec3 out_4 = vec3(0.0);
     float p_2 = 0.0;
     vec3 f_s = vec3(0.0);
     uint g_6 = 0u;
     vec3 zero = vec3(0.0);
-    bool _e8 = fur_valid(theta_i_5, theta_r_8, phi_in_1);
-    if (!(_e8)) {
+    bool _e9 = fur_valid(theta_i_6, theta_r_8, phi_in_1);
+    if (!(_e9)) {
         return zero;
     }
-    float _e11 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
-    float _e13 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
-    float _e15 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_13 = (theta_i_5 + theta_r_8);
-    float _e17 = fur_cos_within_half_pi(theta_i_5);
-    float inv_cos2_ = (1.0 / max((_e17 * _e17), FUR_MIN_COS2_));
-    float direct = clamp((1.0 - _e11), 0.0, 1.0);
-    FurLoc _e28 = fur_dual_theta(theta_r_8);
-    float _e29 = fur_wrap_angle(phi_in_1);
-    float abs_phi = abs(_e29);
-    vec3 _e36 = fur_dual_field(_e28, ((abs_phi < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
-    vec3 _e38 = fur_dual_field(_e28, FUR_DUAL_A_F2_);
-    vec3 _e40 = fur_dual_field(_e28, FUR_DUAL_SIGMA_B0_);
-    vec3 _e42 = fur_dual_field(_e28, FUR_DUAL_DELTA_B);
-    vec3 d_back = (vec3(x_13) - _e42);
-    vec3 s_b = ((vec3(1.0) + (_e15 * _e38)) * _e40);
+    float _e12 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    float _e13 = fur_dual_below(fibers_below);
+    float _e15 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    float _e17 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    float x_17 = (theta_i_6 + theta_r_8);
+    float _e19 = fur_cos_within_half_pi(theta_i_6);
+    float inv_cos2_ = (1.0 / max((_e19 * _e19), FUR_MIN_COS2_));
+    float direct = clamp((1.0 - _e12), 0.0, 1.0);
+    FurLoc _e30 = fur_dual_theta(theta_r_8);
+    float _e31 = fur_wrap_angle(phi_in_1);
+    float abs_phi = abs(_e31);
+    vec3 _e38 = fur_dual_field(_e30, ((abs_phi < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
+    vec3 _e40 = fur_dual_field(_e30, FUR_DUAL_LOG2_DECAY);
+    vec3 _e42 = fur_dual_field(_e30, FUR_DUAL_A_F2_);
+    vec3 _e44 = fur_dual_power(_e40, 1.0);
+    vec3 _e45 = fur_dual_forward(_e42);
+    vec3 _e48 = fur_dual_power(_e40, (2.0 * _e13));
+    vec3 _e49 = fur_reflectance_squared(_e44, _e45);
+    vec3 _e50 = fur_backscatter_factor(_e44, _e45, _e49, _e48);
+    vec3 half_energy = (_e38 * _e50);
+    vec3 _e53 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_);
+    vec3 _e55 = fur_dual_field(_e30, FUR_DUAL_DELTA_B);
+    vec3 d_back = (vec3(x_17) - _e55);
+    vec3 s_b = ((vec3(1.0) + (_e17 * _e42)) * _e53);
     vec3 v_back = (s_b * s_b);
-    float back_scale = ((_e15 * inv_cos2_) / FUR_PI);
+    float back_scale = ((_e17 * inv_cos2_) / FUR_PI);
     out_4 = zero;
     if ((direct > 0.0)) {
-        vec3 _e59 = fur_dual_gauss(d_back, v_back);
-        out_4 = (((direct * back_scale) * _e36) * _e59);
+        vec3 _e72 = fur_dual_gauss(d_back, v_back, theta_i_6);
+        out_4 = (((direct * back_scale) * half_energy) * _e72);
     }
-    if ((_e11 > 0.0)) {
-        FurLoc _e64 = fur_dual_theta(-(theta_i_5));
-        vec3 _e66 = fur_dual_field(_e64, FUR_DUAL_LOG2_DECAY);
-        vec3 _e68 = fur_dual_field(_e64, FUR_DUAL_BETA_F);
-        vec3 _e73 = fur_exp_neg(((-(_e11) * FUR_LN2_) * _e66));
-        vec3 spread = (max((_e73 - vec3(direct)), zero) * _e13);
+    if ((_e12 > 0.0)) {
+        FurLoc _e77 = fur_dual_theta(-(theta_i_6));
+        vec3 _e79 = fur_dual_field(_e77, FUR_DUAL_LOG2_DECAY);
+        vec3 _e81 = fur_dual_field(_e77, FUR_DUAL_A_F2_);
+        vec3 _e83 = fur_dual_field(_e77, FUR_DUAL_BETA_F);
+        vec3 _e85 = fur_dual_power(_e79, 1.0);
+        vec3 _e86 = fur_dual_forward(_e81);
+        vec3 _e87 = fur_dual_power(_e79, _e12);
+        vec3 _e90 = fur_dual_power(_e79, (2.0 * _e13));
+        vec3 _e91 = fur_reflectance_squared(_e85, _e86);
+        vec3 _e92 = fur_downward_flux(_e87, _e90, _e91);
+        vec3 spread = (max((_e92 - vec3(direct)), zero) * _e15);
         if (any(greaterThan(spread, zero))) {
-            vec3 s2f = ((_e11 * _e68) * _e68);
+            vec3 s2f = ((_e12 * _e83) * _e83);
             p_2 = (abs_phi * FUR_DUAL_PHI_SCALE);
-            float _e85 = p_2;
-            float _e88 = p_2;
-            p_2 = ((_e88 > 0.0) ? min(_e85, 31.0) : 0.0);
-            float _e93 = p_2;
-            uint j_7 = min(uint(_e93), 30u);
-            float _e97 = p_2;
-            FurLoc at_phi = FurLoc(j_7, (_e97 - float(j_7)));
+            float _e104 = p_2;
+            float _e107 = p_2;
+            p_2 = ((_e107 > 0.0) ? min(_e104, 31.0) : 0.0);
+            float _e112 = p_2;
+            uint j_7 = min(uint(_e112), 30u);
+            float _e116 = p_2;
+            FurLoc at_phi = FurLoc(j_7, (_e116 - float(j_7)));
             f_s = zero;
             bool loop_init_4 = true;
             while(true) {
                 if (!loop_init_4) {
-                    uint _e125 = g_6;
-                    g_6 = (_e125 + 1u);
+                    uint _e144 = g_6;
+                    g_6 = (_e144 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e104 = g_6;
-                if ((_e104 < 4u)) {
+                uint _e123 = g_6;
+                if ((_e123 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e108 = g_6;
-                    vec3 _e110 = fur_dual_field(_e28, (FUR_DUAL_MEAN + _e108));
-                    uint _e112 = g_6;
-                    vec3 _e114 = fur_dual_field(_e28, (FUR_DUAL_SD + _e112));
-                    uint _e115 = g_6;
-                    vec3 _e116 = fur_dual_ng(_e115, _e28, at_phi);
-                    vec3 v_5 = ((_e114 * _e114) + s2f);
-                    vec3 _e119 = f_s;
-                    vec3 _e122 = fur_dual_gauss((vec3(x_13) - _e110), v_5);
-                    f_s = (_e119 + (_e116 * _e122));
+                    uint _e127 = g_6;
+                    vec3 _e129 = fur_dual_field(_e30, (FUR_DUAL_MEAN + _e127));
+                    uint _e131 = g_6;
+                    vec3 _e133 = fur_dual_field(_e30, (FUR_DUAL_SD + _e131));
+                    uint _e134 = g_6;
+                    vec3 _e135 = fur_dual_ng(_e134, _e30, at_phi);
+                    vec3 v_5 = ((_e133 * _e133) + s2f);
+                    vec3 _e138 = f_s;
+                    vec3 _e141 = fur_dual_gauss((vec3(x_17) - _e129), v_5, theta_i_6);
+                    f_s = (_e138 + (_e135 * _e141));
                 }
             }
-            vec3 _e129 = fur_dual_gauss(d_back, (v_back + s2f));
-            vec3 _e130 = out_4;
-            vec3 _e131 = f_s;
-            out_4 = (_e130 + (spread * ((_e131 * inv_cos2_) + ((back_scale * _e36) * _e129))));
+            vec3 _e148 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
+            vec3 _e149 = out_4;
+            vec3 _e150 = f_s;
+            out_4 = (_e149 + (spread * ((_e150 * inv_cos2_) + ((back_scale * half_energy) * _e148))));
         }
     }
-    float _e139 = out_4.x;
-    bool _e140 = fur_finite(_e139);
-    float _e142 = out_4.y;
-    bool _e143 = fur_finite(_e142);
-    float _e145 = out_4.z;
-    bool _e146 = fur_finite(_e145);
-    bvec3 finite = bvec3(_e140, _e143, _e146);
-    vec3 _e148 = out_4;
-    vec3 _e149 = out_4;
-    return mix(zero, _e148, bvec3(finite.x && greaterThan(_e149, zero).x, finite.y && greaterThan(_e149, zero).y, finite.z && greaterThan(_e149, zero).z));
+    float _e158 = out_4.x;
+    bool _e159 = fur_finite(_e158);
+    float _e161 = out_4.y;
+    bool _e162 = fur_finite(_e161);
+    float _e164 = out_4.z;
+    bool _e165 = fur_finite(_e164);
+    bvec3 finite = bvec3(_e159, _e162, _e165);
+    vec3 _e167 = out_4;
+    vec3 _e168 = out_4;
+    return mix(zero, _e167, bvec3(finite.x && greaterThan(_e168, zero).x, finite.y && greaterThan(_e168, zero).y, finite.z && greaterThan(_e168, zero).z));
 }
 
-vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float d_f, float d_b) {
-    FurDirAngles _e6 = fur_angles_from_dirs(wi_2, wr_2, u_6);
-    if (!(_e6.ok)) {
+vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fibers_below_1, float d_f, float d_b) {
+    FurDirAngles _e7 = fur_angles_from_dirs(wi_2, wr_2, u_6);
+    if (!(_e7.ok)) {
         return vec3(0.0);
     }
-    vec3 _e14 = fur_eval_dual(_e6.theta_i, _e6.theta_r, _e6.phi, fibers_1, d_f, d_b);
-    return _e14;
+    vec3 _e15 = fur_eval_dual(_e7.theta_i, _e7.theta_r, _e7.phi, fibers_1, fibers_below_1, d_f, d_b);
+    return _e15;
 }
 
 void fur_store(uint q, FurFamilies f_2) {
-    uint k_9 = 0u;
+    uint k_10 = 0u;
     uint base = (16u * q);
     vec3 parts[5] = vec3[5](f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e46 = k_9;
-            k_9 = (_e46 + 1u);
+            uint _e46 = k_10;
+            k_10 = (_e46 + 1u);
         }
         loop_init_5 = false;
-        uint _e12 = k_9;
+        uint _e12 = k_10;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_9;
-            uint _e21 = k_9;
+            uint _e17 = k_10;
+            uint _e21 = k_10;
             _group_0_binding_2_cs[(base + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_9;
-            uint _e32 = k_9;
+            uint _e26 = k_10;
+            uint _e32 = k_10;
             _group_0_binding_2_cs[((base + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_9;
-            uint _e43 = k_9;
+            uint _e37 = k_10;
+            uint _e43 = k_10;
             _group_0_binding_2_cs[((base + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1008,7 +1106,7 @@ void fur_store(uint q, FurFamilies f_2) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_10 = 3u;
+    uint k_11 = 3u;
     uint base_1 = (16u * q_1);
     _group_0_binding_2_cs[base_1] = v_2.x;
     _group_0_binding_2_cs[(base_1 + 1u)] = v_2.y;
@@ -1016,17 +1114,17 @@ void fur_store_rgb(uint q_1, vec3 v_2) {
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e27 = k_10;
-            k_10 = (_e27 + 1u);
+            uint _e27 = k_11;
+            k_11 = (_e27 + 1u);
         }
         loop_init_6 = false;
-        uint _e19 = k_10;
+        uint _e19 = k_11;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_10;
+            uint _e23 = k_11;
             _group_0_binding_2_cs[(base_1 + _e23)] = 0.0;
         }
     }
@@ -1039,10 +1137,10 @@ void main() {
     if ((((2u * q_2) + 1u) >= uint(_group_0_binding_1_cs.length()))) {
         return;
     }
-    vec4 a_7 = _group_0_binding_1_cs[(2u * q_2)];
-    vec4 d_9 = _group_0_binding_1_cs[((2u * q_2) + 1u)];
-    vec3 _e27 = fur_eval_dual(a_7.x, a_7.y, a_7.z, a_7.w, d_9.x, d_9.y);
-    fur_store_rgb(q_2, _e27);
+    vec4 a_9 = _group_0_binding_1_cs[(2u * q_2)];
+    vec4 d_10 = _group_0_binding_1_cs[((2u * q_2) + 1u)];
+    vec3 _e28 = fur_eval_dual(a_9.x, a_9.y, a_9.z, a_9.w, d_10.z, d_10.x, d_10.y);
+    fur_store_rgb(q_2, _e28);
     return;
 }
 

@@ -103,11 +103,20 @@ const float FUR_DUAL_PHI_SCALE = 9.867606;
 const float FUR_DUAL_MAX_FIBERS = 1000000.0;
 const float FUR_DUAL_MAX_DENSITY = 4.0;
 const float FUR_DUAL_MIN_VARIANCE = 3e-6;
+const float FUR_DUAL_MIN_MASS = 0.05;
+const float FUR_DUAL_TINY = 1e-6;
 const float FUR_LN2_ = 0.6931472;
 const float FUR_LOG2_E = 1.442695;
 const float FUR_LN2_HI = 0.6933594;
 const float FUR_LN2_LO = -0.00021219444;
 const float FUR_INV_SQRT_TAU = 0.3989423;
+const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
+const float FUR_ERF_P = 0.3275911;
+const float FUR_ERF_A1_ = 0.2548296;
+const float FUR_ERF_A2_ = -0.28449675;
+const float FUR_ERF_A3_ = 1.4214137;
+const float FUR_ERF_A4_ = -1.453152;
+const float FUR_ERF_A5_ = 1.0614054;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
@@ -305,9 +314,9 @@ FurDensity fur_density(uint d) {
     uint _e74 = at;
     at = (_e74 + ((16u * _e4) * _e29));
     if ((d < 9u)) {
-        uint x_11 = (d - 7u);
+        uint x_15 = (d - 7u);
         uint _e83 = at;
-        return FurDensity((_e83 + (((4u * x_11) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_11, 1u);
+        return FurDensity((_e83 + (((4u * x_15) * _e10) * _e31)), _e31, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_15, 1u);
     }
     uint _e98 = at;
     at = (_e98 + ((8u * _e10) * _e31));
@@ -594,9 +603,9 @@ float fur_atan2_(float y_1, float x_5) {
     float ax_4 = abs(x_5);
     float ay = abs(y_1);
     float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_9 = (a_5 * a_5);
-    float _e10 = fur_atan_poly(t_9);
-    r = (a_5 + (a_5 * (t_9 * _e10)));
+    float t_11 = (a_5 * a_5);
+    float _e10 = fur_atan_poly(t_11);
+    r = (a_5 + (a_5 * (t_11 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -659,8 +668,8 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_5 = dot(un, cross(wi, wr));
-    float x_12 = (dot(wi, wr) - (a_6 * b_3));
-    float _e64 = fur_atan2_(y_5, x_12);
+    float x_16 = (dot(wi, wr) - (a_6 * b_3));
+    float _e64 = fur_atan2_(y_5, x_16);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -1028,8 +1037,8 @@ float fur_rows_invert(FurRows r_8, float t_5) {
 float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_3) {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
     float _e7 = fur_unit(u_3);
-    float t_10 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    float _e14 = fur_rows_invert(r_9, t_10);
+    float t_12 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    float _e14 = fur_rows_invert(r_9, t_12);
     return _e14;
 }
 
@@ -1061,7 +1070,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_11[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float t_13[3] = float[3](0.11270166, 0.5, 0.8872983);
     float w_4[3] = float[3](0.2777778, 0.44444445, 0.2777778);
     bool loop_init_8 = true;
     while(true) {
@@ -1077,7 +1086,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_11[_e33] * len_5);
+            float d_8 = (t_13[_e33] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -1266,18 +1275,18 @@ float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_4) 
         return _e19.z;
     }
     float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
-    float t_12 = (t0_1 - g_2.s.y);
-    if (!((t_12 <= mid))) {
+    float t_14 = (t0_1 - g_2.s.y);
+    if (!((t_14 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_12, mid)));
+        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_14, mid)));
         return _e50;
     }
-    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_12 - mid));
+    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_14 - mid));
     return _e57.z;
 }
 
@@ -1629,15 +1638,19 @@ FurSample fur_sample_far(float theta_r_7, vec3 u_5) {
     }
     FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_11 = (max(cos(_e189), 0.0) / _e178);
+    float k_12 = (max(cos(_e189), 0.0) / _e178);
     float _e194 = theta_i_4;
-    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_11), vec3(0.0)), family, true);
+    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_12), vec3(0.0)), family, true);
     FurSample _e202 = out_3;
     return _e202;
 }
 
 bool fur_is_nan(float x_9) {
     return ((floatBitsToUint(x_9) & 2147483647u) > 2139095040u);
+}
+
+bvec3 fur_is_nan3_(vec3 x_10) {
+    return greaterThan((floatBitsToUint(x_10) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 FurLoc fur_dual_theta(float theta) {
@@ -1649,9 +1662,9 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_12 = min(uint(_e17), 62u);
+    uint k_13 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_12, (_e21 - float(k_12)));
+    return FurLoc(k_13, (_e21 - float(k_13)));
 }
 
 vec3 fur_rsqrt_newton(vec3 v_1) {
@@ -1674,9 +1687,9 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
 
 vec3 fur_exp_neg(vec3 x_in) {
     vec3 p_1 = vec3(0.00019875693);
-    vec3 x_13 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_13 = roundEven((x_13 * FUR_LOG2_E));
-    vec3 r_15 = (((k_13 * FUR_LN2_HI) - x_13) + (k_13 * FUR_LN2_LO));
+    vec3 x_17 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_14 = roundEven((x_17 * FUR_LOG2_E));
+    vec3 r_15 = (((k_14 * FUR_LN2_HI) - x_17) + (k_14 * FUR_LN2_LO));
     vec3 z_1 = (r_15 * r_15);
     vec3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + vec3(0.0013981999));
@@ -1690,54 +1703,125 @@ vec3 fur_exp_neg(vec3 x_in) {
     p_1 = ((_e40 * r_15) + vec3(0.5));
     vec3 _e45 = p_1;
     vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_13))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+    return mix(ldexp(e, -(ivec3(k_14))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
-vec3 fur_dual_gauss(vec3 d_6, vec3 v_in) {
+vec3 fur_erf(vec3 x_11) {
+    bvec3 _e7 = fur_is_nan3_(x_11);
+    vec3 a_8 = mix(min(abs(x_11), vec3(10.0)), vec3(0.0), _e7);
+    vec3 t_15 = (vec3(1.0) / (vec3(1.0) + (FUR_ERF_P * a_8)));
+    vec3 poly_1 = (((((((((FUR_ERF_A5_ * t_15) + vec3(-1.453152)) * t_15) + vec3(1.4214137)) * t_15) + vec3(-0.28449675)) * t_15) + vec3(0.2548296)) * t_15);
+    vec3 _e36 = fur_exp_neg((a_8 * a_8));
+    vec3 e_1 = (vec3(1.0) - (poly_1 * _e36));
+    uvec3 sign_ = (floatBitsToUint(x_11) & uvec3(2147483648u));
+    return uintBitsToFloat((floatBitsToUint(e_1) | sign_));
+}
+
+vec3 fur_dual_between(vec3 x_12, vec3 top) {
+    bvec3 _e8 = fur_is_nan3_(x_12);
+    return mix(min(max(x_12, vec3(0.0)), top), vec3(0.0), _e8);
+}
+
+vec3 fur_dual_gauss(vec3 d_6, vec3 v_in, float theta_i_5) {
     vec3 v_3 = clamp(v_in, vec3(3e-6), vec3(1e30));
-    vec3 _e7 = fur_rsqrt_newton(v_3);
-    vec3 z_2 = (d_6 * _e7);
-    vec3 _e12 = fur_exp_neg(((0.5 * z_2) * z_2));
-    return ((_e12 * _e7) * FUR_INV_SQRT_TAU);
+    vec3 _e8 = fur_rsqrt_newton(v_3);
+    vec3 z_2 = (d_6 * _e8);
+    vec3 _e13 = fur_exp_neg(((0.5 * z_2) * z_2));
+    vec3 g_7 = ((_e13 * _e8) * FUR_INV_SQRT_TAU);
+    vec3 centre = (((d_6 - vec3(theta_i_5)) * _e8) * FUR_FRAC_1_SQRT_2_);
+    vec3 half_range = ((FUR_HALF_PI * _e8) * FUR_FRAC_1_SQRT_2_);
+    vec3 _e27 = fur_erf((centre + half_range));
+    vec3 _e29 = fur_erf((centre - half_range));
+    vec3 mass_1 = (0.5 * (_e27 - _e29));
+    return (g_7 / max(mass_1, vec3(0.05)));
 }
 
-float fur_dual_clean(float x_10, float top) {
+vec3 fur_dual_power(vec3 log2_mu, float k_9) {
+    vec3 _e6 = fur_exp_neg(((-(k_9) * FUR_LN2_) * log2_mu));
+    return _e6;
+}
+
+vec3 fur_dual_forward(vec3 a_f2_) {
+    vec3 a_9 = clamp(a_f2_, vec3(0.0), vec3(1.0));
+    vec3 _e9 = fur_rsqrt_newton(max(a_9, vec3(1e-30)));
+    return (a_9 * _e9);
+}
+
+vec3 fur_reflectance_squared(vec3 mu, vec3 t_9) {
+    vec3 den_1 = (mu * (vec3(1.0) - (t_9 * mu)));
+    vec3 _e14 = fur_dual_between(((mu - t_9) / max(den_1, vec3(1e-6))), vec3(1.0));
+    return mix(vec3(0.0), _e14, greaterThan(den_1, vec3(1e-6)));
+}
+
+vec3 fur_downward_flux(vec3 mu_n, vec3 mu_2m, vec3 rho2_) {
+    vec3 num = (vec3(1.0) - (rho2_ * mu_2m));
+    vec3 den_2 = (vec3(1.0) - (((rho2_ * mu_n) * mu_n) * mu_2m));
+    vec3 d_9 = (mu_n * (num / max(den_2, vec3(1e-6))));
+    vec3 _e18 = fur_dual_between(d_9, mu_n);
+    return mix(mu_n, _e18, greaterThan(den_2, vec3(1e-6)));
+}
+
+vec3 fur_backscatter_factor(vec3 mu_1, vec3 t_10, vec3 rho2_1, vec3 mu_2m_1) {
+    vec3 tiny = vec3(1e-6);
+    vec3 g_den = (vec3(1.0) - (rho2_1 * mu_2m_1));
+    vec3 g_8 = ((vec3(1.0) - mu_2m_1) / max(g_den, tiny));
+    vec3 _e22 = fur_dual_between((vec3(1.0) - (t_10 / max(mu_1, tiny))), vec3(1.0));
+    vec3 den_3 = (vec3(1.0) - (_e22 * g_8));
+    vec3 _e35 = fur_dual_between(((g_8 * (vec3(1.0) - _e22)) / max(den_3, tiny)), vec3(1.0));
+    return mix(vec3(1.0), _e35, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
+}
+
+float fur_dual_clean(float x_13, float top_1) {
     bool local_27 = false;
-    bool _e3 = fur_is_nan(x_10);
+    bool _e3 = fur_is_nan(x_13);
     if (!(_e3)) {
-        local_27 = (x_10 > 0.0);
+        local_27 = (x_13 > 0.0);
     } else {
         local_27 = false;
     }
     bool _e10 = local_27;
-    return (_e10 ? min(x_10, top) : 0.0);
+    return (_e10 ? min(x_13, top_1) : 0.0);
+}
+
+float fur_dual_below(float x_14) {
+    bool local_28 = false;
+    bool _e2 = fur_is_nan(x_14);
+    float deep = (_e2 ? FUR_DUAL_MAX_FIBERS : 0.0);
+    bool _e7 = fur_is_nan(x_14);
+    if (!(_e7)) {
+        local_28 = (x_14 >= 0.0);
+    } else {
+        local_28 = false;
+    }
+    bool _e14 = local_28;
+    return (_e14 ? min(x_14, FUR_DUAL_MAX_FIBERS) : deep);
 }
 
 void fur_store(uint q, FurFamilies f_2) {
-    uint k_9 = 0u;
+    uint k_10 = 0u;
     uint base_1 = (16u * q);
     vec3 parts[5] = vec3[5](f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
-            uint _e46 = k_9;
-            k_9 = (_e46 + 1u);
+            uint _e46 = k_10;
+            k_10 = (_e46 + 1u);
         }
         loop_init_16 = false;
-        uint _e12 = k_9;
+        uint _e12 = k_10;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_9;
-            uint _e21 = k_9;
+            uint _e17 = k_10;
+            uint _e21 = k_10;
             _group_0_binding_2_cs[(base_1 + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_9;
-            uint _e32 = k_9;
+            uint _e26 = k_10;
+            uint _e32 = k_10;
             _group_0_binding_2_cs[((base_1 + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_9;
-            uint _e43 = k_9;
+            uint _e37 = k_10;
+            uint _e43 = k_10;
             _group_0_binding_2_cs[((base_1 + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1746,7 +1830,7 @@ void fur_store(uint q, FurFamilies f_2) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_10 = 3u;
+    uint k_11 = 3u;
     uint base_2 = (16u * q_1);
     _group_0_binding_2_cs[base_2] = v_2.x;
     _group_0_binding_2_cs[(base_2 + 1u)] = v_2.y;
@@ -1754,17 +1838,17 @@ void fur_store_rgb(uint q_1, vec3 v_2) {
     bool loop_init_17 = true;
     while(true) {
         if (!loop_init_17) {
-            uint _e27 = k_10;
-            k_10 = (_e27 + 1u);
+            uint _e27 = k_11;
+            k_11 = (_e27 + 1u);
         }
         loop_init_17 = false;
-        uint _e19 = k_10;
+        uint _e19 = k_11;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_10;
+            uint _e23 = k_11;
             _group_0_binding_2_cs[(base_2 + _e23)] = 0.0;
         }
     }

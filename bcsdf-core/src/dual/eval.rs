@@ -131,11 +131,13 @@ impl DualLut {
         // The coat below at θ_r: m layers instead of the semi-infinite stack.
         let log2_mu_here = self.field(here, LOG2_DECAY);
         let a_f2 = self.field(here, A_F2);
-        let half: Lanes = core::array::from_fn(|c| {
+        // Lane loops, not `array::from_fn` closures: those were left as calls per lane.
+        let mut half = [0.0f32; 4];
+        for c in 0..4 {
             let (mu, t) = decay_and_forward(log2_mu_here[c], a_f2[c]);
             let mu_2m = power_of_decay(log2_mu_here[c], 2.0 * m);
-            stored[c] * backscatter_factor(mu, t, reflectance_squared(mu, t), mu_2m)
-        });
+            half[c] = stored[c] * backscatter_factor(mu, t, reflectance_squared(mu, t), mu_2m);
+        }
         let sigma_b0 = self.field(here, SIGMA_B0);
         let delta = self.field(here, DELTA_B);
         let d_back: Lanes = core::array::from_fn(|c| x - delta[c]);
@@ -157,13 +159,14 @@ impl DualLut {
             let log2_mu = self.field(along, LOG2_DECAY);
             let a_f2_along = self.field(along, A_F2);
             let beta_f = self.field(along, BETA_F);
-            let spread: Lanes = core::array::from_fn(|c| {
+            let mut spread = [0.0f32; 4];
+            for c in 0..4 {
                 let (mu, t) = decay_and_forward(log2_mu[c], a_f2_along[c]);
                 let mu_n = power_of_decay(log2_mu[c], n);
                 let mu_2m = power_of_decay(log2_mu[c], 2.0 * m);
                 let t_f = downward_flux(mu_n, mu_2m, reflectance_squared(mu, t));
-                (t_f - direct).max(0.0) * d_f
-            });
+                spread[c] = (t_f - direct).max(0.0) * d_f;
+            }
             if spread.iter().any(|&s| s > 0.0) {
                 let s2f: Lanes = core::array::from_fn(|c| n * beta_f[c] * beta_f[c]);
                 let p = abs_phi * ((PHI_NODES - 1) as f32 / PI);

@@ -1080,13 +1080,13 @@ const FUR_LN2_LO: f32 = -2.1219444e-4;
 const FUR_INV_SQRT_TAU: f32 = 0.3989423;
 // 1/sqrt(2) as an f32 (core::f32::consts::FRAC_1_SQRT_2).
 const FUR_FRAC_1_SQRT_2: f32 = 0.707106769;
-// math::erf_polynomial's constants (Abramowitz and Stegun 7.1.26): p and a1 ... a5.
-const FUR_ERF_P: f32 = 0.3275911;
-const FUR_ERF_A1: f32 = 0.2548296;
-const FUR_ERF_A2: f32 = -0.28449674;
-const FUR_ERF_A3: f32 = 1.4214137;
-const FUR_ERF_A4: f32 = -1.453152;
-const FUR_ERF_A5: f32 = 1.0614054;
+// math::erf_polynomial's constants (Abramowitz and Stegun 7.1.28): a1 ... a6.
+const FUR_ERF_A1: f32 = 0.07052308;
+const FUR_ERF_A2: f32 = 0.04228201;
+const FUR_ERF_A3: f32 = 0.009270527;
+const FUR_ERF_A4: f32 = 0.0001520143;
+const FUR_ERF_A5: f32 = 0.0002765672;
+const FUR_ERF_A6: f32 = 0.0000430638;
 
 // Half h of the blob's tables (counted from the first half after the header).
 fn fur_dual_half(h: u32) -> f32 {
@@ -1171,15 +1171,18 @@ fn fur_exp_neg(x_in: vec3<f32>) -> vec3<f32> {
 }
 
 // erf x per channel, the operations of math::erf_polynomial on the CPU (Abramowitz and
-// Stegun 7.1.26, error at most 1.5e-7): with a = |x| kept in [0, 10] (NaN gives 0; erf 10
-// is 1 in f32) and t = 1/(1 + p a),
-//   erf a = 1 - (a1 t + a2 t^2 + a3 t^3 + a4 t^4 + a5 t^5) e^(-a^2)
-// (Horner from a5, then times t), and the sign bit of x put back onto it (erf is odd).
+// Stegun 7.1.28, error at most 3e-7): with a = |x| kept in [0, 10] (NaN gives 0; erf 10 is 1
+// in f32),
+//   erf a = 1 - 1/(1 + a1 a + a2 a^2 + ... + a6 a^6)^16
+// (Horner from a6; the 16th power by four squarings), and the sign bit of x put back onto
+// it (erf is odd).
 fn fur_erf(x: vec3<f32>) -> vec3<f32> {
     let a = select(min(abs(x), vec3<f32>(10.0)), vec3<f32>(0.0), fur_is_nan3(x));
-    let t = 1.0 / (1.0 + FUR_ERF_P * a);
-    let poly = ((((FUR_ERF_A5 * t + FUR_ERF_A4) * t + FUR_ERF_A3) * t + FUR_ERF_A2) * t + FUR_ERF_A1) * t;
-    let e = 1.0 - poly * fur_exp_neg(a * a);
+    let p = (((((FUR_ERF_A6 * a + FUR_ERF_A5) * a + FUR_ERF_A4) * a + FUR_ERF_A3) * a + FUR_ERF_A2) * a + FUR_ERF_A1) * a + 1.0;
+    let p2 = p * p;
+    let p4 = p2 * p2;
+    let p8 = p4 * p4;
+    let e = 1.0 - 1.0 / (p8 * p8);
     let sign = bitcast<vec3<u32>>(x) & vec3<u32>(0x80000000u);
     return bitcast<vec3<f32>>(bitcast<vec3<u32>>(e) | sign);
 }

@@ -129,12 +129,12 @@ static const float FUR_LN2_HI = 0.6933594;
 static const float FUR_LN2_LO = -0.00021219444;
 static const float FUR_INV_SQRT_TAU = 0.3989423;
 static const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
-static const float FUR_ERF_P = 0.3275911;
-static const float FUR_ERF_A1_ = 0.2548296;
-static const float FUR_ERF_A2_ = -0.28449675;
-static const float FUR_ERF_A3_ = 1.4214137;
-static const float FUR_ERF_A4_ = -1.453152;
-static const float FUR_ERF_A5_ = 1.0614054;
+static const float FUR_ERF_A1_ = 0.07052308;
+static const float FUR_ERF_A2_ = 0.04228201;
+static const float FUR_ERF_A3_ = 0.009270527;
+static const float FUR_ERF_A4_ = 0.0001520143;
+static const float FUR_ERF_A5_ = 0.0002765672;
+static const float FUR_ERF_A6_ = 4.30638e-5;
 
 ByteAddressBuffer fur_lut : register(t0);
 ByteAddressBuffer fur_dual : register(t3);
@@ -2077,10 +2077,11 @@ float3 fur_erf(float3 x_11)
 {
     const bool3 _e7 = fur_is_nan3_(x_11);
     float3 a_8 = (_e7 ? (0.0).xxx : min(abs(x_11), (10.0).xxx));
-    float3 t_15 = ((1.0).xxx / ((1.0).xxx + (FUR_ERF_P * a_8)));
-    float3 poly_1 = (((((((((FUR_ERF_A5_ * t_15) + (-1.453152).xxx) * t_15) + (1.4214137).xxx) * t_15) + (-0.28449675).xxx) * t_15) + (0.2548296).xxx) * t_15);
-    const float3 _e36 = fur_exp_neg((a_8 * a_8));
-    float3 e_1 = ((1.0).xxx - (poly_1 * _e36));
+    float3 p_4 = ((((((((((((FUR_ERF_A6_ * a_8) + (0.0002765672).xxx) * a_8) + (0.0001520143).xxx) * a_8) + (0.009270527).xxx) * a_8) + (0.04228201).xxx) * a_8) + (0.07052308).xxx) * a_8) + (1.0).xxx);
+    float3 p2_ = (p_4 * p_4);
+    float3 p4_ = (p2_ * p2_);
+    float3 p8_ = (p4_ * p4_);
+    float3 e_1 = ((1.0).xxx - ((1.0).xxx / (p8_ * p8_)));
     uint3 sign_ = (asuint(x_11) & (2147483648u).xxx);
     return asfloat((asuint(e_1) | sign_));
 }

@@ -151,12 +151,12 @@ constant float FUR_LN2_HI = 0.6933594;
 constant float FUR_LN2_LO = -0.00021219444;
 constant float FUR_INV_SQRT_TAU = 0.3989423;
 constant float FUR_FRAC_1_SQRT_2_ = 0.70710677;
-constant float FUR_ERF_P = 0.3275911;
-constant float FUR_ERF_A1_ = 0.2548296;
-constant float FUR_ERF_A2_ = -0.28449675;
-constant float FUR_ERF_A3_ = 1.4214137;
-constant float FUR_ERF_A4_ = -1.453152;
-constant float FUR_ERF_A5_ = 1.0614054;
+constant float FUR_ERF_A1_ = 0.07052308;
+constant float FUR_ERF_A2_ = 0.04228201;
+constant float FUR_ERF_A3_ = 0.009270527;
+constant float FUR_ERF_A4_ = 0.0001520143;
+constant float FUR_ERF_A5_ = 0.0002765672;
+constant float FUR_ERF_A6_ = 0.0000430638;
 
 FurAxis fur_axis(
     bool centred,
@@ -2131,10 +2131,11 @@ metal::float3 fur_erf(
 ) {
     metal::bool3 _e7 = fur_is_nan3_(x_11);
     metal::float3 a_8 = metal::select(metal::min(metal::abs(x_11), metal::float3(10.0)), metal::float3(0.0), _e7);
-    metal::float3 t_15 = metal::float3(1.0) / (metal::float3(1.0) + (FUR_ERF_P * a_8));
-    metal::float3 poly_1 = ((((((((FUR_ERF_A5_ * t_15) + metal::float3(-1.453152)) * t_15) + metal::float3(1.4214137)) * t_15) + metal::float3(-0.28449675)) * t_15) + metal::float3(0.2548296)) * t_15;
-    metal::float3 _e36 = fur_exp_neg(a_8 * a_8);
-    metal::float3 e_1 = metal::float3(1.0) - (poly_1 * _e36);
+    metal::float3 p_4 = (((((((((((FUR_ERF_A6_ * a_8) + metal::float3(0.0002765672)) * a_8) + metal::float3(0.0001520143)) * a_8) + metal::float3(0.009270527)) * a_8) + metal::float3(0.04228201)) * a_8) + metal::float3(0.07052308)) * a_8) + metal::float3(1.0);
+    metal::float3 p2_ = p_4 * p_4;
+    metal::float3 p4_ = p2_ * p2_;
+    metal::float3 p8_ = p4_ * p4_;
+    metal::float3 e_1 = metal::float3(1.0) - (metal::float3(1.0) / (p8_ * p8_));
     metal::uint3 sign = as_type<metal::uint3>(x_11) & metal::uint3(2147483648u);
     return as_type<metal::float3>(as_type<metal::uint3>(e_1) | sign);
 }

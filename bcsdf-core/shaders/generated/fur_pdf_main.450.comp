@@ -109,12 +109,12 @@ const float FUR_LN2_HI = 0.6933594;
 const float FUR_LN2_LO = -0.00021219444;
 const float FUR_INV_SQRT_TAU = 0.3989423;
 const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
-const float FUR_ERF_P = 0.3275911;
-const float FUR_ERF_A1_ = 0.2548296;
-const float FUR_ERF_A2_ = -0.28449675;
-const float FUR_ERF_A3_ = 1.4214137;
-const float FUR_ERF_A4_ = -1.453152;
-const float FUR_ERF_A5_ = 1.0614054;
+const float FUR_ERF_A1_ = 0.07052308;
+const float FUR_ERF_A2_ = 0.04228201;
+const float FUR_ERF_A3_ = 0.009270527;
+const float FUR_ERF_A4_ = 0.0001520143;
+const float FUR_ERF_A5_ = 0.0002765672;
+const float FUR_ERF_A6_ = 4.30638e-5;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
@@ -1707,10 +1707,11 @@ vec3 fur_exp_neg(vec3 x_in) {
 vec3 fur_erf(vec3 x_11) {
     bvec3 _e7 = fur_is_nan3_(x_11);
     vec3 a_8 = mix(min(abs(x_11), vec3(10.0)), vec3(0.0), _e7);
-    vec3 t_15 = (vec3(1.0) / (vec3(1.0) + (FUR_ERF_P * a_8)));
-    vec3 poly_1 = (((((((((FUR_ERF_A5_ * t_15) + vec3(-1.453152)) * t_15) + vec3(1.4214137)) * t_15) + vec3(-0.28449675)) * t_15) + vec3(0.2548296)) * t_15);
-    vec3 _e36 = fur_exp_neg((a_8 * a_8));
-    vec3 e_1 = (vec3(1.0) - (poly_1 * _e36));
+    vec3 p_4 = ((((((((((((FUR_ERF_A6_ * a_8) + vec3(0.0002765672)) * a_8) + vec3(0.0001520143)) * a_8) + vec3(0.009270527)) * a_8) + vec3(0.04228201)) * a_8) + vec3(0.07052308)) * a_8) + vec3(1.0));
+    vec3 p2_ = (p_4 * p_4);
+    vec3 p4_ = (p2_ * p2_);
+    vec3 p8_ = (p4_ * p4_);
+    vec3 e_1 = (vec3(1.0) - (vec3(1.0) / (p8_ * p8_)));
     uvec3 sign_ = (floatBitsToUint(x_11) & uvec3(2147483648u));
     return uintBitsToFloat((floatBitsToUint(e_1) | sign_));
 }

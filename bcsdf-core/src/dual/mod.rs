@@ -55,7 +55,9 @@ pub enum Attenuation {
     /// send down again reaches the shading point too. The downward flux there is
     /// D_n = T_n/(1 − R_n R_∞) = μⁿ ([`coat_decay`]; 1 at every depth for lossless fibers).
     /// The light the coat below sends up to the shading fiber is scattered into both halves
-    /// ([`local_backscatter`]). The shipped attenuation.
+    /// ([`local_backscatter`]). The shipped attenuation. This is what the blob stores;
+    /// [`DualLut::eval`] replaces the semi-infinite coat below by the m fibers of
+    /// [`Fibers::below`] over a black floor ([`coat`]).
     Coat,
 }
 

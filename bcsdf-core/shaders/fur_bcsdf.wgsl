@@ -1217,13 +1217,6 @@ fn fur_dual_power(log2_mu: vec3<f32>, k: f32) -> vec3<f32> {
     return fur_exp_neg(-k * FUR_LN2 * log2_mu);
 }
 
-// t = a_f = sqrt(a_f^2) per channel, the layer's forward fraction, from the stored a_f^2
-// kept in [0, 1]: a_f^2/sqrt(a_f^2) by fur_rsqrt_newton (dual::eval's decay_and_forward).
-fn fur_dual_forward(a_f2: vec3<f32>) -> vec3<f32> {
-    let a = clamp(a_f2, vec3<f32>(0.0), vec3<f32>(1.0));
-    return a * fur_rsqrt_newton(max(a, vec3<f32>(1e-30)));
-}
-
 // The finite coat (docs/model.md §13, "The coat below"; dual/coat.rs): the fibers around a
 // shading point as identical two-stream layers, n above it toward the light and m below it
 // over a black floor. Per channel from the stored decay mu of the semi-infinite stack and
@@ -1248,20 +1241,49 @@ fn fur_downward_flux(mu_n: vec3<f32>, mu_2m: vec3<f32>, rho2: vec3<f32>) -> vec3
     return select(mu_n, fur_dual_between(d, mu_n), den > vec3<f32>(FUR_DUAL_TINY));
 }
 
+// r rho = 1 - t/mu, one layer's reflectance times the semi-infinite stack's, from
+// mu(1 - r rho) = t, kept in [0, 1] (NaN 0) (dual::coat::reflection_product).
+fn fur_reflection_product(mu: vec3<f32>, t: vec3<f32>) -> vec3<f32> {
+    return fur_dual_between(1.0 - t / max(mu, vec3<f32>(FUR_DUAL_TINY)), vec3<f32>(1.0));
+}
+
 // The local backscatter's energy with m layers below instead of the semi-infinite coat, as
-// a factor on the stored energy: with g = (1 - mu^2m)/(1 - rho^2 mu^2m) (R_m = rho g) and
-// r rho = 1 - t/mu (kept in [0, 1]),
+// a factor on the stored energy: with g = (1 - mu^2m)/(1 - rho^2 mu^2m) (R_m = rho g),
 //   k_m = g (1 - r rho)/(1 - r rho g),
 // kept in [0, 1] (NaN 0); 1 when either denominator is at or below 1e-6
 // (dual::coat::backscatter_factor). 1 for an infinite m, 0 for m = 0.
-fn fur_backscatter_factor(mu: vec3<f32>, t: vec3<f32>, rho2: vec3<f32>, mu_2m: vec3<f32>) -> vec3<f32> {
+fn fur_backscatter_factor(r_rho: vec3<f32>, rho2: vec3<f32>, mu_2m: vec3<f32>) -> vec3<f32> {
     let tiny = vec3<f32>(FUR_DUAL_TINY);
     let g_den = 1.0 - rho2 * mu_2m;
     let g = (1.0 - mu_2m) / max(g_den, tiny);
-    let r_rho = fur_dual_between(1.0 - t / max(mu, tiny), vec3<f32>(1.0));
     let den = 1.0 - r_rho * g;
     let f = fur_dual_between(g * (1.0 - r_rho) / max(den, tiny), vec3<f32>(1.0));
     return select(vec3<f32>(1.0), f, (g_den > tiny) & (den > tiny));
+}
+
+// rho^2 and r rho of the coat at theta node k (dual::coat::node_coat, what DualLut::decode
+// derives per node): mu = 2^(log2 mu) (fur_dual_power) and t = a_f = a_f^2/sqrt(a_f^2)
+// (a_f^2 kept in [0, 1], fur_rsqrt_newton), then fur_reflectance_squared and
+// fur_reflection_product.
+struct FurCoat {
+    rho2: vec3<f32>,
+    r_rho: vec3<f32>,
+}
+
+fn fur_dual_coat_node(k: u32) -> FurCoat {
+    let log2_mu = fur_dual_rgb(3u * (k * FUR_DUAL_FIELDS + FUR_DUAL_LOG2_DECAY));
+    let a = clamp(fur_dual_rgb(3u * (k * FUR_DUAL_FIELDS + FUR_DUAL_A_F2)), vec3<f32>(0.0), vec3<f32>(1.0));
+    let mu = fur_dual_power(log2_mu, 1.0);
+    let t = a * fur_rsqrt_newton(max(a, vec3<f32>(1e-30)));
+    return FurCoat(fur_reflectance_squared(mu, t), fur_reflection_product(mu, t));
+}
+
+// rho^2 and r rho at theta: each derived at the two nodes, then linear between them, a + (b - a) w
+// (DualLut::eval's coat lookup).
+fn fur_dual_coat(l: FurLoc) -> FurCoat {
+    let a = fur_dual_coat_node(l.i);
+    let b = fur_dual_coat_node(l.i + 1u);
+    return FurCoat(a.rho2 + (b.rho2 - a.rho2) * l.w, a.r_rho + (b.r_rho - a.r_rho) * l.w);
 }
 
 // A fiber count or density factor as the CPU's contract takes it: NaN and values <= 0 give
@@ -1290,8 +1312,9 @@ fn fur_dual_below(x: f32) -> f32 {
 //
 // - the light that reaches the point through n fibers above, m below over a black floor:
 //   T_f = mu^n (1 - rho^2 mu^2m)/(1 - rho^2 mu^2(n+m)) (fur_downward_flux), mu the stored
-//   decay and rho^2 from mu and a_f (fur_reflectance_squared), both at -theta_i (the light's
-//   path leaves the fibers above at theta ~ -theta_i); its spread sigma_f^2 = n beta_f^2(-theta_i);
+//   decay and rho^2 derived from mu and a_f at the nodes and interpolated (fur_dual_coat),
+//   both at -theta_i (the light's path leaves the fibers above at theta ~ -theta_i); its
+//   spread sigma_f^2 = n beta_f^2(-theta_i);
 // - the fibers' scattering of it:
 //   f_s^scatter(s^2) = sum_g N^G_g(theta_r, |phi|) G^(x - mean_g; sd_g^2 + s^2)/cos^2 theta_i;
 // - the local backscatter:
@@ -1321,16 +1344,14 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, fibers_be
     let here = fur_dual_theta(theta_r);
     let abs_phi = abs(fur_wrap_angle(phi_in));
     // The local backscatter at theta_r: the stored energy (back half for |phi| < pi/2, else
-    // front) times k_m for the m layers below instead of the semi-infinite stack, from
-    // mu = 2^(log2 mu), t = sqrt(a_f^2), rho^2 and mu^2m.
+    // front) times k_m for the m layers below instead of the semi-infinite stack, from the
+    // interpolated rho^2 and r rho (fur_dual_coat) and mu^2m.
     let stored = fur_dual_field(here, select(FUR_DUAL_FRONT, FUR_DUAL_BACK, abs_phi < FUR_HALF_PI));
     let log2_mu_here = fur_dual_field(here, FUR_DUAL_LOG2_DECAY);
     let a_f2 = fur_dual_field(here, FUR_DUAL_A_F2);
-    let mu_here = fur_dual_power(log2_mu_here, 1.0);
-    let t_here = fur_dual_forward(a_f2);
+    let coat_here = fur_dual_coat(here);
     let mu_2m_here = fur_dual_power(log2_mu_here, 2.0 * m);
-    let rho2_here = fur_reflectance_squared(mu_here, t_here);
-    let half_energy = stored * fur_backscatter_factor(mu_here, t_here, rho2_here, mu_2m_here);
+    let half_energy = stored * fur_backscatter_factor(coat_here.r_rho, coat_here.rho2, mu_2m_here);
     // Delta_b and sigma_b^2 = ((1 + d_b a_f^2) sigma_b0)^2.
     let sigma_b0 = fur_dual_field(here, FUR_DUAL_SIGMA_B0);
     let delta = fur_dual_field(here, FUR_DUAL_DELTA_B);
@@ -1349,13 +1370,10 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, fibers_be
         // sigma_f^2 = n beta_f^2, both at -theta_i.
         let along = fur_dual_theta(-theta_i);
         let log2_mu = fur_dual_field(along, FUR_DUAL_LOG2_DECAY);
-        let a_f2_along = fur_dual_field(along, FUR_DUAL_A_F2);
         let beta_f = fur_dual_field(along, FUR_DUAL_BETA_F);
-        let mu = fur_dual_power(log2_mu, 1.0);
-        let t = fur_dual_forward(a_f2_along);
         let mu_n = fur_dual_power(log2_mu, n);
         let mu_2m = fur_dual_power(log2_mu, 2.0 * m);
-        let t_f = fur_downward_flux(mu_n, mu_2m, fur_reflectance_squared(mu, t));
+        let t_f = fur_downward_flux(mu_n, mu_2m, fur_dual_coat(along).rho2);
         let spread = max(t_f - direct, zero) * d_f;
         if (any(spread > zero)) {
             let s2f = n * beta_f * beta_f;

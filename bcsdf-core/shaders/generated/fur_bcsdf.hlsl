@@ -95,6 +95,13 @@ struct FurParts {
     FurRange ranges[5];
 };
 
+struct FurCoat {
+    float3 rho2_;
+    int _pad1_0;
+    float3 r_rho;
+    int _end_pad_0;
+};
+
 static const float FUR_PI = 3.1415927;
 static const float FUR_HALF_PI = 1.5707964;
 static const float FUR_TAU = 6.2831855;
@@ -1948,9 +1955,9 @@ FurSample fur_sample_far(float theta_r_7, float3 u_5)
     }
     const FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_12 = (max(cos(_e189), 0.0) / _e178);
+    float k_13 = (max(cos(_e189), 0.0) / _e178);
     float _e194 = theta_i_4;
-    out_3 = ConstructFurSample(_e194, _e173, _e178, max((_e188.total * k_12), (0.0).xxx), family, true);
+    out_3 = ConstructFurSample(_e194, _e173, _e178, max((_e188.total * k_13), (0.0).xxx), family, true);
     FurSample _e202 = out_3;
     const FurSample fursample_3 = _e202;
     return fursample_3;
@@ -1996,9 +2003,9 @@ FurLoc fur_dual_theta(float theta)
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_13 = min(naga_f2u32(_e17), 62u);
+    uint k_14 = min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    const FurLoc furloc_1 = ConstructFurLoc(k_13, (_e21 - float(k_13)));
+    const FurLoc furloc_1 = ConstructFurLoc(k_14, (_e21 - float(k_14)));
     return furloc_1;
 }
 
@@ -2055,8 +2062,8 @@ float3 fur_exp_neg(float3 x_in)
     float3 p_1 = (0.00019875693).xxx;
 
     float3 x_17 = min(max(x_in, (0.0).xxx), (87.0).xxx);
-    float3 k_14 = round((x_17 * FUR_LOG2_E));
-    float3 r_15 = (((k_14 * FUR_LN2_HI) - x_17) + (k_14 * FUR_LN2_LO));
+    float3 k_15 = round((x_17 * FUR_LOG2_E));
+    float3 r_15 = (((k_15 * FUR_LN2_HI) - x_17) + (k_15 * FUR_LN2_LO));
     float3 z_1 = (r_15 * r_15);
     float3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + (0.0013981999).xxx);
@@ -2070,7 +2077,7 @@ float3 fur_exp_neg(float3 x_in)
     p_1 = ((_e40 * r_15) + (0.5).xxx);
     float3 _e45 = p_1;
     float3 e = (((_e45 * z_1) + r_15) + (1.0).xxx);
-    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e, naga_neg(naga_f2i32(k_14))));
+    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e, naga_neg(naga_f2i32(k_15))));
 }
 
 float3 fur_erf(float3 x_11)
@@ -2113,13 +2120,6 @@ float3 fur_dual_power(float3 log2_mu, float k_9)
     return _e6;
 }
 
-float3 fur_dual_forward(float3 a_f2_)
-{
-    float3 a_9 = clamp(a_f2_, (0.0).xxx, (1.0).xxx);
-    const float3 _e9 = fur_rsqrt_newton(max(a_9, (1e-30).xxx));
-    return (a_9 * _e9);
-}
-
 float3 fur_reflectance_squared(float3 mu, float3 t_9)
 {
     float3 den_1 = (mu * ((1.0).xxx - (t_9 * mu)));
@@ -2136,15 +2136,49 @@ float3 fur_downward_flux(float3 mu_n, float3 mu_2m, float3 rho2_)
     return ((den_2 > (1e-6).xxx) ? _e18 : mu_n);
 }
 
-float3 fur_backscatter_factor(float3 mu_1, float3 t_10, float3 rho2_1, float3 mu_2m_1)
+float3 fur_reflection_product(float3 mu_1, float3 t_10)
+{
+    const float3 _e11 = fur_dual_between(((1.0).xxx - (t_10 / max(mu_1, (1e-6).xxx))), (1.0).xxx);
+    return _e11;
+}
+
+float3 fur_backscatter_factor(float3 r_rho, float3 rho2_1, float3 mu_2m_1)
 {
     float3 tiny = (1e-6).xxx;
     float3 g_den = ((1.0).xxx - (rho2_1 * mu_2m_1));
     float3 g_8 = (((1.0).xxx - mu_2m_1) / max(g_den, tiny));
-    const float3 _e22 = fur_dual_between(((1.0).xxx - (t_10 / max(mu_1, tiny))), (1.0).xxx);
-    float3 den_3 = ((1.0).xxx - (_e22 * g_8));
-    const float3 _e35 = fur_dual_between(((g_8 * ((1.0).xxx - _e22)) / max(den_3, tiny)), (1.0).xxx);
-    return (((g_den > tiny) & (den_3 > tiny)) ? _e35 : (1.0).xxx);
+    float3 den_3 = ((1.0).xxx - (r_rho * g_8));
+    const float3 _e26 = fur_dual_between(((g_8 * ((1.0).xxx - r_rho)) / max(den_3, tiny)), (1.0).xxx);
+    return (((g_den > tiny) & (den_3 > tiny)) ? _e26 : (1.0).xxx);
+}
+
+FurCoat ConstructFurCoat(float3 arg0, float3 arg1) {
+    FurCoat ret = (FurCoat)0;
+    ret.rho2_ = arg0;
+    ret.r_rho = arg1;
+    return ret;
+}
+
+FurCoat fur_dual_coat_node(uint k_10)
+{
+    const float3 _e7 = fur_dual_rgb((3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_LOG2_DECAY)));
+    const float3 _e14 = fur_dual_rgb((3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_A_F2_)));
+    float3 a_9 = clamp(_e14, (0.0).xxx, (1.0).xxx);
+    const float3 _e21 = fur_dual_power(_e7, 1.0);
+    const float3 _e25 = fur_rsqrt_newton(max(a_9, (1e-30).xxx));
+    float3 t_15 = (a_9 * _e25);
+    const float3 _e27 = fur_reflectance_squared(_e21, t_15);
+    const float3 _e28 = fur_reflection_product(_e21, t_15);
+    const FurCoat furcoat = ConstructFurCoat(_e27, _e28);
+    return furcoat;
+}
+
+FurCoat fur_dual_coat(FurLoc l_6)
+{
+    const FurCoat _e2 = fur_dual_coat_node(l_6.i);
+    const FurCoat _e6 = fur_dual_coat_node((l_6.i + 1u));
+    const FurCoat furcoat_1 = ConstructFurCoat((_e2.rho2_ + ((_e6.rho2_ - _e2.rho2_) * l_6.w)), (_e2.r_rho + ((_e6.r_rho - _e2.r_rho) * l_6.w)));
+    return furcoat_1;
 }
 
 float fur_dual_clean(float x_13, float top_1)
@@ -2203,45 +2237,40 @@ float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fib
     const float3 _e38 = fur_dual_field(_e30, ((abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
     const float3 _e40 = fur_dual_field(_e30, FUR_DUAL_LOG2_DECAY);
     const float3 _e42 = fur_dual_field(_e30, FUR_DUAL_A_F2_);
-    const float3 _e44 = fur_dual_power(_e40, 1.0);
-    const float3 _e45 = fur_dual_forward(_e42);
-    const float3 _e48 = fur_dual_power(_e40, (2.0 * _e13));
-    const float3 _e49 = fur_reflectance_squared(_e44, _e45);
-    const float3 _e50 = fur_backscatter_factor(_e44, _e45, _e49, _e48);
-    float3 half_energy = (_e38 * _e50);
-    const float3 _e53 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_);
-    const float3 _e55 = fur_dual_field(_e30, FUR_DUAL_DELTA_B);
-    float3 d_back = ((x_18).xxx - _e55);
-    float3 s_b = (((1.0).xxx + (_e17 * _e42)) * _e53);
+    const FurCoat _e43 = fur_dual_coat(_e30);
+    const float3 _e46 = fur_dual_power(_e40, (2.0 * _e13));
+    const float3 _e49 = fur_backscatter_factor(_e43.r_rho, _e43.rho2_, _e46);
+    float3 half_energy = (_e38 * _e49);
+    const float3 _e52 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_);
+    const float3 _e54 = fur_dual_field(_e30, FUR_DUAL_DELTA_B);
+    float3 d_back = ((x_18).xxx - _e54);
+    float3 s_b = (((1.0).xxx + (_e17 * _e42)) * _e52);
     float3 v_back = (s_b * s_b);
     float back_scale = ((_e17 * inv_cos2_1) / FUR_PI);
     out_4 = zero;
     if ((direct > 0.0)) {
-        const float3 _e72 = fur_dual_gauss(d_back, v_back, theta_i_6);
-        out_4 = (((direct * back_scale) * half_energy) * _e72);
+        const float3 _e71 = fur_dual_gauss(d_back, v_back, theta_i_6);
+        out_4 = (((direct * back_scale) * half_energy) * _e71);
     }
     if ((_e12 > 0.0)) {
-        const FurLoc _e77 = fur_dual_theta(-(theta_i_6));
-        const float3 _e79 = fur_dual_field(_e77, FUR_DUAL_LOG2_DECAY);
-        const float3 _e81 = fur_dual_field(_e77, FUR_DUAL_A_F2_);
-        const float3 _e83 = fur_dual_field(_e77, FUR_DUAL_BETA_F);
-        const float3 _e85 = fur_dual_power(_e79, 1.0);
-        const float3 _e86 = fur_dual_forward(_e81);
-        const float3 _e87 = fur_dual_power(_e79, _e12);
-        const float3 _e90 = fur_dual_power(_e79, (2.0 * _e13));
-        const float3 _e91 = fur_reflectance_squared(_e85, _e86);
-        const float3 _e92 = fur_downward_flux(_e87, _e90, _e91);
-        float3 spread = (max((_e92 - (direct).xxx), zero) * _e15);
+        const FurLoc _e76 = fur_dual_theta(-(theta_i_6));
+        const float3 _e78 = fur_dual_field(_e76, FUR_DUAL_LOG2_DECAY);
+        const float3 _e80 = fur_dual_field(_e76, FUR_DUAL_BETA_F);
+        const float3 _e81 = fur_dual_power(_e78, _e12);
+        const float3 _e84 = fur_dual_power(_e78, (2.0 * _e13));
+        const FurCoat _e85 = fur_dual_coat(_e76);
+        const float3 _e87 = fur_downward_flux(_e81, _e84, _e85.rho2_);
+        float3 spread = (max((_e87 - (direct).xxx), zero) * _e15);
         if (any((spread > zero))) {
-            float3 s2f = ((_e12 * _e83) * _e83);
+            float3 s2f = ((_e12 * _e80) * _e80);
             p_2 = (abs_phi_2 * FUR_DUAL_PHI_SCALE);
-            float _e104 = p_2;
+            float _e99 = p_2;
+            float _e102 = p_2;
+            p_2 = ((_e102 > 0.0) ? min(_e99, 31.0) : 0.0);
             float _e107 = p_2;
-            p_2 = ((_e107 > 0.0) ? min(_e104, 31.0) : 0.0);
-            float _e112 = p_2;
-            uint j_7 = min(naga_f2u32(_e112), 30u);
-            float _e116 = p_2;
-            FurLoc at_phi = ConstructFurLoc(j_7, (_e116 - float(j_7)));
+            uint j_7 = min(naga_f2u32(_e107), 30u);
+            float _e111 = p_2;
+            FurLoc at_phi = ConstructFurLoc(j_7, (_e111 - float(j_7)));
             f_s = zero;
             uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
             bool loop_init_16 = true;
@@ -2249,44 +2278,44 @@ float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fib
                 if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
                 loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
                 if (!loop_init_16) {
-                    uint _e144 = g_6;
-                    g_6 = (_e144 + 1u);
+                    uint _e139 = g_6;
+                    g_6 = (_e139 + 1u);
                 }
                 loop_init_16 = false;
-                uint _e123 = g_6;
-                if ((_e123 < 4u)) {
+                uint _e118 = g_6;
+                if ((_e118 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e127 = g_6;
-                    const float3 _e129 = fur_dual_field(_e30, (FUR_DUAL_MEAN + _e127));
-                    uint _e131 = g_6;
-                    const float3 _e133 = fur_dual_field(_e30, (FUR_DUAL_SD + _e131));
-                    uint _e134 = g_6;
-                    const float3 _e135 = fur_dual_ng(_e134, _e30, at_phi);
-                    float3 v_5 = ((_e133 * _e133) + s2f);
-                    float3 _e138 = f_s;
-                    const float3 _e141 = fur_dual_gauss(((x_18).xxx - _e129), v_5, theta_i_6);
-                    f_s = (_e138 + (_e135 * _e141));
+                    uint _e122 = g_6;
+                    const float3 _e124 = fur_dual_field(_e30, (FUR_DUAL_MEAN + _e122));
+                    uint _e126 = g_6;
+                    const float3 _e128 = fur_dual_field(_e30, (FUR_DUAL_SD + _e126));
+                    uint _e129 = g_6;
+                    const float3 _e130 = fur_dual_ng(_e129, _e30, at_phi);
+                    float3 v_5 = ((_e128 * _e128) + s2f);
+                    float3 _e133 = f_s;
+                    const float3 _e136 = fur_dual_gauss(((x_18).xxx - _e124), v_5, theta_i_6);
+                    f_s = (_e133 + (_e130 * _e136));
                 }
             }
-            const float3 _e148 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
-            float3 _e149 = out_4;
-            float3 _e150 = f_s;
-            out_4 = (_e149 + (spread * ((_e150 * inv_cos2_1) + ((back_scale * half_energy) * _e148))));
+            const float3 _e143 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
+            float3 _e144 = out_4;
+            float3 _e145 = f_s;
+            out_4 = (_e144 + (spread * ((_e145 * inv_cos2_1) + ((back_scale * half_energy) * _e143))));
         }
     }
-    float _e158 = out_4.x;
-    const bool _e159 = fur_finite(_e158);
-    float _e161 = out_4.y;
-    const bool _e162 = fur_finite(_e161);
-    float _e164 = out_4.z;
-    const bool _e165 = fur_finite(_e164);
-    bool3 finite = bool3(_e159, _e162, _e165);
-    float3 _e167 = out_4;
-    float3 _e168 = out_4;
-    return ((finite & (_e168 > zero)) ? _e167 : zero);
+    float _e153 = out_4.x;
+    const bool _e154 = fur_finite(_e153);
+    float _e156 = out_4.y;
+    const bool _e157 = fur_finite(_e156);
+    float _e159 = out_4.z;
+    const bool _e160 = fur_finite(_e159);
+    bool3 finite = bool3(_e154, _e157, _e160);
+    float3 _e162 = out_4;
+    float3 _e163 = out_4;
+    return ((finite & (_e163 > zero)) ? _e162 : zero);
 }
 
 float3 fur_eval_dual_dirs(float3 wi_2, float3 wr_2, float3 u_6, float fibers_1, float fibers_below_1, float d_f, float d_b)
@@ -2307,7 +2336,7 @@ ret_Constructarray5_float3_ Constructarray5_float3_(float3 arg0, float3 arg1, fl
 
 void fur_store(uint q, FurFamilies f_2)
 {
-    uint k_10 = 0u;
+    uint k_11 = 0u;
 
     uint base_1 = (16u * q);
     float3 parts[5] = Constructarray5_float3_(f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
@@ -2317,24 +2346,24 @@ void fur_store(uint q, FurFamilies f_2)
         if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e46 = k_10;
-            k_10 = (_e46 + 1u);
+            uint _e46 = k_11;
+            k_11 = (_e46 + 1u);
         }
         loop_init_17 = false;
-        uint _e12 = k_10;
+        uint _e12 = k_11;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_10;
-            uint _e21 = k_10;
+            uint _e17 = k_11;
+            uint _e21 = k_11;
             fur_results.Store((base_1 + (3u * _e17))*4, asuint(parts[min(uint(_e21), 4u)].x));
-            uint _e26 = k_10;
-            uint _e32 = k_10;
+            uint _e26 = k_11;
+            uint _e32 = k_11;
             fur_results.Store(((base_1 + (3u * _e26)) + 1u)*4, asuint(parts[min(uint(_e32), 4u)].y));
-            uint _e37 = k_10;
-            uint _e43 = k_10;
+            uint _e37 = k_11;
+            uint _e43 = k_11;
             fur_results.Store(((base_1 + (3u * _e37)) + 2u)*4, asuint(parts[min(uint(_e43), 4u)].z));
         }
     }
@@ -2344,7 +2373,7 @@ void fur_store(uint q, FurFamilies f_2)
 
 void fur_store_rgb(uint q_1, float3 v_2)
 {
-    uint k_11 = 3u;
+    uint k_12 = 3u;
 
     uint base_2 = (16u * q_1);
     fur_results.Store(base_2*4, asuint(v_2.x));
@@ -2356,17 +2385,17 @@ void fur_store_rgb(uint q_1, float3 v_2)
         if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e27 = k_11;
-            k_11 = (_e27 + 1u);
+            uint _e27 = k_12;
+            k_12 = (_e27 + 1u);
         }
         loop_init_18 = false;
-        uint _e19 = k_11;
+        uint _e19 = k_12;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_11;
+            uint _e23 = k_12;
             fur_results.Store((base_2 + _e23)*4, asuint(0.0));
         }
     }

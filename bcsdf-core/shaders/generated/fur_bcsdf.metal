@@ -112,6 +112,10 @@ struct FurParts {
     char _pad1[12];
     type_14 ranges;
 };
+struct FurCoat {
+    metal::float3 rho2_;
+    metal::float3 r_rho;
+};
 typedef metal::float4 type_17[1];
 typedef float type_18[1];
 struct type_19 {
@@ -1986,9 +1990,9 @@ FurSample fur_sample_far(
     }
     FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_12 = metal::max(metal::cos(_e189), 0.0) / _e178;
+    float k_13 = metal::max(metal::cos(_e189), 0.0) / _e178;
     float _e194 = theta_i_4;
-    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_12, metal::float3(0.0)), family, true};
+    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_13, metal::float3(0.0)), family, true};
     FurSample _e202 = out_3;
     return _e202;
 }
@@ -2041,9 +2045,9 @@ FurLoc fur_dual_theta(
     float _e14 = t_8;
     t_8 = metal::min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_13 = metal::min(naga_f2u32(_e17), 62u);
+    uint k_14 = metal::min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc {k_13, _e21 - static_cast<float>(k_13)};
+    return FurLoc {k_14, _e21 - static_cast<float>(k_14)};
 }
 
 metal::float3 fur_dual_field(
@@ -2108,8 +2112,8 @@ metal::float3 fur_exp_neg(
 ) {
     metal::float3 p_1 = metal::float3(0.00019875693);
     metal::float3 x_17 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
-    metal::float3 k_14 = metal::rint(x_17 * FUR_LOG2_E);
-    metal::float3 r_15 = ((k_14 * FUR_LN2_HI) - x_17) + (k_14 * FUR_LN2_LO);
+    metal::float3 k_15 = metal::rint(x_17 * FUR_LOG2_E);
+    metal::float3 r_15 = ((k_15 * FUR_LN2_HI) - x_17) + (k_15 * FUR_LN2_LO);
     metal::float3 z_1 = r_15 * r_15;
     metal::float3 _e20 = p_1;
     p_1 = (_e20 * r_15) + metal::float3(0.0013981999);
@@ -2123,7 +2127,7 @@ metal::float3 fur_exp_neg(
     p_1 = (_e40 * r_15) + metal::float3(0.5);
     metal::float3 _e45 = p_1;
     metal::float3 e = ((_e45 * z_1) + r_15) + metal::float3(1.0);
-    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_14))), metal::float3(0.0), x_in > metal::float3(87.0));
+    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_15))), metal::float3(0.0), x_in > metal::float3(87.0));
 }
 
 metal::float3 fur_erf(
@@ -2174,14 +2178,6 @@ metal::float3 fur_dual_power(
     return _e6;
 }
 
-metal::float3 fur_dual_forward(
-    metal::float3 a_f2_
-) {
-    metal::float3 a_9 = metal::clamp(a_f2_, metal::float3(0.0), metal::float3(1.0));
-    metal::float3 _e9 = fur_rsqrt_newton(metal::max(a_9, metal::float3(0.000000000000000000000000000001)));
-    return a_9 * _e9;
-}
-
 metal::float3 fur_reflectance_squared(
     metal::float3 mu,
     metal::float3 t_9
@@ -2203,19 +2199,51 @@ metal::float3 fur_downward_flux(
     return metal::select(mu_n, _e18, den_2 > metal::float3(0.000001));
 }
 
-metal::float3 fur_backscatter_factor(
+metal::float3 fur_reflection_product(
     metal::float3 mu_1,
-    metal::float3 t_10,
+    metal::float3 t_10
+) {
+    metal::float3 _e11 = fur_dual_between(metal::float3(1.0) - (t_10 / metal::max(mu_1, metal::float3(0.000001))), metal::float3(1.0));
+    return _e11;
+}
+
+metal::float3 fur_backscatter_factor(
+    metal::float3 r_rho,
     metal::float3 rho2_1,
     metal::float3 mu_2m_1
 ) {
     metal::float3 tiny = metal::float3(0.000001);
     metal::float3 g_den = metal::float3(1.0) - (rho2_1 * mu_2m_1);
     metal::float3 g_8 = (metal::float3(1.0) - mu_2m_1) / metal::max(g_den, tiny);
-    metal::float3 _e22 = fur_dual_between(metal::float3(1.0) - (t_10 / metal::max(mu_1, tiny)), metal::float3(1.0));
-    metal::float3 den_3 = metal::float3(1.0) - (_e22 * g_8);
-    metal::float3 _e35 = fur_dual_between((g_8 * (metal::float3(1.0) - _e22)) / metal::max(den_3, tiny), metal::float3(1.0));
-    return metal::select(metal::float3(1.0), _e35, (g_den > tiny) & (den_3 > tiny));
+    metal::float3 den_3 = metal::float3(1.0) - (r_rho * g_8);
+    metal::float3 _e26 = fur_dual_between((g_8 * (metal::float3(1.0) - r_rho)) / metal::max(den_3, tiny), metal::float3(1.0));
+    return metal::select(metal::float3(1.0), _e26, (g_den > tiny) & (den_3 > tiny));
+}
+
+FurCoat fur_dual_coat_node(
+    uint k_10,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e7 = fur_dual_rgb(3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_LOG2_DECAY), fur_dual, _buffer_sizes);
+    metal::float3 _e14 = fur_dual_rgb(3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_A_F2_), fur_dual, _buffer_sizes);
+    metal::float3 a_9 = metal::clamp(_e14, metal::float3(0.0), metal::float3(1.0));
+    metal::float3 _e21 = fur_dual_power(_e7, 1.0);
+    metal::float3 _e25 = fur_rsqrt_newton(metal::max(a_9, metal::float3(0.000000000000000000000000000001)));
+    metal::float3 t_15 = a_9 * _e25;
+    metal::float3 _e27 = fur_reflectance_squared(_e21, t_15);
+    metal::float3 _e28 = fur_reflection_product(_e21, t_15);
+    return FurCoat {_e27, _e28};
+}
+
+FurCoat fur_dual_coat(
+    FurLoc l_6,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FurCoat _e2 = fur_dual_coat_node(l_6.i, fur_dual, _buffer_sizes);
+    FurCoat _e6 = fur_dual_coat_node(l_6.i + 1u, fur_dual, _buffer_sizes);
+    return FurCoat {_e2.rho2_ + ((_e6.rho2_ - _e2.rho2_) * l_6.w), _e2.r_rho + ((_e6.r_rho - _e2.r_rho) * l_6.w)};
 }
 
 float fur_dual_clean(
@@ -2283,45 +2311,40 @@ metal::float3 fur_eval_dual(
     metal::float3 _e38 = fur_dual_field(_e30, (abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT, fur_dual, _buffer_sizes);
     metal::float3 _e40 = fur_dual_field(_e30, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
     metal::float3 _e42 = fur_dual_field(_e30, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
-    metal::float3 _e44 = fur_dual_power(_e40, 1.0);
-    metal::float3 _e45 = fur_dual_forward(_e42);
-    metal::float3 _e48 = fur_dual_power(_e40, 2.0 * _e13);
-    metal::float3 _e49 = fur_reflectance_squared(_e44, _e45);
-    metal::float3 _e50 = fur_backscatter_factor(_e44, _e45, _e49, _e48);
-    metal::float3 half_energy = _e38 * _e50;
-    metal::float3 _e53 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_, fur_dual, _buffer_sizes);
-    metal::float3 _e55 = fur_dual_field(_e30, FUR_DUAL_DELTA_B, fur_dual, _buffer_sizes);
-    metal::float3 d_back = metal::float3(x_18) - _e55;
-    metal::float3 s_b = (metal::float3(1.0) + (_e17 * _e42)) * _e53;
+    FurCoat _e43 = fur_dual_coat(_e30, fur_dual, _buffer_sizes);
+    metal::float3 _e46 = fur_dual_power(_e40, 2.0 * _e13);
+    metal::float3 _e49 = fur_backscatter_factor(_e43.r_rho, _e43.rho2_, _e46);
+    metal::float3 half_energy = _e38 * _e49;
+    metal::float3 _e52 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_, fur_dual, _buffer_sizes);
+    metal::float3 _e54 = fur_dual_field(_e30, FUR_DUAL_DELTA_B, fur_dual, _buffer_sizes);
+    metal::float3 d_back = metal::float3(x_18) - _e54;
+    metal::float3 s_b = (metal::float3(1.0) + (_e17 * _e42)) * _e52;
     metal::float3 v_back = s_b * s_b;
     float back_scale = (_e17 * inv_cos2_1) / FUR_PI;
     out_4 = zero;
     if (direct > 0.0) {
-        metal::float3 _e72 = fur_dual_gauss(d_back, v_back, theta_i_6);
-        out_4 = ((direct * back_scale) * half_energy) * _e72;
+        metal::float3 _e71 = fur_dual_gauss(d_back, v_back, theta_i_6);
+        out_4 = ((direct * back_scale) * half_energy) * _e71;
     }
     if (_e12 > 0.0) {
-        FurLoc _e77 = fur_dual_theta(-(theta_i_6));
-        metal::float3 _e79 = fur_dual_field(_e77, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
-        metal::float3 _e81 = fur_dual_field(_e77, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
-        metal::float3 _e83 = fur_dual_field(_e77, FUR_DUAL_BETA_F, fur_dual, _buffer_sizes);
-        metal::float3 _e85 = fur_dual_power(_e79, 1.0);
-        metal::float3 _e86 = fur_dual_forward(_e81);
-        metal::float3 _e87 = fur_dual_power(_e79, _e12);
-        metal::float3 _e90 = fur_dual_power(_e79, 2.0 * _e13);
-        metal::float3 _e91 = fur_reflectance_squared(_e85, _e86);
-        metal::float3 _e92 = fur_downward_flux(_e87, _e90, _e91);
-        metal::float3 spread = metal::max(_e92 - metal::float3(direct), zero) * _e15;
+        FurLoc _e76 = fur_dual_theta(-(theta_i_6));
+        metal::float3 _e78 = fur_dual_field(_e76, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
+        metal::float3 _e80 = fur_dual_field(_e76, FUR_DUAL_BETA_F, fur_dual, _buffer_sizes);
+        metal::float3 _e81 = fur_dual_power(_e78, _e12);
+        metal::float3 _e84 = fur_dual_power(_e78, 2.0 * _e13);
+        FurCoat _e85 = fur_dual_coat(_e76, fur_dual, _buffer_sizes);
+        metal::float3 _e87 = fur_downward_flux(_e81, _e84, _e85.rho2_);
+        metal::float3 spread = metal::max(_e87 - metal::float3(direct), zero) * _e15;
         if (metal::any(spread > zero)) {
-            metal::float3 s2f = (_e12 * _e83) * _e83;
+            metal::float3 s2f = (_e12 * _e80) * _e80;
             p_2 = abs_phi_2 * FUR_DUAL_PHI_SCALE;
-            float _e104 = p_2;
+            float _e99 = p_2;
+            float _e102 = p_2;
+            p_2 = (_e102 > 0.0) ? metal::min(_e99, 31.0) : 0.0;
             float _e107 = p_2;
-            p_2 = (_e107 > 0.0) ? metal::min(_e104, 31.0) : 0.0;
-            float _e112 = p_2;
-            uint j_7 = metal::min(naga_f2u32(_e112), 30u);
-            float _e116 = p_2;
-            FurLoc at_phi = FurLoc {j_7, _e116 - static_cast<float>(j_7)};
+            uint j_7 = metal::min(naga_f2u32(_e107), 30u);
+            float _e111 = p_2;
+            FurLoc at_phi = FurLoc {j_7, _e111 - static_cast<float>(j_7)};
             f_s = zero;
             uint2 loop_bound_17 = uint2(4294967295u);
             bool loop_init_16 = true;
@@ -2329,44 +2352,44 @@ metal::float3 fur_eval_dual(
                 if (metal::all(loop_bound_17 == uint2(0u))) { break; }
                 loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
                 if (!loop_init_16) {
-                    uint _e144 = g_6;
-                    g_6 = _e144 + 1u;
+                    uint _e139 = g_6;
+                    g_6 = _e139 + 1u;
                 }
                 loop_init_16 = false;
-                uint _e123 = g_6;
-                if (_e123 < 4u) {
+                uint _e118 = g_6;
+                if (_e118 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e127 = g_6;
-                    metal::float3 _e129 = fur_dual_field(_e30, FUR_DUAL_MEAN + _e127, fur_dual, _buffer_sizes);
-                    uint _e131 = g_6;
-                    metal::float3 _e133 = fur_dual_field(_e30, FUR_DUAL_SD + _e131, fur_dual, _buffer_sizes);
-                    uint _e134 = g_6;
-                    metal::float3 _e135 = fur_dual_ng(_e134, _e30, at_phi, fur_dual, _buffer_sizes);
-                    metal::float3 v_5 = (_e133 * _e133) + s2f;
-                    metal::float3 _e138 = f_s;
-                    metal::float3 _e141 = fur_dual_gauss(metal::float3(x_18) - _e129, v_5, theta_i_6);
-                    f_s = _e138 + (_e135 * _e141);
+                    uint _e122 = g_6;
+                    metal::float3 _e124 = fur_dual_field(_e30, FUR_DUAL_MEAN + _e122, fur_dual, _buffer_sizes);
+                    uint _e126 = g_6;
+                    metal::float3 _e128 = fur_dual_field(_e30, FUR_DUAL_SD + _e126, fur_dual, _buffer_sizes);
+                    uint _e129 = g_6;
+                    metal::float3 _e130 = fur_dual_ng(_e129, _e30, at_phi, fur_dual, _buffer_sizes);
+                    metal::float3 v_5 = (_e128 * _e128) + s2f;
+                    metal::float3 _e133 = f_s;
+                    metal::float3 _e136 = fur_dual_gauss(metal::float3(x_18) - _e124, v_5, theta_i_6);
+                    f_s = _e133 + (_e130 * _e136);
                 }
             }
-            metal::float3 _e148 = fur_dual_gauss(d_back, v_back + s2f, theta_i_6);
-            metal::float3 _e149 = out_4;
-            metal::float3 _e150 = f_s;
-            out_4 = _e149 + (spread * ((_e150 * inv_cos2_1) + ((back_scale * half_energy) * _e148)));
+            metal::float3 _e143 = fur_dual_gauss(d_back, v_back + s2f, theta_i_6);
+            metal::float3 _e144 = out_4;
+            metal::float3 _e145 = f_s;
+            out_4 = _e144 + (spread * ((_e145 * inv_cos2_1) + ((back_scale * half_energy) * _e143)));
         }
     }
-    float _e158 = out_4.x;
-    bool _e159 = fur_finite(_e158);
-    float _e161 = out_4.y;
-    bool _e162 = fur_finite(_e161);
-    float _e164 = out_4.z;
-    bool _e165 = fur_finite(_e164);
-    metal::bool3 finite = metal::bool3(_e159, _e162, _e165);
-    metal::float3 _e167 = out_4;
-    metal::float3 _e168 = out_4;
-    return metal::select(zero, _e167, finite & (_e168 > zero));
+    float _e153 = out_4.x;
+    bool _e154 = fur_finite(_e153);
+    float _e156 = out_4.y;
+    bool _e157 = fur_finite(_e156);
+    float _e159 = out_4.z;
+    bool _e160 = fur_finite(_e159);
+    metal::bool3 finite = metal::bool3(_e154, _e157, _e160);
+    metal::float3 _e162 = out_4;
+    metal::float3 _e163 = out_4;
+    return metal::select(zero, _e162, finite & (_e163 > zero));
 }
 
 metal::float3 fur_eval_dual_dirs(
@@ -2394,7 +2417,7 @@ void fur_store(
     device type_18& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_10 = 0u;
+    uint k_11 = 0u;
     uint base_1 = 16u * q;
     type_19 parts = type_19 {{f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total}};
     uint2 loop_bound_18 = uint2(4294967295u);
@@ -2403,24 +2426,24 @@ void fur_store(
         if (metal::all(loop_bound_18 == uint2(0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e46 = k_10;
-            k_10 = _e46 + 1u;
+            uint _e46 = k_11;
+            k_11 = _e46 + 1u;
         }
         loop_init_17 = false;
-        uint _e12 = k_10;
+        uint _e12 = k_11;
         if (_e12 < 5u) {
         } else {
             break;
         }
         {
-            uint _e17 = k_10;
-            uint _e21 = k_10;
+            uint _e17 = k_11;
+            uint _e21 = k_11;
             fur_results[base_1 + (3u * _e17)] = parts.inner[_e21].x;
-            uint _e26 = k_10;
-            uint _e32 = k_10;
+            uint _e26 = k_11;
+            uint _e32 = k_11;
             fur_results[(base_1 + (3u * _e26)) + 1u] = parts.inner[_e32].y;
-            uint _e37 = k_10;
-            uint _e43 = k_10;
+            uint _e37 = k_11;
+            uint _e43 = k_11;
             fur_results[(base_1 + (3u * _e37)) + 2u] = parts.inner[_e43].z;
         }
     }
@@ -2434,7 +2457,7 @@ void fur_store_rgb(
     device type_18& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_11 = 3u;
+    uint k_12 = 3u;
     uint base_2 = 16u * q_1;
     fur_results[base_2] = v_2.x;
     fur_results[base_2 + 1u] = v_2.y;
@@ -2445,17 +2468,17 @@ void fur_store_rgb(
         if (metal::all(loop_bound_19 == uint2(0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e27 = k_11;
-            k_11 = _e27 + 1u;
+            uint _e27 = k_12;
+            k_12 = _e27 + 1u;
         }
         loop_init_18 = false;
-        uint _e19 = k_11;
+        uint _e19 = k_12;
         if (_e19 < 16u) {
         } else {
             break;
         }
         {
-            uint _e23 = k_11;
+            uint _e23 = k_12;
             fur_results[base_2 + _e23] = 0.0;
         }
     }

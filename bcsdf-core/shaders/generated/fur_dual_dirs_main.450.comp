@@ -75,6 +75,10 @@ struct FurParts {
     float a[5];
     FurRange ranges[5];
 };
+struct FurCoat {
+    vec3 rho2_;
+    vec3 r_rho;
+};
 const float FUR_PI = 3.1415927;
 const float FUR_HALF_PI = 1.5707964;
 const float FUR_TAU = 6.2831855;
@@ -804,9 +808,9 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_12 = min(uint(_e17), 62u);
+    uint k_13 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_12, (_e21 - float(k_12)));
+    return FurLoc(k_13, (_e21 - float(k_13)));
 }
 
 vec3 fur_dual_field(FurLoc l_4, uint f_1) {
@@ -848,8 +852,8 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
 vec3 fur_exp_neg(vec3 x_in) {
     vec3 p_1 = vec3(0.00019875693);
     vec3 x_16 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_13 = roundEven((x_16 * FUR_LOG2_E));
-    vec3 r_15 = (((k_13 * FUR_LN2_HI) - x_16) + (k_13 * FUR_LN2_LO));
+    vec3 k_14 = roundEven((x_16 * FUR_LOG2_E));
+    vec3 r_15 = (((k_14 * FUR_LN2_HI) - x_16) + (k_14 * FUR_LN2_LO));
     vec3 z_1 = (r_15 * r_15);
     vec3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + vec3(0.0013981999));
@@ -863,7 +867,7 @@ vec3 fur_exp_neg(vec3 x_in) {
     p_1 = ((_e40 * r_15) + vec3(0.5));
     vec3 _e45 = p_1;
     vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_13))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+    return mix(ldexp(e, -(ivec3(k_14))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
 vec3 fur_erf(vec3 x_11) {
@@ -902,12 +906,6 @@ vec3 fur_dual_power(vec3 log2_mu, float k_9) {
     return _e6;
 }
 
-vec3 fur_dual_forward(vec3 a_f2_) {
-    vec3 a_8 = clamp(a_f2_, vec3(0.0), vec3(1.0));
-    vec3 _e9 = fur_rsqrt_newton(max(a_8, vec3(1e-30)));
-    return (a_8 * _e9);
-}
-
 vec3 fur_reflectance_squared(vec3 mu, vec3 t_9) {
     vec3 den_1 = (mu * (vec3(1.0) - (t_9 * mu)));
     vec3 _e14 = fur_dual_between(((mu - t_9) / max(den_1, vec3(1e-6))), vec3(1.0));
@@ -922,14 +920,36 @@ vec3 fur_downward_flux(vec3 mu_n, vec3 mu_2m, vec3 rho2_) {
     return mix(mu_n, _e18, greaterThan(den_2, vec3(1e-6)));
 }
 
-vec3 fur_backscatter_factor(vec3 mu_1, vec3 t_10, vec3 rho2_1, vec3 mu_2m_1) {
+vec3 fur_reflection_product(vec3 mu_1, vec3 t_10) {
+    vec3 _e11 = fur_dual_between((vec3(1.0) - (t_10 / max(mu_1, vec3(1e-6)))), vec3(1.0));
+    return _e11;
+}
+
+vec3 fur_backscatter_factor(vec3 r_rho, vec3 rho2_1, vec3 mu_2m_1) {
     vec3 tiny = vec3(1e-6);
     vec3 g_den = (vec3(1.0) - (rho2_1 * mu_2m_1));
     vec3 g_8 = ((vec3(1.0) - mu_2m_1) / max(g_den, tiny));
-    vec3 _e22 = fur_dual_between((vec3(1.0) - (t_10 / max(mu_1, tiny))), vec3(1.0));
-    vec3 den_3 = (vec3(1.0) - (_e22 * g_8));
-    vec3 _e35 = fur_dual_between(((g_8 * (vec3(1.0) - _e22)) / max(den_3, tiny)), vec3(1.0));
-    return mix(vec3(1.0), _e35, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
+    vec3 den_3 = (vec3(1.0) - (r_rho * g_8));
+    vec3 _e26 = fur_dual_between(((g_8 * (vec3(1.0) - r_rho)) / max(den_3, tiny)), vec3(1.0));
+    return mix(vec3(1.0), _e26, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
+}
+
+FurCoat fur_dual_coat_node(uint k_10) {
+    vec3 _e7 = fur_dual_rgb((3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_LOG2_DECAY)));
+    vec3 _e14 = fur_dual_rgb((3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_A_F2_)));
+    vec3 a_8 = clamp(_e14, vec3(0.0), vec3(1.0));
+    vec3 _e21 = fur_dual_power(_e7, 1.0);
+    vec3 _e25 = fur_rsqrt_newton(max(a_8, vec3(1e-30)));
+    vec3 t_13 = (a_8 * _e25);
+    vec3 _e27 = fur_reflectance_squared(_e21, t_13);
+    vec3 _e28 = fur_reflection_product(_e21, t_13);
+    return FurCoat(_e27, _e28);
+}
+
+FurCoat fur_dual_coat(FurLoc l_6) {
+    FurCoat _e2 = fur_dual_coat_node(l_6.i);
+    FurCoat _e6 = fur_dual_coat_node((l_6.i + 1u));
+    return FurCoat((_e2.rho2_ + ((_e6.rho2_ - _e2.rho2_) * l_6.w)), (_e2.r_rho + ((_e6.r_rho - _e2.r_rho) * l_6.w)));
 }
 
 float fur_dual_clean(float x_13, float top_1) {
@@ -982,87 +1002,82 @@ vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fiber
     vec3 _e38 = fur_dual_field(_e30, ((abs_phi < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
     vec3 _e40 = fur_dual_field(_e30, FUR_DUAL_LOG2_DECAY);
     vec3 _e42 = fur_dual_field(_e30, FUR_DUAL_A_F2_);
-    vec3 _e44 = fur_dual_power(_e40, 1.0);
-    vec3 _e45 = fur_dual_forward(_e42);
-    vec3 _e48 = fur_dual_power(_e40, (2.0 * _e13));
-    vec3 _e49 = fur_reflectance_squared(_e44, _e45);
-    vec3 _e50 = fur_backscatter_factor(_e44, _e45, _e49, _e48);
-    vec3 half_energy = (_e38 * _e50);
-    vec3 _e53 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_);
-    vec3 _e55 = fur_dual_field(_e30, FUR_DUAL_DELTA_B);
-    vec3 d_back = (vec3(x_17) - _e55);
-    vec3 s_b = ((vec3(1.0) + (_e17 * _e42)) * _e53);
+    FurCoat _e43 = fur_dual_coat(_e30);
+    vec3 _e46 = fur_dual_power(_e40, (2.0 * _e13));
+    vec3 _e49 = fur_backscatter_factor(_e43.r_rho, _e43.rho2_, _e46);
+    vec3 half_energy = (_e38 * _e49);
+    vec3 _e52 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_);
+    vec3 _e54 = fur_dual_field(_e30, FUR_DUAL_DELTA_B);
+    vec3 d_back = (vec3(x_17) - _e54);
+    vec3 s_b = ((vec3(1.0) + (_e17 * _e42)) * _e52);
     vec3 v_back = (s_b * s_b);
     float back_scale = ((_e17 * inv_cos2_) / FUR_PI);
     out_4 = zero;
     if ((direct > 0.0)) {
-        vec3 _e72 = fur_dual_gauss(d_back, v_back, theta_i_6);
-        out_4 = (((direct * back_scale) * half_energy) * _e72);
+        vec3 _e71 = fur_dual_gauss(d_back, v_back, theta_i_6);
+        out_4 = (((direct * back_scale) * half_energy) * _e71);
     }
     if ((_e12 > 0.0)) {
-        FurLoc _e77 = fur_dual_theta(-(theta_i_6));
-        vec3 _e79 = fur_dual_field(_e77, FUR_DUAL_LOG2_DECAY);
-        vec3 _e81 = fur_dual_field(_e77, FUR_DUAL_A_F2_);
-        vec3 _e83 = fur_dual_field(_e77, FUR_DUAL_BETA_F);
-        vec3 _e85 = fur_dual_power(_e79, 1.0);
-        vec3 _e86 = fur_dual_forward(_e81);
-        vec3 _e87 = fur_dual_power(_e79, _e12);
-        vec3 _e90 = fur_dual_power(_e79, (2.0 * _e13));
-        vec3 _e91 = fur_reflectance_squared(_e85, _e86);
-        vec3 _e92 = fur_downward_flux(_e87, _e90, _e91);
-        vec3 spread = (max((_e92 - vec3(direct)), zero) * _e15);
+        FurLoc _e76 = fur_dual_theta(-(theta_i_6));
+        vec3 _e78 = fur_dual_field(_e76, FUR_DUAL_LOG2_DECAY);
+        vec3 _e80 = fur_dual_field(_e76, FUR_DUAL_BETA_F);
+        vec3 _e81 = fur_dual_power(_e78, _e12);
+        vec3 _e84 = fur_dual_power(_e78, (2.0 * _e13));
+        FurCoat _e85 = fur_dual_coat(_e76);
+        vec3 _e87 = fur_downward_flux(_e81, _e84, _e85.rho2_);
+        vec3 spread = (max((_e87 - vec3(direct)), zero) * _e15);
         if (any(greaterThan(spread, zero))) {
-            vec3 s2f = ((_e12 * _e83) * _e83);
+            vec3 s2f = ((_e12 * _e80) * _e80);
             p_2 = (abs_phi * FUR_DUAL_PHI_SCALE);
-            float _e104 = p_2;
+            float _e99 = p_2;
+            float _e102 = p_2;
+            p_2 = ((_e102 > 0.0) ? min(_e99, 31.0) : 0.0);
             float _e107 = p_2;
-            p_2 = ((_e107 > 0.0) ? min(_e104, 31.0) : 0.0);
-            float _e112 = p_2;
-            uint j_7 = min(uint(_e112), 30u);
-            float _e116 = p_2;
-            FurLoc at_phi = FurLoc(j_7, (_e116 - float(j_7)));
+            uint j_7 = min(uint(_e107), 30u);
+            float _e111 = p_2;
+            FurLoc at_phi = FurLoc(j_7, (_e111 - float(j_7)));
             f_s = zero;
             bool loop_init_4 = true;
             while(true) {
                 if (!loop_init_4) {
-                    uint _e144 = g_6;
-                    g_6 = (_e144 + 1u);
+                    uint _e139 = g_6;
+                    g_6 = (_e139 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e123 = g_6;
-                if ((_e123 < 4u)) {
+                uint _e118 = g_6;
+                if ((_e118 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e127 = g_6;
-                    vec3 _e129 = fur_dual_field(_e30, (FUR_DUAL_MEAN + _e127));
-                    uint _e131 = g_6;
-                    vec3 _e133 = fur_dual_field(_e30, (FUR_DUAL_SD + _e131));
-                    uint _e134 = g_6;
-                    vec3 _e135 = fur_dual_ng(_e134, _e30, at_phi);
-                    vec3 v_5 = ((_e133 * _e133) + s2f);
-                    vec3 _e138 = f_s;
-                    vec3 _e141 = fur_dual_gauss((vec3(x_17) - _e129), v_5, theta_i_6);
-                    f_s = (_e138 + (_e135 * _e141));
+                    uint _e122 = g_6;
+                    vec3 _e124 = fur_dual_field(_e30, (FUR_DUAL_MEAN + _e122));
+                    uint _e126 = g_6;
+                    vec3 _e128 = fur_dual_field(_e30, (FUR_DUAL_SD + _e126));
+                    uint _e129 = g_6;
+                    vec3 _e130 = fur_dual_ng(_e129, _e30, at_phi);
+                    vec3 v_5 = ((_e128 * _e128) + s2f);
+                    vec3 _e133 = f_s;
+                    vec3 _e136 = fur_dual_gauss((vec3(x_17) - _e124), v_5, theta_i_6);
+                    f_s = (_e133 + (_e130 * _e136));
                 }
             }
-            vec3 _e148 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
-            vec3 _e149 = out_4;
-            vec3 _e150 = f_s;
-            out_4 = (_e149 + (spread * ((_e150 * inv_cos2_) + ((back_scale * half_energy) * _e148))));
+            vec3 _e143 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
+            vec3 _e144 = out_4;
+            vec3 _e145 = f_s;
+            out_4 = (_e144 + (spread * ((_e145 * inv_cos2_) + ((back_scale * half_energy) * _e143))));
         }
     }
-    float _e158 = out_4.x;
-    bool _e159 = fur_finite(_e158);
-    float _e161 = out_4.y;
-    bool _e162 = fur_finite(_e161);
-    float _e164 = out_4.z;
-    bool _e165 = fur_finite(_e164);
-    bvec3 finite = bvec3(_e159, _e162, _e165);
-    vec3 _e167 = out_4;
-    vec3 _e168 = out_4;
-    return mix(zero, _e167, bvec3(finite.x && greaterThan(_e168, zero).x, finite.y && greaterThan(_e168, zero).y, finite.z && greaterThan(_e168, zero).z));
+    float _e153 = out_4.x;
+    bool _e154 = fur_finite(_e153);
+    float _e156 = out_4.y;
+    bool _e157 = fur_finite(_e156);
+    float _e159 = out_4.z;
+    bool _e160 = fur_finite(_e159);
+    bvec3 finite = bvec3(_e154, _e157, _e160);
+    vec3 _e162 = out_4;
+    vec3 _e163 = out_4;
+    return mix(zero, _e162, bvec3(finite.x && greaterThan(_e163, zero).x, finite.y && greaterThan(_e163, zero).y, finite.z && greaterThan(_e163, zero).z));
 }
 
 vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fibers_below_1, float d_f, float d_b) {
@@ -1075,30 +1090,30 @@ vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fi
 }
 
 void fur_store(uint q, FurFamilies f_2) {
-    uint k_10 = 0u;
+    uint k_11 = 0u;
     uint base = (16u * q);
     vec3 parts[5] = vec3[5](f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e46 = k_10;
-            k_10 = (_e46 + 1u);
+            uint _e46 = k_11;
+            k_11 = (_e46 + 1u);
         }
         loop_init_5 = false;
-        uint _e12 = k_10;
+        uint _e12 = k_11;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_10;
-            uint _e21 = k_10;
+            uint _e17 = k_11;
+            uint _e21 = k_11;
             _group_0_binding_2_cs[(base + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_10;
-            uint _e32 = k_10;
+            uint _e26 = k_11;
+            uint _e32 = k_11;
             _group_0_binding_2_cs[((base + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_10;
-            uint _e43 = k_10;
+            uint _e37 = k_11;
+            uint _e43 = k_11;
             _group_0_binding_2_cs[((base + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1107,7 +1122,7 @@ void fur_store(uint q, FurFamilies f_2) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_11 = 3u;
+    uint k_12 = 3u;
     uint base_1 = (16u * q_1);
     _group_0_binding_2_cs[base_1] = v_2.x;
     _group_0_binding_2_cs[(base_1 + 1u)] = v_2.y;
@@ -1115,17 +1130,17 @@ void fur_store_rgb(uint q_1, vec3 v_2) {
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e27 = k_11;
-            k_11 = (_e27 + 1u);
+            uint _e27 = k_12;
+            k_12 = (_e27 + 1u);
         }
         loop_init_6 = false;
-        uint _e19 = k_11;
+        uint _e19 = k_12;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_11;
+            uint _e23 = k_12;
             _group_0_binding_2_cs[(base_1 + _e23)] = 0.0;
         }
     }

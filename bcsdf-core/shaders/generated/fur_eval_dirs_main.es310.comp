@@ -77,6 +77,10 @@ struct FurParts {
     float a[5];
     FurRange ranges[5];
 };
+struct FurCoat {
+    vec3 rho2_;
+    vec3 r_rho;
+};
 const float FUR_PI = 3.1415927;
 const float FUR_HALF_PI = 1.5707964;
 const float FUR_TAU = 6.2831855;
@@ -1638,9 +1642,9 @@ FurSample fur_sample_far(float theta_r_7, vec3 u_5) {
     }
     FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_12 = (max(cos(_e189), 0.0) / _e178);
+    float k_13 = (max(cos(_e189), 0.0) / _e178);
     float _e194 = theta_i_4;
-    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_12), vec3(0.0)), family, true);
+    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_13), vec3(0.0)), family, true);
     FurSample _e202 = out_3;
     return _e202;
 }
@@ -1662,9 +1666,9 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_13 = min(uint(_e17), 62u);
+    uint k_14 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_13, (_e21 - float(k_13)));
+    return FurLoc(k_14, (_e21 - float(k_14)));
 }
 
 vec3 fur_rsqrt_newton(vec3 v_1) {
@@ -1688,8 +1692,8 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
 vec3 fur_exp_neg(vec3 x_in) {
     vec3 p_1 = vec3(0.00019875693);
     vec3 x_17 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_14 = roundEven((x_17 * FUR_LOG2_E));
-    vec3 r_15 = (((k_14 * FUR_LN2_HI) - x_17) + (k_14 * FUR_LN2_LO));
+    vec3 k_15 = roundEven((x_17 * FUR_LOG2_E));
+    vec3 r_15 = (((k_15 * FUR_LN2_HI) - x_17) + (k_15 * FUR_LN2_LO));
     vec3 z_1 = (r_15 * r_15);
     vec3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + vec3(0.0013981999));
@@ -1703,7 +1707,7 @@ vec3 fur_exp_neg(vec3 x_in) {
     p_1 = ((_e40 * r_15) + vec3(0.5));
     vec3 _e45 = p_1;
     vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_14))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+    return mix(ldexp(e, -(ivec3(k_15))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
 vec3 fur_erf(vec3 x_11) {
@@ -1742,12 +1746,6 @@ vec3 fur_dual_power(vec3 log2_mu, float k_9) {
     return _e6;
 }
 
-vec3 fur_dual_forward(vec3 a_f2_) {
-    vec3 a_9 = clamp(a_f2_, vec3(0.0), vec3(1.0));
-    vec3 _e9 = fur_rsqrt_newton(max(a_9, vec3(1e-30)));
-    return (a_9 * _e9);
-}
-
 vec3 fur_reflectance_squared(vec3 mu, vec3 t_9) {
     vec3 den_1 = (mu * (vec3(1.0) - (t_9 * mu)));
     vec3 _e14 = fur_dual_between(((mu - t_9) / max(den_1, vec3(1e-6))), vec3(1.0));
@@ -1762,14 +1760,18 @@ vec3 fur_downward_flux(vec3 mu_n, vec3 mu_2m, vec3 rho2_) {
     return mix(mu_n, _e18, greaterThan(den_2, vec3(1e-6)));
 }
 
-vec3 fur_backscatter_factor(vec3 mu_1, vec3 t_10, vec3 rho2_1, vec3 mu_2m_1) {
+vec3 fur_reflection_product(vec3 mu_1, vec3 t_10) {
+    vec3 _e11 = fur_dual_between((vec3(1.0) - (t_10 / max(mu_1, vec3(1e-6)))), vec3(1.0));
+    return _e11;
+}
+
+vec3 fur_backscatter_factor(vec3 r_rho, vec3 rho2_1, vec3 mu_2m_1) {
     vec3 tiny = vec3(1e-6);
     vec3 g_den = (vec3(1.0) - (rho2_1 * mu_2m_1));
     vec3 g_8 = ((vec3(1.0) - mu_2m_1) / max(g_den, tiny));
-    vec3 _e22 = fur_dual_between((vec3(1.0) - (t_10 / max(mu_1, tiny))), vec3(1.0));
-    vec3 den_3 = (vec3(1.0) - (_e22 * g_8));
-    vec3 _e35 = fur_dual_between(((g_8 * (vec3(1.0) - _e22)) / max(den_3, tiny)), vec3(1.0));
-    return mix(vec3(1.0), _e35, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
+    vec3 den_3 = (vec3(1.0) - (r_rho * g_8));
+    vec3 _e26 = fur_dual_between(((g_8 * (vec3(1.0) - r_rho)) / max(den_3, tiny)), vec3(1.0));
+    return mix(vec3(1.0), _e26, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
 }
 
 float fur_dual_clean(float x_13, float top_1) {
@@ -1799,30 +1801,30 @@ float fur_dual_below(float x_14) {
 }
 
 void fur_store(uint q, FurFamilies f_2) {
-    uint k_10 = 0u;
+    uint k_11 = 0u;
     uint base_1 = (16u * q);
     vec3 parts[5] = vec3[5](f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
-            uint _e46 = k_10;
-            k_10 = (_e46 + 1u);
+            uint _e46 = k_11;
+            k_11 = (_e46 + 1u);
         }
         loop_init_16 = false;
-        uint _e12 = k_10;
+        uint _e12 = k_11;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_10;
-            uint _e21 = k_10;
+            uint _e17 = k_11;
+            uint _e21 = k_11;
             _group_0_binding_2_cs[(base_1 + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_10;
-            uint _e32 = k_10;
+            uint _e26 = k_11;
+            uint _e32 = k_11;
             _group_0_binding_2_cs[((base_1 + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_10;
-            uint _e43 = k_10;
+            uint _e37 = k_11;
+            uint _e43 = k_11;
             _group_0_binding_2_cs[((base_1 + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1831,7 +1833,7 @@ void fur_store(uint q, FurFamilies f_2) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_11 = 3u;
+    uint k_12 = 3u;
     uint base_2 = (16u * q_1);
     _group_0_binding_2_cs[base_2] = v_2.x;
     _group_0_binding_2_cs[(base_2 + 1u)] = v_2.y;
@@ -1839,17 +1841,17 @@ void fur_store_rgb(uint q_1, vec3 v_2) {
     bool loop_init_17 = true;
     while(true) {
         if (!loop_init_17) {
-            uint _e27 = k_11;
-            k_11 = (_e27 + 1u);
+            uint _e27 = k_12;
+            k_12 = (_e27 + 1u);
         }
         loop_init_17 = false;
-        uint _e19 = k_11;
+        uint _e19 = k_12;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_11;
+            uint _e23 = k_12;
             _group_0_binding_2_cs[(base_2 + _e23)] = 0.0;
         }
     }

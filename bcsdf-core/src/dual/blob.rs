@@ -23,6 +23,7 @@
 //! Δ_b, σ_b0, ā_f², then each family's mean of x and its standard deviation (rad). Widths are
 //! stored as standard deviations, not variances: the narrowest (0.1°) stays a normal half.
 
+use super::coat::node_coat;
 use super::{coat_decay, local_backscatter, Attenuation, DualTables, PHI_NODES, THETA_NODES};
 use crate::baked::BakedBcsdf;
 use crate::lobes::FAMILY_COUNT;
@@ -56,6 +57,9 @@ pub(super) const SIGMA_B0: usize = 5;
 pub(super) const A_F2: usize = 6;
 pub(super) const MEAN: usize = 7;
 pub(super) const SD: usize = 7 + FAMILY_COUNT;
+/// Indices within a node of [`DualLut`]'s derived coat quantities: ρ² and rρ.
+pub(super) const RHO2: usize = 0;
+pub(super) const R_RHO: usize = 1;
 
 /// Smallest stored log₂ μ: a fiber letting through less than 2⁻²⁴ of the light.
 const MIN_LOG2_DECAY: f32 = -24.0;
@@ -138,6 +142,8 @@ pub struct DualLut {
     pub(super) source: u64,
     pub(super) nodes: [[[f32; 4]; FIELDS]; THETA_NODES],
     pub(super) n_g: [[[[f32; 4]; PHI_NODES]; THETA_NODES]; FAMILY_COUNT],
+    /// (ρ², rρ) of the coat at each θ node ([`super::coat::node_coat`]), derived at decode.
+    pub(super) coat: [[[f32; 4]; 2]; THETA_NODES],
 }
 
 /// Finite, saturated to the f16 range, rounded to the nearest half.
@@ -253,6 +259,7 @@ impl DualLut {
         source: 0,
         nodes: [[[0.0; 4]; FIELDS]; THETA_NODES],
         n_g: [[[[0.0; 4]; PHI_NODES]; THETA_NODES]; FAMILY_COUNT],
+        coat: [[[0.0; 4]; 2]; THETA_NODES],
     };
 
     /// Reads a `.furdual` blob into `self` after checking all of it: length, magic, format and
@@ -328,6 +335,13 @@ impl DualLut {
                     i += 1;
                 }
                 field[3] = 0.0;
+            }
+        }
+        for (node, coat) in self.nodes.iter().zip(self.coat.iter_mut()) {
+            for c in 0..4 {
+                let (rho2, r_rho) = node_coat(node[LOG2_DECAY][c], node[A_F2][c]);
+                coat[RHO2][c] = rho2;
+                coat[R_RHO][c] = r_rho;
             }
         }
         for family in self.n_g.iter_mut() {

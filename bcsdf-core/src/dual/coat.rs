@@ -11,6 +11,13 @@
 //! rρ = 1 − t/μ and ρ² = (μ − t)/(μ(1 − tμ)).
 //! For n layers, R_n = ρ(1 − μ²ⁿ)/(1 − ρ²μ²ⁿ) and T_n = μⁿ(1 − ρ²)/(1 − ρ²μ²ⁿ) (the
 //! adding recursion's closed form); over a black floor the m layers below reflect R_m.
+//!
+//! ρ² and rρ depend on the node alone: [`node_coat`] derives them once per θ node when a
+//! blob is decoded, and [`crate::dual::DualLut::eval`] interpolates them linearly between
+//! nodes like the stored fields (the shader derives them at both nodes and interpolates).
+
+use crate::math::{exp_neg_saturating, rsqrt_newton};
+use core::f32::consts::LN_2;
 
 /// Smallest denominator the closed forms divide by; below it (a lossless or nearly lossless
 /// layer with no fibers in the way) they keep the semi-infinite coat's value.
@@ -54,19 +61,28 @@ pub fn downward_flux(mu_n: f32, mu_2m: f32, rho2: f32) -> f32 {
     }
 }
 
+/// rρ = 1 − t/μ, the product of one layer's reflectance and the semi-infinite stack's, from
+/// its decay `mu` = μ and the layer's forward fraction `t` (μ(1 − rρ) = t), kept in [0, 1];
+/// 1 when μ is below 1e-6.
+#[inline(always)]
+#[must_use]
+// max/min, not clamp: NaN becomes 0.
+#[allow(clippy::manual_clamp)]
+pub fn reflection_product(mu: f32, t: f32) -> f32 {
+    (1.0 - t / mu.max(TINY)).max(0.0).min(1.0)
+}
+
 /// The local backscatter's energy with m layers below instead of the semi-infinite coat, as
 /// a factor on the stored energy (docs/model.md §13): the light the coat below sends up,
 /// U = R t/(1 − rR), with R_m = ρ·g, g = (1 − μ²ᵐ)/(1 − ρ²μ²ᵐ), in place of ρ:
-/// U_m/U_∞ = g(1 − rρ)/(1 − rρ·g), rρ = 1 − t/μ. From `mu` = μ, `t`, `rho2` = ρ² and
-/// `mu_2m` = μ²ᵐ: 1 for an infinite m, 0 for m = 0; in [0, 1]. A denominator below 1e-6
+/// U_m/U_∞ = g(1 − rρ)/(1 − rρ·g). From `r_rho` = rρ ([`reflection_product`]), `rho2` = ρ²
+/// and `mu_2m` = μ²ᵐ: 1 for an infinite m, 0 for m = 0; in [0, 1]. A denominator below 1e-6
 /// (a lossless layer at m = 0, or no transmission) gives 1.
 #[inline(always)]
 #[must_use]
-pub fn backscatter_factor(mu: f32, t: f32, rho2: f32, mu_2m: f32) -> f32 {
+pub fn backscatter_factor(r_rho: f32, rho2: f32, mu_2m: f32) -> f32 {
     let g_den = 1.0 - rho2 * mu_2m;
     let g = (1.0 - mu_2m) / g_den.max(TINY);
-    #[allow(clippy::manual_clamp)]
-    let r_rho = (1.0 - t / mu.max(TINY)).max(0.0).min(1.0);
     let den = 1.0 - r_rho * g;
     let f = g * (1.0 - r_rho) / den.max(TINY);
     #[allow(clippy::manual_clamp)]
@@ -76,4 +92,26 @@ pub fn backscatter_factor(mu: f32, t: f32, rho2: f32, mu_2m: f32) -> f32 {
     } else {
         1.0
     }
+}
+
+/// μᵏ = e^(−k·ln 2·(−log₂ μ)) for k ≥ 0 from the stored log₂ μ ≤ 0
+/// ([`exp_neg_saturating`]).
+#[inline(always)]
+#[must_use]
+pub fn power_of_decay(log2_mu: f32, k: f32) -> f32 {
+    exp_neg_saturating(-k * LN_2 * log2_mu)
+}
+
+/// (ρ², rρ) of one channel at one θ node from its stored fields: μ = 2^(log₂ μ)
+/// ([`power_of_decay`]) and t = ā_f = √(ā_f²) (ā_f² kept in [0, 1]; ā_f²/√(ā_f²) by
+/// [`rsqrt_newton`]), then [`reflectance_squared`] and [`reflection_product`]. What
+/// [`crate::dual::DualLut::decode`] derives per node and the shader's `fur_dual_coat_node`
+/// repeats.
+#[inline(always)]
+#[must_use]
+pub fn node_coat(log2_mu: f32, a_f2: f32) -> (f32, f32) {
+    let mu = power_of_decay(log2_mu, 1.0);
+    let a = a_f2.clamp(0.0, 1.0);
+    let t = a * rsqrt_newton(a.max(1e-30));
+    (reflectance_squared(mu, t), reflection_product(mu, t))
 }

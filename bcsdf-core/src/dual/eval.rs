@@ -2,8 +2,10 @@
 //! (docs/model.md §13), channels in the lanes of `[f32; 4]` rows so that the per-channel work
 //! (lerps, the six Gaussians) runs as straight-line lane loops.
 
-use super::blob::{A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, SD, SIGMA_B0};
-use super::coat::{backscatter_factor, downward_flux, reflectance_squared};
+use super::blob::{
+    A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, RHO2, R_RHO, SD, SIGMA_B0,
+};
+use super::coat::{backscatter_factor, downward_flux, power_of_decay};
 use super::{theta_position, Density, DualLut, Fibers, MIN_VARIANCE, PHI_NODES};
 use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::FAMILY_COUNT;
@@ -12,7 +14,7 @@ use crate::math::{
 };
 use crate::model::inv_cos2_theta_i;
 use crate::spectrum::Rgb;
-use core::f32::consts::{FRAC_1_SQRT_2, LN_2};
+use core::f32::consts::FRAC_1_SQRT_2;
 
 type Lanes = [f32; 4];
 
@@ -60,26 +62,18 @@ pub(super) fn gauss_reachable<const L: usize>(d: &[f32; L], v: &[f32; L], ti: f3
     out
 }
 
-/// μ = 2^(log₂ μ) and t = ā_f = √(ā_f²) of one channel from the stored fields, in lane
-/// arithmetic ([`exp_neg_saturating`], [`rsqrt_newton`]).
-#[inline(always)]
-fn decay_and_forward(log2_mu: f32, a_f2: f32) -> (f32, f32) {
-    let mu = power_of_decay(log2_mu, 1.0);
-    let a = a_f2.clamp(0.0, 1.0);
-    (mu, a * rsqrt_newton(a.max(1e-30)))
-}
-
-/// μᵏ = e^(−k·ln 2·(−log₂ μ)) for k ≥ 0 (log₂ μ ≤ 0).
-#[inline(always)]
-fn power_of_decay(log2_mu: f32, k: f32) -> f32 {
-    exp_neg_saturating(-k * LN_2 * log2_mu)
-}
-
 impl DualLut {
     /// Field `f` at θ (linear between nodes, clamped to the end nodes; NaN reads node 0).
     #[inline(always)]
     fn field(&self, (k, w): (usize, f32), f: usize) -> Lanes {
         lerp(&self.nodes[k][f], &self.nodes[k + 1][f], w)
+    }
+
+    /// Derived coat quantity `q` ([`RHO2`] or [`R_RHO`]) at θ, linear between the nodes' values
+    /// like [`DualLut::field`].
+    #[inline(always)]
+    fn coat(&self, (k, w): (usize, f32), q: usize) -> Lanes {
+        lerp(&self.coat[k][q], &self.coat[k + 1][q], w)
     }
 
     /// N^G of family `g` at θ node `k` and |φ| node `j` (bilinear with the corner weights
@@ -103,12 +97,14 @@ impl DualLut {
     /// V·d_b·f_back(0) + (T_f − V)·d_f·(f_s^scatter(σ_f²) + d_b·f_back(σ_f²)),
     ///
     /// - T_f = μⁿ(1 − ρ²μ²ᵐ)/(1 − ρ²μ²⁽ⁿ⁺ᵐ⁾) ([`super::coat::downward_flux`]), μ the stored
-    ///   decay and ρ² from μ and ā_f, at −θ_i (the light's path leaves the fibers above at
-    ///   θ ≈ −θ_i); σ_f² = n·β_f²(−θ_i);
+    ///   decay and ρ² derived from μ and ā_f at the θ nodes ([`super::coat::node_coat`], at
+    ///   decode) and interpolated between them, at −θ_i (the light's path leaves the fibers
+    ///   above at θ ≈ −θ_i); σ_f² = n·β_f²(−θ_i);
     /// - f_s^scatter(s²) = Σ_g N^G_g(θ_r, φ)·Ĝ(x − mean_g; sd_g² + s²)/cos²θ_i, x = θ_i + θ_r;
     /// - f_back(s²) = A·k_m·Ĝ(x − Δ_b; σ_b² + s²)/(π cos²θ_i), σ_b = (1 + d_b ā_f²)·σ_b0, A the
     ///   stored back-half or front-half energy of the local backscatter at θ_r and k_m its
-    ///   factor for m fibers below ([`super::coat::backscatter_factor`]);
+    ///   factor for m fibers below ([`super::coat::backscatter_factor`], from ρ² and rρ
+    ///   interpolated like T_f's ρ²);
     /// - Ĝ a Gaussian divided by its mass over the x the caller can reach at this θ_r
     ///   (θ_i ∈ [−π/2, π/2]; the mass kept at or above 0.05), so that each lobe returns its
     ///   stored energy.
@@ -131,12 +127,13 @@ impl DualLut {
         // The coat below at θ_r: m layers instead of the semi-infinite stack.
         let log2_mu_here = self.field(here, LOG2_DECAY);
         let a_f2 = self.field(here, A_F2);
+        let rho2_here = self.coat(here, RHO2);
+        let r_rho_here = self.coat(here, R_RHO);
         // Lane loops, not `array::from_fn` closures: those were left as calls per lane.
         let mut half = [0.0f32; 4];
         for c in 0..4 {
-            let (mu, t) = decay_and_forward(log2_mu_here[c], a_f2[c]);
             let mu_2m = power_of_decay(log2_mu_here[c], 2.0 * m);
-            half[c] = stored[c] * backscatter_factor(mu, t, reflectance_squared(mu, t), mu_2m);
+            half[c] = stored[c] * backscatter_factor(r_rho_here[c], rho2_here[c], mu_2m);
         }
         let sigma_b0 = self.field(here, SIGMA_B0);
         let delta = self.field(here, DELTA_B);
@@ -157,14 +154,13 @@ impl DualLut {
         if n > 0.0 {
             let along = theta_position(-ti);
             let log2_mu = self.field(along, LOG2_DECAY);
-            let a_f2_along = self.field(along, A_F2);
+            let rho2 = self.coat(along, RHO2);
             let beta_f = self.field(along, BETA_F);
             let mut spread = [0.0f32; 4];
             for c in 0..4 {
-                let (mu, t) = decay_and_forward(log2_mu[c], a_f2_along[c]);
                 let mu_n = power_of_decay(log2_mu[c], n);
                 let mu_2m = power_of_decay(log2_mu[c], 2.0 * m);
-                let t_f = downward_flux(mu_n, mu_2m, reflectance_squared(mu, t));
+                let t_f = downward_flux(mu_n, mu_2m, rho2[c]);
                 spread[c] = (t_f - direct).max(0.0) * d_f;
             }
             if spread.iter().any(|&s| s > 0.0) {

@@ -1,7 +1,9 @@
 //! The finite coat's closed forms ([`crate::dual::coat`]) against the adding recursion of
 //! two-stream layers, and the reachable-range normalisation of the term's Gaussians.
 
-use super::super::coat::{backscatter_factor, downward_flux, reflectance_squared};
+use super::super::coat::{
+    backscatter_factor, downward_flux, reflectance_squared, reflection_product,
+};
 use super::super::eval::gauss_reachable;
 use super::*;
 
@@ -50,7 +52,7 @@ fn the_closed_forms_are_the_adding_recursion() {
                 );
                 if r > 0.0 {
                     let want = up(r_m) / up(r_inf);
-                    let got = backscatter_factor(mu, t, rho2, mu_2m);
+                    let got = backscatter_factor(reflection_product(mu, t), rho2, mu_2m);
                     assert!(
                         (f64::from(got) - want).abs() < 1e-4,
                         "(t, r) = ({t}, {r}), m = {m}: factor {got} vs {want}"
@@ -80,8 +82,14 @@ fn the_limits_are_the_deep_coat_and_the_bare_skin() {
                 last = d;
             }
         }
-        assert_eq!(backscatter_factor(mu, t, rho2, 0.0), 1.0);
-        assert_eq!(backscatter_factor(mu, t, rho2, 1.0), 0.0);
+        assert_eq!(
+            backscatter_factor(reflection_product(mu, t), rho2, 0.0),
+            1.0
+        );
+        assert_eq!(
+            backscatter_factor(reflection_product(mu, t), rho2, 1.0),
+            0.0
+        );
     }
     // Degenerate layers: lossless (μ = 1), opaque (t = 0), NaN: finite, in range.
     for (mu, t) in [
@@ -96,7 +104,7 @@ fn the_limits_are_the_deep_coat_and_the_bare_skin() {
         for q in [0.0f32, 0.5, 1.0] {
             let mu_n = if mu.is_nan() { 0.0 } else { mu.clamp(0.0, 1.0) };
             let d = downward_flux(mu_n, q, rho2);
-            let k = backscatter_factor(mu, t, rho2, q);
+            let k = backscatter_factor(reflection_product(mu, t), rho2, q);
             assert!(
                 d.is_finite() && (0.0..=1.0).contains(&k),
                 "μ {mu} t {t} q {q}: {d} {k}"

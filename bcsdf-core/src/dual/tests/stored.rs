@@ -141,19 +141,17 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
     // The term recomputed from the decoded node values in f64, independent of the lane
     // code: Gaussians normalised over the reachable x by f64 erf, and the finite coat by the
     // adding recursion of layers (t, r), r recovered from μ + 1/μ = (1 + t² − r²)/t. Back
-    // half, n = 3 above (and n = 0), m = 2 below, default density. The evaluator interpolates the coat's
-    // ρ² and rρ between θ nodes where this recovers the layer from interpolated fields: at
-    // these angles the two differ by 2e-7 (relative), far inside the bound.
+    // half, n = 3 above (and n = 0), m = 2 below, default density. The evaluator
+    // interpolates the coat's ρ² and rρ between θ nodes where this recovers the layer from
+    // interpolated fields: at these angles the two differ by 2e-7 (relative), far inside
+    // the bound.
     let t = absorbing_tables();
     let lut = lut_of(&t, Attenuation::Coat);
     let (ti, tr, phi, n, m) = (0.31f32, -0.22f32, 0.7f32, 3u32, 2u32);
     let fibers = Fibers::new(n as f32, m as f32);
-    let got = lut.eval(&Angles::new(ti, tr, phi).unwrap(), fibers, Density::DEFAULT);
-    let direct = lut.eval(
-        &Angles::new(ti, tr, phi).unwrap(),
-        Fibers::new(0.0, m as f32),
-        Density::DEFAULT,
-    );
+    let angles = Angles::new(ti, tr, phi).unwrap();
+    let got = lut.eval(&angles, fibers, Density::DEFAULT);
+    let direct = lut.eval(&angles, Fibers::new(0.0, m as f32), Density::DEFAULT);
     let pi = std::f64::consts::PI;
     let g = |d: f64, v: f64| (-d * d / (2.0 * v)).exp() / (2.0 * pi * v).sqrt();
     // g divided by its mass over x ∈ [θ_r − π/2, θ_r + π/2].

@@ -1120,10 +1120,15 @@ fn fur_dual_theta(theta: f32) -> FurLoc {
     return FurLoc(k, t - f32(k));
 }
 
+// Field f at theta node k as stored (DualLut::nodes[k][f]).
+fn fur_dual_node(k: u32, f: u32) -> vec3<f32> {
+    return fur_dual_rgb(3u * (k * FUR_DUAL_FIELDS + f));
+}
+
 // Field f at theta (DualLut::field): linear between nodes k and k + 1, a + (b - a) w.
 fn fur_dual_field(l: FurLoc, f: u32) -> vec3<f32> {
-    let a = fur_dual_rgb(3u * (l.i * FUR_DUAL_FIELDS + f));
-    let b = fur_dual_rgb(3u * ((l.i + 1u) * FUR_DUAL_FIELDS + f));
+    let a = fur_dual_node(l.i, f);
+    let b = fur_dual_node(l.i + 1u, f);
     return a + (b - a) * l.w;
 }
 
@@ -1271,8 +1276,8 @@ struct FurCoat {
 }
 
 fn fur_dual_coat_node(k: u32) -> FurCoat {
-    let log2_mu = fur_dual_rgb(3u * (k * FUR_DUAL_FIELDS + FUR_DUAL_LOG2_DECAY));
-    let a = clamp(fur_dual_rgb(3u * (k * FUR_DUAL_FIELDS + FUR_DUAL_A_F2)), vec3<f32>(0.0), vec3<f32>(1.0));
+    let log2_mu = fur_dual_node(k, FUR_DUAL_LOG2_DECAY);
+    let a = clamp(fur_dual_node(k, FUR_DUAL_A_F2), vec3<f32>(0.0), vec3<f32>(1.0));
     let mu = fur_dual_power(log2_mu, 1.0);
     let t = a * fur_rsqrt_newton(max(a, vec3<f32>(1e-30)));
     return FurCoat(fur_reflectance_squared(mu, t), fur_reflection_product(mu, t));

@@ -398,9 +398,9 @@ FurDensity fur_density(uint d)
     uint _e49 = at;
     at = (_e49 + (12u * _e27));
     if ((d < 7u)) {
-        uint f_3 = (d - 3u);
+        uint f_4 = (d - 3u);
         uint _e57 = at;
-        const FurDensity furdensity_1 = ConstructFurDensity((_e57 + (((4u * f_3) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_3), 3u);
+        const FurDensity furdensity_1 = ConstructFurDensity((_e57 + (((4u * f_4) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_4), 3u);
         return furdensity_1;
     }
     uint _e74 = at;
@@ -1364,8 +1364,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             const float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_4 = (_e35 - t_6);
-            if ((f_4 > 0.0)) {
+            float f_5 = (_e35 - t_6);
+            if ((f_5 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1381,7 +1381,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_2 = (_e57 - (f_4 / dens));
+                float n_2 = (_e57 - (f_5 / dens));
                 float _e60 = lo_2;
                 if ((n_2 >= _e60)) {
                     float _e64 = hi_1;
@@ -1955,9 +1955,9 @@ FurSample fur_sample_far(float theta_r_7, float3 u_5)
     }
     const FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_13 = (max(cos(_e189), 0.0) / _e178);
+    float k_14 = (max(cos(_e189), 0.0) / _e178);
     float _e194 = theta_i_4;
-    out_3 = ConstructFurSample(_e194, _e173, _e178, max((_e188.total * k_13), (0.0).xxx), family, true);
+    out_3 = ConstructFurSample(_e194, _e173, _e178, max((_e188.total * k_14), (0.0).xxx), family, true);
     FurSample _e202 = out_3;
     const FurSample fursample_3 = _e202;
     return fursample_3;
@@ -2003,17 +2003,23 @@ FurLoc fur_dual_theta(float theta)
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_14 = min(naga_f2u32(_e17), 62u);
+    uint k_15 = min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    const FurLoc furloc_1 = ConstructFurLoc(k_14, (_e21 - float(k_14)));
+    const FurLoc furloc_1 = ConstructFurLoc(k_15, (_e21 - float(k_15)));
     return furloc_1;
 }
 
-float3 fur_dual_field(FurLoc l_4, uint f_1)
+float3 fur_dual_node(uint k_9, uint f_1)
 {
-    const float3 _e8 = fur_dual_rgb((3u * ((l_4.i * FUR_DUAL_FIELDS) + f_1)));
-    const float3 _e17 = fur_dual_rgb((3u * (((l_4.i + 1u) * FUR_DUAL_FIELDS) + f_1)));
-    return (_e8 + ((_e17 - _e8) * l_4.w));
+    const float3 _e7 = fur_dual_rgb((3u * ((k_9 * FUR_DUAL_FIELDS) + f_1)));
+    return _e7;
+}
+
+float3 fur_dual_field(FurLoc l_4, uint f_2)
+{
+    const float3 _e3 = fur_dual_node(l_4.i, f_2);
+    const float3 _e7 = fur_dual_node((l_4.i + 1u), f_2);
+    return (_e3 + ((_e7 - _e3) * l_4.w));
 }
 
 float3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p)
@@ -2062,8 +2068,8 @@ float3 fur_exp_neg(float3 x_in)
     float3 p_1 = (0.00019875693).xxx;
 
     float3 x_17 = min(max(x_in, (0.0).xxx), (87.0).xxx);
-    float3 k_15 = round((x_17 * FUR_LOG2_E));
-    float3 r_15 = (((k_15 * FUR_LN2_HI) - x_17) + (k_15 * FUR_LN2_LO));
+    float3 k_16 = round((x_17 * FUR_LOG2_E));
+    float3 r_15 = (((k_16 * FUR_LN2_HI) - x_17) + (k_16 * FUR_LN2_LO));
     float3 z_1 = (r_15 * r_15);
     float3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + (0.0013981999).xxx);
@@ -2077,7 +2083,7 @@ float3 fur_exp_neg(float3 x_in)
     p_1 = ((_e40 * r_15) + (0.5).xxx);
     float3 _e45 = p_1;
     float3 e = (((_e45 * z_1) + r_15) + (1.0).xxx);
-    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e, naga_neg(naga_f2i32(k_15))));
+    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e, naga_neg(naga_f2i32(k_16))));
 }
 
 float3 fur_erf(float3 x_11)
@@ -2114,9 +2120,9 @@ float3 fur_dual_gauss(float3 d_6, float3 v_in, float theta_i_5)
     return (g_7 / max(mass_1, (0.05).xxx));
 }
 
-float3 fur_dual_power(float3 log2_mu, float k_9)
+float3 fur_dual_power(float3 log2_mu, float k_10)
 {
-    const float3 _e6 = fur_exp_neg(((-(k_9) * FUR_LN2_) * log2_mu));
+    const float3 _e6 = fur_exp_neg(((-(k_10) * FUR_LN2_) * log2_mu));
     return _e6;
 }
 
@@ -2159,17 +2165,17 @@ FurCoat ConstructFurCoat(float3 arg0, float3 arg1) {
     return ret;
 }
 
-FurCoat fur_dual_coat_node(uint k_10)
+FurCoat fur_dual_coat_node(uint k_11)
 {
-    const float3 _e7 = fur_dual_rgb((3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_LOG2_DECAY)));
-    const float3 _e14 = fur_dual_rgb((3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_A_F2_)));
-    float3 a_9 = clamp(_e14, (0.0).xxx, (1.0).xxx);
-    const float3 _e21 = fur_dual_power(_e7, 1.0);
-    const float3 _e25 = fur_rsqrt_newton(max(a_9, (1e-30).xxx));
-    float3 t_15 = (a_9 * _e25);
-    const float3 _e27 = fur_reflectance_squared(_e21, t_15);
-    const float3 _e28 = fur_reflection_product(_e21, t_15);
-    const FurCoat furcoat = ConstructFurCoat(_e27, _e28);
+    const float3 _e2 = fur_dual_node(k_11, FUR_DUAL_LOG2_DECAY);
+    const float3 _e4 = fur_dual_node(k_11, FUR_DUAL_A_F2_);
+    float3 a_9 = clamp(_e4, (0.0).xxx, (1.0).xxx);
+    const float3 _e11 = fur_dual_power(_e2, 1.0);
+    const float3 _e15 = fur_rsqrt_newton(max(a_9, (1e-30).xxx));
+    float3 t_15 = (a_9 * _e15);
+    const float3 _e17 = fur_reflectance_squared(_e11, t_15);
+    const float3 _e18 = fur_reflection_product(_e11, t_15);
+    const FurCoat furcoat = ConstructFurCoat(_e17, _e18);
     return furcoat;
 }
 
@@ -2334,36 +2340,36 @@ ret_Constructarray5_float3_ Constructarray5_float3_(float3 arg0, float3 arg1, fl
     return ret;
 }
 
-void fur_store(uint q, FurFamilies f_2)
+void fur_store(uint q, FurFamilies f_3)
 {
-    uint k_11 = 0u;
+    uint k_12 = 0u;
 
     uint base_1 = (16u * q);
-    float3 parts[5] = Constructarray5_float3_(f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
+    float3 parts[5] = Constructarray5_float3_(f_3.r, f_3.tt, f_3.trt, f_3.scattered, f_3.total);
     uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
     bool loop_init_17 = true;
     while(true) {
         if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e46 = k_11;
-            k_11 = (_e46 + 1u);
+            uint _e46 = k_12;
+            k_12 = (_e46 + 1u);
         }
         loop_init_17 = false;
-        uint _e12 = k_11;
+        uint _e12 = k_12;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_11;
-            uint _e21 = k_11;
+            uint _e17 = k_12;
+            uint _e21 = k_12;
             fur_results.Store((base_1 + (3u * _e17))*4, asuint(parts[min(uint(_e21), 4u)].x));
-            uint _e26 = k_11;
-            uint _e32 = k_11;
+            uint _e26 = k_12;
+            uint _e32 = k_12;
             fur_results.Store(((base_1 + (3u * _e26)) + 1u)*4, asuint(parts[min(uint(_e32), 4u)].y));
-            uint _e37 = k_11;
-            uint _e43 = k_11;
+            uint _e37 = k_12;
+            uint _e43 = k_12;
             fur_results.Store(((base_1 + (3u * _e37)) + 2u)*4, asuint(parts[min(uint(_e43), 4u)].z));
         }
     }
@@ -2373,7 +2379,7 @@ void fur_store(uint q, FurFamilies f_2)
 
 void fur_store_rgb(uint q_1, float3 v_2)
 {
-    uint k_12 = 3u;
+    uint k_13 = 3u;
 
     uint base_2 = (16u * q_1);
     fur_results.Store(base_2*4, asuint(v_2.x));
@@ -2385,17 +2391,17 @@ void fur_store_rgb(uint q_1, float3 v_2)
         if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e27 = k_12;
-            k_12 = (_e27 + 1u);
+            uint _e27 = k_13;
+            k_13 = (_e27 + 1u);
         }
         loop_init_18 = false;
-        uint _e19 = k_12;
+        uint _e19 = k_13;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_12;
+            uint _e23 = k_13;
             fur_results.Store((base_2 + _e23)*4, asuint(0.0));
         }
     }

@@ -389,9 +389,9 @@ FurDensity fur_density(
     uint _e49 = at;
     at = _e49 + (12u * _e27);
     if (d < 7u) {
-        uint f_3 = d - 3u;
+        uint f_4 = d - 3u;
         uint _e57 = at;
-        return FurDensity {_e57 + (((4u * f_3) * _e4) * _e29), _e29, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 3u * f_3, 3u};
+        return FurDensity {_e57 + (((4u * f_4) * _e4) * _e29), _e29, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 3u * f_4, 3u};
     }
     uint _e74 = at;
     at = _e74 + ((16u * _e4) * _e29);
@@ -1398,8 +1398,8 @@ float fur_invert_sliver_piece(
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_4 = _e35 - t_6;
-            if (f_4 > 0.0) {
+            float f_5 = _e35 - t_6;
+            if (f_5 > 0.0) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1415,7 +1415,7 @@ float fur_invert_sliver_piece(
             next_1 = 0.5 * (_e49 + _e50);
             if (dens > 0.0) {
                 float _e57 = d_4;
-                float n_2 = _e57 - (f_4 / dens);
+                float n_2 = _e57 - (f_5 / dens);
                 float _e60 = lo_2;
                 if (n_2 >= _e60) {
                     float _e64 = hi_1;
@@ -1990,9 +1990,9 @@ FurSample fur_sample_far(
     }
     FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_13 = metal::max(metal::cos(_e189), 0.0) / _e178;
+    float k_14 = metal::max(metal::cos(_e189), 0.0) / _e178;
     float _e194 = theta_i_4;
-    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_13, metal::float3(0.0)), family, true};
+    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_14, metal::float3(0.0)), family, true};
     FurSample _e202 = out_3;
     return _e202;
 }
@@ -2045,20 +2045,30 @@ FurLoc fur_dual_theta(
     float _e14 = t_8;
     t_8 = metal::min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_14 = metal::min(naga_f2u32(_e17), 62u);
+    uint k_15 = metal::min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc {k_14, _e21 - static_cast<float>(k_14)};
+    return FurLoc {k_15, _e21 - static_cast<float>(k_15)};
 }
 
-metal::float3 fur_dual_field(
-    FurLoc l_4,
+metal::float3 fur_dual_node(
+    uint k_9,
     uint f_1,
     device type_1 const& fur_dual,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e8 = fur_dual_rgb(3u * ((l_4.i * FUR_DUAL_FIELDS) + f_1), fur_dual, _buffer_sizes);
-    metal::float3 _e17 = fur_dual_rgb(3u * (((l_4.i + 1u) * FUR_DUAL_FIELDS) + f_1), fur_dual, _buffer_sizes);
-    return _e8 + ((_e17 - _e8) * l_4.w);
+    metal::float3 _e7 = fur_dual_rgb(3u * ((k_9 * FUR_DUAL_FIELDS) + f_1), fur_dual, _buffer_sizes);
+    return _e7;
+}
+
+metal::float3 fur_dual_field(
+    FurLoc l_4,
+    uint f_2,
+    device type_1 const& fur_dual,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = fur_dual_node(l_4.i, f_2, fur_dual, _buffer_sizes);
+    metal::float3 _e7 = fur_dual_node(l_4.i + 1u, f_2, fur_dual, _buffer_sizes);
+    return _e3 + ((_e7 - _e3) * l_4.w);
 }
 
 metal::float3 fur_dual_ng(
@@ -2112,8 +2122,8 @@ metal::float3 fur_exp_neg(
 ) {
     metal::float3 p_1 = metal::float3(0.00019875693);
     metal::float3 x_17 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
-    metal::float3 k_15 = metal::rint(x_17 * FUR_LOG2_E);
-    metal::float3 r_15 = ((k_15 * FUR_LN2_HI) - x_17) + (k_15 * FUR_LN2_LO);
+    metal::float3 k_16 = metal::rint(x_17 * FUR_LOG2_E);
+    metal::float3 r_15 = ((k_16 * FUR_LN2_HI) - x_17) + (k_16 * FUR_LN2_LO);
     metal::float3 z_1 = r_15 * r_15;
     metal::float3 _e20 = p_1;
     p_1 = (_e20 * r_15) + metal::float3(0.0013981999);
@@ -2127,7 +2137,7 @@ metal::float3 fur_exp_neg(
     p_1 = (_e40 * r_15) + metal::float3(0.5);
     metal::float3 _e45 = p_1;
     metal::float3 e = ((_e45 * z_1) + r_15) + metal::float3(1.0);
-    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_15))), metal::float3(0.0), x_in > metal::float3(87.0));
+    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_16))), metal::float3(0.0), x_in > metal::float3(87.0));
 }
 
 metal::float3 fur_erf(
@@ -2172,9 +2182,9 @@ metal::float3 fur_dual_gauss(
 
 metal::float3 fur_dual_power(
     metal::float3 log2_mu,
-    float k_9
+    float k_10
 ) {
-    metal::float3 _e6 = fur_exp_neg((-(k_9) * FUR_LN2_) * log2_mu);
+    metal::float3 _e6 = fur_exp_neg((-(k_10) * FUR_LN2_) * log2_mu);
     return _e6;
 }
 
@@ -2221,19 +2231,19 @@ metal::float3 fur_backscatter_factor(
 }
 
 FurCoat fur_dual_coat_node(
-    uint k_10,
+    uint k_11,
     device type_1 const& fur_dual,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e7 = fur_dual_rgb(3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_LOG2_DECAY), fur_dual, _buffer_sizes);
-    metal::float3 _e14 = fur_dual_rgb(3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_A_F2_), fur_dual, _buffer_sizes);
-    metal::float3 a_9 = metal::clamp(_e14, metal::float3(0.0), metal::float3(1.0));
-    metal::float3 _e21 = fur_dual_power(_e7, 1.0);
-    metal::float3 _e25 = fur_rsqrt_newton(metal::max(a_9, metal::float3(0.000000000000000000000000000001)));
-    metal::float3 t_15 = a_9 * _e25;
-    metal::float3 _e27 = fur_reflectance_squared(_e21, t_15);
-    metal::float3 _e28 = fur_reflection_product(_e21, t_15);
-    return FurCoat {_e27, _e28};
+    metal::float3 _e2 = fur_dual_node(k_11, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
+    metal::float3 _e4 = fur_dual_node(k_11, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
+    metal::float3 a_9 = metal::clamp(_e4, metal::float3(0.0), metal::float3(1.0));
+    metal::float3 _e11 = fur_dual_power(_e2, 1.0);
+    metal::float3 _e15 = fur_rsqrt_newton(metal::max(a_9, metal::float3(0.000000000000000000000000000001)));
+    metal::float3 t_15 = a_9 * _e15;
+    metal::float3 _e17 = fur_reflectance_squared(_e11, t_15);
+    metal::float3 _e18 = fur_reflection_product(_e11, t_15);
+    return FurCoat {_e17, _e18};
 }
 
 FurCoat fur_dual_coat(
@@ -2413,37 +2423,37 @@ metal::float3 fur_eval_dual_dirs(
 
 void fur_store(
     uint q,
-    FurFamilies f_2,
+    FurFamilies f_3,
     device type_18& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_11 = 0u;
+    uint k_12 = 0u;
     uint base_1 = 16u * q;
-    type_19 parts = type_19 {{f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total}};
+    type_19 parts = type_19 {{f_3.r, f_3.tt, f_3.trt, f_3.scattered, f_3.total}};
     uint2 loop_bound_18 = uint2(4294967295u);
     bool loop_init_17 = true;
     while(true) {
         if (metal::all(loop_bound_18 == uint2(0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e46 = k_11;
-            k_11 = _e46 + 1u;
+            uint _e46 = k_12;
+            k_12 = _e46 + 1u;
         }
         loop_init_17 = false;
-        uint _e12 = k_11;
+        uint _e12 = k_12;
         if (_e12 < 5u) {
         } else {
             break;
         }
         {
-            uint _e17 = k_11;
-            uint _e21 = k_11;
+            uint _e17 = k_12;
+            uint _e21 = k_12;
             fur_results[base_1 + (3u * _e17)] = parts.inner[_e21].x;
-            uint _e26 = k_11;
-            uint _e32 = k_11;
+            uint _e26 = k_12;
+            uint _e32 = k_12;
             fur_results[(base_1 + (3u * _e26)) + 1u] = parts.inner[_e32].y;
-            uint _e37 = k_11;
-            uint _e43 = k_11;
+            uint _e37 = k_12;
+            uint _e43 = k_12;
             fur_results[(base_1 + (3u * _e37)) + 2u] = parts.inner[_e43].z;
         }
     }
@@ -2457,7 +2467,7 @@ void fur_store_rgb(
     device type_18& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_12 = 3u;
+    uint k_13 = 3u;
     uint base_2 = 16u * q_1;
     fur_results[base_2] = v_2.x;
     fur_results[base_2 + 1u] = v_2.y;
@@ -2468,17 +2478,17 @@ void fur_store_rgb(
         if (metal::all(loop_bound_19 == uint2(0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e27 = k_12;
-            k_12 = _e27 + 1u;
+            uint _e27 = k_13;
+            k_13 = _e27 + 1u;
         }
         loop_init_18 = false;
-        uint _e19 = k_12;
+        uint _e19 = k_13;
         if (_e19 < 16u) {
         } else {
             break;
         }
         {
-            uint _e23 = k_12;
+            uint _e23 = k_13;
             fur_results[base_2 + _e23] = 0.0;
         }
     }

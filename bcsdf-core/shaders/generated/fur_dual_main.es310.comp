@@ -704,8 +704,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_3 = (_e35 - t_6);
-            if ((f_3 > 0.0)) {
+            float f_4 = (_e35 - t_6);
+            if ((f_4 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -721,7 +721,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_2 = (_e57 - (f_3 / dens));
+                float n_2 = (_e57 - (f_4 / dens));
                 float _e60 = lo_2;
                 if ((n_2 >= _e60)) {
                     float _e64 = hi_1;
@@ -810,15 +810,20 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_13 = min(uint(_e17), 62u);
+    uint k_14 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_13, (_e21 - float(k_13)));
+    return FurLoc(k_14, (_e21 - float(k_14)));
 }
 
-vec3 fur_dual_field(FurLoc l_4, uint f_1) {
-    vec3 _e8 = fur_dual_rgb((3u * ((l_4.i * FUR_DUAL_FIELDS) + f_1)));
-    vec3 _e17 = fur_dual_rgb((3u * (((l_4.i + 1u) * FUR_DUAL_FIELDS) + f_1)));
-    return (_e8 + ((_e17 - _e8) * l_4.w));
+vec3 fur_dual_node(uint k_9, uint f_1) {
+    vec3 _e7 = fur_dual_rgb((3u * ((k_9 * FUR_DUAL_FIELDS) + f_1)));
+    return _e7;
+}
+
+vec3 fur_dual_field(FurLoc l_4, uint f_2) {
+    vec3 _e3 = fur_dual_node(l_4.i, f_2);
+    vec3 _e7 = fur_dual_node((l_4.i + 1u), f_2);
+    return (_e3 + ((_e7 - _e3) * l_4.w));
 }
 
 vec3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p) {
@@ -854,8 +859,8 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
 vec3 fur_exp_neg(vec3 x_in) {
     vec3 p_1 = vec3(0.00019875693);
     vec3 x_16 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_14 = roundEven((x_16 * FUR_LOG2_E));
-    vec3 r_15 = (((k_14 * FUR_LN2_HI) - x_16) + (k_14 * FUR_LN2_LO));
+    vec3 k_15 = roundEven((x_16 * FUR_LOG2_E));
+    vec3 r_15 = (((k_15 * FUR_LN2_HI) - x_16) + (k_15 * FUR_LN2_LO));
     vec3 z_1 = (r_15 * r_15);
     vec3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + vec3(0.0013981999));
@@ -869,7 +874,7 @@ vec3 fur_exp_neg(vec3 x_in) {
     p_1 = ((_e40 * r_15) + vec3(0.5));
     vec3 _e45 = p_1;
     vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_14))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+    return mix(ldexp(e, -(ivec3(k_15))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
 vec3 fur_erf(vec3 x_11) {
@@ -903,8 +908,8 @@ vec3 fur_dual_gauss(vec3 d_6, vec3 v_in, float theta_i_5) {
     return (g_7 / max(mass, vec3(0.05)));
 }
 
-vec3 fur_dual_power(vec3 log2_mu, float k_9) {
-    vec3 _e6 = fur_exp_neg(((-(k_9) * FUR_LN2_) * log2_mu));
+vec3 fur_dual_power(vec3 log2_mu, float k_10) {
+    vec3 _e6 = fur_exp_neg(((-(k_10) * FUR_LN2_) * log2_mu));
     return _e6;
 }
 
@@ -936,16 +941,16 @@ vec3 fur_backscatter_factor(vec3 r_rho, vec3 rho2_1, vec3 mu_2m_1) {
     return mix(vec3(1.0), _e26, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
 }
 
-FurCoat fur_dual_coat_node(uint k_10) {
-    vec3 _e7 = fur_dual_rgb((3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_LOG2_DECAY)));
-    vec3 _e14 = fur_dual_rgb((3u * ((k_10 * FUR_DUAL_FIELDS) + FUR_DUAL_A_F2_)));
-    vec3 a_8 = clamp(_e14, vec3(0.0), vec3(1.0));
-    vec3 _e21 = fur_dual_power(_e7, 1.0);
-    vec3 _e25 = fur_rsqrt_newton(max(a_8, vec3(1e-30)));
-    vec3 t_13 = (a_8 * _e25);
-    vec3 _e27 = fur_reflectance_squared(_e21, t_13);
-    vec3 _e28 = fur_reflection_product(_e21, t_13);
-    return FurCoat(_e27, _e28);
+FurCoat fur_dual_coat_node(uint k_11) {
+    vec3 _e2 = fur_dual_node(k_11, FUR_DUAL_LOG2_DECAY);
+    vec3 _e4 = fur_dual_node(k_11, FUR_DUAL_A_F2_);
+    vec3 a_8 = clamp(_e4, vec3(0.0), vec3(1.0));
+    vec3 _e11 = fur_dual_power(_e2, 1.0);
+    vec3 _e15 = fur_rsqrt_newton(max(a_8, vec3(1e-30)));
+    vec3 t_13 = (a_8 * _e15);
+    vec3 _e17 = fur_reflectance_squared(_e11, t_13);
+    vec3 _e18 = fur_reflection_product(_e11, t_13);
+    return FurCoat(_e17, _e18);
 }
 
 FurCoat fur_dual_coat(FurLoc l_6) {
@@ -1091,31 +1096,31 @@ vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fi
     return _e15;
 }
 
-void fur_store(uint q, FurFamilies f_2) {
-    uint k_11 = 0u;
+void fur_store(uint q, FurFamilies f_3) {
+    uint k_12 = 0u;
     uint base = (16u * q);
-    vec3 parts[5] = vec3[5](f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
+    vec3 parts[5] = vec3[5](f_3.r, f_3.tt, f_3.trt, f_3.scattered, f_3.total);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e46 = k_11;
-            k_11 = (_e46 + 1u);
+            uint _e46 = k_12;
+            k_12 = (_e46 + 1u);
         }
         loop_init_5 = false;
-        uint _e12 = k_11;
+        uint _e12 = k_12;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_11;
-            uint _e21 = k_11;
+            uint _e17 = k_12;
+            uint _e21 = k_12;
             _group_0_binding_2_cs[(base + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_11;
-            uint _e32 = k_11;
+            uint _e26 = k_12;
+            uint _e32 = k_12;
             _group_0_binding_2_cs[((base + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_11;
-            uint _e43 = k_11;
+            uint _e37 = k_12;
+            uint _e43 = k_12;
             _group_0_binding_2_cs[((base + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1124,7 +1129,7 @@ void fur_store(uint q, FurFamilies f_2) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_12 = 3u;
+    uint k_13 = 3u;
     uint base_1 = (16u * q_1);
     _group_0_binding_2_cs[base_1] = v_2.x;
     _group_0_binding_2_cs[(base_1 + 1u)] = v_2.y;
@@ -1132,17 +1137,17 @@ void fur_store_rgb(uint q_1, vec3 v_2) {
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e27 = k_12;
-            k_12 = (_e27 + 1u);
+            uint _e27 = k_13;
+            k_13 = (_e27 + 1u);
         }
         loop_init_6 = false;
-        uint _e19 = k_12;
+        uint _e19 = k_13;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_12;
+            uint _e23 = k_13;
             _group_0_binding_2_cs[(base_1 + _e23)] = 0.0;
         }
     }

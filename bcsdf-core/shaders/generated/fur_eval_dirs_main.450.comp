@@ -309,9 +309,9 @@ FurDensity fur_density(uint d) {
     uint _e49 = at;
     at = (_e49 + (12u * _e27));
     if ((d < 7u)) {
-        uint f_3 = (d - 3u);
+        uint f_4 = (d - 3u);
         uint _e57 = at;
-        return FurDensity((_e57 + (((4u * f_3) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_3), 3u);
+        return FurDensity((_e57 + (((4u * f_4) * _e4) * _e29)), _e29, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, (3u * f_4), 3u);
     }
     uint _e74 = at;
     at = (_e74 + ((16u * _e4) * _e29));
@@ -1138,8 +1138,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_4 = (_e35 - t_6);
-            if ((f_4 > 0.0)) {
+            float f_5 = (_e35 - t_6);
+            if ((f_5 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1155,7 +1155,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_2 = (_e57 - (f_4 / dens));
+                float n_2 = (_e57 - (f_5 / dens));
                 float _e60 = lo_2;
                 if ((n_2 >= _e60)) {
                     float _e64 = hi_1;
@@ -1640,9 +1640,9 @@ FurSample fur_sample_far(float theta_r_7, vec3 u_5) {
     }
     FurFamilies _e188 = fur_assemble(_e175);
     float _e189 = theta_i_4;
-    float k_13 = (max(cos(_e189), 0.0) / _e178);
+    float k_14 = (max(cos(_e189), 0.0) / _e178);
     float _e194 = theta_i_4;
-    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_13), vec3(0.0)), family, true);
+    out_3 = FurSample(_e194, _e173, _e178, max((_e188.total * k_14), vec3(0.0)), family, true);
     FurSample _e202 = out_3;
     return _e202;
 }
@@ -1664,9 +1664,9 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_14 = min(uint(_e17), 62u);
+    uint k_15 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_14, (_e21 - float(k_14)));
+    return FurLoc(k_15, (_e21 - float(k_15)));
 }
 
 vec3 fur_rsqrt_newton(vec3 v_1) {
@@ -1690,8 +1690,8 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
 vec3 fur_exp_neg(vec3 x_in) {
     vec3 p_1 = vec3(0.00019875693);
     vec3 x_17 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_15 = roundEven((x_17 * FUR_LOG2_E));
-    vec3 r_15 = (((k_15 * FUR_LN2_HI) - x_17) + (k_15 * FUR_LN2_LO));
+    vec3 k_16 = roundEven((x_17 * FUR_LOG2_E));
+    vec3 r_15 = (((k_16 * FUR_LN2_HI) - x_17) + (k_16 * FUR_LN2_LO));
     vec3 z_1 = (r_15 * r_15);
     vec3 _e20 = p_1;
     p_1 = ((_e20 * r_15) + vec3(0.0013981999));
@@ -1705,7 +1705,7 @@ vec3 fur_exp_neg(vec3 x_in) {
     p_1 = ((_e40 * r_15) + vec3(0.5));
     vec3 _e45 = p_1;
     vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_15))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+    return mix(ldexp(e, -(ivec3(k_16))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
 vec3 fur_erf(vec3 x_11) {
@@ -1739,8 +1739,8 @@ vec3 fur_dual_gauss(vec3 d_6, vec3 v_in, float theta_i_5) {
     return (g_7 / max(mass_1, vec3(0.05)));
 }
 
-vec3 fur_dual_power(vec3 log2_mu, float k_9) {
-    vec3 _e6 = fur_exp_neg(((-(k_9) * FUR_LN2_) * log2_mu));
+vec3 fur_dual_power(vec3 log2_mu, float k_10) {
+    vec3 _e6 = fur_exp_neg(((-(k_10) * FUR_LN2_) * log2_mu));
     return _e6;
 }
 
@@ -1798,31 +1798,31 @@ float fur_dual_below(float x_14) {
     return (_e14 ? min(x_14, FUR_DUAL_MAX_FIBERS) : deep);
 }
 
-void fur_store(uint q, FurFamilies f_2) {
-    uint k_11 = 0u;
+void fur_store(uint q, FurFamilies f_3) {
+    uint k_12 = 0u;
     uint base_1 = (16u * q);
-    vec3 parts[5] = vec3[5](f_2.r, f_2.tt, f_2.trt, f_2.scattered, f_2.total);
+    vec3 parts[5] = vec3[5](f_3.r, f_3.tt, f_3.trt, f_3.scattered, f_3.total);
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
-            uint _e46 = k_11;
-            k_11 = (_e46 + 1u);
+            uint _e46 = k_12;
+            k_12 = (_e46 + 1u);
         }
         loop_init_16 = false;
-        uint _e12 = k_11;
+        uint _e12 = k_12;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_11;
-            uint _e21 = k_11;
+            uint _e17 = k_12;
+            uint _e21 = k_12;
             _group_0_binding_2_cs[(base_1 + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_11;
-            uint _e32 = k_11;
+            uint _e26 = k_12;
+            uint _e32 = k_12;
             _group_0_binding_2_cs[((base_1 + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_11;
-            uint _e43 = k_11;
+            uint _e37 = k_12;
+            uint _e43 = k_12;
             _group_0_binding_2_cs[((base_1 + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1831,7 +1831,7 @@ void fur_store(uint q, FurFamilies f_2) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_12 = 3u;
+    uint k_13 = 3u;
     uint base_2 = (16u * q_1);
     _group_0_binding_2_cs[base_2] = v_2.x;
     _group_0_binding_2_cs[(base_2 + 1u)] = v_2.y;
@@ -1839,17 +1839,17 @@ void fur_store_rgb(uint q_1, vec3 v_2) {
     bool loop_init_17 = true;
     while(true) {
         if (!loop_init_17) {
-            uint _e27 = k_12;
-            k_12 = (_e27 + 1u);
+            uint _e27 = k_13;
+            k_13 = (_e27 + 1u);
         }
         loop_init_17 = false;
-        uint _e19 = k_12;
+        uint _e19 = k_13;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_12;
+            uint _e23 = k_13;
             _group_0_binding_2_cs[(base_2 + _e23)] = 0.0;
         }
     }

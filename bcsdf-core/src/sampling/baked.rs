@@ -252,6 +252,11 @@ mod tests {
     }
 
     /// Checks `r.invert` against [`integral`] at 41 targets; returns the count.
+    /// Target masses per row: under Miri (CI's unsafe-code check, ~10⁴ times slower) a fifth,
+    /// the same rows and both ends.
+    const TARGETS: usize = if cfg!(miri) { 8 } else { 40 };
+
+    /// One row's total and [`TARGETS`] + 1 inversions against the f64 integral; returns 1.
     fn check_inversion(r: &Rows<'_>, what: &str, weight: impl Fn(f64) -> f64 + Copy) -> usize {
         let total = r.total();
         let end = r.origin + r.step * (r.nodes - 1) as f32;
@@ -260,8 +265,8 @@ mod tests {
             (f64::from(total) - exact).abs() <= 1e-5 * exact + 1e-12,
             "{what}: total {total} vs {exact}"
         );
-        for k in 0..=40 {
-            let t = total * k as f32 / 40.0;
+        for k in 0..=TARGETS {
+            let t = total * k as f32 / TARGETS as f32;
             let x = r.invert(t);
             let got = integral(r, x, weight);
             assert!(
@@ -269,7 +274,7 @@ mod tests {
                 "{what}: ∫ to {x} = {got}, wanted {t}"
             );
         }
-        41
+        1
     }
 
     #[test]
@@ -306,7 +311,7 @@ mod tests {
                 });
             }
         }
-        assert!(checked > 1000);
+        assert!(checked >= 25, "{checked} rows");
     }
 
     #[test]
@@ -314,7 +319,9 @@ mod tests {
         let b = blob();
         let lut = BakedBcsdf::from_bytes(&b).unwrap();
         let mut drawn = 0;
-        for k in 0..400 {
+        // Under Miri (CI's unsafe-code check) a quarter of the draws: every θ_r still.
+        let draws = if cfg!(miri) { 100 } else { 400 };
+        for k in 0..draws {
             let theta_r = -1.5 + 3.0 * (k % 20) as f32 / 19.0;
             let u = [
                 (k as f32 * 0.618_034) % 1.0,
@@ -339,7 +346,7 @@ mod tests {
                 assert!((w - v * k).abs() <= 1e-5 * (v * k).max(1e-6), "{s:?}");
             }
         }
-        assert!(drawn > 300, "{drawn}");
+        assert!(drawn > draws * 3 / 4, "{drawn} of {draws}");
         // Invalid θ_r: nothing drawn.
         assert!(lut.sample(f32::NAN, [0.5; 3]).is_none());
         assert!(lut.sample(1.6, [0.5; 3]).is_none());

@@ -251,12 +251,12 @@ mod tests {
         acc
     }
 
-    /// Checks `r.invert` against [`integral`] at 41 targets; returns the count.
     /// Target masses per row: under Miri (CI's unsafe-code check, ~10⁴ times slower) a fifth,
     /// the same rows and both ends.
     const TARGETS: usize = if cfg!(miri) { 8 } else { 40 };
 
-    /// One row's total and [`TARGETS`] + 1 inversions against the f64 integral; returns 1.
+    /// Checks one row's total and `r.invert` at [`TARGETS`] + 1 target masses against
+    /// [`integral`]; returns 1 (the caller counts rows).
     fn check_inversion(r: &Rows<'_>, what: &str, weight: impl Fn(f64) -> f64 + Copy) -> usize {
         let total = r.total();
         let end = r.origin + r.step * (r.nodes - 1) as f32;

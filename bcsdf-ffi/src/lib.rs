@@ -17,8 +17,9 @@
 //!   with `FUR_ERR_OTHER_BUILD`; corrupt LUT bytes are refused by `fur_lut_open` with a
 //!   status naming the problem;
 //! - no panic can cross the boundary: the paths below are written without panicking
-//!   operations (checked conversions, `get` instead of indexing), release builds use
-//!   `panic = "abort"` (workspace profile), the no_std build's panic handler traps
+//!   operations (checked conversions, `get` instead of indexing), a panic that reached an
+//!   `extern "C"` function would abort (Rust ≥ 1.81), the no_std build (the workspace's
+//!   `nostd` profile, `panic = "abort"`) has no unwinding and its panic handler traps
 //!   (`nostd.rs`), and the C tests drive every function with bad input.
 //!
 //! The contract the caller keeps (the header says it at `fur_lut`): a `fur_lut` is

@@ -58,7 +58,7 @@ fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
 /// The unwinding personality routine the precompiled `core` refers to (its unwind tables
 /// name it), with the Itanium C++ ABI signature (`_Unwind_Personality_Fn`): version,
 /// actions, exception class, exception object, context; the reason code is returned.
-/// Nothing unwinds without std (release builds abort on panic), so it is never called; if
+/// Nothing unwinds without std (the no_std build aborts on panic), so it is never called; if
 /// an unwinder ever did, it traps rather than guess.
 #[cfg(all(not(feature = "std"), not(test), not(target_arch = "arm")))]
 #[no_mangle]

@@ -24,6 +24,7 @@ fn main() {
             n_phi: 64,
             n_ms_i: 48,
             n_ms_r: 48,
+            n_abs: LutResolution::DEFAULT.n_abs,
         },
         LutResolution {
             n_sum: 1024,
@@ -31,6 +32,7 @@ fn main() {
             n_phi: 96,
             n_ms_i: 64,
             n_ms_r: 64,
+            n_abs: LutResolution::DEFAULT.n_abs,
         },
         LutResolution::DEFAULT,
         LutResolution {
@@ -39,6 +41,7 @@ fn main() {
             n_phi: 181,
             n_ms_i: 128,
             n_ms_r: 128,
+            n_abs: LutResolution::DEFAULT.n_abs,
         },
     ];
     let opts = ProfileOptions {

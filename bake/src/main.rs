@@ -202,6 +202,7 @@ fn options(cli: &Cli) -> Result<BakeOptions, Failure> {
         n_phi: cli.res_phi,
         n_ms_i: cli.res_ms,
         n_ms_r: cli.res_ms,
+        n_abs: LutResolution::DEFAULT.n_abs,
     };
     res.validate().map_err(input)?;
     let budget =

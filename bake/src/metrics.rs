@@ -16,7 +16,8 @@
 //! Rows are evaluated in parallel and merged in row order, so the result has the same bits
 //! for any thread count.
 
-use bcsdf_core::{Angles, Bcsdf, Rgb};
+use bcsdf_core::rng::Pcg32;
+use bcsdf_core::{Absorption, Angles, Bcsdf, Rgb};
 use rayon::prelude::*;
 use std::fmt;
 
@@ -305,6 +306,52 @@ fn ratio(a: f64, b: f64) -> f64 {
     } else {
         0.0
     }
+}
+
+/// The colours a LUT is measured at (docs/lut.md "The absorption axis"): for a preset whose
+/// own σ_ca is `own`, that colour, 16 random colours (each channel log-uniform over
+/// [0.01, 1000], a lossless channel in four of them and a channel ≥ 100 in four others; fixed
+/// seed) and eight melanin mixes (eumelanin 0–8, pheomelanin 0–2), with labels.
+pub fn colour_set(own: Rgb) -> Vec<(String, Absorption)> {
+    let mut out = vec![(
+        "own".to_string(),
+        Absorption::from_sigma(own).unwrap_or(Absorption::LOSSLESS),
+    )];
+    let mut rng = Pcg32::new(2026, 12);
+    for k in 0..16 {
+        let mut s = [0.0f32; 3];
+        for c in &mut s {
+            // log-uniform over [0.01, 1000]
+            *c = 10f32.powf(-2.0 + 5.0 * rng.uniform());
+        }
+        // Include the domain's ends: a lossless channel and a channel ≥ 100.
+        if k % 4 == 0 {
+            s[k / 4 % 3] = 0.0;
+        }
+        if k % 4 == 1 {
+            s[(k / 4 + 1) % 3] = 100.0 + 900.0 * rng.uniform();
+        }
+        out.push((
+            format!("random {k}"),
+            Absorption::from_sigma(Rgb(s)).unwrap_or(Absorption::LOSSLESS),
+        ));
+    }
+    for (eu, pheo) in [
+        (0.0, 0.0),
+        (0.2, 0.0),
+        (0.5, 1.0),
+        (1.0, 0.3),
+        (2.0, 2.0),
+        (4.0, 0.5),
+        (8.0, 0.0),
+        (8.0, 2.0),
+    ] {
+        out.push((
+            format!("melanin {eu}/{pheo}"),
+            Absorption::from_melanin(eu, pheo).unwrap_or(Absorption::LOSSLESS),
+        ));
+    }
+    out
 }
 
 #[cfg(test)]

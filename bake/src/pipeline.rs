@@ -223,7 +223,7 @@ pub fn bake_preset(
 
     on_step(Step::Tables);
     let t = Instant::now();
-    let blob = tables::bake(&model, &preset.input, opts.res);
+    let blob = tables::try_bake(&model, &preset.input, opts.res).map_err(BakeError::Profiles)?;
     let table_seconds = t.elapsed().as_secs_f64();
     let baked = BakedBcsdf::from_bytes(&blob).map_err(BakeError::Invalid)?;
 

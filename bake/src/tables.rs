@@ -2,7 +2,9 @@
 //! them as a half-float blob.
 //!
 //! Every value comes from the analytic model's own functions (`FurBcsdf::longitudinal_gaussian`,
-//! `azimuthal_far`, `longitudinal_scattered`), so no formula is restated here. Table rows are
+//! `azimuthal_far`, `longitudinal_scattered`), so no formula is restated here. Table `N` has
+//! one plane per node of the absorption axis (`lut::absorption_node`), each sampled from the
+//! model at that σ_ca ([`OwnedModel::at_sigma`]: the same profiles, that colour's residual). Table rows are
 //! sampled in parallel, each value independently, so the blob has the same bits for any
 //! thread count.
 
@@ -10,7 +12,7 @@ use bcsdf_core::lut::{
     self, LutHeader, LutResolution, ProfileProvenance, Table, HEADER_LEN, TABLE_COUNT,
 };
 use bcsdf_core::medulla::GENERATOR_VERSION;
-use bcsdf_core::{Angles, FurBcsdf, FurParamsInput, Lobe, LobeFamily, LobeGroup};
+use bcsdf_core::{Absorption, Angles, FurBcsdf, FurParamsInput, Lobe, LobeFamily, LobeGroup, Rgb};
 use half::f16;
 use rayon::prelude::*;
 use std::f32::consts::PI;
@@ -38,8 +40,10 @@ fn angles(theta_i: f32, theta_r: f32, phi: f32) -> Angles {
     Angles::new(c(theta_i), c(theta_r), phi).expect("clamped finite angles are valid")
 }
 
-/// Samples every table of `model` at its nodes.
-pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
+/// Samples every table of `model` at its nodes, table `N`'s plane k from `planes[k]`, the
+/// model at σ_ca = `lut::absorption_node(k, res.n_abs)` (grey); [`absorption_planes`] makes
+/// them. Tables `M` and `M_s` do not depend on σ_ca.
+pub fn sample(model: &FurBcsdf<'_>, planes: &[FurBcsdf<'_>], res: LutResolution) -> TableValues {
     let mut tables: [Vec<f32>; TABLE_COUNT] = Default::default();
 
     // M_g(x), x = θ_i + θ_r: the Gaussian G(x − α_g) evaluated as θ_i = x, θ_r = 0 (the
@@ -52,10 +56,18 @@ pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
         })
         .collect();
 
-    // N_g(|θ_r|, |φ|): one far-field azimuthal evaluation per node gives all four families.
-    let rows: Vec<Vec<[[f32; 3]; 4]>> = (0..res.n_theta_r as usize)
+    // N_g(|θ_r|, |φ|) per absorption plane: one far-field azimuthal evaluation per node
+    // gives all four families; the planes are grey, so channel 0 is the plane's value.
+    assert_eq!(
+        planes.len(),
+        res.n_abs as usize,
+        "one model per absorption node"
+    );
+    let rows: Vec<Vec<[[f32; 3]; 4]>> = (0..res.n_abs as usize * res.n_theta_r as usize)
         .into_par_iter()
-        .map(|r| {
+        .map(|pr| {
+            let model = &planes[pr / res.n_theta_r as usize];
+            let r = pr % res.n_theta_r as usize;
             let theta_r = node(0.0, PI / 2.0, r, res.n_theta_r);
             (0..res.n_phi as usize)
                 .map(|c| {
@@ -80,7 +92,7 @@ pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
         .collect();
     tables[Table::N as usize] = rows
         .iter()
-        .flat_map(|row| row.iter().flat_map(|fam| fam.iter().flatten().copied()))
+        .flat_map(|row| row.iter().flat_map(|fam| fam.iter().map(|rgb| rgb[0])))
         .collect();
 
     // M^s_back and M^s_front: M^s at φ = 0 and φ = π, where the blend weight is exactly 0 / 1.
@@ -242,10 +254,41 @@ pub fn rebuild_model(
     }
 }
 
-/// Samples and encodes `model` (made from `input`) at resolution `res`: the LUT blob.
+/// The models of table `N`'s absorption planes: `model` at σ_ca = `lut::absorption_node(k,
+/// n_abs)` in every channel, k = 0 .. n_abs ([`OwnedModel::at_sigma`]: the residual of each
+/// colour from `model`'s cache, or generated).
+pub fn absorption_planes(
+    model: &OwnedModel,
+    n_abs: u32,
+) -> Result<Vec<OwnedModel>, crate::profiles::Error> {
+    (0..n_abs as usize)
+        .map(|k| {
+            let sigma = Rgb::splat(lut::absorption_node(k, n_abs));
+            let a = Absorption::from_sigma(sigma).expect("absorption nodes lie in [0, 1000]");
+            model.at_sigma(&a)
+        })
+        .collect()
+}
+
+/// Samples and encodes `model` (made from `input`) at resolution `res`: the LUT blob, or why
+/// an absorption plane's model could not be made ([`absorption_planes`]).
+pub fn try_bake(
+    model: &OwnedModel,
+    input: &FurParamsInput,
+    res: LutResolution,
+) -> Result<Vec<u8>, crate::profiles::Error> {
+    let planes = absorption_planes(model, res.n_abs)?;
+    let views: Vec<FurBcsdf<'_>> = planes.iter().map(OwnedModel::model).collect();
+    let values = sample(&model.model(), &views, res);
+    Ok(encode(&values, input, provenance(model)))
+}
+
+/// [`try_bake`] for tests, benches and examples, which cannot go on without the LUT.
+///
+/// # Panics
+/// When an absorption plane's residual cannot be cached ([`try_bake`]'s error).
 pub fn bake(model: &OwnedModel, input: &FurParamsInput, res: LutResolution) -> Vec<u8> {
-    let values = sample(&model.model(), res);
-    encode(&values, input, provenance(model))
+    try_bake(model, input, res).unwrap_or_else(|e| panic!("baking the LUT: {e}"))
 }
 
 #[cfg(test)]

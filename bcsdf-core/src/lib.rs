@@ -82,6 +82,7 @@
 #![deny(missing_docs)]
 #![deny(clippy::undocumented_unsafe_blocks)]
 
+mod absorption;
 pub mod baked;
 pub mod dual;
 pub mod lut;
@@ -127,7 +128,8 @@ pub mod scattered;
 #[doc(hidden)] // the unscattered paths: fur-tests' ray tracer
 pub mod unscattered;
 
-pub use baked::{BakedBcsdf, BatchLengthError, Kernel};
+pub use absorption::{Absorption, AbsorptionError};
+pub use baked::{BakedAt, BakedBcsdf, BatchLengthError, ColourAt, Kernel};
 pub use bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection, MIN_COS_THETA_PDF};
 pub use frame::{AngleError, Angles, Frame, Vec3};
 pub use lobes::{

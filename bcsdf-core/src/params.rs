@@ -428,6 +428,15 @@ impl FurParams {
         self.closure = closure;
         self
     }
+    /// The same parameters at another colour: σ_ca of `absorption` (validated, within the
+    /// parameter's domain), every other field bit for bit unchanged (docs/lut.md "The
+    /// absorption axis": the analytic model a LUT evaluated at that colour is measured
+    /// against).
+    #[must_use]
+    pub fn with_absorption(mut self, absorption: &crate::absorption::Absorption) -> FurParams {
+        self.sigma_ca = absorption.sigma();
+        self
+    }
 }
 
 #[cfg(test)]

@@ -367,6 +367,7 @@ fn fixture() -> &'static Fixture {
             n_phi: 16,
             n_ms_i: 8,
             n_ms_r: 8,
+            n_abs: 3,
         });
         std::fs::write(dir.path().join("a.furlut"), &blob).unwrap();
         std::fs::write(dir.path().join("small.furlut"), &small).unwrap();

@@ -139,6 +139,7 @@ fn bake_and_metrics_are_the_same_bits_for_any_thread_count() {
         n_phi: 48,
         n_ms_i: 32,
         n_ms_r: 32,
+        n_abs: 4,
     };
     let set = MetricSet {
         n_theta_r: 8,

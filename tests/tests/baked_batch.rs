@@ -169,7 +169,8 @@ fn mismatched_lengths_are_refused_without_writing() {
         err,
         BatchLengthError {
             inputs: [4, 3, 4],
-            output: 4
+            output: 4,
+            colours: None,
         }
     );
     assert!(err.to_string().contains("theta_r 3"), "{err}");

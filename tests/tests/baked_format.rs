@@ -25,6 +25,7 @@ const RES: LutResolution = LutResolution {
     n_phi: 17,
     n_ms_i: 13,
     n_ms_r: 11,
+    n_abs: 3,
 };
 
 /// Bobcat in the report closure: the tables are read as stored (the energy closure's factor

@@ -24,6 +24,7 @@
 
 use bake::profiles::{build_model, scale_budget, OwnedModel, ProfileOptions};
 use bake::tables::{encode, sample};
+use bcsdf_core::Absorption;
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{
@@ -95,8 +96,15 @@ fn lossless_furnace_keeps_the_azimuthal_energy() {
     for preset in presets::PRESETS.iter() {
         let p = lossless(&preset.input, Closure::Energy);
         let analytic: FurBcsdf = FurBcsdf::unscattered(p);
+        // Table `N`'s absorption planes: the same model at each node's σ_ca.
+        let planes: Vec<FurBcsdf> = (0..res.n_abs as usize)
+            .map(|k| {
+                let s = bcsdf_core::Rgb::splat(bcsdf_core::lut::absorption_node(k, res.n_abs));
+                FurBcsdf::unscattered(p.with_absorption(&Absorption::from_sigma(s).unwrap()))
+            })
+            .collect();
         let blob = encode(
-            &sample(&analytic, res),
+            &sample(&analytic, &planes, res),
             &lossless_input(&preset.input, Closure::Energy),
             None,
         );

@@ -7,7 +7,7 @@ use super::residual::load_or_generate_residual;
 use super::{Error, OwnedProfiles, DEFAULT_SEED};
 use bcsdf_core::medulla::{PhotonBudget, ProfileError, Resolution};
 use bcsdf_core::residual::{ResidualLayout, ResidualTable};
-use bcsdf_core::{Closure, FurBcsdf, FurParams, Libm, Math};
+use bcsdf_core::{Absorption, Closure, FurBcsdf, FurParams, Libm, Math};
 use std::path::PathBuf;
 
 /// How [`build_model`] gets its profiles.
@@ -52,6 +52,17 @@ pub struct OwnedModel {
     profiles: Option<OwnedProfiles>,
     residual: Option<Vec<f32>>,
     residual_note: Option<String>,
+    /// Where [`OwnedModel::at_sigma`] gets the residual of another colour: the seed, cache
+    /// directory and threads [`build_model`] used (none: the default seed, no cache).
+    residual_source: ResidualSource,
+}
+
+/// The seed, cache directory and threads of a model's residual table.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct ResidualSource {
+    seed: Option<u64>,
+    cache_dir: Option<PathBuf>,
+    threads: Option<usize>,
 }
 
 impl OwnedModel {
@@ -73,7 +84,34 @@ impl OwnedModel {
             profiles,
             residual: None,
             residual_note: None,
+            residual_source: ResidualSource::default(),
         })
+    }
+
+    /// The model of the same parameters and profiles at colour `absorption` (σ_ca per
+    /// channel; the profiles do not depend on it), in the energy closure with the residual
+    /// table of that colour (docs/model.md §12: it depends on σ_ca), loaded from or generated
+    /// into the cache this model's residual came from, with the same seed. What a baked LUT's
+    /// absorption planes are sampled from (`tables::sample`) and what a LUT evaluated at a
+    /// colour is measured against.
+    pub fn at_sigma(&self, absorption: &Absorption) -> Result<OwnedModel, Error> {
+        let params = self.params.with_absorption(absorption);
+        let mut model = OwnedModel::new(params, self.profiles.clone())?;
+        model.residual_source = self.residual_source.clone();
+        if params.closure() != Closure::Energy {
+            return Ok(model);
+        }
+        let src = &self.residual_source;
+        let (data, outcome) = load_or_generate_residual(
+            &model,
+            ResidualLayout::DEFAULT,
+            src.seed.unwrap_or(DEFAULT_SEED),
+            src.cache_dir.as_deref(),
+            src.threads,
+        )?;
+        let mut model = model.with_residual(data)?;
+        model.residual_note = outcome.note();
+        Ok(model)
     }
 
     /// This model with the residual table `data` ([`ResidualLayout::DEFAULT`], generated for
@@ -157,6 +195,12 @@ pub fn build_model(
     } else {
         (OwnedModel::new(params, None)?, None)
     };
+    let mut model = model;
+    model.residual_source = ResidualSource {
+        seed: Some(opts.seed),
+        cache_dir: opts.cache_dir.clone(),
+        threads: opts.threads,
+    };
     if params.closure() != Closure::Energy {
         return Ok((model, outcome));
     }
@@ -169,5 +213,10 @@ pub fn build_model(
     )?;
     let mut model = model.with_residual(data)?;
     model.residual_note = residual_outcome.note();
+    model.residual_source = ResidualSource {
+        seed: Some(opts.seed),
+        cache_dir: opts.cache_dir.clone(),
+        threads: opts.threads,
+    };
     Ok((model, outcome))
 }

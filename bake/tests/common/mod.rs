@@ -20,6 +20,7 @@ pub const RES: LutResolution = LutResolution {
     n_phi: 16,
     n_ms_i: 12,
     n_ms_r: 12,
+    n_abs: 3,
 };
 
 pub fn bake_preset(name: &str) -> Vec<u8> {

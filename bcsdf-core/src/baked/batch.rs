@@ -20,6 +20,7 @@ use super::dispatch::KernelOp;
 use super::texels::Avx2F16c;
 use super::texels::NKernel;
 use super::{BakedBcsdf, Place};
+use crate::absorption::Absorption;
 use crate::math::{wrap_angle, Math, PI};
 use crate::spectrum::Rgb;
 use core::fmt;
@@ -98,6 +99,9 @@ pub struct BatchLengthError {
     pub inputs: [usize; 3],
     /// Length of the output slice.
     pub output: usize,
+    /// Length of the colour slice ([`BakedBcsdf::eval_far_batch_colours`]; `None` for
+    /// [`BakedBcsdf::eval_far_batch`]).
+    pub colours: Option<usize>,
 }
 
 impl fmt::Display for BatchLengthError {
@@ -107,7 +111,11 @@ impl fmt::Display for BatchLengthError {
             f,
             "batch slices differ in length: theta_i {a}, theta_r {b}, phi {c}, output {}",
             self.output
-        )
+        )?;
+        match self.colours {
+            Some(n) => write!(f, ", colours {n}"),
+            None => Ok(()),
+        }
     }
 }
 
@@ -144,12 +152,56 @@ impl<M: Math> BakedBcsdf<'_, M> {
             return Err(BatchLengthError {
                 inputs: [theta_i.len(), theta_r.len(), phi.len()],
                 output: n,
+                colours: None,
             });
         }
         Ok(self.dispatch(Batch {
             theta_i,
             theta_r,
             phi,
+            colours: None,
+            out,
+        }))
+    }
+
+    /// [`BakedBcsdf::eval_far_batch`] with a colour per query: `out[k]` gets S at
+    /// (`theta_i[k]`, `theta_r[k]`, `phi[k]`) and colour `colours[k]` (docs/lut.md "The
+    /// absorption axis"), equal bit for bit to `self.at(&colours[k]).eval_far(..).total()`.
+    /// An error (nothing written) when the five slices differ in length.
+    ///
+    /// ```
+    /// # fn demo(lut: &bcsdf_core::baked::BakedBcsdf) {
+    /// use bcsdf_core::{Absorption, Rgb};
+    /// let colours = [
+    ///     Absorption::from_melanin(0.3, 0.0).unwrap(),
+    ///     Absorption::from_sigma(Rgb([0.1, 0.5, 2.0])).unwrap(),
+    /// ];
+    /// let mut out = [Rgb::ZERO; 2];
+    /// lut.eval_far_batch_colours(&[0.3, -0.2], &[0.1, 0.4], &[2.0, -3.0], &colours, &mut out)
+    ///     .unwrap();
+    /// # }
+    /// ```
+    pub fn eval_far_batch_colours(
+        &self,
+        theta_i: &[f32],
+        theta_r: &[f32],
+        phi: &[f32],
+        colours: &[Absorption],
+        out: &mut [Rgb],
+    ) -> Result<usize, BatchLengthError> {
+        let n = out.len();
+        if theta_i.len() != n || theta_r.len() != n || phi.len() != n || colours.len() != n {
+            return Err(BatchLengthError {
+                inputs: [theta_i.len(), theta_r.len(), phi.len()],
+                output: n,
+                colours: Some(colours.len()),
+            });
+        }
+        Ok(self.dispatch(Batch {
+            theta_i,
+            theta_r,
+            phi,
+            colours: Some(colours),
             out,
         }))
     }
@@ -171,22 +223,24 @@ impl<M: Math> BakedBcsdf<'_, M> {
     /// Every chunk of equally long slices, table `N` read by `kernel`; returns the rejected
     /// count.
     #[inline(always)]
-    fn eval_chunks<K: NKernel>(
-        &self,
-        kernel: K,
-        theta_i: &[f32],
-        theta_r: &[f32],
-        phi: &[f32],
-        out: &mut [Rgb],
-    ) -> usize {
+    fn eval_chunks<K: NKernel>(&self, kernel: K, batch: Batch<'_>) -> usize {
+        let Batch {
+            theta_i,
+            theta_r,
+            phi,
+            colours,
+            out,
+        } = batch;
         let mut rejected = 0;
         let chunks = theta_i
             .chunks(CHUNK)
             .zip(theta_r.chunks(CHUNK))
             .zip(phi.chunks(CHUNK))
-            .zip(out.chunks_mut(CHUNK));
-        for (((ti, tr), ph), out) in chunks {
-            rejected += self.eval_chunk(kernel, ti, tr, ph, out);
+            .zip(out.chunks_mut(CHUNK))
+            .enumerate();
+        for (i, (((ti, tr), ph), out)) in chunks {
+            let c = colours.map(|c| c.get(i * CHUNK..).unwrap_or(&[]));
+            rejected += self.eval_chunk(kernel, ti, tr, ph, c, out);
         }
         rejected
     }
@@ -199,6 +253,7 @@ impl<M: Math> BakedBcsdf<'_, M> {
         ti: &[f32],
         tr: &[f32],
         ph: &[f32],
+        colours: Option<&[Absorption]>,
         out: &mut [Rgb],
     ) -> usize {
         // Pass 1: validation, as `Angles::new` but branch-free over the chunk; φ outside
@@ -237,10 +292,14 @@ impl<M: Math> BakedBcsdf<'_, M> {
         for (k, ((&a, &b), &c)) in a.iter().zip(b).zip(c).enumerate() {
             places.set(k, self.place(kernel, a, b, c));
         }
-        // Pass 3: texel reads and the family sum.
+        // Pass 3: the colour's place, texel reads and the family sum.
         for (k, (o, ok)) in out.iter_mut().zip(valid).enumerate() {
+            let colour = match colours.and_then(|c| c.get(k)) {
+                Some(c) => self.locate_colour(c.sigma()),
+                None => self.default_colour(),
+            };
             *o = if ok {
-                Self::total(&self.gather_with(kernel, &places.get(k)))
+                Self::total(&self.gather_with(kernel, &places.get(k), &colour))
             } else {
                 Rgb::ZERO
             };
@@ -249,11 +308,13 @@ impl<M: Math> BakedBcsdf<'_, M> {
     }
 }
 
-/// [`BakedBcsdf::eval_far_batch`]'s work: equally long slices.
+/// [`BakedBcsdf::eval_far_batch`]'s work: equally long slices (colours: per query, or the
+/// preset's).
 struct Batch<'s> {
     theta_i: &'s [f32],
     theta_r: &'s [f32],
     phi: &'s [f32],
+    colours: Option<&'s [Absorption]>,
     out: &'s mut [Rgb],
 }
 
@@ -261,7 +322,7 @@ impl<M: Math> KernelOp<M> for Batch<'_> {
     type Output = usize;
     #[inline(always)]
     fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> usize {
-        lut.eval_chunks(kernel, self.theta_i, self.theta_r, self.phi, self.out)
+        lut.eval_chunks(kernel, self)
     }
 }
 

@@ -10,15 +10,21 @@
 use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
 use crate::lut::cdf::{Density, DensityLayout, Nodes};
-use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
+use crate::lut::{
+    self, absorption_coordinate, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT,
+};
 use dispatch::KernelOp;
-use texels::{corner_weights, m_linear, ms_bilinear, Baseline, NKernel};
+pub use texels::ColourAt;
+use texels::{corner_weights, m_linear, ms_bilinear, n_lossless, Baseline, NKernel};
 
+mod at;
 mod batch;
 mod dispatch;
 mod simd;
 mod sphere;
 mod texels;
+
+pub use at::BakedAt;
 
 use crate::math::{cos_within_half_pi, Libm, Math, PI};
 use crate::model::inv_cos2_theta_i;
@@ -89,7 +95,7 @@ impl Axis {
 /// use bcsdf_core::{presets, Angles, BakedBcsdf, Bcsdf, Closure, FurParamsInput};
 /// use bcsdf_core::{LutError, LutHeader, LutResolution};
 ///
-/// let res = LutResolution { n_sum: 2, n_theta_r: 2, n_phi: 2, n_ms_i: 2, n_ms_r: 2 };
+/// let res = LutResolution { n_sum: 2, n_theta_r: 2, n_phi: 2, n_ms_i: 2, n_ms_r: 2, n_abs: 2 };
 /// let header = LutHeader {
 ///     res,
 ///     scales: [1.0; TABLE_COUNT],
@@ -155,6 +161,13 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     /// The energy closure (docs/model.md §12): M_g is divided by its mass on the sphere,
     /// read from the LUT's 1/Z_g table.
     pub(crate) energy: bool,
+    /// The absorption axis: n_abs − 1 (as f32) and the texels of one plane of table `N`.
+    abs_last: f32,
+    abs_nodes: usize,
+    plane: usize,
+    /// The colour the LUT's own parameters give (the preset's σ_ca), located on the
+    /// absorption axis: what the methods without a colour evaluate.
+    colour: ColourAt,
     _math: PhantomData<M>,
 }
 
@@ -234,8 +247,11 @@ pub(crate) struct Lookups {
     pub(crate) m: [f32; 3],
     /// M^s_back(θ_i, θ_r), M^s_front(θ_i, θ_r).
     pub(crate) ms: [f32; 2],
-    /// N (12 channels: family, then RGB) at (|θ_r|, |φ|).
+    /// N (12 channels: family, then RGB) at (|θ_r|, |φ|) and the query's colour.
     pub(crate) n: [f32; 12],
+    /// N of the four families on the lossless plane (the sampler's densities; zero where
+    /// only the value is wanted).
+    pub(crate) n0: [f32; 4],
     /// |φ|/π, the front weight of M^s.
     pub(crate) front: f32,
     /// 1/cos²θ_i, guarded.
@@ -267,6 +283,9 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let header = lut::validate(bytes)?;
         let params = FurParams::new(&header.params).map_err(LutError::Params)?;
         let res = header.res;
+        let plane = res.n_plane();
+        let abs_last = (res.n_abs - 1) as f32;
+        let abs_nodes = res.n_abs as usize;
         let mut tables: [&'a [u8]; TABLE_COUNT] = [&[]; TABLE_COUNT];
         let mut unbias = [0.0; TABLE_COUNT];
         for t in Table::ALL {
@@ -294,8 +313,28 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             ms_r: Axis::new(-PI / 2.0, 1.0 / PI, res.n_ms_r),
             norm: Axis::new(-PI / 2.0, 1.0 / PI, res.n_norm() as u32),
             energy: params.closure() == Closure::Energy,
+            abs_last,
+            abs_nodes,
+            plane,
+            colour: locate_colour(params.sigma_ca(), abs_last, abs_nodes, plane),
             _math: PhantomData,
         })
+    }
+
+    /// Where colour `sigma` (σ_ca per channel, validated: [`crate::Absorption`]) reads table
+    /// `N`: each channel's two planes and weight on the absorption axis
+    /// ([`lut::absorption_coordinate`], docs/lut.md "The absorption axis").
+    #[inline(always)]
+    #[must_use]
+    pub fn locate_colour(&self, sigma: Rgb) -> ColourAt {
+        locate_colour(sigma, self.abs_last, self.abs_nodes, self.plane)
+    }
+
+    /// The preset's own colour (the σ_ca the LUT's parameters give), located: what
+    /// [`BakedBcsdf::eval_far`] and the [`Bcsdf`](crate::Bcsdf) methods evaluate.
+    #[must_use]
+    pub fn default_colour(&self) -> ColourAt {
+        self.colour
     }
 
     /// The header: resolution, scales, parameters, profile provenance.
@@ -349,7 +388,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let (col, wx) = self.ms_i.locate(ti);
         let ms = row * res.n_ms_i as usize + col;
         let ms_w = corner_weights(wy, wx, self.unbias[Table::MS as usize]);
-        // N_g(|θ_r|, |φ|), one 12-channel table: bilinear.
+        // N_g(|θ_r|, |φ|), one 4-channel table per absorption plane: bilinear in each.
         let (row, wy) = self.theta_r.locate(tr.abs());
         let (col, wx) = self.phi.locate(abs_phi);
         let n = row * res.n_phi as usize + col;
@@ -389,7 +428,12 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// The table reads of one query at `p` ([`BakedBcsdf::place`] for the same kernel),
     /// table `N` read by `kernel`.
     #[inline(always)]
-    pub(crate) fn gather_with<K: NKernel>(&self, kernel: K, p: &Place) -> Lookups {
+    pub(crate) fn gather_with<K: NKernel>(
+        &self,
+        kernel: K,
+        p: &Place,
+        colour: &ColourAt,
+    ) -> Lookups {
         let res = &self.header.res;
         // Read from the blob: a pair is read as eight halves (table N follows M).
         let m = m_linear(self.blob, self.m_start, p.m, p.m_w[0], p.m_w[1]);
@@ -402,24 +446,35 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
                 p.ms,
                 p.ms_w,
             ),
-            n: kernel.n_bilinear(
+            n: kernel.n_trilinear(
                 self.tables[Table::N as usize],
                 res.n_phi as usize,
                 p.n,
                 p.n_w,
+                colour,
             ),
+            n0: [0.0; 4],
             front: p.front,
             inv_cos2: p.inv_cos2,
         }
     }
 
-    /// The table lookups of one query (the samplers' pdf), with the baseline kernel, inlined
-    /// into the sampler: through the AVX2 function (a call, the lookups returned in memory)
-    /// the pdf measured slower (docs/benchmarks.md, "Sampling and evaluation speed").
+    /// The table lookups of one query at `colour` (the samplers' pdf), with the lossless
+    /// plane's N for the sampler's density ([`Lookups::n0`]), with the baseline kernel,
+    /// inlined into the sampler: through the AVX2 function (a call, the lookups returned in
+    /// memory) the pdf measured slower (docs/benchmarks.md, "Sampling and evaluation speed").
     #[inline]
-    pub(crate) fn lookups(&self, angles: &Angles) -> Lookups {
+    pub(crate) fn lookups(&self, angles: &Angles, colour: &ColourAt) -> Lookups {
         let (ti, tr, abs_phi) = (angles.theta_i(), angles.theta_r(), angles.phi().abs());
-        self.gather_with(Baseline, &self.place(Baseline, ti, tr, abs_phi))
+        let p = self.place(Baseline, ti, tr, abs_phi);
+        let mut l = self.gather_with(Baseline, &p, colour);
+        l.n0 = n_lossless(
+            self.tables[Table::N as usize],
+            self.header.res.n_phi as usize,
+            p.n,
+            p.n_w,
+        );
+        l
     }
 
     /// Far-field S(ω_i, ω_r) per lobe family from the lookups: M_g·N_g and
@@ -448,7 +503,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     /// kernel chosen at load (the same bits with either).
     #[inline]
     pub fn eval_far(&self, angles: &Angles) -> Families {
-        self.dispatch(EvalAt(angles))
+        self.dispatch(EvalAt(angles, &self.colour))
     }
 
     /// Far-field S from world-space directions: `wi` toward the light, `wr` toward the viewer,
@@ -473,7 +528,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         wr: Vec3,
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
-        self.dispatch(EvalDirs(wi, wr, tangent))
+        self.dispatch(EvalDirs(wi, wr, tangent, &self.colour))
     }
 
     /// The baked evaluator's one direction-to-angle conversion (docs/model.md §1), behind
@@ -497,18 +552,19 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
 /// |φ| by value: the dispatcher's AVX2 side is a separate function, the op reaches it in
 /// memory, and the caller's three 4-byte stores read back as one 8-byte load stalled store
 /// forwarding (it nearly doubled `eval_far`'s time, at the same instruction count).
-struct EvalAt<'s>(&'s Angles);
+pub(crate) struct EvalAt<'s>(pub(crate) &'s Angles, pub(crate) &'s ColourAt);
 
 impl<M: Math> KernelOp<M> for EvalAt<'_> {
     type Output = Families;
     #[inline(always)]
     fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Families {
         let a = self.0;
-        families_at(lut, kernel, a.theta_i(), a.theta_r(), a.phi().abs())
+        families_at(lut, kernel, a.theta_i(), a.theta_r(), a.phi().abs(), self.1)
     }
 }
 
-/// The families at validated θ_i, θ_r and |φ|, table `N` read by `kernel`.
+/// The families at validated θ_i, θ_r and |φ| and a located colour, table `N` read by
+/// `kernel`.
 #[inline(always)]
 fn families_at<M: Math, K: NKernel>(
     lut: &BakedBcsdf<'_, M>,
@@ -516,21 +572,46 @@ fn families_at<M: Math, K: NKernel>(
     ti: f32,
     tr: f32,
     abs_phi: f32,
+    colour: &ColourAt,
 ) -> Families {
-    BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &lut.place(kernel, ti, tr, abs_phi)))
+    let place = lut.place(kernel, ti, tr, abs_phi);
+    BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &place, colour))
 }
 
-/// [`BakedBcsdf::try_eval_far_dirs`]'s work: ω_i, ω_r, tangent.
-struct EvalDirs(Vec3, Vec3, Vec3);
+/// [`BakedBcsdf::try_eval_far_dirs`]'s work: ω_i, ω_r, tangent, colour.
+pub(crate) struct EvalDirs<'s>(
+    pub(crate) Vec3,
+    pub(crate) Vec3,
+    pub(crate) Vec3,
+    pub(crate) &'s ColourAt,
+);
 
-impl<M: Math> KernelOp<M> for EvalDirs {
+impl<M: Math> KernelOp<M> for EvalDirs<'_> {
     type Output = Result<Families, AngleError>;
     #[inline(always)]
     fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Self::Output {
-        let EvalDirs(wi, wr, tangent) = self;
+        let EvalDirs(wi, wr, tangent, colour) = self;
         let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
-        Ok(families_at(lut, kernel, ti, tr, phi.abs()))
+        Ok(families_at(lut, kernel, ti, tr, phi.abs(), colour))
     }
+}
+
+/// [`BakedBcsdf::locate_colour`]: per channel, u = [`absorption_coordinate`]`(σ)·(n − 1)`,
+/// the lower node k = ⌊u⌋ (at most n − 2) and the weight u − k.
+#[inline(always)]
+fn locate_colour(sigma: Rgb, last: f32, nodes: usize, plane: usize) -> ColourAt {
+    let mut at = ColourAt {
+        stride: plane,
+        ..ColourAt::default()
+    };
+    for c in 0..3 {
+        // absorption_coordinate maps NaN and negatives to 0 and clamps to [0, 1].
+        let u = (absorption_coordinate(sigma.0[c]) * last).clamp(0.0, last);
+        let k = (u as usize).min(nodes.saturating_sub(2));
+        at.plane[c] = k * plane;
+        at.w[c] = u - k as f32;
+    }
+    at
 }
 
 #[cfg(test)]

@@ -9,6 +9,7 @@ use crate::lut::{LutResolution, HEADER_LEN};
 use crate::math::wrap_angle;
 use crate::params::FurParamsInput;
 use crate::presets;
+use crate::Absorption;
 use std::vec;
 use std::vec::Vec;
 
@@ -19,6 +20,7 @@ pub(crate) const RES: LutResolution = LutResolution {
     n_phi: 27,
     n_ms_i: 19,
     n_ms_r: 7,
+    n_abs: 4,
 };
 
 /// A sealed LUT at `res` for the first preset's parameters in the report closure (the
@@ -77,15 +79,19 @@ fn half(v: f32) -> u16 {
     ((exp as u16) << 10) | ((bits >> 13) & 0x3ff) as u16
 }
 
-/// Every table affine in its node indices: M = x + c, N = x + 2y + c, M_s = x + 3y + c.
+/// Every table affine in its node indices: M = x + c, N = x + 2y + 5k + c (y the |θ_r| row
+/// within absorption plane k), M_s = x + 3y + c.
 fn affine() -> Vec<u8> {
     blob(RES, |t, x, y, c| {
-        let k = match t {
-            Table::M => 0.0,
-            Table::N => 2.0,
-            Table::MS => 3.0,
+        let v = match t {
+            Table::M => x as f32,
+            Table::N => {
+                let (plane, row) = (y / RES.n_theta_r as usize, y % RES.n_theta_r as usize);
+                x as f32 + 2.0 * row as f32 + 5.0 * plane as f32
+            }
+            Table::MS => x as f32 + 3.0 * y as f32,
         };
-        half(x as f32 + k * y as f32 + c as f32)
+        half(v + c as f32)
     })
 }
 
@@ -139,40 +145,100 @@ fn lookups_interpolate_every_table_linearly() {
     let r = RES;
     let thetas = [-PI / 2.0, -1.3, -0.4, 0.0, 0.05, 0.9, PI / 2.0];
     let phis = [-PI, -2.0, -0.1, 0.0, 0.7, 3.0, PI];
-    for ti in thetas {
-        for tr in thetas {
-            for phi in phis {
-                let l = lut.lookups(&Angles::new(ti, tr, phi).unwrap());
-                // The node coordinates of the query on each axis.
-                let sum = (ti + tr + PI) * (r.n_sum - 1) as f32 / (2.0 * PI);
-                let col_n = phi.abs() * (r.n_phi - 1) as f32 / PI;
-                let row_n = tr.abs() * (r.n_theta_r - 1) as f32 / (PI / 2.0);
-                let col_ms = (ti + PI / 2.0) * (r.n_ms_i - 1) as f32 / PI;
-                let row_ms = (tr + PI / 2.0) * (r.n_ms_r - 1) as f32 / PI;
-                let tol = 1e-4 * (r.n_sum + r.n_phi) as f32;
-                for c in 0..3 {
-                    assert!(close(l.m[c], sum + c as f32, tol), "M {ti} {tr}: {l:?}");
+    // Colours: the preset's, lossless, fully absorbing, and one channel per plane interval.
+    let colours = [
+        lut.absorption().sigma(),
+        Rgb::ZERO,
+        Rgb::splat(1000.0),
+        Rgb([0.05, 1.7, 60.0]),
+    ];
+    for (ci, sigma) in colours.into_iter().enumerate() {
+        let colour = lut.locate_colour(sigma);
+        let plane_u = sigma
+            .0
+            .map(|s| lut::absorption_coordinate(s) * (r.n_abs - 1) as f32);
+        for ti in thetas {
+            for tr in thetas {
+                for phi in phis {
+                    let l = lut.lookups(&Angles::new(ti, tr, phi).unwrap(), &colour);
+                    // The node coordinates of the query on each axis.
+                    let sum = (ti + tr + PI) * (r.n_sum - 1) as f32 / (2.0 * PI);
+                    let col_n = phi.abs() * (r.n_phi - 1) as f32 / PI;
+                    let row_n = tr.abs() * (r.n_theta_r - 1) as f32 / (PI / 2.0);
+                    let col_ms = (ti + PI / 2.0) * (r.n_ms_i - 1) as f32 / PI;
+                    let row_ms = (tr + PI / 2.0) * (r.n_ms_r - 1) as f32 / PI;
+                    let tol = 1e-4 * (r.n_sum + r.n_phi) as f32;
+                    for c in 0..3 {
+                        assert!(close(l.m[c], sum + c as f32, tol), "M {ti} {tr}: {l:?}");
+                    }
+                    for c in 0..12 {
+                        let (family, rgb) = (c / 3, c % 3);
+                        let want = col_n + 2.0 * row_n + 5.0 * plane_u[rgb] + family as f32;
+                        assert!(
+                            close(l.n[c], want, tol),
+                            "N {tr} {phi} colour {ci}: {} vs {want}",
+                            l.n[c]
+                        );
+                    }
+                    // The sampler's densities: the lossless plane.
+                    for f in 0..4 {
+                        let want = col_n + 2.0 * row_n + f as f32;
+                        assert!(close(l.n0[f], want, tol), "N0 {tr} {phi}");
+                    }
+                    for c in 0..2 {
+                        let want = col_ms + 3.0 * row_ms + c as f32;
+                        assert!(
+                            close(l.ms[c], want, tol),
+                            "M_s {ti} {tr}: {} vs {want}",
+                            l.ms[c]
+                        );
+                    }
+                    assert!(close(l.front, phi.abs() / PI, 1e-6));
                 }
-                for c in 0..12 {
-                    let want = col_n + 2.0 * row_n + c as f32;
-                    assert!(
-                        close(l.n[c], want, tol),
-                        "N {tr} {phi}: {} vs {want}",
-                        l.n[c]
-                    );
-                }
-                for c in 0..2 {
-                    let want = col_ms + 3.0 * row_ms + c as f32;
-                    assert!(
-                        close(l.ms[c], want, tol),
-                        "M_s {ti} {tr}: {} vs {want}",
-                        l.ms[c]
-                    );
-                }
-                assert!(close(l.front, phi.abs() / PI, 1e-6));
             }
         }
     }
+}
+
+#[test]
+fn colours_are_located_on_the_absorption_axis() {
+    let b = affine();
+    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let plane = RES.n_plane();
+    // Every node is reached exactly (weight 0, or 1 on the last interval).
+    for k in 0..RES.n_abs as usize {
+        let s = lut::absorption_node(k, RES.n_abs);
+        let at = lut.locate_colour(Rgb::splat(s));
+        let u = at.plane[0] / plane;
+        assert!(
+            (u as f32 + at.w[0] - k as f32).abs() < 1e-5,
+            "node {k} (σ {s}): plane {u} w {}",
+            at.w[0]
+        );
+    }
+    assert_eq!(lut::absorption_node(0, RES.n_abs), 0.0);
+    assert_eq!(lut::absorption_node(3, RES.n_abs), lut::SIGMA_CA_MAX);
+    // Out of the domain: NaN and negatives at the lossless node, beyond 1000 at the last.
+    let at = lut.locate_colour(Rgb([f32::NAN, -3.0, f32::INFINITY]));
+    assert_eq!((at.plane[0], at.w[0]), (0, 0.0));
+    assert_eq!((at.plane[1], at.w[1]), (0, 0.0));
+    assert_eq!((at.plane[2], at.w[2]), (2 * plane, 1.0));
+    // The coordinate is monotone and maps [0, 1000] onto [0, 1].
+    let mut prev = -1.0;
+    for k in 0..=2000 {
+        let s = 1000.0 * (k as f32 / 2000.0).powi(4);
+        let u = lut::absorption_coordinate(s);
+        assert!(u >= prev && (0.0..=1.0).contains(&u), "{s}: {u}");
+        prev = u;
+    }
+    assert_eq!(lut::absorption_coordinate(1000.0), 1.0);
+    // The default colour is the preset's, and `at` with it evaluates as the LUT does.
+    assert_eq!(
+        lut.default_colour(),
+        lut.locate_colour(lut.params().sigma_ca())
+    );
+    let a = Angles::new(0.3, -0.4, 1.1).unwrap();
+    assert_eq!(lut.at(&lut.absorption()).eval_far(&a), lut.eval_far(&a));
 }
 
 #[test]
@@ -201,10 +267,12 @@ fn value_reads_texels_and_is_zero_outside() {
     let b = affine();
     let lut = BakedBcsdf::from_bytes(&b).unwrap();
     assert_eq!(lut.value(Table::M, 7, 0, 2), 9.0);
-    assert_eq!(lut.value(Table::N, 3, 4, 11), 3.0 + 8.0 + 11.0);
+    assert_eq!(lut.value(Table::N, 3, 4, 3), 3.0 + 8.0 + 3.0);
+    assert_eq!(lut.value(Table::N, 3, 6, 2), 3.0 + 2.0 + 5.0 + 2.0);
     assert_eq!(lut.value(Table::MS, 18, 6, 1), 18.0 + 18.0 + 1.0);
     assert_eq!(lut.value(Table::M, 33, 0, 0), 0.0);
-    assert_eq!(lut.value(Table::N, 0, 5, 0), 0.0);
+    assert_eq!(lut.value(Table::N, 0, 20, 0), 0.0);
+    assert_eq!(lut.value(Table::N, 0, 0, 4), 0.0);
     assert_eq!(lut.value(Table::MS, 0, 0, 2), 0.0);
     assert_eq!(lut.header().res, RES);
     assert_eq!(lut.params().eta_c(), presets::PRESETS[0].input.eta_c);
@@ -326,6 +394,39 @@ fn batch_equals_the_scalar_path_in(closure: Closure) {
     let a = Angles::new(0.3, -0.2, 1.0).unwrap();
     assert_eq!(base.eval_far(&a), lut.eval_far(&a));
     assert_eq!(base.kernel(), Kernel::Baseline);
+    // A colour per query: each equal to `at(colour)`, bit for bit, with every kernel.
+    let mut rng = crate::rng::Pcg32::new(5, 9);
+    let colours: Vec<Absorption> = (0..n)
+        .map(|_| {
+            let s = [0; 3].map(|_| 1000.0 * rng.uniform().powi(6));
+            Absorption::from_sigma(Rgb(s)).unwrap()
+        })
+        .collect();
+    let mut coloured = vec![Rgb::ZERO; n];
+    lut.eval_far_batch_colours(&ti, &tr, &phi, &colours, &mut coloured)
+        .unwrap();
+    let mut coloured_base = vec![Rgb::ZERO; n];
+    base.eval_far_batch_colours(&ti, &tr, &phi, &colours, &mut coloured_base)
+        .unwrap();
+    assert_eq!(coloured, coloured_base);
+    let mut differs = 0;
+    for k in 0..n {
+        let want = match Angles::new(ti[k], tr[k], phi[k]) {
+            Ok(a) => lut.at(&colours[k]).eval_far(&a).total(),
+            Err(_) => Rgb::ZERO,
+        };
+        assert_eq!(coloured[k], want, "query {k}");
+        differs += usize::from(coloured[k] != out[k]);
+    }
+    assert!(
+        differs > n / 2,
+        "the colours change the values ({differs} of {n})"
+    );
+    let e = lut
+        .eval_far_batch_colours(&ti, &tr, &phi, &colours[1..], &mut coloured)
+        .unwrap_err();
+    assert_eq!(e.colours, Some(n - 1));
+    assert!(std::format!("{e}").contains("colours"));
 }
 
 #[test]
@@ -340,7 +441,8 @@ fn batch_rejects_slices_of_different_lengths() {
         e,
         BatchLengthError {
             inputs: [2, 3, 2],
-            output: 2
+            output: 2,
+            colours: None,
         }
     );
     assert_eq!(out, [Rgb([5.0; 3]); 2], "nothing written");

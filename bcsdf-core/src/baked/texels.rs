@@ -2,7 +2,8 @@
 //! inner kernel of every baked evaluation, scalar or batched.
 //!
 //! Each kernel reads whole runs of adjacent halves (a texel pair is contiguous in a row-major
-//! table) and works on four channels at a time ([`F4`]), so that the half-to-float decode
+//! table; table `N`'s is 16 bytes, the four families of two texels) and works on four channels
+//! at a time ([`F4`]), so that the half-to-float decode
 //! (a zero-extension and one shift, [`crate::lut::f16_biased`]) and the weighted sums map
 //! onto 4-wide SIMD registers (SSE2, NEON) without shuffles. Every channel is still computed
 //! by the same sequence of IEEE operations as the scalar formula
@@ -22,8 +23,28 @@ pub(crate) trait NKernel: Copy {
     /// table scale itself, not scale × 2^112 (`BakedBcsdf::place`).
     const TRUE_HALVES: bool;
 
-    /// Table `N` bilinearly, as [`n_bilinear`].
-    fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12];
+    /// Table `N` at one colour, as [`n_trilinear`].
+    fn n_trilinear(
+        self,
+        data: &[u8],
+        width: usize,
+        index: usize,
+        w: [f32; 4],
+        at: &ColourAt,
+    ) -> [f32; 12];
+}
+
+/// Where a colour reads table `N` (docs/lut.md "The absorption axis"): per RGB channel, the
+/// first texel of the lower absorption plane and the weight of the upper one
+/// (`BakedBcsdf::locate_colour`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ColourAt {
+    /// Texel offset k·(n_phi·n_theta_r) of plane k, the lower node of each channel.
+    pub(crate) plane: [usize; 3],
+    /// Weight of plane k + 1, per channel.
+    pub(crate) w: [f32; 3],
+    /// Texels per plane (the distance from plane k to plane k + 1).
+    pub(crate) stride: usize,
 }
 
 /// [`n_bilinear`]: four lanes (SSE2 where the target has it, portable arrays elsewhere).
@@ -33,8 +54,15 @@ pub(crate) struct Baseline;
 impl NKernel for Baseline {
     const TRUE_HALVES: bool = false;
     #[inline(always)]
-    fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
-        n_bilinear(data, width, index, w)
+    fn n_trilinear(
+        self,
+        data: &[u8],
+        width: usize,
+        index: usize,
+        w: [f32; 4],
+        at: &ColourAt,
+    ) -> [f32; 12] {
+        n_trilinear(data, width, index, w, at)
     }
 }
 
@@ -49,17 +77,6 @@ fn bytes<const B: usize>(data: &[u8], start: usize) -> &[u8; B] {
         .unwrap_or(&[0; B])
 }
 
-/// The 24 halves of a 12-channel texel pair: texel `i` in groups 0–2, texel `i + 1` in 3–5.
-#[inline(always)]
-fn decode24(b: &[u8; 48]) -> [F4; 6] {
-    let (a, rest) = b.split_at(16);
-    let (c, d) = rest.split_at(16);
-    let [g0, g1] = F4::halves8(a.try_into().unwrap_or(&[0; 16]));
-    let [g2, g3] = F4::halves8(c.try_into().unwrap_or(&[0; 16]));
-    let [g4, g5] = F4::halves8(d.try_into().unwrap_or(&[0; 16]));
-    [g0, g1, g2, g3, g4, g5]
-}
-
 /// The four bilinear corner weights for row weight `wy` and column weight `wx`, with the
 /// table's scale `k` folded in: (1−wy)(1−wx), (1−wy)wx, wy(1−wx), wy·wx, each × k.
 #[inline(always)]
@@ -68,21 +85,68 @@ pub(crate) fn corner_weights(wy: f32, wx: f32, k: f32) -> [f32; 4] {
     [ky0 * (1.0 - wx), ky0 * wx, ky1 * (1.0 - wx), ky1 * wx]
 }
 
-/// Table `N` (12 channels) bilinearly: corner weights `w` ([`corner_weights`]) at texel
-/// `index` (row-major, row `width` texels long) and its right and lower neighbours.
+/// The eight weights of one colour channel's trilinear read, in the order the kernels sum
+/// them: for the left texels (a, b, c, d) and the right texels, where a and b are the two
+/// |θ_r| rows of the lower plane, c and d those of the upper, `t` the upper plane's weight.
 #[inline(always)]
-pub(crate) fn n_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
-    let top = decode24(bytes::<48>(data, 24 * index));
-    let bottom = decode24(bytes::<48>(data, 24 * (index + width)));
-    let [w0, w1, w2, w3] = w.map(F4::splat);
+pub(crate) fn plane_weights(w: [f32; 4], t: f32) -> ([f32; 4], [f32; 4]) {
+    let (s0, s1) = (1.0 - t, t);
+    (
+        [s0 * w[0], s0 * w[2], s1 * w[0], s1 * w[2]],
+        [s0 * w[1], s0 * w[3], s1 * w[1], s1 * w[3]],
+    )
+}
+
+/// Table `N` (4 channels: R, TT, TRT, s per plane) at one colour: for each RGB channel c,
+/// bilinearly in (|θ_r|, |φ|) with corner weights `w` ([`corner_weights`]) at texel `index`
+/// of the two planes of `at` around that channel's σ_ca, and linearly between the planes.
+/// Per channel and family the sum is (((a·wa + b·wb) + c·wc) + d·wd) over the left texels,
+/// the same over the right texels, then left + right ([`plane_weights`]). Returns the
+/// families' RGB, family-major (R.R, R.G, R.B, TT.R, …).
+#[inline(always)]
+pub(crate) fn n_trilinear(
+    data: &[u8],
+    width: usize,
+    index: usize,
+    w: [f32; 4],
+    at: &ColourAt,
+) -> [f32; 12] {
     let mut out = [0.0; 12];
-    for g in 0..3 {
-        // ((w0·t0 + w1·t1) + w2·b0) + w3·b1, lane-wise.
-        let s = w0.mul(top[g]).add(w1.mul(top[g + 3]));
-        let s = s.add(w2.mul(bottom[g])).add(w3.mul(bottom[g + 3]));
-        out[4 * g..4 * g + 4].copy_from_slice(&s.to_array());
+    for c in 0..3 {
+        let lo_texel = at.plane[c] + index;
+        let hi_texel = lo_texel + at.stride;
+        let a = F4::halves8(bytes::<16>(data, 8 * lo_texel));
+        let b = F4::halves8(bytes::<16>(data, 8 * (lo_texel + width)));
+        let cc = F4::halves8(bytes::<16>(data, 8 * hi_texel));
+        let d = F4::halves8(bytes::<16>(data, 8 * (hi_texel + width)));
+        let (l, r) = plane_weights(w, at.w[c]);
+        let side = |s: usize, k: [f32; 4]| {
+            let [k0, k1, k2, k3] = k.map(F4::splat);
+            a[s].mul(k0)
+                .add(b[s].mul(k1))
+                .add(cc[s].mul(k2))
+                .add(d[s].mul(k3))
+        };
+        let v = side(0, l).add(side(1, r)).to_array();
+        for f in 0..4 {
+            out[3 * f + c] = v[f];
+        }
     }
     out
+}
+
+/// Table `N`'s lossless plane (σ_ca = 0, the sampler's densities, docs/lut.md "Sampling
+/// data") bilinearly at texel `index`: the four families.
+#[inline(always)]
+pub(crate) fn n_lossless(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 4] {
+    let a = F4::halves8(bytes::<16>(data, 8 * index));
+    let b = F4::halves8(bytes::<16>(data, 8 * (index + width)));
+    let [w0, w1, w2, w3] = w.map(F4::splat);
+    a[0].mul(w0)
+        .add(a[1].mul(w1))
+        .add(b[0].mul(w2))
+        .add(b[1].mul(w3))
+        .to_array()
 }
 
 /// Table `M` (3 channels) linearly between texels `index` and `index + 1` with weights
@@ -100,7 +164,7 @@ pub(crate) fn m_linear(data: &[u8], start: usize, index: usize, w0: f32, w1: f32
     ]
 }
 
-/// Table `M_s` (2 channels) bilinearly, as [`n_bilinear`].
+/// Table `M_s` (2 channels) bilinearly, as [`n_lossless`].
 #[inline(always)]
 pub(crate) fn ms_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 2] {
     let t = F4::halves4(bytes::<8>(data, 4 * index)).to_array();
@@ -115,9 +179,9 @@ pub(crate) fn ms_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) 
 /// Table `N` with AVX and F16C: `vcvtph2ps` converts eight halves per instruction (true
 /// values, so the weights `w` must not carry the 2^112 of the biased decode: the evaluator
 /// takes it off the table scale once, at load ([`NKernel::TRUE_HALVES`]), which keeps every product
-/// and sum bit for bit those of [`n_bilinear`]: a power-of-two rescaling, exact in the normal
-/// range the weights stay in), eight channels in a 256-bit register and four in a 128-bit
-/// one.
+/// and sum bit for bit those of [`n_trilinear`]: a power-of-two rescaling, exact in the normal
+/// range the weights stay in), a texel pair (both texels' four families) in one 256-bit
+/// register.
 ///
 /// A value of this type is the proof that the CPU and its OS support AVX, AVX2 and F16C:
 /// its field is private to this module and [`Avx2F16c::detect`] is its only constructor.
@@ -142,44 +206,50 @@ impl Avx2F16c {
 impl NKernel for Avx2F16c {
     const TRUE_HALVES: bool = true;
     #[inline(always)]
-    fn n_bilinear(self, data: &[u8], width: usize, index: usize, w: [f32; 4]) -> [f32; 12] {
+    fn n_trilinear(
+        self,
+        data: &[u8],
+        width: usize,
+        index: usize,
+        w: [f32; 4],
+        at: &ColourAt,
+    ) -> [f32; 12] {
         use core::arch::x86_64::{
-            __m128, __m256, _mm256_add_ps, _mm256_cvtph_ps, _mm256_mul_ps, _mm256_set1_ps,
-            _mm256_storeu_ps, _mm_add_ps, _mm_cvtph_ps, _mm_loadl_epi64, _mm_loadu_si128,
-            _mm_mul_ps, _mm_set1_ps, _mm_storeu_ps,
+            __m256, _mm256_add_ps, _mm256_castps256_ps128, _mm256_cvtph_ps, _mm256_extractf128_ps,
+            _mm256_mul_ps, _mm256_setr_ps, _mm_add_ps, _mm_loadu_si128, _mm_storeu_ps,
         };
-        let top = bytes::<48>(data, 24 * index);
-        let bottom = bytes::<48>(data, 24 * (index + width));
         let mut out = [0.0; 12];
-        // SAFETY: `self` exists, so `detect` found AVX, AVX2 and F16C on this CPU and OS
-        // (the intrinsics' target features); every load reads inside a 48-byte texel pair
-        // (offsets 0 and 24: 16 bytes; 16 and 40: 8 bytes); the stores write inside `out`
-        // (8 floats at 0, 4 at 8 of 12).
-        unsafe {
-            // Channels 0–7 of texels i and i + 1 (halves 0–7 and 12–19), channels 8–11
-            // (halves 8–11 and 20–23).
-            let wide = |b: &[u8; 48], at: usize| -> __m256 {
-                _mm256_cvtph_ps(_mm_loadu_si128(b.as_ptr().add(at).cast()))
-            };
-            let narrow = |b: &[u8; 48], at: usize| -> __m128 {
-                _mm_cvtph_ps(_mm_loadl_epi64(b.as_ptr().add(at).cast()))
-            };
-            let [w0, w1, w2, w3] = w.map(|x| _mm256_set1_ps(x));
-            let lo = _mm256_add_ps(
-                _mm256_mul_ps(w0, wide(top, 0)),
-                _mm256_mul_ps(w1, wide(top, 24)),
-            );
-            let lo = _mm256_add_ps(lo, _mm256_mul_ps(w2, wide(bottom, 0)));
-            let lo = _mm256_add_ps(lo, _mm256_mul_ps(w3, wide(bottom, 24)));
-            let [v0, v1, v2, v3] = w.map(|x| _mm_set1_ps(x));
-            let hi = _mm_add_ps(
-                _mm_mul_ps(v0, narrow(top, 16)),
-                _mm_mul_ps(v1, narrow(top, 40)),
-            );
-            let hi = _mm_add_ps(hi, _mm_mul_ps(v2, narrow(bottom, 16)));
-            let hi = _mm_add_ps(hi, _mm_mul_ps(v3, narrow(bottom, 40)));
-            _mm256_storeu_ps(out.as_mut_ptr(), lo);
-            _mm_storeu_ps(out.as_mut_ptr().add(8), hi);
+        for c in 0..3 {
+            let lo_texel = at.plane[c] + index;
+            let hi_texel = lo_texel + at.stride;
+            let rows = [
+                bytes::<16>(data, 8 * lo_texel),
+                bytes::<16>(data, 8 * (lo_texel + width)),
+                bytes::<16>(data, 8 * hi_texel),
+                bytes::<16>(data, 8 * (hi_texel + width)),
+            ];
+            let (l, r) = plane_weights(w, at.w[c]);
+            let mut v = [0.0f32; 4];
+            // SAFETY: `self` exists, so `detect` found AVX, AVX2 and F16C on this CPU and OS
+            // (the intrinsics' target features); each load reads one 16-byte texel pair
+            // (`bytes` keeps it inside `data`); the store writes the 4 floats of `v`.
+            unsafe {
+                // A texel pair: the left texel's four families in lanes 0–3, the right's in
+                // 4–7, each lane the same products and sums as `n_trilinear`.
+                let pair = |b: &[u8; 16]| -> __m256 {
+                    _mm256_cvtph_ps(_mm_loadu_si128(b.as_ptr().cast()))
+                };
+                let k = |i: usize| _mm256_setr_ps(l[i], l[i], l[i], l[i], r[i], r[i], r[i], r[i]);
+                let mut acc = _mm256_mul_ps(pair(rows[0]), k(0));
+                for (i, row) in rows.iter().enumerate().skip(1) {
+                    acc = _mm256_add_ps(acc, _mm256_mul_ps(pair(row), k(i)));
+                }
+                let sum = _mm_add_ps(_mm256_castps256_ps128(acc), _mm256_extractf128_ps::<1>(acc));
+                _mm_storeu_ps(v.as_mut_ptr(), sum);
+            }
+            for f in 0..4 {
+                out[3 * f + c] = v[f];
+            }
         }
         out
     }

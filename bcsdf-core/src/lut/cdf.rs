@@ -8,9 +8,14 @@
 //! | density | table | row | value at a node | nodes | prefix every |
 //! |---|---|---|---|---|---|
 //! | [`Density::M`]`(g)` | `M` | the single row | channel g | n_sum over x = θ_i + θ_r ∈ [−π, π] | node ([`M_BLOCK`]) |
-//! | [`Density::N`]`(f)` | `N` | each \|θ_r\| row | mean of family f's R, G, B | n_phi over \|φ\| ∈ [0, π] | [`N_BLOCK`] nodes |
+//! | [`Density::N`]`(f)` | `N` | each \|θ_r\| row of the σ_ca = 0 plane | family f | n_phi over \|φ\| ∈ [0, π] | [`N_BLOCK`] nodes |
 //! | [`Density::MS`]`(x)` | `M_s` | each θ_r row | channel x (back, front) | n_ms_i over θ_i ∈ [−π/2, π/2] | [`MS_BLOCK`] nodes |
-//! | [`Density::Front`] | `N` | each \|θ_r\| row | N^s's mean channel, weighted by \|φ\|/π | n_phi over \|φ\| ∈ [0, π] | [`N_BLOCK`] nodes |
+//! | [`Density::Front`] | `N` | each \|θ_r\| row of the σ_ca = 0 plane | N^s, weighted by \|φ\|/π | n_phi over \|φ\| ∈ [0, π] | [`N_BLOCK`] nodes |
+//!
+//! The `N` densities are read from the lossless plane (absorption node 0, LUT format 5): the
+//! sampler draws from the brightest N whatever colour is evaluated, so its density is the same
+//! for every colour and the weights S·cos θ_i/p are bounded by the lossless ones (absorption
+//! only darkens; docs/model.md §10).
 //!
 //! Entry k of a row's prefix is ∫ of the density from the first node to node min(k·B, n − 1)
 //! (B the block), summed segment by segment in f32 as len·(v_j + v_{j+1})/2
@@ -38,12 +43,12 @@ pub const MS_BLOCK: usize = 8;
 pub enum Density {
     /// M_g over x = θ_i + θ_r, g = 0, 1, 2 (R, TT, TRT).
     M(usize),
-    /// N_f over |φ| at one |θ_r| row, f = 0..4 ([`crate::LobeFamily`] order), as the mean of
-    /// its three channels.
+    /// N_f over |φ| at one |θ_r| row of the lossless plane, f = 0..4 ([`crate::LobeFamily`]
+    /// order).
     N(usize),
     /// M^s_back (0) or M^s_front (1) over θ_i at one θ_r row.
     MS(usize),
-    /// The scattered family's N^s (the mean of its three channels) over |φ| at one |θ_r| row,
+    /// The scattered family's N^s over |φ| at one |θ_r| row of the lossless plane,
     /// weighted by |φ|/π: the φ density of the front part of M^s's blend (the back part's is
     /// [`Density::N`]`(3)` less this).
     Front,
@@ -76,13 +81,13 @@ impl Density {
         }
     }
 
-    /// (first channel, channels averaged) of a node value.
-    const fn channels(self) -> (usize, usize) {
+    /// The channel of a node value.
+    const fn channel(self) -> usize {
         match self {
-            Density::M(g) => (g, 1),
-            Density::N(f) => (3 * f, 3),
-            Density::MS(x) => (x, 1),
-            Density::Front => (9, 3),
+            Density::M(g) => g,
+            Density::N(f) => f,
+            Density::MS(x) => x,
+            Density::Front => 3,
         }
     }
 
@@ -136,11 +141,14 @@ pub fn front_weights(j: usize, nodes: usize) -> (f32, f32) {
 }
 
 impl LutResolution {
-    /// (rows, nodes per row) of a density's table.
+    /// (rows, nodes per row) of a density's table (table `N`: its first plane, σ_ca = 0).
     #[must_use]
     pub fn density_dims(&self, d: Density) -> (usize, usize) {
         let (w, h) = self.dims(d.table());
-        (h, w)
+        match d.table() {
+            Table::N => (self.n_theta_r as usize, w),
+            _ => (h, w),
+        }
     }
 
     /// Node spacing along a density's axis (radians).
@@ -264,18 +272,12 @@ impl<'a> Nodes<'a> {
     #[must_use]
     pub fn row(&self, d: Density, row: usize) -> NodeRow<'a> {
         let t = d.table() as usize;
-        let (first, n) = d.channels();
         let channels = Table::ALL[t].channels();
-        let start = 2 * (row * self.width[t] * channels + first);
+        let start = 2 * (row * self.width[t] * channels + d.channel());
         NodeRow {
             data: self.tables[t].get(start..).unwrap_or(&[]),
             stride: 2 * channels,
-            mean: n == 3,
-            scale: if n == 3 {
-                self.unbias[t] * (1.0 / 3.0)
-            } else {
-                self.unbias[t]
-            },
+            scale: self.unbias[t],
         }
     }
 
@@ -321,16 +323,14 @@ impl<'a> Nodes<'a> {
 }
 
 /// The nodes of one row of one density ([`Nodes::row`]): the value at a node is a half (× the
-/// table scale) or, for [`Density::N`], the mean of three (docs/lut.md "Sampling data").
+/// table scale; docs/lut.md "Sampling data").
 #[derive(Clone, Copy, Debug)]
 pub struct NodeRow<'a> {
     /// The table from the row's first node's first channel on.
     data: &'a [u8],
     /// Bytes from one node to the next.
     stride: usize,
-    /// Whether the value is the mean of three channels.
-    mean: bool,
-    /// Table scale × 2^112 (÷ 3 for a mean).
+    /// Table scale × 2^112.
     scale: f32,
 }
 
@@ -341,17 +341,9 @@ impl NodeRow<'_> {
     #[must_use]
     pub fn value(&self, j: usize) -> f32 {
         let at = j * self.stride;
-        let h = |b: &[u8], i: usize| f16_biased(u16::from_le_bytes([b[i], b[i + 1]]));
-        if self.mean {
-            match self.data.get(at..at + 6) {
-                Some(b) => (h(b, 0) + h(b, 2) + h(b, 4)) * self.scale,
-                None => 0.0,
-            }
-        } else {
-            match self.data.get(at..at + 2) {
-                Some(b) => h(b, 0) * self.scale,
-                None => 0.0,
-            }
+        match self.data.get(at..at + 2) {
+            Some(b) => f16_biased(u16::from_le_bytes([b[0], b[1]])) * self.scale,
+            None => 0.0,
         }
     }
 }

@@ -6,7 +6,7 @@
 
 use super::{
     is_valid_scale, LutError, LutHeader, LutResolution, ProfileProvenance, Table, CHECKSUM,
-    FORMAT_VERSION, HEADER_LEN, MAGIC, PROFILES, TABLE_COUNT,
+    FORMAT_VERSION, HEADER_LEN, MAGIC, PROFILES, RESERVED, TABLE_COUNT,
 };
 use crate::medulla::{PhotonBudget, Resolution};
 use crate::params::{FurParams, FurParamsInput, HeaderField, ParamName, ParamValue};
@@ -122,8 +122,9 @@ impl LutHeader {
                     w.u32(n as u32);
                 }
             }
-            None => w.bytes(&[0u8; CHECKSUM.start - PROFILES]),
+            None => w.bytes(&[0u8; RESERVED - PROFILES]),
         }
+        w.u32(0); // reserved
         debug_assert_eq!(w.at, CHECKSUM.start);
         out
     }
@@ -153,6 +154,7 @@ impl LutHeader {
             n_phi: r.u32(),
             n_ms_i: r.u32(),
             n_ms_r: r.u32(),
+            n_abs: r.u32(),
         };
         res.validate()?;
         if bytes.len() != res.blob_len() {
@@ -211,7 +213,7 @@ impl LutHeader {
         };
         let profiles = match has_profiles {
             0 => {
-                if bytes[PROFILES..CHECKSUM.start].iter().any(|&b| b != 0) {
+                if bytes[PROFILES..RESERVED].iter().any(|&b| b != 0) {
                     return Err(LutError::Field { field: "profiles" });
                 }
                 None
@@ -228,6 +230,9 @@ impl LutHeader {
                 })
             }
         };
+        if bytes[RESERVED..CHECKSUM.start].iter().any(|&b| b != 0) {
+            return Err(LutError::Field { field: "reserved" });
+        }
         Ok(LutHeader {
             res,
             scales,
@@ -254,6 +259,7 @@ mod tests {
                 n_phi: 4,
                 n_ms_i: 2,
                 n_ms_r: 3,
+                n_abs: 3,
             },
             scales: [1.0, 0.5, 2.0],
             params: crate::presets::find(preset).unwrap().input,
@@ -333,14 +339,14 @@ mod tests {
         let h = header("human-hair");
         let mut bytes = blob(&h);
         // Pigment kind 2 does not exist.
-        bytes[52..56].copy_from_slice(&2u32.to_le_bytes());
+        bytes[56..60].copy_from_slice(&2u32.to_le_bytes());
         assert_eq!(
             LutHeader::decode(&bytes),
             Err(LutError::Field { field: "pigment" })
         );
         // κ = 1.5 is outside its domain.
         let mut bytes = blob(&h);
-        let kappa_at = 48 + 4 + 4 + 12 + 4 * 4;
+        let kappa_at = 52 + 4 + 4 + 12 + 4 * 4;
         bytes[kappa_at..kappa_at + 4].copy_from_slice(&1.5f32.to_le_bytes());
         assert!(matches!(
             LutHeader::decode(&bytes),
@@ -348,7 +354,7 @@ mod tests {
         ));
         // Closure 2 does not exist (0 report, 1 energy, after g).
         let mut bytes = blob(&h);
-        bytes[104..108].copy_from_slice(&2u32.to_le_bytes());
+        bytes[108..112].copy_from_slice(&2u32.to_le_bytes());
         assert_eq!(
             LutHeader::decode(&bytes),
             Err(LutError::Field { field: "closure" })

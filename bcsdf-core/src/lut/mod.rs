@@ -20,11 +20,17 @@
 //! | table | value | axes (x: columns, y: rows) | channels |
 //! |---|---|---|---|
 //! | `M` | M_g(x) | x = θ_i + θ_r ∈ [−π, π] | R, TT, TRT |
-//! | `N` | N_R, N_TT, N_TRT, Σ N^s_p (RGB each) | x = \|φ\| ∈ [0, π], y = \|θ_r\| ∈ [0, π/2] | R.R, R.G, R.B, TT.R, …, s.B |
+//! | `N` | N_R, N_TT, N_TRT, Σ N^s_p at one absorption σ_ca each plane | x = \|φ\| ∈ [0, π], y = \|θ_r\| ∈ [0, π/2], planes: σ_ca on the absorption axis | R, TT, TRT, s |
 //! | `M_s` | M^s_back, M^s_front | x = θ_i, y = θ_r, both ∈ [−π/2, π/2] | back, front |
 //!
-//! The four azimuthal functions share their axes, so they are one 12-channel table: a lookup
-//! reads two runs of 24 adjacent halves instead of sixteen scattered texels.
+//! The four azimuthal functions share their axes, so they are one 4-channel table. They are
+//! tabulated against the cortex absorption σ_ca as well (LUT format 5): σ_ma, η, β, κ and l are
+//! scalars of the parameter set, so each RGB channel of N is the same scalar function of that
+//! channel's σ_ca alone, and table `N` holds one plane per node of the absorption axis
+//! ([`absorption_coordinate`]), each plane the four families at that σ_ca. A query looks each
+//! colour channel up at its own σ_ca (docs/lut.md "The absorption axis"). N_R does not depend
+//! on σ_ca; it is stored in every plane so that a texel is four adjacent halves (one 8-byte
+//! read). Tables `M` and `M_s` and the 1/Z_g table do not depend on σ_ca.
 //!
 //! Every axis has uniformly spaced nodes, the first and last on the interval ends; values are
 //! point samples at the nodes, interpolated linearly (bilinearly in 2D).
@@ -43,15 +49,16 @@
 //! | 0 | magic `FURLUT\0\0` |
 //! | 8 | format version (u32, [`FORMAT_VERSION`]) |
 //! | 12 | model version (u32, [`crate::MODEL_VERSION`]) |
-//! | 16 | resolution: n_sum, n_theta_r, n_phi, n_ms_i, n_ms_r (5 × u32) |
-//! | 36 | scales (3 × f32, [`Table::ALL`] order) |
-//! | 48 | parameters: η_c, pigment kind (u32: 0 σ_ca, 1 melanin), pigment (3 × f32), α°, β_m°, β_n°, l, κ, η_m, σ_ms, σ_ma, g, closure (u32: 0 report, 1 energy) |
-//! | 108 | has profiles (u32 0/1), profile generator version (u32) |
-//! | 116 | profile seed (u64) |
-//! | 124 | photon budget: per C^N cell, per C^M row (2 × u32) |
-//! | 132 | profile resolution: n_sigma, n_h, n_psi, n_in, n_out (5 × u32) |
-//! | 152 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
-//! | 160 | table data (u16 halves) |
+//! | 16 | resolution: n_sum, n_theta_r, n_phi, n_ms_i, n_ms_r, n_abs (6 × u32) |
+//! | 40 | scales (3 × f32, [`Table::ALL`] order) |
+//! | 52 | parameters: η_c, pigment kind (u32: 0 σ_ca, 1 melanin), pigment (3 × f32), α°, β_m°, β_n°, l, κ, η_m, σ_ms, σ_ma, g, closure (u32: 0 report, 1 energy) |
+//! | 112 | has profiles (u32 0/1), profile generator version (u32) |
+//! | 120 | profile seed (u64) |
+//! | 128 | photon budget: per C^N cell, per C^M row (2 × u32) |
+//! | 136 | profile resolution: n_sigma, n_h, n_psi, n_in, n_out (5 × u32) |
+//! | 156 | reserved (u32, zero) |
+//! | 160 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
+//! | 168 | table data (u16 halves) |
 //! | [`LutResolution::sampling_start`] | sampling section (f32 prefix sums, [`cdf`]) |
 //! | [`LutResolution::norm_start`] | 1/Z_g(θ_r) table (f32, [`norms`]) |
 
@@ -69,17 +76,61 @@ pub const MAGIC: [u8; 8] = *b"FURLUT\0\0";
 
 /// Version of this layout; a blob of another version is rejected. Version 2 added the
 /// sampling section ([`cdf`]); version 3 the `closure` parameter (docs/model.md §12); version
-/// 4 the energy closure's 1/Z_g table ([`norms`]).
-pub const FORMAT_VERSION: u32 = 4;
+/// 4 the energy closure's 1/Z_g table ([`norms`]); version 5 the absorption axis of table `N`
+/// (one plane per σ_ca node, [`absorption_coordinate`]; the resolution's `n_abs`).
+pub const FORMAT_VERSION: u32 = 5;
 
 /// Length of the fixed header in bytes.
-pub const HEADER_LEN: usize = 160;
+pub const HEADER_LEN: usize = 168;
 
 /// Byte offset of the profile provenance block.
-const PROFILES: usize = 108;
+const PROFILES: usize = 112;
+
+/// Byte offset of the reserved (zero) word before the checksum.
+const RESERVED: usize = 156;
 
 /// Byte range of the checksum field.
-pub const CHECKSUM: Range<usize> = 152..160;
+pub const CHECKSUM: Range<usize> = 160..168;
+
+/// The largest cortex absorption σ_ca per fiber radius (the parameter's domain, docs/model.md
+/// §2): the last node of the absorption axis.
+pub const SIGMA_CA_MAX: f32 = 1000.0;
+
+/// The knee s₀ of the absorption axis (per fiber radius): σ_ca is placed on the axis by
+/// σ/(σ + s₀), so half the nodes lie below σ = s₀ (chosen by measurement, docs/lut.md "The
+/// absorption axis").
+pub const ABSORPTION_KNEE: f32 = 1.0;
+
+/// (σ/(σ + s₀)) at [`SIGMA_CA_MAX`]: the compressed coordinate of the last node.
+const ABSORPTION_COORD_MAX: f32 = SIGMA_CA_MAX / (SIGMA_CA_MAX + ABSORPTION_KNEE);
+
+/// The position of σ_ca on the absorption axis, in [0, 1]: (σ/(σ + s₀))/(σ_max/(σ_max + s₀))
+/// with s₀ = [`ABSORPTION_KNEE`] and σ_max = [`SIGMA_CA_MAX`] (docs/lut.md "The absorption
+/// axis"). Node k of n lies at k/(n − 1) ([`absorption_node`]). σ above σ_max (and +∞) gives
+/// 1, NaN and negative σ give 0 (the callers pass validated [`crate::Absorption`]s).
+#[inline(always)]
+#[must_use]
+pub fn absorption_coordinate(sigma: f32) -> f32 {
+    // `max` first maps NaN to 0 (`clamp` would keep it).
+    #[allow(clippy::manual_clamp)]
+    let s = sigma.max(0.0).min(SIGMA_CA_MAX);
+    // Divided (not multiplied by the reciprocal) so that σ_max lands on exactly 1.
+    (s / (s + ABSORPTION_KNEE) / ABSORPTION_COORD_MAX).min(1.0)
+}
+
+/// σ_ca of node `k` of an absorption axis of `nodes` nodes: the inverse of
+/// [`absorption_coordinate`] at k/(nodes − 1), computed in f64; node 0 is σ = 0 (lossless) and
+/// the last node is exactly [`SIGMA_CA_MAX`].
+#[must_use]
+pub fn absorption_node(k: usize, nodes: u32) -> f32 {
+    let last = nodes.saturating_sub(1).max(1) as usize;
+    if k >= last {
+        return SIGMA_CA_MAX;
+    }
+    let v = k as f64 / last as f64 * f64::from(SIGMA_CA_MAX)
+        / (f64::from(SIGMA_CA_MAX) + f64::from(ABSORPTION_KNEE));
+    (f64::from(ABSORPTION_KNEE) * v / (1.0 - v)) as f32
+}
 
 /// Largest node count accepted on any axis.
 pub const MAX_NODES: u32 = 8192;
@@ -112,8 +163,8 @@ pub enum Table {
     /// M_g(θ_i + θ_r) for the three cuticle groups.
     M = 0,
     /// N_g(|θ_r|, |φ|) of the R, TT and TRT groups (each the sum of its paths' far-field
-    /// N_p) and Σ N^s_p of the scattered lobes, RGB each: [`LobeFamily`](crate::LobeFamily)
-    /// order, channels within.
+    /// N_p) and Σ N^s_p of the scattered lobes, in [`LobeFamily`](crate::LobeFamily) order,
+    /// one plane of n_theta_r rows per node of the absorption axis (format 5).
     N = 1,
     /// M^s_back(θ_i, θ_r) and M^s_front(θ_i, θ_r).
     MS = 2,
@@ -122,10 +173,8 @@ pub enum Table {
 /// Number of tables.
 pub const TABLE_COUNT: usize = 3;
 
-/// Channels of table `N`: family, then RGB.
-const N_CHANNELS: [&str; 12] = [
-    "R.R", "R.G", "R.B", "TT.R", "TT.G", "TT.B", "TRT.R", "TRT.G", "TRT.B", "s.R", "s.G", "s.B",
-];
+/// Channels of table `N`: the four families at the plane's σ_ca.
+const N_CHANNELS: [&str; 4] = ["R", "TT", "TRT", "s"];
 
 impl Table {
     /// All tables in blob order.
@@ -171,6 +220,9 @@ pub struct LutResolution {
     pub n_ms_i: u32,
     /// Nodes of θ_r ∈ [−π/2, π/2] (table `M_s` rows).
     pub n_ms_r: u32,
+    /// Nodes of the absorption axis σ_ca ∈ [0, [`SIGMA_CA_MAX`]] (table `N`'s planes,
+    /// [`absorption_coordinate`]).
+    pub n_abs: u32,
 }
 
 impl LutResolution {
@@ -181,18 +233,26 @@ impl LutResolution {
         n_phi: 128,
         n_ms_i: 96,
         n_ms_r: 96,
+        n_abs: 16,
     };
 
-    /// The node counts with their names, for messages and metadata.
+    /// The node counts with their names, in header order, for messages and metadata.
     #[must_use]
-    pub fn axes(&self) -> [(&'static str, u32); 5] {
+    pub fn axes(&self) -> [(&'static str, u32); 6] {
         [
             ("n_sum", self.n_sum),
             ("n_theta_r", self.n_theta_r),
             ("n_phi", self.n_phi),
             ("n_ms_i", self.n_ms_i),
             ("n_ms_r", self.n_ms_r),
+            ("n_abs", self.n_abs),
         ]
+    }
+
+    /// Texels of one plane of table `N` (one absorption node): n_phi × n_theta_r.
+    #[must_use]
+    pub fn n_plane(&self) -> usize {
+        self.n_phi as usize * self.n_theta_r as usize
     }
 
     /// Checks every axis has 2 ..= [`MAX_NODES`] nodes and the tables hold at most
@@ -211,12 +271,16 @@ impl LutResolution {
         Ok(())
     }
 
-    /// (width, height) of a table in texels.
+    /// (width, height) of a table in texels (table `N`: its planes stacked, n_abs ×
+    /// n_theta_r rows).
     #[must_use]
     pub fn dims(&self, table: Table) -> (usize, usize) {
         match table {
             Table::M => (self.n_sum as usize, 1),
-            Table::N => (self.n_phi as usize, self.n_theta_r as usize),
+            Table::N => (
+                self.n_phi as usize,
+                self.n_theta_r as usize * self.n_abs as usize,
+            ),
             Table::MS => (self.n_ms_i as usize, self.n_ms_r as usize),
         }
     }

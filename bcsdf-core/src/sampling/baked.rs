@@ -12,7 +12,9 @@
 //! | scattered back | M^s_back(θ_i, θ_r)·g(θ_i)/s_back | (1 − \|φ\|/π)·n_s(\|φ\|)/(2 (ν_s − μ_s)) | 2·s_back·(ν_s − μ_s) |
 //! | scattered front | M^s_front(θ_i, θ_r)·g(θ_i)/s_front | (\|φ\|/π)·n_s(\|φ\|)/(2 μ_s) | 2·s_front·μ_s |
 //!
-//! with n_f the mean of family f's three N channels, ν_f = ∫₀^π n_f, μ_s = ∫₀^π (φ/π)·n_s,
+//! with n_f family f's N on the LUT's lossless plane (σ_ca = 0, LUT format 5: the mixture is
+//! the same for every colour, and since absorption only darkens, the weight S·cos θ_i/p_ω at
+//! any colour is at most the lossless one, channel by channel), ν_f = ∫₀^π n_f, μ_s = ∫₀^π (φ/π)·n_s,
 //! m_g = ∫ M_g·g over the restricted range (in the energy closure M_g is multiplied by the
 //! LUT's 1/Z_g, docs/model.md §12) and s_x = ∫ M^s_x·g dθ_i: exact integrals of the
 //! interpolants, from the LUT's prefix sums outside the pole slivers and in closed form
@@ -128,11 +130,11 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         if !(total_weight > 0.0) {
             return 0.0;
         }
-        let mean = |f: usize| (l.n[3 * f] + l.n[3 * f + 1] + l.n[3 * f + 2]) * (1.0 / 3.0);
+        let n = l.n0;
         // M^s's blend exactly as `assemble` forms it.
         let [back, front] = l.ms;
         let ms = back + l.front * (front - back);
-        let p = l.m[0] * mean(0) + l.m[1] * mean(1) + l.m[2] * mean(2) + ms * mean(3);
+        let p = l.m[0] * n[0] + l.m[1] * n[1] + l.m[2] * n[2] + ms * n[3];
         // S's pole factor g: S·cos²θ_i = (Σ M·N)·g (exactly 1 outside the slivers).
         let p = p * pole_keep(cos_theta_i);
         let v = solid_angle_pdf(p / total_weight, cos_theta_i);
@@ -178,6 +180,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     }
 }
 
+/// The LUT at the preset's own colour: [`BakedBcsdf::at`] its [`BakedBcsdf::absorption`].
 impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
     type Math = M;
 

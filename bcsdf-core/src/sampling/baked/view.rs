@@ -9,7 +9,7 @@
 //! [`BakedBcsdf`] go through a view too, so both give the same bits.
 
 use super::rows::Range;
-use crate::baked::BakedBcsdf;
+use crate::baked::{BakedBcsdf, ColourAt};
 use crate::bcsdf::{finish, Sample, SampledDirection};
 use crate::frame::Angles;
 use crate::lobes::Families;
@@ -44,6 +44,8 @@ pub struct BakedView<'l, 'a, M: Math> {
     ranges: [Range; 5],
     /// W = Σ_c A_c.
     total_weight: f32,
+    /// The colour the values are evaluated at (the mixture is the lossless plane's).
+    colour: ColourAt,
 }
 
 impl<'a, M: Math> BakedBcsdf<'a, M> {
@@ -52,6 +54,12 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     #[inline]
     #[must_use]
     pub fn view(&self, theta_r: f32) -> Option<BakedView<'_, 'a, M>> {
+        self.view_with(theta_r, self.default_colour())
+    }
+
+    /// [`BakedBcsdf::view`] evaluating at a located colour ([`crate::BakedAt::view`]).
+    #[inline]
+    pub(crate) fn view_with(&self, theta_r: f32, colour: ColourAt) -> Option<BakedView<'_, 'a, M>> {
         if !(theta_r.is_finite() && theta_r.abs() <= PI / 2.0) {
             return None;
         }
@@ -63,6 +71,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             weights,
             ranges,
             total_weight: a + b + c + d + e,
+            colour,
         })
     }
 }
@@ -112,14 +121,14 @@ impl<M: Math> BakedView<'_, '_, M> {
     /// [`BakedView::pdf`] of validated angles whose θ_r is the view's.
     #[inline(always)]
     pub(crate) fn pdf_at(&self, a: &Angles) -> f32 {
-        let l = self.lut.lookups(a);
+        let l = self.lut.lookups(a, &self.colour);
         BakedBcsdf::<M>::density(&l, self.total_weight, cos_within_half_pi(a.theta_i()))
     }
 
     /// [`BakedView::eval_with_pdf`] of validated angles whose θ_r is the view's.
     #[inline]
     pub(crate) fn eval_with_pdf_at(&self, a: &Angles) -> (Families, f32) {
-        let l = self.lut.lookups(a);
+        let l = self.lut.lookups(a, &self.colour);
         let pdf = BakedBcsdf::<M>::density(&l, self.total_weight, cos_within_half_pi(a.theta_i()));
         (BakedBcsdf::<M>::assemble(&l), pdf)
     }

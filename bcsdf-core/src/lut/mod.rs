@@ -99,7 +99,7 @@ pub const SIGMA_CA_MAX: f32 = 1000.0;
 /// The knee s₀ of the absorption axis (per fiber radius): σ_ca is placed on the axis by
 /// σ/(σ + s₀), so half the nodes lie below σ = s₀ (chosen by measurement, docs/lut.md "The
 /// absorption axis").
-pub const ABSORPTION_KNEE: f32 = 1.0;
+pub const ABSORPTION_KNEE: f32 = 3.0;
 
 /// (σ/(σ + s₀)) at [`SIGMA_CA_MAX`]: the compressed coordinate of the last node.
 const ABSORPTION_COORD_MAX: f32 = SIGMA_CA_MAX / (SIGMA_CA_MAX + ABSORPTION_KNEE);

@@ -1,4 +1,4 @@
-//! The energy closure's longitudinal part (docs/model.md §12, issue 20): every M_p divided by
+//! The energy closure's longitudinal part (docs/model.md §12): every M_p divided by
 //! its mass inside θ_i ∈ [−π/2, π/2].
 //!
 //! - `lossless_furnace_keeps_the_azimuthal_energy`: every preset made lossless (σ_ca = σ_ma = 0),

@@ -179,7 +179,7 @@ pub struct RenderArgs {
     pub method: Method,
 
     /// Render path, dual and single, and write them side by side with |dual − path|
-    /// (compare.png, compare.exr) and issue 23's numbers (compare.json, stdout) instead of
+    /// (compare.png, compare.exr) and the comparison metrics (compare.json, stdout) instead of
     /// one render (docs/model.md §13).
     #[arg(long, conflicts_with = "method")]
     pub compare: bool,

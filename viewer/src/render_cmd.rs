@@ -1,6 +1,6 @@
 //! `viewer render`: path-traces a built-in scene with the `render` crate and writes
 //! render.exr, render.png and render.json through `bake::fsutil` (docs/model.md §11); with
-//! `--compare`, path, dual and single side by side with the difference and issue 23's
+//! `--compare`, path, dual and single side by side with the difference and the comparison
 //! numbers (compare.png, compare.exr, compare.json; docs/model.md §13).
 
 use crate::catalog;

@@ -11,7 +11,7 @@
 //!   within 3.0e-6 everywhere; baked (default resolution, LUT format 4: 1/Z_g from the LUT's
 //!   table, the pole slivers integrated exactly) within 4e-3 below 85°, but over by up to
 //!   6.4e-3 at ±85° (human-fur) and 9.8e-3 at ±89° (human-fur), so at |θ_r| ≥ 80° the baked
-//!   check is held to 1 % only — not yet the issue's 0.5 %. With format 3's per-query masses
+//!   check is held to 1 % only — not yet the 0.5 % budget. With format 3's per-query masses
 //!   and three-point sliver estimate it was 6.2e-3 and 9.2e-3: the normalisation is not the
 //!   cause; table `N`'s θ_r interpolation is (nodes 1.9° apart where Σ⟨A_p⟩ curves sharply
 //!   toward grazing view; docs/lut.md, "The 1/Z_g table").
@@ -34,7 +34,7 @@ use fur_tests::profiles_ref::m_s_kinks;
 use std::f64::consts::{PI, TAU};
 use std::path::PathBuf;
 
-/// The view angles of the issue's furnace check, degrees.
+/// The view angles of the lossless furnace check (docs/accuracy.md), degrees.
 const THETAS: [f32; 11] = [
     0.0, 30.0, -30.0, 60.0, -60.0, 80.0, -80.0, 85.0, -85.0, 89.0, -89.0,
 ];
@@ -150,7 +150,7 @@ fn lossless_furnace_keeps_the_azimuthal_energy() {
 #[test]
 fn report_closure_keeps_todays_numbers() {
     // Lossless human hair (κ = 0: the unscattered paths are the whole model), analytic far
-    // field, report closure. The issue measured 0.993, 0.991, 0.967, 0.748, 0.346 through the
+    // field, report closure. A separate run measured 0.993, 0.991, 0.967, 0.748, 0.346 through the
     // C ABI (baked); the pins are this evaluator's values, which the closure setting leaves
     // bit for bit as model version 2 computed them (M_p times exactly 1).
     let p = lossless(&presets::find("human-hair").unwrap().input, Closure::Report);
@@ -174,7 +174,7 @@ fn report_closure_keeps_todays_numbers() {
         );
         assert!(
             (rho - from_issue).abs() <= 2e-3,
-            "θ_r {t}°: {rho} vs the issue's {from_issue}"
+            "θ_r {t}°: {rho} vs the C ABI's {from_issue}"
         );
     }
 }

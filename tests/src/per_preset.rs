@@ -131,7 +131,10 @@ mod tests {
             let mut listed = super::super::CORE_PRESETS.to_vec();
             by_macro.sort_unstable();
             listed.sort_unstable();
-            assert_eq!(by_macro, listed, "CORE_PRESETS and the macro's literal arms differ");
+            assert_eq!(
+                by_macro, listed,
+                "CORE_PRESETS and the macro's literal arms differ"
+            );
         }
     }
 }

@@ -17,9 +17,10 @@ pub const MAX_THREADS: usize = 4096;
 /// it (see [`profile_seconds`]).
 pub const MAX_PHOTONS_SCALE: f64 = 16.0;
 
-/// Measured core-seconds to generate one preset's medulla profiles at `--photons-scale 1`
-/// (bobcat, the default resolution; release build): the base of [`profile_seconds`].
-pub const PROFILE_CORE_SECONDS: f64 = 16.0;
+/// Core-seconds to generate one preset's medulla profiles at `--photons-scale 1` (the
+/// default resolution, release build; docs/model.md §12 measures ~10 s per preset on two
+/// cores): the base of [`profile_seconds`].
+pub const PROFILE_CORE_SECONDS: f64 = 20.0;
 
 /// The machine's available parallelism (1 when it cannot be told).
 #[must_use]

@@ -109,6 +109,9 @@ pub fn duration(seconds: f64) -> String {
     if !seconds.is_finite() {
         return "forever".to_string();
     }
+    if seconds > 100.0 * 365.0 * 86_400.0 {
+        return "more than a century".to_string();
+    }
     if seconds < 90.0 {
         format!("{seconds:.0} s")
     } else if seconds < 5400.0 {
@@ -162,5 +165,6 @@ mod tests {
         assert_eq!(duration(7200.0), "2.0 h");
         assert_eq!(duration(864_000.0), "10.0 days");
         assert_eq!(duration(f64::INFINITY), "forever");
+        assert_eq!(duration(1e30), "more than a century");
     }
 }

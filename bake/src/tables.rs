@@ -52,7 +52,8 @@ pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
         })
         .collect();
 
-    // N_g(|θ_r|, |φ|): one far-field azimuthal evaluation per node gives all four families.
+    // N_g(|θ_r|, |φ|): one far-field azimuthal evaluation per node gives all four families
+    // (the energy closure's residual, `Lobe::Residual`, shares TRT's M: N_TRT carries it).
     let rows: Vec<Vec<[[f32; 3]; 4]>> = (0..res.n_theta_r as usize)
         .into_par_iter()
         .map(|r| {
@@ -67,11 +68,6 @@ pub fn sample(model: &FurBcsdf<'_>, res: LutResolution) -> TableValues {
                         for (acc, v) in fam[f].iter_mut().zip(lobes[lobe.index()].0) {
                             *acc += v;
                         }
-                    }
-                    // The energy closure's residual shares TRT's M: N_TRT carries it.
-                    let res = model.residual_azimuthal_far(theta_r.min(PI / 2.0), phi);
-                    for (acc, v) in fam[LobeFamily::TRT as usize].iter_mut().zip(res.0) {
-                        *acc += v;
                     }
                     fam
                 })

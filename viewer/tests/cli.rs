@@ -246,8 +246,11 @@ fn probe_prints_json_with_every_lobe_and_total_is_their_sum() {
             if p.lobes.iter().filter(|(_, v)| v[0] > 0.0).count() >= 3 {
                 multi_lobe += 1;
             }
-            let scattered = p.lobes[bcsdf_core::UNSCATTERED_COUNT..]
+            // The three scattered lobes (the residual, after them, is in every preset).
+            let scattered = p
+                .lobes
                 .iter()
+                .filter(|(name, _)| Lobe::SCATTERED.iter().any(|l| l.name() == name))
                 .any(|(_, v)| v[0] > 0.0);
             if scattered {
                 lit_scattered.push(preset);

@@ -17,7 +17,7 @@
 //!   toward grazing view; docs/lut.md, "The 1/Z_g table").
 //! - `report_closure_keeps_todays_numbers`: the report closure's lossless ρ(θ_r), pinned.
 //! - `residual_furnace_*` (one per preset): the model with its residual (docs/model.md §12,
-//!   "Residual"), lossless, analytic far field, near field averaged over 48 offsets, and baked
+//!   "Residual"), lossless, analytic far field, near field averaged over 48 offsets (θ_r ≥ 0), and baked
 //!   far field (default resolution, today's baked 1/Z_g): ρ(θ_r) = 1 within 0.5 % at every θ_r
 //!   above (the residual returns what the lobes leave out; measured worst 1.5e-3 analytic,
 //!   1.4e-3 baked, both air-medulla).
@@ -257,8 +257,10 @@ fn check_residual_furnace(name: &str) {
         let tr = t.to_radians();
         let far = furnace_full(&model, tr, |a| model.eval_far(a).total().0[0]);
         // Near field: S at h (eleven lobes and the residual's own h-profile), h by the
-        // midpoint rule.
-        let near = (0..NEAR_H)
+        // midpoint rule; at the non-negative θ_r only, which halves the test's cost (the far
+        // field and the LUT are checked at both signs; the near field's every-path agreement
+        // with the far field at random angles is viewer/tests/every_path.rs's).
+        let near = (0..if t >= 0.0 { NEAR_H } else { 0 })
             .map(|k| {
                 let h = -1.0 + (k as f32 + 0.5) * 2.0 / NEAR_H as f32;
                 furnace_full(&model, tr, |a| model.eval_near(a, h).total().0[0])
@@ -267,6 +269,9 @@ fn check_residual_furnace(name: &str) {
             / NEAR_H as f64;
         let lut = furnace_full(&model, tr, |a| baked.eval(a).total().0[0]);
         for (k, rho) in [far, near, lut].into_iter().enumerate() {
+            if k == 1 && t < 0.0 {
+                continue;
+            }
             let err = (rho - 1.0).abs();
             worst[k] = worst[k].max(err);
             assert!(

@@ -14,7 +14,7 @@
 //!   lookup, so that its cost is a ratio measured in one run.
 //!
 //! - `far_field_baked_reference/<preset>`: a copy of the scalar baked path as it was before
-//!   issue 12 (`reference` below), so that the speed-up is a ratio measured in one run;
+//!   the SIMD kernels (`reference` below), so that the speed-up is a ratio measured in one run;
 //! - `far_field_baked_batch/<preset>/<size>`: `BakedBcsdf::eval_far_batch` over consecutive
 //!   batches of `size` queries (structure of arrays), per query (criterion's throughput),
 //!   with the CPU's best kernel (`Kernel::best`), and `sse2-256` with the baseline (SSE2) kernel;
@@ -39,7 +39,7 @@ use bcsdf_core::{presets, Angles, FurParams};
 use bcsdf_core::{Rgb, Vec3};
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 
-/// The scalar baked evaluation before issue 12 (commit 406e438), restated over the public
+/// The scalar baked evaluation before the SIMD kernels (commit 406e438), restated over the public
 /// LUT layout: per-channel loops over decoded texel pairs, saturating float-to-int
 /// conversions, a branch in the cosine, the families formed and then summed.
 mod reference {

@@ -1,4 +1,4 @@
-//! The dual-scattering term against one baked evaluation, in the same run (issue 23's speed
+//! The dual-scattering term against one baked evaluation, in the same run (the term's speed
 //! check: the term at most 2× the cost of a baked eval; docs/model.md §13):
 //!
 //! - `dual_baked_eval/<preset>`: `BakedBcsdf::eval_far(..).total()`, the LUT at the default

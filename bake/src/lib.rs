@@ -19,6 +19,7 @@
 #![deny(missing_docs)]
 
 pub mod fsutil;
+pub mod limits;
 pub mod lutfile;
 pub mod metrics;
 pub mod overrides;

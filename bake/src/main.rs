@@ -96,7 +96,8 @@ struct Cli {
     #[arg(long, value_name = "N", default_value_t = LutResolution::DEFAULT.n_ms_i)]
     res_ms: u32,
 
-    /// Threads (default: one per core). The LUTs are the same bits for any count.
+    /// Threads (default and 0: one per core; at most 8 per core, above 4096 refused). The
+    /// LUTs are the same bits for any count.
     #[arg(long, value_name = "N")]
     threads: Option<usize>,
 
@@ -121,7 +122,8 @@ struct Cli {
     #[arg(long, value_name = "N", default_value_t = profiles::DEFAULT_SEED)]
     seed: u64,
 
-    /// Multiply the photons per profile cell by F (1: noise below 1 %).
+    /// Multiply the photons per profile cell by F (1: noise below 1 %; at most 16, the
+    /// generation time grows with F and is estimated above 1).
     #[arg(long, value_name = "F", default_value_t = 1.0)]
     photons_scale: f64,
 }
@@ -205,13 +207,11 @@ fn options(cli: &Cli) -> Result<BakeOptions, Failure> {
         n_abs: LutResolution::DEFAULT.n_abs,
     };
     res.validate().map_err(input)?;
-    let budget =
-        profiles::scale_budget(PhotonBudget::DEFAULT, cli.photons_scale).ok_or_else(|| {
-            input(format!(
-                "--photons-scale {} must be finite and positive",
-                cli.photons_scale
-            ))
-        })?;
+    let (budget, note) =
+        bake::limits::photon_budget(PhotonBudget::DEFAULT, cli.photons_scale).map_err(input)?;
+    if let Some(note) = note {
+        eprintln!("note: {note}");
+    }
     let cache_dir = if cli.no_cache {
         None
     } else {
@@ -252,7 +252,11 @@ fn run(cli: Cli) -> Result<u8, Failure> {
         .map_err(input)?;
     let selected = select(&cli, shard)?;
     let mut opts = options(&cli)?;
-    if let Some(n) = cli.threads {
+    let (threads, note) = bake::limits::threads("--threads", cli.threads).map_err(input)?;
+    if let Some(note) = note {
+        eprintln!("note: {note}");
+    }
+    if let Some(n) = threads {
         rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build_global()

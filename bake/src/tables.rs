@@ -57,7 +57,8 @@ pub fn sample(model: &FurBcsdf<'_>, planes: &[FurBcsdf<'_>], res: LutResolution)
         .collect();
 
     // N_g(|θ_r|, |φ|) per absorption plane: one far-field azimuthal evaluation per node
-    // gives all four families; the planes are grey, so channel 0 is the plane's value.
+    // gives all four families (the energy closure's residual, `Lobe::Residual`, shares TRT's
+    // M: N_TRT carries it); the planes are grey, so channel 0 is the plane's value.
     assert_eq!(
         planes.len(),
         res.n_abs as usize,
@@ -79,11 +80,6 @@ pub fn sample(model: &FurBcsdf<'_>, planes: &[FurBcsdf<'_>], res: LutResolution)
                         for (acc, v) in fam[f].iter_mut().zip(lobes[lobe.index()].0) {
                             *acc += v;
                         }
-                    }
-                    // The energy closure's residual shares TRT's M: N_TRT carries it.
-                    let res = model.residual_azimuthal_far(theta_r.min(PI / 2.0), phi);
-                    for (acc, v) in fam[LobeFamily::TRT as usize].iter_mut().zip(res.0) {
-                        *acc += v;
                     }
                     fam
                 })

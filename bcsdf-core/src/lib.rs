@@ -90,6 +90,7 @@ pub mod medulla;
 pub mod params;
 pub mod presets;
 pub mod residual;
+pub mod residual_gen;
 pub mod shader;
 
 mod bcsdf;
@@ -121,6 +122,8 @@ pub mod math;
 pub mod model;
 #[doc(hidden)] // PCG32: viewer sample's documented stream, the GPU tests, fur-tests
 pub mod rng;
+#[doc(hidden)] // the samplers' 1D building blocks (re-exported by sampling)
+pub mod sample1d;
 #[doc(hidden)] // the samplers' 1D building blocks; sampling itself is the Bcsdf trait
 pub mod sampling;
 #[doc(hidden)] // the scattered lobes

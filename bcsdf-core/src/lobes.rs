@@ -5,9 +5,10 @@ use crate::spectrum::Rgb;
 /// One light path of the model (docs/model.md §3, §6). Uppercase events happen at the cuticle,
 /// lowercase at the medulla boundary.
 ///
-/// The first eight are the unscattered paths (docs/model.md §3); the last three carry the light
-/// scattered inside the medulla (docs/model.md §6). Code matching on it should use `Lobe::ALL` and
-/// [`Lobe::name`].
+/// The first eight are the unscattered paths (docs/model.md §3); the next three carry the light
+/// scattered inside the medulla (docs/model.md §6); the last, [`Lobe::Residual`], every path the
+/// eleven leave out (the energy closure's residual, docs/model.md §12; zero in the report
+/// closure). Code matching on it should use `Lobe::ALL` and [`Lobe::name`].
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Lobe {
@@ -33,10 +34,13 @@ pub enum Lobe {
     TtrtTs = 9,
     /// Scattered on the medulla chord after the cuticle reflection (TttRttT^s).
     TttRttTs = 10,
+    /// The energy closure's residual S_res = M_TRT·N_res/cos²θ_i: every path the eleven lobes
+    /// leave out (docs/model.md §12, "Residual"); in the TRT family, zero in the report closure.
+    Residual = 11,
 }
 
 /// Number of lobes in a [`Lobes`] breakdown.
-pub const LOBE_COUNT: usize = 11;
+pub const LOBE_COUNT: usize = 12;
 
 /// Number of unscattered lobes (the first ones in [`Lobe::ALL`]).
 pub const UNSCATTERED_COUNT: usize = 8;
@@ -66,6 +70,7 @@ impl Lobe {
         Lobe::TttTs,
         Lobe::TtrtTs,
         Lobe::TttRttTs,
+        Lobe::Residual,
     ];
 
     /// The path's name as written in docs/model.md (`"TttRttT"`).
@@ -83,6 +88,7 @@ impl Lobe {
             Lobe::TttTs => "TttT_s",
             Lobe::TtrtTs => "TtrtT_s",
             Lobe::TttRttTs => "TttRttT_s",
+            Lobe::Residual => "residual",
         }
     }
 
@@ -107,14 +113,14 @@ impl Lobe {
         self as usize
     }
 
-    /// The cuticle group whose M_p and roughness an unscattered path uses; `None` for the
-    /// scattered lobes, which share M^s.
+    /// The cuticle group whose M_p an unscattered path (or the residual, which uses TRT's M,
+    /// docs/model.md §12) uses; `None` for the scattered lobes, which share M^s.
     #[must_use]
     pub const fn group(self) -> Option<LobeGroup> {
         match self {
             Lobe::R => Some(LobeGroup::R),
             Lobe::TT | Lobe::TrT | Lobe::TttT | Lobe::TtrtT => Some(LobeGroup::TT),
-            Lobe::TRT | Lobe::TrRrT | Lobe::TttRttT => Some(LobeGroup::TRT),
+            Lobe::TRT | Lobe::TrRrT | Lobe::TttRttT | Lobe::Residual => Some(LobeGroup::TRT),
             Lobe::TttTs | Lobe::TtrtTs | Lobe::TttRttTs => None,
         }
     }
@@ -209,7 +215,7 @@ pub enum LobeFamily {
     R = 0,
     /// TT, TrT, TttT, TtrtT.
     TT = 1,
-    /// TRT, TrRrT, TttRttT.
+    /// TRT, TrRrT, TttRttT and the energy closure's residual (docs/model.md §12).
     TRT = 2,
     /// TttT^s, TtrtT^s, TttRttT^s.
     Scattered = 3,
@@ -321,7 +327,11 @@ mod tests {
         }
         // The unscattered and scattered lists split ALL in order.
         assert_eq!(Lobe::UNSCATTERED[..], Lobe::ALL[..UNSCATTERED_COUNT]);
-        assert_eq!(Lobe::SCATTERED[..], Lobe::ALL[UNSCATTERED_COUNT..]);
+        assert_eq!(
+            Lobe::SCATTERED[..],
+            Lobe::ALL[UNSCATTERED_COUNT..UNSCATTERED_COUNT + 3]
+        );
+        assert_eq!(Lobe::ALL[LOBE_COUNT - 1], Lobe::Residual);
         for (i, lobe) in Lobe::UNSCATTERED.iter().enumerate() {
             assert_eq!(lobe.group(), Some(Lobe::unscattered_group(i)));
             assert!(!lobe.is_scattered());
@@ -335,8 +345,8 @@ mod tests {
         let group = |g| Lobe::ALL.iter().filter(move |l| l.group() == Some(g));
         assert_eq!(group(LobeGroup::R).count(), 1);
         assert!(group(LobeGroup::TT).all(|l| !l.name().contains('R')));
-        assert!(group(LobeGroup::TRT).all(|l| l.name().contains('R')));
-        assert_eq!(group(LobeGroup::TRT).count(), 3);
+        assert!(group(LobeGroup::TRT).all(|l| l.name().contains('R') || l == &Lobe::Residual));
+        assert_eq!(group(LobeGroup::TRT).count(), 4);
         for lobe in Lobe::ALL {
             let fam = LobeFamily::of(lobe);
             match lobe.group() {
@@ -354,13 +364,14 @@ mod tests {
         }
         let lobes = Lobes::from_array(values);
         let fam = lobes.families();
-        // Bit masks of the lobes in each family: R {0}, TT {1,3,4,5}, TRT {2,6,7}, s {8,9,10}.
-        let masks = [0b1u32, 0b11_1010, 0b1100_0100, 0b111_0000_0000];
+        // Bit masks of the lobes in each family: R {0}, TT {1,3,4,5}, TRT {2,6,7,11},
+        // s {8,9,10}.
+        let masks = [0b1u32, 0b11_1010, 0b1000_1100_0100, 0b111_0000_0000];
         for (f, mask) in LobeFamily::ALL.iter().zip(masks) {
             assert_eq!(fam.get(*f), Rgb([1.0, 2.0, 4.0]) * mask as f32, "{f:?}");
         }
         assert_eq!(fam.total(), lobes.total());
-        assert_eq!(lobes.total(), Rgb([2047.0, 4094.0, 8188.0]));
+        assert_eq!(lobes.total(), Rgb([4095.0, 8190.0, 16380.0]));
         assert_eq!(lobes.as_array(), &values);
         assert_eq!(Lobes::ZERO.total(), Rgb::ZERO);
         assert_eq!(Families::ZERO, Lobes::ZERO.families());

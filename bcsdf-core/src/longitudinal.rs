@@ -4,12 +4,29 @@
 use crate::gaussian::{erf_mass, Gaussian, WrappedGaussian, CUTOFF_SIGMAS};
 use crate::lobes::LobeGroup;
 use crate::math::Math;
-use crate::model::POLE_SLIVER;
 use crate::params::{Closure, FurParams};
 use core::f64::consts::FRAC_2_SQRT_PI;
 
 /// 1/√π (G(y; β) = e^{−y²/2β²}·k/√π with k = 1/(√2·β)).
 const FRAC_1_SQRT_PI: f64 = 0.5 * FRAC_2_SQRT_PI;
+
+/// Smallest cos²θ_i the 1/cos²θ_i factor of eq. 1 divides by (θ_i ≈ ±89.4°): keeps S finite
+/// for grazing light (docs/model.md §8; re-exported as `model::MIN_COS2_THETA_I`).
+pub const MIN_COS2_THETA_I: f32 = 1e-4;
+
+/// Width of the pole slivers where that guard acts: cos²θ_i < [`MIN_COS2_THETA_I`] within
+/// s_c = asin √1e-4 ≈ 0.573° of θ_i = ±90° (the energy closure's normalisation accounts for
+/// them, docs/model.md §12; re-exported as `model::POLE_SLIVER`).
+pub const POLE_SLIVER: f32 = 0.010_000_167;
+
+/// 1/cos²θ_i of eq. 1 (docs/model.md §8), with cos²θ_i kept at or above
+/// [`MIN_COS2_THETA_I`]. The analytic and the baked evaluators both divide by this
+/// (re-exported as `model::inv_cos2_theta_i`).
+#[inline]
+#[must_use]
+pub fn inv_cos2_theta_i(cos_theta_i: f32) -> f32 {
+    1.0 / (cos_theta_i * cos_theta_i).max(MIN_COS2_THETA_I)
+}
 
 /// Smallest mass inside [−π/2, π/2] the energy closure divides by (docs/model.md §12): keeps
 /// M_p finite when a lobe lies almost wholly beyond a pole (a large tilt α seen at grazing
@@ -99,7 +116,7 @@ impl GroupLobes {
 /// Z = ∫ G(c + θ_i; β)·min(1, cos²θ_i / 1e-4) dθ_i over θ_i ∈ [−π/2, π/2]
 /// (docs/model.md §12): the mass of the Gaussian inside the sphere, less what the guard of
 /// S's 1/cos²θ_i removes in the pole slivers (|θ_i| within s_c = [`POLE_SLIVER`] of ±90°,
-/// `model::MIN_COS2_THETA_I`), so that S·cos θ_i integrates M_p to exactly 1. In the slivers cos²θ_i = sin²s is
+/// [`MIN_COS2_THETA_I`]), so that S·cos θ_i integrates M_p to exactly 1. In the slivers cos²θ_i = sin²s is
 /// taken as s²·(1e-4/s_c²) (s the distance to the pole; relative error below s_c²/3 =
 /// 3.3e-5 of the sliver's part), which leaves Gaussian moments: closed forms in erf and exp, in f64.
 fn sphere_mass(beta: f64, c: f64) -> f32 {

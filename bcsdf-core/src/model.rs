@@ -5,7 +5,7 @@
 use crate::far_field::FarFieldQuery;
 use crate::frame::{Angles, Vec3};
 use crate::geometry::{Chord, MedullaEvent, ViewSlice};
-use crate::lobes::{Families, Lobe, LobeFamily, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
+use crate::lobes::{Families, Lobe, LobeGroup, Lobes, LOBE_COUNT, UNSCATTERED_COUNT};
 use crate::longitudinal::GroupLobes;
 use crate::math::{Libm, Math};
 use crate::medulla::{MedullaProfiles, ProfileError};
@@ -18,26 +18,13 @@ use crate::spectrum::Rgb;
 use crate::unscattered::{paths_at, Extinction};
 use core::marker::PhantomData;
 
-/// Smallest cos²θ_i the 1/cos²θ_i factor of eq. 1 divides by (θ_i ≈ ±89.4°): keeps S finite
-/// for grazing light.
-pub const MIN_COS2_THETA_I: f32 = 1e-4;
-
-/// Width of the pole slivers where that guard acts: cos²θ_i < [`MIN_COS2_THETA_I`] within
-/// s_c = asin √1e-4 ≈ 0.573° of θ_i = ±90° (the energy closure's normalisation accounts for
-/// them, docs/model.md §12).
-pub const POLE_SLIVER: f32 = 0.010_000_167;
+/// S's pole guard (docs/model.md §8, §12), defined with the longitudinal lobes whose
+/// normalisation accounts for it; re-exported here, where tools and tests name it.
+pub use crate::longitudinal::{inv_cos2_theta_i, MIN_COS2_THETA_I, POLE_SLIVER};
 
 /// Version of the model's formulas: any change to what S evaluates to bumps it, so baked
 /// tables made by an older model are recognised (`lut` header).
 pub const MODEL_VERSION: u32 = 4;
-
-/// 1/cos²θ_i of eq. 1, with cos²θ_i kept at or above [`MIN_COS2_THETA_I`]. The analytic and
-/// the baked evaluators both divide by this.
-#[inline]
-#[must_use]
-pub fn inv_cos2_theta_i(cos_theta_i: f32) -> f32 {
-    1.0 / (cos_theta_i * cos_theta_i).max(MIN_COS2_THETA_I)
-}
 
 /// The medulla-scattering part of a model: borrowed profiles and the precomputed M^s.
 #[derive(Clone, Copy, Debug)]
@@ -80,8 +67,9 @@ pub struct FurBcsdf<'a, M: Math = Libm> {
     _math: PhantomData<M>,
 }
 
-/// The unscattered lobes assembled with M_p, in breakdown order, plus the scattered ones.
-pub(crate) type Azimuthal = ([Rgb; UNSCATTERED_COUNT], [Rgb; SCATTERED_COUNT]);
+/// The azimuthal parts M multiplies: the unscattered lobes' N_p in breakdown order, the
+/// scattered ones' N^s_p, and the energy closure's N_res (docs/model.md §12).
+pub(crate) type Azimuthal = ([Rgb; UNSCATTERED_COUNT], [Rgb; SCATTERED_COUNT], Rgb);
 
 impl<M: Math> FurBcsdf<'static, M> {
     /// The unscattered part of the model only (R … TttRttT); the scattered lobes are zero.
@@ -121,9 +109,11 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     }
 
     /// This model with the residual table `table` (docs/model.md §12, "Residual"), which must
-    /// have been made for these parameters ([`crate::residual::generate`] from this model
-    /// without a residual). In the energy closure S gains M_TRT·N_res/cos²θ_i, folded into the
-    /// TRT family of [`FurBcsdf::eval_far`]; the report closure ignores it.
+    /// have been made for these parameters ([`crate::residual_gen::generate`] from this model
+    /// without a residual). In the energy closure S gains M_TRT·N_res/cos²θ_i, the
+    /// [`Lobe::Residual`] entry of every evaluation ([`FurBcsdf::eval_far_lobes`],
+    /// [`FurBcsdf::eval_near`] with A_res's own h-profile, the `*_dirs` variants, and the TRT
+    /// family of [`FurBcsdf::eval_far`]); the report closure ignores it.
     pub fn with_residual(self, table: ResidualTable<'a>) -> Result<FurBcsdf<'a, M>, ProfileError> {
         if !table.matches(&self.params) {
             return Err(ProfileError::Mismatch);
@@ -152,38 +142,37 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     /// in the report closure or without a residual table.
     #[must_use]
     pub fn residual_azimuthal_far(&self, theta_r: f32, phi: f32) -> Rgb {
-        match self.active_residual() {
-            Some(t) if theta_r.is_finite() && phi.is_finite() => t.far(theta_r, phi),
-            _ => Rgb::ZERO,
+        self.residual_azimuthal(theta_r, phi, None)
+    }
+
+    /// N_res(θ_r, h, φ) = A_res(θ_r, |h|)·D_res(θ_r, |φ|) at offset `h` (A_res linear in |h|
+    /// between the table's offsets, whose h-mean is exactly the far field's ⟨A_res⟩_h), or the
+    /// far field ⟨A_res⟩_h·D_res with `None` (docs/model.md §12, "Residual"). Zero in the
+    /// report closure, without a residual table, or for an offset off the fiber.
+    fn residual_azimuthal(&self, theta_r: f32, phi: f32, h: Option<f32>) -> Rgb {
+        let Some(t) = self.active_residual() else {
+            return Rgb::ZERO;
+        };
+        if !(theta_r.is_finite() && phi.is_finite()) {
+            return Rgb::ZERO;
+        }
+        match h {
+            None => t.far(theta_r, phi),
+            Some(h) if h.is_finite() && (-1.0..=1.0).contains(&h) => t.near(theta_r, h, phi),
+            Some(_) => Rgb::ZERO,
         }
     }
 
     /// The residual's S: M_TRT(θ_i, θ_r)·N_res/cos²θ_i, with the near-field N_res at `h`
-    /// when given, the far field otherwise (docs/model.md §12, "Residual").
+    /// when given, the far field otherwise (docs/model.md §12, "Residual"): the
+    /// [`Lobe::Residual`] entry of [`FurBcsdf::eval_near`] / [`FurBcsdf::eval_far_lobes`].
     #[must_use]
     pub fn eval_residual(&self, angles: &Angles, h: Option<f32>) -> Rgb {
-        let Some(t) = self.active_residual() else {
-            return Rgb::ZERO;
-        };
-        let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
-        let n = match h {
-            Some(h) if h.is_finite() && (-1.0..=1.0).contains(&h) => t.near(tr, h, phi),
-            Some(_) => return Rgb::ZERO,
-            None => t.far(tr, phi),
-        };
-        let m = self.groups.m::<M>(ResidualTable::GROUP, ti, tr) * inv_cos2_theta_i(M::cos(ti));
-        (n * m).map(|c| if c.is_finite() && c > 0.0 { c } else { 0.0 })
-    }
-
-    /// `families` (the eleven lobes' far field) with the far-field residual added to the TRT
-    /// family.
-    pub(crate) fn add_residual_far(&self, angles: &Angles, families: Families) -> Families {
-        if self.active_residual().is_none() {
-            return families;
-        }
-        let mut f = *families.as_array();
-        f[LobeFamily::TRT as usize] += self.eval_residual(angles, None);
-        Families::from_array(f)
+        let n = self.residual_azimuthal(angles.theta_r(), angles.phi(), h);
+        let m = self
+            .groups
+            .m::<M>(ResidualTable::GROUP, angles.theta_i(), angles.theta_r());
+        finite_non_negative(n * (m * inv_cos2_theta_i(M::cos(angles.theta_i()))))
     }
 
     /// The parameters this model was built from.
@@ -209,7 +198,8 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         self.params.sigma_ms() * self.params.kappa() * slice.inv_cos_tm
     }
 
-    /// Multiplies N_p by M_p, N^s_p by M^s, and divides by cos²θ_i (report eq. 1).
+    /// Multiplies N_p by M_p, N^s_p by M^s, N_res by M_TRT (docs/model.md §12), and divides
+    /// by cos²θ_i (report eq. 1).
     pub(crate) fn assemble(&self, angles: &Angles, n: &Azimuthal) -> Lobes {
         let (ti, tr) = (angles.theta_i(), angles.theta_r());
         let inv_cos2 = inv_cos2_theta_i(M::cos(ti));
@@ -231,26 +221,24 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         for (k, v) in n.1.iter().enumerate() {
             out[UNSCATTERED_COUNT + k] = *v * (ms * inv_cos2);
         }
+        out[Lobe::Residual.index()] = n.2 * (m[ResidualTable::GROUP as usize] * inv_cos2);
         // Never hand NaN or a negative value to a renderer.
-        for v in out.iter_mut() {
-            *v = v.map(|c| if c.is_finite() && c > 0.0 { c } else { 0.0 });
-        }
-        Lobes::from_array(out)
+        Lobes::from_array(out.map(finite_non_negative))
     }
 
-    /// Near-field azimuthal lobes: N_p(h, φ) = A_p(h)·D_p(φ − Φ_p(h)) (report eq. 4) and the
-    /// scattered N^s_p(h, φ) (report eq. 6), in [`Lobe::ALL`] order.
+    /// Near-field azimuthal lobes: N_p(h, φ) = A_p(h)·D_p(φ − Φ_p(h)) (report eq. 4), the
+    /// scattered N^s_p(h, φ) (report eq. 6) and the residual's N_res(θ_r, h, φ)
+    /// (docs/model.md §12), in [`Lobe::ALL`] order.
     #[must_use]
     pub fn azimuthal_near(&self, theta_r: f32, phi: f32, h: f32) -> [Rgb; LOBE_COUNT] {
-        let (u, s) = self.azimuthal_near_parts(theta_r, phi, h);
-        join(&u, &s)
+        join(&self.azimuthal_near_parts(theta_r, phi, h))
     }
 
     fn azimuthal_near_parts(&self, theta_r: f32, phi: f32, h: f32) -> Azimuthal {
         let mut n = [Rgb::ZERO; UNSCATTERED_COUNT];
         let mut ns = [Rgb::ZERO; SCATTERED_COUNT];
         if !(h.is_finite() && (-1.0..=1.0).contains(&h) && theta_r.is_finite() && phi.is_finite()) {
-            return (n, ns);
+            return (n, ns, Rgb::ZERO);
         }
         let (slice, ext) = self.slice_and_extinction(theta_r);
         let chord = Chord::at_offset::<M>(&slice, h);
@@ -273,15 +261,14 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
                 }
             }
         }
-        (n, ns)
+        (n, ns, self.residual_azimuthal(theta_r, phi, Some(h)))
     }
 
-    /// Far-field azimuthal lobes N_p(φ) = ½ ∫ N_p(h, φ) dh (docs/model.md §5, §6), in
-    /// [`Lobe::ALL`] order.
+    /// Far-field azimuthal lobes N_p(φ) = ½ ∫ N_p(h, φ) dh (docs/model.md §5, §6) and the
+    /// residual's ⟨A_res⟩_h·D_res (§12), in [`Lobe::ALL`] order.
     #[must_use]
     pub fn azimuthal_far(&self, theta_r: f32, phi: f32) -> [Rgb; LOBE_COUNT] {
-        let (u, s) = self.azimuthal_far_parts(theta_r, phi);
-        join(&u, &s)
+        join(&self.azimuthal_far_parts(theta_r, phi))
     }
 
     fn azimuthal_far_parts(&self, theta_r: f32, phi: f32) -> Azimuthal {
@@ -304,10 +291,8 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         coeffs: &([f32; UNSCATTERED_COUNT], [f32; SCATTERED_COUNT]),
     ) -> (Azimuthal, f32) {
         if !(theta_r.is_finite() && phi.is_finite()) {
-            return (
-                ([Rgb::ZERO; UNSCATTERED_COUNT], [Rgb::ZERO; SCATTERED_COUNT]),
-                0.0,
-            );
+            let zero = [Rgb::ZERO; UNSCATTERED_COUNT];
+            return ((zero, [Rgb::ZERO; SCATTERED_COUNT], Rgb::ZERO), 0.0);
         }
         let (slice, ext) = self.slice_and_extinction(theta_r);
         let query = FarFieldQuery {
@@ -333,7 +318,8 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
             let k = t.scattered_scale(theta_r);
             ns = ns.map(|v| v * k);
         }
-        ((n, ns), dens + dens_s)
+        let res = self.residual_azimuthal(theta_r, phi, None);
+        ((n, ns, res), dens + dens_s)
     }
 
     /// M_p(θ_i, θ_r) of one cuticle group: G(θ_r + θ_i − α_p; β_M) (report eq. 2–3), in the
@@ -365,14 +351,16 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         }
     }
 
-    /// Near-field S(ω_i, ω_r, h) per lobe. An offset outside [−1, 1] (or NaN) misses the
-    /// fiber and gives zero.
+    /// Near-field S(ω_i, ω_r, h) per lobe, the residual at offset h included (its own
+    /// h-profile A_res(θ_r, |h|), docs/model.md §12). An offset outside [−1, 1] (or NaN)
+    /// misses the fiber and gives zero.
     pub fn eval_near(&self, angles: &Angles, h: f32) -> Lobes {
         let n = self.azimuthal_near_parts(angles.theta_r(), angles.phi(), h);
         self.assemble(angles, &n)
     }
 
-    /// Far-field S(ω_i, ω_r) per lobe (the eleven-lobe breakdown of [`FurBcsdf::eval_far`]).
+    /// Far-field S(ω_i, ω_r) per lobe: the breakdown of [`FurBcsdf::eval_far`], eleven paths
+    /// and the energy closure's residual (docs/model.md §8, §12); its total is S.
     pub fn eval_far_lobes(&self, angles: &Angles) -> Lobes {
         let n = self.azimuthal_far_parts(angles.theta_r(), angles.phi());
         self.assemble(angles, &n)
@@ -381,7 +369,7 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     /// Far-field S(ω_i, ω_r) per lobe family, the type both evaluators return
     /// (docs/model.md §8); [`FurBcsdf::eval_far_lobes`] has the per-lobe breakdown.
     pub fn eval_far(&self, angles: &Angles) -> Families {
-        self.add_residual_far(angles, self.eval_far_lobes(angles).families())
+        self.eval_far_lobes(angles).families()
     }
 
     /// Near-field S from world-space directions (see [`Angles::from_directions`]); invalid
@@ -402,11 +390,18 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
     }
 }
 
-fn join(u: &[Rgb; UNSCATTERED_COUNT], s: &[Rgb; SCATTERED_COUNT]) -> [Rgb; LOBE_COUNT] {
+fn join((u, s, r): &Azimuthal) -> [Rgb; LOBE_COUNT] {
     let mut out = [Rgb::ZERO; LOBE_COUNT];
     out[..UNSCATTERED_COUNT].copy_from_slice(u);
-    out[UNSCATTERED_COUNT..].copy_from_slice(s);
+    out[UNSCATTERED_COUNT..UNSCATTERED_COUNT + SCATTERED_COUNT].copy_from_slice(s);
+    out[Lobe::Residual.index()] = *r;
     out
+}
+
+/// `v` with every channel that is not a finite positive number set to 0: the model never
+/// hands NaN or a negative value to a renderer.
+fn finite_non_negative(v: Rgb) -> Rgb {
+    v.map(|c| if c.is_finite() && c > 0.0 { c } else { 0.0 })
 }
 
 #[cfg(test)]

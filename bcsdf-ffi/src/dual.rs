@@ -390,8 +390,14 @@ mod tests {
     #[test]
     fn opens_evaluates_like_the_core_refuses_and_closes() {
         let bytes = blob();
-        let mut want = Box::new(DualLut::EMPTY);
-        want.decode(&bytes).unwrap();
+        // The core's own decode, to compare bit for bit. Under Miri, which is here for the
+        // unsafe code of the entry points, it is skipped: a decode of the 55 KB blob takes the
+        // interpreter about a minute, and the comparison is the same in the plain test run.
+        let want = (!cfg!(miri)).then(|| {
+            let mut w = Box::new(DualLut::EMPTY);
+            w.decode(&bytes).unwrap();
+            w
+        });
         let mut d: Box<fur_dual> = Box::new(FUR_DUAL_INIT);
         let p: *mut fur_dual = &mut *d;
         let mut rgb = [-1.0f32; 3];
@@ -426,8 +432,10 @@ mod tests {
                         fur_eval_dual(p, 0.3, -0.2, 2.5, n, m, 1.0, 1.0, out),
                         fur_status::FUR_OK
                     );
-                    let w = want.eval(&a, Fibers::new(n, m), Density::DEFAULT).0;
-                    assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
+                    if let Some(want) = &want {
+                        let w = want.eval(&a, Fibers::new(n, m), Density::DEFAULT).0;
+                        assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
+                    }
                 }
             }
             // The count below matters: no fibers below reflect less than the deep coat.
@@ -468,16 +476,18 @@ mod tests {
                     ),
                     fur_status::FUR_OK
                 );
-                let w = want
-                    .eval_dirs(
-                        wi,
-                        wr,
-                        t,
-                        Fibers::new(2.0, m),
-                        Density { d_f: 0.5, d_b: 2.0 },
-                    )
-                    .0;
-                assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
+                if let Some(want) = &want {
+                    let w = want
+                        .eval_dirs(
+                            wi,
+                            wr,
+                            t,
+                            Fibers::new(2.0, m),
+                            Density { d_f: 0.5, d_b: 2.0 },
+                        )
+                        .0;
+                    assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
+                }
             }
             assert_eq!(
                 fur_eval_dual(

@@ -1,4 +1,4 @@
-//! An approximation's image judged against the reference (docs/model.md §13, issue 23's
+//! An approximation's image judged against the reference (docs/model.md §13, the dual-scattering
 //! metrics), and the side-by-side pictures `viewer render --compare` writes.
 //!
 //! Both metrics are on luminance L (Rec. 709: 0.2126 R + 0.7152 G + 0.0722 B):
@@ -11,7 +11,7 @@
 use crate::film::Image;
 use crate::scene::{HitKind, Scene};
 
-/// Tiles per side of issue 23's tile RMSE (a 16 × 16 arrangement of tiles).
+/// Tiles per side of the tile RMSE (a 16 × 16 arrangement of tiles, docs/accuracy.md).
 pub const TILE_GRID: u32 = 16;
 
 /// Rec. 709 luminance of an RGB radiance.

@@ -16,7 +16,7 @@
 //!   and samples with another.
 //! - [`method`]: `path`, and the engine approximations `single` and `dual` (dual scattering,
 //!   docs/model.md §13) judged against it.
-//! - [`compare`]: an approximation's image against the reference (issue 23's mean and tile
+//! - [`compare`]: an approximation's image against the reference (the dual-scattering mean and tile
 //!   metrics) and the side-by-side pictures of `viewer render --compare`.
 //! - [`film`], [`output`]: the image with per-pixel standard errors, bounce-order energies,
 //!   and the EXR/PNG bytes.

@@ -1,4 +1,4 @@
-//! Determinism (issue 21): the same render.exr bytes for 1 and 2 threads.
+//! Determinism (docs/model.md §11): the same render.exr bytes for 1 and 2 threads.
 
 mod common;
 

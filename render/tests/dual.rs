@@ -1,4 +1,4 @@
-//! Dual scattering judged against the path tracer (issue 23, docs/model.md §13,
+//! Dual scattering judged against the path tracer (docs/model.md §13,
 //! docs/accuracy.md "Dual scattering"): for a light preset (dog) and a dark one (deer), in the
 //! energy closure, `ball` and `patch` under their key (rim) light, the `dual` image against a
 //! converged-enough `path` image: mean luminance within 10 % and relative RMSE over 16×16
@@ -188,7 +188,7 @@ fn rows(presets_: &[&'static str], scenes_: &[SceneKind], path_spp: u32) -> Vec<
     rows
 }
 
-/// Issue 23's bounds, shipped attenuation ([`Attenuation::Coat`]) and density (d_f = d_b = 1):
+/// The accuracy bounds, shipped attenuation ([`Attenuation::Coat`]) and density (d_f = d_b = 1):
 /// for a light preset (dog) and a dark one (deer), on `ball` and `patch`, the `dual` image's
 /// mean luminance is within 10 % of `path`'s and its tile RMSE at most 20 %; `single` is
 /// darker than `path`, and for the light preset by far (more than 30 %).

@@ -1,4 +1,4 @@
-//! MIS consistency on `patch` (issue 21): BCSDF sampling only, light sampling only and
+//! MIS consistency on `patch` (docs/model.md §11): BCSDF sampling only, light sampling only and
 //! their MIS combination estimate the same image, so their means agree within their noise,
 //! over the whole image and per 16×16 tile (z-tests).
 

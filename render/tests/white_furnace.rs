@@ -1,4 +1,4 @@
-//! The whole-coat white furnace (issue 21): a clump of fibers in a uniform environment of
+//! The whole-coat white furnace (docs/model.md §11): a clump of fibers in a uniform environment of
 //! radiance 1 and nothing else. If the fibers lose no energy, every pixel's expected value
 //! is exactly 1, however many times light scatters between them.
 //!

@@ -1,4 +1,4 @@
-//! `cargo bench -p fur-tests --bench render` (issue 21): rays per second of the path tracer
+//! `cargo bench -p fur-tests --bench render`: rays per second of the path tracer
 //! on `ball` (64 spp, max depth 32, the baked evaluator of human-hair, two threads; the
 //! image scaled down to 24×18 so one iteration takes about a second), and the parts a
 //! path vertex spends its time in, timed alone: the BVH (closest hit of a scattered ray in

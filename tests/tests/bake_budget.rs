@@ -1,4 +1,4 @@
-//! The bake issue's error budget and determinism:
+//! The bake's error budget (docs/lut.md, "Error metrics and budget") and determinism:
 //!
 //! - every built-in preset (one test each; a test checks none is missing), baked at the
 //!   default resolution from its full-budget profiles, is within E1 ≤ 1 %, E_albedo ≤ 0.5 %,

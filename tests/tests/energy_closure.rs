@@ -1,4 +1,4 @@
-//! The energy closure's longitudinal part (docs/model.md §12, issue 20): every M_p divided by
+//! The energy closure's longitudinal part (docs/model.md §12): every M_p divided by
 //! its mass inside θ_i ∈ [−π/2, π/2].
 //!
 //! - `lossless_furnace_keeps_the_azimuthal_energy`: every preset made lossless (σ_ca = σ_ma = 0),
@@ -11,13 +11,13 @@
 //!   within 3.0e-6 everywhere; baked (default resolution, LUT format 4: 1/Z_g from the LUT's
 //!   table, the pole slivers integrated exactly) within 4e-3 below 85°, but over by up to
 //!   6.4e-3 at ±85° (human-fur) and 9.8e-3 at ±89° (human-fur), so at |θ_r| ≥ 80° the baked
-//!   check is held to 1 % only — not yet the issue's 0.5 %. With format 3's per-query masses
+//!   check is held to 1 % only — not yet the 0.5 % budget. With format 3's per-query masses
 //!   and three-point sliver estimate it was 6.2e-3 and 9.2e-3: the normalisation is not the
 //!   cause; table `N`'s θ_r interpolation is (nodes 1.9° apart where Σ⟨A_p⟩ curves sharply
 //!   toward grazing view; docs/lut.md, "The 1/Z_g table").
 //! - `report_closure_keeps_todays_numbers`: the report closure's lossless ρ(θ_r), pinned.
 //! - `residual_furnace_*` (one per preset): the model with its residual (docs/model.md §12,
-//!   "Residual"), lossless, analytic far field, near field averaged over 48 offsets, and baked
+//!   "Residual"), lossless, analytic far field, near field averaged over 48 offsets (θ_r ≥ 0), and baked
 //!   far field (default resolution, today's baked 1/Z_g): ρ(θ_r) = 1 within 0.5 % at every θ_r
 //!   above (the residual returns what the lobes leave out; measured worst 1.5e-3 analytic,
 //!   1.4e-3 baked, both air-medulla).
@@ -35,7 +35,7 @@ use fur_tests::profiles_ref::m_s_kinks;
 use std::f64::consts::{PI, TAU};
 use std::path::PathBuf;
 
-/// The view angles of the issue's furnace check, degrees.
+/// The view angles of the lossless furnace check (docs/accuracy.md), degrees.
 const THETAS: [f32; 11] = [
     0.0, 30.0, -30.0, 60.0, -60.0, 80.0, -80.0, 85.0, -85.0, 89.0, -89.0,
 ];
@@ -158,7 +158,7 @@ fn lossless_furnace_keeps_the_azimuthal_energy() {
 #[test]
 fn report_closure_keeps_todays_numbers() {
     // Lossless human hair (κ = 0: the unscattered paths are the whole model), analytic far
-    // field, report closure. The issue measured 0.993, 0.991, 0.967, 0.748, 0.346 through the
+    // field, report closure. A separate run measured 0.993, 0.991, 0.967, 0.748, 0.346 through the
     // C ABI (baked); the pins are this evaluator's values, which the closure setting leaves
     // bit for bit as model version 2 computed them (M_p times exactly 1).
     let p = lossless(&presets::find("human-hair").unwrap().input, Closure::Report);
@@ -182,7 +182,7 @@ fn report_closure_keeps_todays_numbers() {
         );
         assert!(
             (rho - from_issue).abs() <= 2e-3,
-            "θ_r {t}°: {rho} vs the issue's {from_issue}"
+            "θ_r {t}°: {rho} vs the C ABI's {from_issue}"
         );
     }
 }
@@ -264,18 +264,22 @@ fn check_residual_furnace(name: &str) {
     for t in THETAS {
         let tr = t.to_radians();
         let far = furnace_full(&model, tr, |a| model.eval_far(a).total().0[0]);
-        // Near field: S at h (eleven lobes plus the residual), h by the midpoint rule.
-        let near = (0..NEAR_H)
+        // Near field: S at h (eleven lobes and the residual's own h-profile), h by the
+        // midpoint rule; at the non-negative θ_r only, which halves the test's cost (the far
+        // field and the LUT are checked at both signs; the near field's every-path agreement
+        // with the far field at random angles is viewer/tests/every_path.rs's).
+        let near = (0..if t >= 0.0 { NEAR_H } else { 0 })
             .map(|k| {
                 let h = -1.0 + (k as f32 + 0.5) * 2.0 / NEAR_H as f32;
-                furnace_full(&model, tr, |a| {
-                    model.eval_near(a, h).total().0[0] + model.eval_residual(a, Some(h)).0[0]
-                })
+                furnace_full(&model, tr, |a| model.eval_near(a, h).total().0[0])
             })
             .sum::<f64>()
             / NEAR_H as f64;
         let lut = furnace_full(&model, tr, |a| baked.eval(a).total().0[0]);
         for (k, rho) in [far, near, lut].into_iter().enumerate() {
+            if k == 1 && t < 0.0 {
+                continue;
+            }
             let err = (rho - 1.0).abs();
             worst[k] = worst[k].max(err);
             assert!(

@@ -10,7 +10,7 @@ use bcsdf_core::{presets, Angles, FastMath, FurBcsdf, FurParams, Libm, Lobes, Ma
 
 /// Asserted bounds on the relative error of the total, from the values measured on this grid
 /// (micromath 2.1 sin/cos/atan2/exp, the A&S 4.4.46 polynomial asin) with ~1.1–1.6× headroom,
-/// over the twelve presets of issue 19 (the narrowest lobes set the max: mouse, β_n 2.8°,
+/// over the twelve built-in presets (the narrowest lobes set the max: mouse, β_n 2.8°,
 /// near 1.09e-1; human-fur, β_m 2.05°, 8.0e-2; the five presets before them gave 5.9e-2):
 ///
 /// | field | max     | mean    |

@@ -567,7 +567,10 @@ fn build_model_uses_profiles_only_when_the_medulla_scatters() {
         assert!(!profiles::needs_profiles(&p));
         let (m, outcome) = build_model(p, &opts).unwrap();
         assert!(m.profiles().is_none() && outcome.is_none());
-        let direct: FurBcsdf = FurBcsdf::unscattered(p);
+        // Both are in the energy closure: the direct model gets the same residual table.
+        let residual = m.residual().expect("energy closure: a residual table");
+        let table = ResidualTable::new(p, ResidualLayout::DEFAULT, residual).unwrap();
+        let direct: FurBcsdf = FurBcsdf::unscattered(p).with_residual(table).unwrap();
         assert_eq!(m.model().eval_far_lobes(&a), direct.eval_far_lobes(&a));
     }
 

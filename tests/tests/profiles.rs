@@ -720,7 +720,7 @@ fn bobcat_layout() -> ProfileLayout {
     ProfileLayout::for_params(&params, Resolution::DEFAULT)
 }
 
-/// Convergence (the test list), on the bobcat slice at the default resolution:
+/// Convergence (docs/model.md §7, "Requirements"), on the bobcat slice at the default resolution:
 ///
 /// - two independent seeds differ, as RMS(difference)/RMS(profile) over the whole table, by
 ///   no more than 0.25 (C^N, C^M) at 4 000 photons per C^N cell / 8 000 per C^M row

@@ -1,4 +1,4 @@
-//! Baked versus analytic under multiple scattering (issue 21): for every built-in preset, the
+//! Baked versus analytic under multiple scattering: for every built-in preset, the
 //! `ball` rendered with the analytic far field and with its baked LUT along the very same paths
 //! (both sampled by the baked sampler, `render::scatter::Guided`; same seed), so the two images
 //! differ by the evaluator only. Mean radiance within 0.5 %, every 16×16 tile within 2 %; the

@@ -14,7 +14,8 @@
 
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bcsdf_core::medulla::PhotonBudget;
-use bcsdf_core::residual::{generate, simulate_view, ResidualLayout, ResidualTable};
+use bcsdf_core::residual::{ResidualLayout, ResidualTable};
+use bcsdf_core::residual_gen::{generate, simulate_view};
 use bcsdf_core::{presets, Closure, FurBcsdf, FurParams, FurParamsInput, Libm, Pigment, Rgb};
 use fur_tests::cross_section_mc::{simulate, McParams, Options};
 use fur_tests::furnace::{furnace_on, group_shapes_of, theta_i_nodes_with};

@@ -1,5 +1,5 @@
 //! The baked sampler is perfect importance sampling for grey fibers (docs/model.md §10,
-//! issue 20 item 5): every preset made lossless (σ_ca = σ_ma = 0, so the three channels are
+//! "The pole slivers"): every preset made lossless (σ_ca = σ_ma = 0, so the three channels are
 //! equal), baked (profiles at 2 % of the default budget, cached), in both closures, at fixed
 //! θ_r ∈ {−70°, −30°, 0°, 45°, 80°, 85°, 89°}, 4 000 samples each:
 //!

@@ -179,8 +179,9 @@ pub struct RenderArgs {
     pub method: Method,
 
     /// Render path, dual and single, and write them side by side with |dual − path|
-    /// (compare.png, compare.exr) and issue 23's numbers (compare.json, stdout) instead of
-    /// one render (docs/model.md §13).
+    /// (compare.png, compare.exr) and the numbers judging dual and single against path — mean
+    /// luminance error and 16 x 16 tile RMSE (compare.json, stdout) — instead of one render
+    /// (docs/model.md §13).
     #[arg(long, conflicts_with = "method")]
     pub compare: bool,
 
@@ -409,6 +410,17 @@ pub struct ProbeArgs {
     pub profiles: ProfileArgs,
 }
 
+/// `--set`'s help text: every key of `bcsdf_core::SCHEMA` (docs/model.md §2), so the list
+/// can never lose one.
+pub fn set_help() -> String {
+    let keys: Vec<&str> = bcsdf_core::SCHEMA.iter().map(|spec| spec.key).collect();
+    format!(
+        "Override one parameter of the preset; repeatable, applied left to right. KEY is one \
+         of {}; sigma_ca also takes r,g,b, closure takes report or energy.",
+        keys.join(", ")
+    )
+}
+
 /// Which BCSDF a command works on: the analytic model of a preset (with `--set` overrides;
 /// its medulla profiles come from [`ProfileArgs`]), or a baked LUT with `--lut`.
 #[derive(Debug, Args)]
@@ -420,10 +432,9 @@ pub struct ModelArgs {
     #[command(flatten)]
     pub presets: PresetsArgs,
 
-    /// Override one parameter of the preset; repeatable, applied left to right. KEY is one
-    /// of eta_c, sigma_ca, eumelanin, pheomelanin, alpha_deg, beta_m_deg, beta_n_deg, l,
-    /// kappa, eta_m, sigma_ms, sigma_ma, g; sigma_ca also takes r,g,b.
-    #[arg(long = "set", value_name = "KEY=VALUE")]
+    /// Override one parameter of the preset; repeatable, applied left to right (the keys:
+    /// [`set_help`], from `bcsdf_core::SCHEMA`).
+    #[arg(long = "set", value_name = "KEY=VALUE", help = set_help())]
     pub set: Vec<String>,
 
     /// Use this baked LUT (written by `bake`: OpenEXR or raw .furlut, told apart by content)

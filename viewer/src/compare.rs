@@ -59,7 +59,11 @@ pub fn run(args: &CompareArgs) -> Result<(), Error> {
     let budget = ErrorBudget::parse(&args.budget)
         .map_err(|e| Error::input(format!("invalid --budget: {e}")))?;
     let mut builder = rayon::ThreadPoolBuilder::new();
-    if let Some(n) = args.threads {
+    let (threads, note) = bake::limits::threads("--threads", args.threads).map_err(Error::input)?;
+    if let Some(note) = note {
+        eprintln!("note: {note}");
+    }
+    if let Some(n) = threads {
         builder = builder.num_threads(n);
     }
     let pool = builder

@@ -1,7 +1,7 @@
 //! `viewer render`: path-traces a built-in scene with the `render` crate and writes
 //! render.exr, render.png and render.json through `bake::fsutil` (docs/model.md §11); with
-//! `--compare`, path, dual and single side by side with the difference and issue 23's
-//! numbers (compare.png, compare.exr, compare.json; docs/model.md §13).
+//! `--compare`, path, dual and single side by side with the difference and the numbers that
+//! judge them (compare.png, compare.exr, compare.json; docs/model.md §13).
 
 use crate::catalog;
 use crate::cli::{Evaluator, Method as MethodArg, PresetsArgs, ProfileArgs, RenderArgs};
@@ -28,10 +28,14 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         .scene
         .parse()
         .map_err(|e| Error::input(format!("--scene: {e}")))?;
+    let (threads, note) = bake::limits::threads("--threads", args.threads).map_err(Error::input)?;
+    if let Some(note) = note {
+        eprintln!("note: {note}");
+    }
     let settings = Settings {
         max_depth: args.max_depth,
         seed: args.seed,
-        threads: args.threads,
+        threads,
         progress: true,
         ..Settings::new(args.width, args.height, args.spp)
     };
@@ -40,6 +44,17 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         .map_err(|e| Error::input(format!("--{}", flag_of(&e))))?;
     if args.fibers == Some(0) {
         return Err(Error::input("--fibers 0: a scene needs at least one fiber"));
+    }
+    if let Some(n) = args.fibers.filter(|n| *n > MAX_FIBERS) {
+        return Err(Error::input(format!(
+            "--fibers {n} is more than {MAX_FIBERS} (the segments and their hierarchy would \
+             take about {:.0} GB)",
+            n as f64 * FIBER_BYTES / 1e9
+        )));
+    }
+    let renders = if args.compare { 3 } else { 1 };
+    if let Some(note) = render_estimate(&settings, renders, threads)? {
+        eprintln!("note: {note}");
     }
     if !(args.exposure.is_finite() && args.exposure > 0.0) {
         return Err(Error::input(format!(
@@ -377,6 +392,69 @@ fn trace<B: Bcsdf + Sync>(
         out.push((kind, r));
     }
     Ok(out)
+}
+
+/// The most fibers `--fibers` accepts (each fiber's segments and their share of the
+/// hierarchy take about [`FIBER_BYTES`]).
+const MAX_FIBERS: usize = 1_000_000;
+
+/// Bytes per fiber of a scene, generously (up to 8 segments of 64 bytes and the hierarchy).
+const FIBER_BYTES: f64 = 1024.0;
+
+/// Rays per second per core the estimate assumes: the measured 0.5–0.6 M rays/s per core of
+/// the analytic model on the built-in scenes (release build; the baked model is faster).
+const RAYS_PER_CORE_SECOND: f64 = 5e5;
+
+/// Rays per path the estimate assumes: a camera ray and a light ray per vertex, up to 4
+/// vertices on average (Russian roulette ends most paths early) and never more than the depth.
+fn rays_per_path(max_depth: u32) -> f64 {
+    2.0 * f64::from(max_depth.min(4)) + 1.0
+}
+
+/// Estimated seconds above which a render is refused (a week).
+const MAX_RENDER_SECONDS: f64 = 7.0 * 86_400.0;
+
+/// Estimated seconds above which the estimate is printed.
+const NOTE_RENDER_SECONDS: f64 = 30.0;
+
+/// Bytes per pixel of one render kept in memory (the film's sums, the rows, the encoders).
+const PIXEL_BYTES: f64 = 64.0;
+
+/// The largest memory estimate a render may reach.
+const MAX_RENDER_BYTES: f64 = 16e9;
+
+/// spp × pixels × depth: refuses a render estimated to take more than a week or 16 GB, and
+/// returns a note with the estimate when it should take more than half a minute.
+fn render_estimate(
+    settings: &Settings,
+    renders: u32,
+    threads: Option<usize>,
+) -> Result<Option<String>, Error> {
+    let pixels = f64::from(settings.width) * f64::from(settings.height);
+    let paths = pixels * f64::from(settings.spp) * f64::from(renders);
+    let cores = threads
+        .unwrap_or_else(bake::limits::cores)
+        .min(bake::limits::cores()) as f64;
+    let seconds =
+        paths * rays_per_path(settings.max_depth) / (RAYS_PER_CORE_SECOND * cores.max(1.0));
+    let bytes = pixels * PIXEL_BYTES * f64::from(renders);
+    let what = format!(
+        "{} x {} pixels x {} spp{} = {paths:.3e} paths, depth up to {}: about {} on {cores} \
+         cores (at {RAYS_PER_CORE_SECOND:.0e} rays/s per core) and {:.1} GB",
+        settings.width,
+        settings.height,
+        settings.spp,
+        if renders > 1 { " x 3 methods" } else { "" },
+        settings.max_depth,
+        bake::limits::duration(seconds),
+        bytes / 1e9
+    );
+    if seconds > MAX_RENDER_SECONDS || bytes > MAX_RENDER_BYTES {
+        return Err(Error::input(format!(
+            "{what}: more than a week or 16 GB; lower --spp, --width or --height"
+        )));
+    }
+    Ok((seconds > NOTE_RENDER_SECONDS).then_some(what))
 }
 
 /// The flag a settings error is about, with the message.

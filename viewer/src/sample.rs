@@ -13,12 +13,25 @@ use std::io::{self, BufWriter, Write};
 /// can be reproduced in-process).
 pub const STREAM: u64 = 0;
 
+/// The most draws `-n` accepts: 10⁹ lines are already about 80 GB of text.
+const MAX_DRAWS: u64 = 1_000_000_000;
+
+/// Bytes of one output line, about.
+const LINE_BYTES: f64 = 80.0;
+
 /// `viewer sample`: checks the arguments (before the model, which may take seconds), loads
 /// the model, prints one line per successful draw and, if any draw failed, a note on stderr.
 pub fn run(args: &SampleArgs) -> Result<(), Error> {
     let theta_r = check_theta_r(args.theta_r)?;
     if args.count == 0 {
         return Err(Error::input("-n 0: nothing to draw (N must be at least 1)"));
+    }
+    if args.count > MAX_DRAWS {
+        return Err(Error::input(format!(
+            "-n {}: more than {MAX_DRAWS} draws (about {:.0} GB of output lines)",
+            args.count,
+            args.count as f64 * LINE_BYTES / 1e9
+        )));
     }
     let source = Source::load(&args.model, &args.profiles)?;
     let mut out = BufWriter::new(io::stdout().lock());

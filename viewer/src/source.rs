@@ -105,13 +105,15 @@ fn file_head(path: &Path) -> Vec<u8> {
 /// The profile options `args` select: the cache directory (`--cache-dir`, else the default
 /// one, none with `--no-cache`), the seed, the scaled photon budget and the thread count.
 pub fn profile_options(args: &ProfileArgs) -> Result<ProfileOptions, Error> {
-    let budget =
-        profiles::scale_budget(PhotonBudget::DEFAULT, args.photons_scale).ok_or_else(|| {
-            Error::input(format!(
-                "--photons-scale {} must be a positive finite number",
-                args.photons_scale
-            ))
-        })?;
+    let (budget, note) = bake::limits::photon_budget(PhotonBudget::DEFAULT, args.photons_scale)
+        .map_err(Error::input)?;
+    if let Some(note) = note {
+        eprintln!("note: {note}");
+    }
+    let (threads, note) = bake::limits::threads("--threads", args.threads).map_err(Error::input)?;
+    if let Some(note) = note {
+        eprintln!("note: {note}");
+    }
     let cache_dir = if args.no_cache {
         None
     } else {
@@ -122,7 +124,7 @@ pub fn profile_options(args: &ProfileArgs) -> Result<ProfileOptions, Error> {
         budget,
         seed: args.seed,
         cache_dir,
-        threads: args.threads,
+        threads,
     })
 }
 

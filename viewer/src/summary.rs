@@ -34,7 +34,8 @@ td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}\
 th{background:#eee}td:first-child,th:first-child{text-align:left}\
 .pass{color:#060;font-weight:bold}.fail{color:#b00;font-weight:bold}\
 figure{margin:1em 0}figcaption{color:#555;font-size:90%}\
-.renders img{margin-right:8px}.params td{text-align:left}";
+.renders img{margin-right:8px}.params td{text-align:left}\
+img{max-width:100%;height:auto}";
 
 /// Escapes text for HTML.
 pub fn escape(text: &str) -> String {

@@ -1,4 +1,4 @@
-//! `viewer render` (issue 21): outputs written atomically inside --out, the JSON report,
+//! `viewer render` (docs/model.md §11): outputs written atomically inside --out, the JSON report,
 //! the same EXR bytes for 1 and 2 threads, and bad input → exit 2 with one `error:` line.
 
 use std::path::Path;
@@ -37,7 +37,7 @@ fn render_with(out: &Path, threads: &str, extra: &[&str]) -> Output {
     viewer(&args)
 }
 
-/// `--compare` (issue 23): path | dual | single | |dual − path| in one picture, the numbers
+/// `--compare`: path | dual | single | |dual − path| in one picture, the numbers
 /// in compare.json, the same bits for 1 and 2 threads.
 #[test]
 fn compare_writes_the_four_panels_and_the_numbers() {

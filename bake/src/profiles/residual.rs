@@ -2,7 +2,7 @@
 //! and a cache file beside the profiles'.
 //!
 //! [`generate_residual`] runs the core's per-row generator
-//! ([`bcsdf_core::residual::generate_row`]) on rayon, the same bits for any thread count.
+//! ([`bcsdf_core::residual_gen::generate_row`]) on rayon, the same bits for any thread count.
 //! [`load_or_generate_residual`] reuses a cache file made for exactly the same model, layout
 //! and seed, through the same locked, atomic protocol as the profile cache
 //! ([`super::cache`], "Concurrent bakes").
@@ -37,7 +37,8 @@ use super::cache::{check_container, fnv1a64, CacheError, CacheOutcome};
 use super::{Error, OwnedModel, ProfileKey};
 use crate::fsutil::output_path;
 use bcsdf_core::params::HEADER_FIELDS;
-use bcsdf_core::residual::{generate_row, ResidualLayout, ResidualTable, RowStats};
+use bcsdf_core::residual::{ResidualLayout, ResidualTable};
+use bcsdf_core::residual_gen::{generate_row, RowStats};
 use bcsdf_core::{FurBcsdf, FurParams, Libm, MODEL_VERSION};
 use rayon::prelude::*;
 use std::path::Path;

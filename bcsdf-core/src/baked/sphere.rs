@@ -4,7 +4,7 @@
 
 use super::BakedBcsdf;
 use crate::math::Math;
-use crate::sampling::linear_mass;
+use crate::sample1d::linear_mass;
 
 impl<M: Math> BakedBcsdf<'_, M> {
     /// ∫ M_g from the first node of the `sum` axis to the point at node `j`, weight `w`

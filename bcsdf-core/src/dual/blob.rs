@@ -44,7 +44,7 @@ const FIELD_HALVES: usize = THETA_NODES * FIELDS * 3;
 const NG_HALVES: usize = FAMILY_COUNT * THETA_NODES * PHI_NODES * 3;
 /// Length of every `.furdual` blob in bytes.
 pub const BLOB_LEN: usize = HEADER_LEN + 2 * (FIELD_HALVES + NG_HALVES);
-// Issue 23's storage budget: at most 64 KB per preset.
+// The dual-scattering storage budget (docs/model.md §13): at most 64 KB per preset.
 const _: () = assert!(BLOB_LEN <= 64 * 1024);
 
 /// Field indices within a node.

@@ -212,7 +212,7 @@ pub struct Density {
 
 impl Density {
     /// The default shipped, with [`Attenuation::Coat`]: d_f = d_b = 1, Zinke's values for a
-    /// coat whose fibers are as dense as the counted ones (no fit): within issue 23's bounds
+    /// coat whose fibers are as dense as the counted ones (no fit): within the accuracy bounds
     /// of the path tracer for dog and deer on both scenes (docs/model.md §13,
     /// docs/accuracy.md).
     pub const DEFAULT: Density = Density { d_f: 1.0, d_b: 1.0 };

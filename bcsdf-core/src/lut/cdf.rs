@@ -27,7 +27,7 @@
 
 use super::{f16_biased, LutResolution, Table, F16_UNBIAS, HEADER_LEN, TABLE_COUNT};
 use crate::math::PI;
-use crate::sampling::{linear_mass, weighted_linear_mass};
+use crate::sample1d::{linear_mass, weighted_linear_mass};
 use core::ops::Range;
 
 /// Nodes per prefix entry of the `M` densities (every node: the pdf needs the CDF at two

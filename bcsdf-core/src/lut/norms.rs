@@ -26,7 +26,7 @@ use super::{cdf::Density, cdf::Nodes, LutResolution, TABLE_COUNT};
 use crate::longitudinal::MIN_SPHERE_MASS;
 use crate::math::PI;
 use crate::model::{MIN_COS2_THETA_I, POLE_SLIVER};
-use crate::sampling::linear_mass;
+use crate::sample1d::linear_mass;
 
 /// Values per node of the section (one per cuticle group).
 pub const NORM_GROUPS: usize = 3;

@@ -206,19 +206,19 @@ impl<'a> MedullaProfiles<'a> {
         if !(total > 0.0 && total.is_finite()) {
             return None;
         }
-        let target = crate::sampling::unit(u) * total;
+        let target = crate::sample1d::unit(u) * total;
         let mut acc = 0.0;
         let mut found = None;
         let mut last = None;
         for b in 0..n_psi {
             let (v0, v1) = (self.row_value(row, b), self.row_value(row, (b + 1) % n_psi));
-            let m = crate::sampling::linear_mass(v0, v1, w);
+            let m = crate::sample1d::linear_mass(v0, v1, w);
             if m > 0.0 {
                 if target - acc <= m {
-                    found = Some((b, crate::sampling::invert_linear(v0, v1, w, target - acc)));
+                    found = Some((b, crate::sample1d::invert_linear(v0, v1, w, target - acc)));
                     break;
                 }
-                last = Some((b, crate::sampling::invert_linear(v0, v1, w, m)));
+                last = Some((b, crate::sample1d::invert_linear(v0, v1, w, m)));
             }
             acc += m;
         }

@@ -1,11 +1,18 @@
 extern crate std;
 use super::sim::{simulate_cell, Events, MODELLED_UNSCATTERED};
 use super::*;
+use crate::frame::Angles;
+use crate::math::{Libm, TAU};
 use crate::medulla::{generate as generate_profiles, MedullaProfiles, PhotonBudget};
 use crate::medulla::{ProfileLayout, Resolution};
+use crate::model::FurBcsdf;
+use crate::params::FurParams;
 use crate::params::{Closure, FurParamsInput};
 use crate::pigment::Pigment;
 use crate::presets;
+use crate::residual_gen::{generate, generate_row, section};
+use crate::rng::Pcg32;
+use crate::spectrum::Rgb;
 use std::vec;
 use std::vec::Vec;
 

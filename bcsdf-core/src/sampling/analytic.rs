@@ -484,7 +484,7 @@ impl<M: Math> FurBcsdf<'_, M> {
         let coeffs = plan.coefficients(ti, tr);
         let (n, p) = self.azimuthal_far_with_density(tr, angles.phi(), &coeffs);
         let p = p + plan.residual_density(ti, tr, angles.phi());
-        let value = self.add_residual_far(angles, self.assemble(angles, &n).families());
+        let value = self.assemble(angles, &n).families();
         let pdf = solid_angle_pdf(p, cos_within_half_pi(ti));
         (
             value,

@@ -33,7 +33,7 @@ static const float PH[N_DIRS] = {0.785f, 3.0f, -2.0f, 0.0f, 1.0f, -0.1f};
 #endif
 
 /*
- * The use-after-free sequence of issue 25, following the contract: open_then_close opens a
+ * The use-after-free sequence of the handle contract: open_then_close opens a
  * fur_lut on heap bytes and closes it before returning (the caller then frees the bytes);
  * eval_fresh's fur_lut, in the same stack slot, is initialised with FUR_LUT_INIT and refused.
  * Without the close and the initialiser this read freed memory (SIGSEGV at -O0).
@@ -251,7 +251,7 @@ int main(int argc, char **argv) {
     }
 
     /* Close, then free the bytes: the closed fur_lut is refused and reads nothing (Valgrind
-     * sees any read of the freed copy). Then the two-function sequence of issue 25. */
+     * sees any read of the freed copy). Then the two-function use-after-free sequence. */
     {
         unsigned char *heap = (unsigned char *)malloc(small_len);
         fur_lut h = FUR_LUT_INIT;

@@ -4,7 +4,8 @@
 
 use bcsdf_core::medulla::generate;
 use bcsdf_core::presets::{Preset, PRESETS};
-use bcsdf_core::residual::{self, ResidualLayout, ResidualTable};
+use bcsdf_core::residual::{ResidualLayout, ResidualTable};
+use bcsdf_core::residual_gen as residual;
 use bcsdf_core::{
     presets, Closure, FurBcsdf, FurParams, FurParamsInput, MedullaProfiles, PhotonBudget,
     ProfileLayout, Resolution,

@@ -1,0 +1,270 @@
+//! Generation of the energy closure's residual table (docs/model.md §12, "Residual"): per θ_r
+//! node and offset h, the cross-section simulation ([`crate::residual::sim`]) against the energy
+//! the model's own lobes carry (E_model, from a [`FurBcsdf`] without a residual), written in the
+//! layout of [`ResidualLayout`]. It sits above `model` (it calls the model), while the table's
+//! lookups ([`crate::residual::ResidualTable`]) sit below it.
+
+use crate::frame::Angles;
+use crate::geometry::Chord;
+use crate::longitudinal::inv_cos2_theta_i;
+use crate::math::{Libm, Math, PI, TAU};
+use crate::medulla::ProfileError;
+use crate::model::FurBcsdf;
+use crate::params::FurParams;
+use crate::residual::sim::{simulate_cell, CellTally, Section};
+use crate::residual::ResidualLayout;
+use crate::rng::{cell_stream, Pcg32};
+use crate::scattered::{azimuthal_on_row, exit_transmittance, scattered_paths};
+use crate::spectrum::Rgb;
+use crate::unscattered::attenuations;
+
+/// Table id of the residual cells for [`cell_stream`] (C^N is 1, C^M 2).
+const TABLE_RESIDUAL: u64 = 3;
+
+/// θ_i midpoints of the ∫ M^s_x dθ_i integrals.
+const MS_SAMPLES: usize = 1024;
+
+/// φ midpoints per C^N bin of the ψ-integrals of the scattered lobes' energy.
+const PSI_SUBSAMPLES: usize = 4;
+
+/// What one θ_r row's simulation found, h-means (midpoint rule) per channel, for the
+/// numbers docs/model.md §12 reports.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RowStats {
+    /// ⟨E_sim⟩_h: all energy leaving the fiber.
+    pub exiting: [f64; 3],
+    /// ⟨E_model⟩_h: the energy the model's lobes carry.
+    pub model: [f64; 3],
+    /// ⟨max(0, E_model − E_sim)⟩_h: what the scattered lobes carry beyond the simulation
+    /// (removed by their scale factor).
+    pub excess: [f64; 3],
+    /// ⟨A_res⟩_h = ⟨max(0, E_sim − E_model)⟩_h.
+    pub residual: [f64; 3],
+    /// ⟨classified unmodelled energy⟩_h; its gap to E_sim − E_model is the scattered lobes'
+    /// approximation (F_t's radial exit against the actual one).
+    pub unmodelled: [f64; 3],
+    /// ⟨energy dropped by the cutoffs⟩_h.
+    pub dropped: [f64; 3],
+    /// Largest dropped energy of one cell (largest channel).
+    pub dropped_max: f64,
+    /// Beams processed.
+    pub beams: u64,
+    /// Photons walked.
+    pub photons: u64,
+}
+
+/// The section of the simulation at `theta_r` for `params`.
+pub(crate) fn section(params: &FurParams, theta_r: f32) -> Section {
+    let slice = crate::geometry::ViewSlice::new::<Libm>(params, theta_r);
+    Section {
+        slice,
+        ext: crate::unscattered::Extinction::new(params, &slice),
+        medulla_absorption: params.sigma_ma() * slice.inv_cos_tm,
+        layers: params.l(),
+        g: params.g(),
+    }
+}
+
+/// Simulates θ_r row `row` of `layout` for `model` (whose lobes give E_model) into `out`
+/// ([`ResidualLayout::row_len`] values). Nothing is written when the layout is invalid or
+/// `out` has the wrong length.
+pub fn generate_row<M: Math>(
+    model: &FurBcsdf<'_, M>,
+    layout: &ResidualLayout,
+    row: usize,
+    seed: u64,
+    out: &mut [f32],
+) -> RowStats {
+    if layout.validate().is_err() || row >= layout.n_theta || out.len() != layout.row_len() {
+        return RowStats::default();
+    }
+    simulate_row(model, layout, layout.theta_node(row), row as u64, seed, out)
+}
+
+/// The row of [`generate_row`] at any view angle `theta_r` (its cells on their own streams,
+/// distinct from the table's): for measuring the residual between nodes (docs/model.md §12).
+/// Nothing is written when the layout is invalid or `out` has the wrong length.
+pub fn simulate_view<M: Math>(
+    model: &FurBcsdf<'_, M>,
+    layout: &ResidualLayout,
+    theta_r: f32,
+    seed: u64,
+    out: &mut [f32],
+) -> RowStats {
+    if layout.validate().is_err() || out.len() != layout.row_len() || !theta_r.is_finite() {
+        return RowStats::default();
+    }
+    let id = (1u64 << 40) | u64::from(theta_r.to_bits());
+    simulate_row(model, layout, theta_r, id, seed, out)
+}
+
+fn simulate_row<M: Math>(
+    model: &FurBcsdf<'_, M>,
+    layout: &ResidualLayout,
+    theta_r: f32,
+    row: u64,
+    seed: u64,
+    out: &mut [f32],
+) -> RowStats {
+    let mut stats = RowStats::default();
+    let params = model.params();
+    let sec = section(params, theta_r);
+    let energies = ModelEnergy::new(model, theta_r);
+    let n_h = layout.n_h;
+    let mut hist = [[0.0f64; 3]; 4096];
+    let scale_at = layout.scale_offset();
+    let (mut scattered_mean, mut excess_mean) = ([0.0f64; 3], [0.0f64; 3]);
+    let hist = &mut hist[..layout.n_phi];
+    let inv_n = 1.0 / n_h as f64;
+    for j in 0..n_h {
+        let h = layout.h_node(j);
+        let stream = cell_stream(seed, TABLE_RESIDUAL, row * n_h as u64 + j as u64);
+        let mut rng = Pcg32::new(stream, stream.rotate_left(17));
+        let t: CellTally = simulate_cell(&sec, h, layout.photons, &mut rng, hist);
+        let (e_unscattered, e_scattered) = energies.at(h);
+        let mut cell_drop = 0.0f64;
+        for c in 0..3 {
+            let (eu, es) = (f64::from(e_unscattered.0[c]), f64::from(e_scattered.0[c]));
+            // What the cutoffs dropped is still in the fiber: counted as leaving (exact for
+            // lossless fibers, where all of it does; a bound otherwise).
+            let e_sim = t.exiting[c] + t.dropped[c];
+            let res = (e_sim - eu - es).max(0.0);
+            // Where the scattered lobes carry more than the simulation lets out, they are
+            // scaled down to it (the eight unscattered paths are part of E_sim exactly).
+            let excess = (eu + es - e_sim).max(0.0).min(es);
+            out[3 * j + c] = res as f32;
+            out[scale_at + 3 * j + c] = if es > 0.0 {
+                (1.0 - excess / es) as f32
+            } else {
+                1.0
+            };
+            scattered_mean[c] += es * inv_n;
+            excess_mean[c] += excess * inv_n;
+            stats.exiting[c] += t.exiting[c] * inv_n;
+            stats.model[c] += (eu + es) * inv_n;
+            stats.excess[c] += excess * inv_n;
+            stats.residual[c] += res * inv_n;
+            stats.unmodelled[c] += t.unmodelled[c] * inv_n;
+            stats.dropped[c] += t.dropped[c] * inv_n;
+            cell_drop = cell_drop.max(t.dropped[c]);
+        }
+        stats.dropped_max = stats.dropped_max.max(cell_drop);
+        stats.beams += t.beams;
+        stats.photons += t.photons;
+    }
+    for c in 0..3 {
+        out[3 * n_h + c] = stats.residual[c] as f32;
+        out[scale_at + 3 * n_h + c] = if scattered_mean[c] > 0.0 {
+            (1.0 - excess_mean[c] / scattered_mean[c]).clamp(0.0, 1.0) as f32
+        } else {
+            1.0
+        };
+    }
+    // D_res: the histogram over |φ| ∈ [0, π] as a density over φ ∈ (−π, π] (both signs).
+    let width = PI / layout.n_phi as f32;
+    let d = &mut out[3 * (n_h + 1)..scale_at];
+    for c in 0..3 {
+        let total: f64 = hist.iter().map(|b| b[c]).sum();
+        for (k, b) in hist.iter().enumerate() {
+            d[3 * k + c] = if total > 0.0 {
+                (b[c] / (total * 2.0 * f64::from(width))) as f32
+            } else {
+                1.0 / TAU
+            };
+        }
+    }
+    stats
+}
+
+/// Generates the whole table sequentially into `out` ([`ResidualLayout::len`]); the std
+/// tools run the rows in parallel with identical results.
+pub fn generate<M: Math>(
+    model: &FurBcsdf<'_, M>,
+    layout: &ResidualLayout,
+    seed: u64,
+    out: &mut [f32],
+) -> Result<(), ProfileError> {
+    layout.validate()?;
+    if out.len() != layout.len() {
+        return Err(ProfileError::WrongLength {
+            table: "residual",
+            expected: layout.len(),
+            found: out.len(),
+        });
+    }
+    for (row, chunk) in out.chunks_exact_mut(layout.row_len()).enumerate() {
+        generate_row(model, layout, row, seed, chunk);
+    }
+    Ok(())
+}
+
+/// E_model(θ_r, h): the energy the model's lobes carry at one view angle, from the model's own
+/// functions.
+struct ModelEnergy<'m, 'a, M: Math> {
+    model: &'m FurBcsdf<'a, M>,
+    theta_r: f32,
+    /// ∫ M^s_back dθ_i and ∫ M^s_front dθ_i at θ_r (weighted like S's 1/cos²θ_i guard).
+    exit_mass: [f32; 2],
+}
+
+impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
+    fn new(model: &'m FurBcsdf<'a, M>, theta_r: f32) -> Self {
+        let mut exit_mass = [0.0f32; 2];
+        if model.profiles().is_some() {
+            let step = PI / MS_SAMPLES as f32;
+            for (x, phi) in [0.0, PI].into_iter().enumerate() {
+                let mut sum = 0.0f64;
+                for k in 0..MS_SAMPLES {
+                    let ti = -PI / 2.0 + (k as f32 + 0.5) * step;
+                    let Ok(a) = Angles::new(ti, theta_r, phi) else {
+                        continue;
+                    };
+                    let c = M::cos(ti);
+                    let w = c * c * inv_cos2_theta_i(c);
+                    sum += f64::from(model.longitudinal_scattered(&a) * w * step);
+                }
+                exit_mass[x] = sum as f32;
+            }
+        }
+        ModelEnergy {
+            model,
+            theta_r,
+            exit_mass,
+        }
+    }
+
+    /// (Σ_p A_p(h), the scattered lobes' energy at h).
+    fn at(&self, h: f32) -> (Rgb, Rgb) {
+        let model = self.model;
+        let (slice, ext) = model.slice_and_extinction(self.theta_r);
+        let chord = Chord::at_offset::<M>(&slice, h);
+        let l = model.params().l();
+        let mut e = Rgb::ZERO;
+        for a in attenuations::<M>(&slice, &chord, &ext, l) {
+            e += a;
+        }
+        let Some(profiles) = model.profiles() else {
+            return (e, Rgb::ZERO);
+        };
+        if ext.medulla_scattering <= 0.0 {
+            return (e, Rgb::ZERO);
+        }
+        let exit = exit_transmittance::<M>(&slice, &ext);
+        let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, l, exit) else {
+            return (e, Rgb::ZERO);
+        };
+        let mut es = Rgb::ZERO;
+        let row = profiles.n_row(model.sigma_n(&slice), sp.h_m);
+        let n = PSI_SUBSAMPLES * profiles.layout().res.n_psi;
+        let step = TAU / n as f32;
+        for k in 0..n {
+            let phi = -PI + (k as f32 + 0.5) * step;
+            let w = phi.abs() / PI;
+            let blend = (1.0 - w) * self.exit_mass[0] + w * self.exit_mass[1];
+            for v in azimuthal_on_row(profiles, &row, &sp, phi) {
+                es += v * (blend * step);
+            }
+        }
+        (e, es)
+    }
+}

@@ -41,7 +41,7 @@ fn angles(theta_i: f32, theta_r: f32, phi: f32) -> Angles {
 }
 
 /// Samples every table of `model` at its nodes, table `N`'s plane k from `planes[k]`, the
-/// model at σ_ca = `lut::absorption_node(k, res.n_abs)` (grey); [`absorption_planes`] makes
+/// model at σ_ca = `lut::absorption_node(k, res.n_abs, s₀)` (grey); [`absorption_planes`] makes
 /// them. Tables `M` and `M_s` do not depend on σ_ca.
 pub fn sample(model: &FurBcsdf<'_>, planes: &[FurBcsdf<'_>], res: LutResolution) -> TableValues {
     let mut tables: [Vec<f32>; TABLE_COUNT] = Default::default();
@@ -251,15 +251,16 @@ pub fn rebuild_model(
 }
 
 /// The models of table `N`'s absorption planes: `model` at σ_ca = `lut::absorption_node(k,
-/// n_abs)` in every channel, k = 0 .. n_abs ([`OwnedModel::at_sigma`]: the residual of each
+/// n_abs, s₀)` in every channel, k = 0 .. n_abs, s₀ = `lut::absorption_scale(κ)` ([`OwnedModel::at_sigma`]: the residual of each
 /// colour from `model`'s cache, or generated).
 pub fn absorption_planes(
     model: &OwnedModel,
     n_abs: u32,
 ) -> Result<Vec<OwnedModel>, crate::profiles::Error> {
+    let scale = lut::absorption_scale(model.model().params().kappa());
     (0..n_abs as usize)
         .map(|k| {
-            let sigma = Rgb::splat(lut::absorption_node(k, n_abs));
+            let sigma = Rgb::splat(lut::absorption_node(k, n_abs, scale));
             let a = Absorption::from_sigma(sigma).expect("absorption nodes lie in [0, 1000]");
             model.at_sigma(&a)
         })

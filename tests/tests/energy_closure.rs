@@ -24,9 +24,9 @@
 
 use bake::profiles::{build_model, scale_budget, OwnedModel, ProfileOptions};
 use bake::tables::{encode, sample};
-use bcsdf_core::Absorption;
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
+use bcsdf_core::Absorption;
 use bcsdf_core::{
     presets, Angles, BakedBcsdf, Bcsdf, Closure, FurBcsdf, FurParams, FurParamsInput, Pigment, Rgb,
 };
@@ -97,9 +97,11 @@ fn lossless_furnace_keeps_the_azimuthal_energy() {
         let p = lossless(&preset.input, Closure::Energy);
         let analytic: FurBcsdf = FurBcsdf::unscattered(p);
         // Table `N`'s absorption planes: the same model at each node's σ_ca.
+        let scale = bcsdf_core::lut::absorption_scale(p.kappa());
         let planes: Vec<FurBcsdf> = (0..res.n_abs as usize)
             .map(|k| {
-                let s = bcsdf_core::Rgb::splat(bcsdf_core::lut::absorption_node(k, res.n_abs));
+                let s =
+                    bcsdf_core::Rgb::splat(bcsdf_core::lut::absorption_node(k, res.n_abs, scale));
                 FurBcsdf::unscattered(p.with_absorption(&Absorption::from_sigma(s).unwrap()))
             })
             .collect();

@@ -164,6 +164,7 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     /// The absorption axis: n_abs − 1 (as f32) and the texels of one plane of table `N`.
     abs_last: f32,
     abs_nodes: usize,
+    abs_scale: f32,
     plane: usize,
     /// The colour the LUT's own parameters give (the preset's σ_ca), located on the
     /// absorption axis: what the methods without a colour evaluate.
@@ -286,6 +287,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let plane = res.n_plane();
         let abs_last = (res.n_abs - 1) as f32;
         let abs_nodes = res.n_abs as usize;
+        let abs_scale = header.absorption_scale();
         let mut tables: [&'a [u8]; TABLE_COUNT] = [&[]; TABLE_COUNT];
         let mut unbias = [0.0; TABLE_COUNT];
         for t in Table::ALL {
@@ -315,8 +317,9 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             energy: params.closure() == Closure::Energy,
             abs_last,
             abs_nodes,
+            abs_scale,
             plane,
-            colour: locate_colour(params.sigma_ca(), abs_last, abs_nodes, plane),
+            colour: locate_colour(params.sigma_ca(), abs_scale, abs_last, abs_nodes, plane),
             _math: PhantomData,
         })
     }
@@ -327,7 +330,13 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     #[inline(always)]
     #[must_use]
     pub fn locate_colour(&self, sigma: Rgb) -> ColourAt {
-        locate_colour(sigma, self.abs_last, self.abs_nodes, self.plane)
+        locate_colour(
+            sigma,
+            self.abs_scale,
+            self.abs_last,
+            self.abs_nodes,
+            self.plane,
+        )
     }
 
     /// The preset's own colour (the σ_ca the LUT's parameters give), located: what
@@ -446,7 +455,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
                 p.ms,
                 p.ms_w,
             ),
-            n: kernel.n_trilinear(
+            n: kernel.n_at_colour(
                 self.tables[Table::N as usize],
                 res.n_phi as usize,
                 p.n,
@@ -596,20 +605,28 @@ impl<M: Math> KernelOp<M> for EvalDirs<'_> {
     }
 }
 
-/// [`BakedBcsdf::locate_colour`]: per channel, u = [`absorption_coordinate`]`(σ)·(n − 1)`,
-/// the lower node k = ⌊u⌋ (at most n − 2) and the weight u − k.
+/// [`BakedBcsdf::locate_colour`]: per channel, u = [`absorption_coordinate`]`(σ, s₀)·(n − 1)`,
+/// the first of three nodes k = min(⌊u⌋, n − 3) and the quadratic Lagrange weights of nodes
+/// k, k + 1, k + 2 at t = u − k: (t − 1)(t − 2)/2, t(2 − t), t(t − 1)/2 (docs/lut.md "The
+/// absorption axis"). The interpolant passes through every node, so it is continuous where
+/// k changes.
 #[inline(always)]
-fn locate_colour(sigma: Rgb, last: f32, nodes: usize, plane: usize) -> ColourAt {
+fn locate_colour(sigma: Rgb, scale: f32, last: f32, nodes: usize, plane: usize) -> ColourAt {
     let mut at = ColourAt {
         stride: plane,
         ..ColourAt::default()
     };
     for c in 0..3 {
         // absorption_coordinate maps NaN and negatives to 0 and clamps to [0, 1].
-        let u = (absorption_coordinate(sigma.0[c]) * last).clamp(0.0, last);
-        let k = (u as usize).min(nodes.saturating_sub(2));
+        let u = (absorption_coordinate(sigma.0[c], scale) * last).clamp(0.0, last);
+        let k = (u as usize).min(nodes.saturating_sub(3));
+        let t = u - k as f32;
         at.plane[c] = k * plane;
-        at.w[c] = u - k as f32;
+        at.w[c] = [
+            0.5 * (t - 1.0) * (t - 2.0),
+            t * (2.0 - t),
+            0.5 * t * (t - 1.0),
+        ];
     }
     at
 }

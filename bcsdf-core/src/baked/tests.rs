@@ -154,9 +154,10 @@ fn lookups_interpolate_every_table_linearly() {
     ];
     for (ci, sigma) in colours.into_iter().enumerate() {
         let colour = lut.locate_colour(sigma);
+        let scale = lut.header().absorption_scale();
         let plane_u = sigma
             .0
-            .map(|s| lut::absorption_coordinate(s) * (r.n_abs - 1) as f32);
+            .map(|s| lut::absorption_coordinate(s, scale) * (r.n_abs - 1) as f32);
         for ti in thetas {
             for tr in thetas {
                 for phi in phis {
@@ -205,33 +206,38 @@ fn colours_are_located_on_the_absorption_axis() {
     let b = affine();
     let lut = BakedBcsdf::from_bytes(&b).unwrap();
     let plane = RES.n_plane();
-    // Every node is reached exactly (weight 0, or 1 on the last interval).
+    let scale = lut.header().absorption_scale();
+    // Every node is reached exactly: its own weight 1 (to rounding), the others 0.
     for k in 0..RES.n_abs as usize {
-        let s = lut::absorption_node(k, RES.n_abs);
+        let s = lut::absorption_node(k, RES.n_abs, scale);
         let at = lut.locate_colour(Rgb::splat(s));
-        let u = at.plane[0] / plane;
-        assert!(
-            (u as f32 + at.w[0] - k as f32).abs() < 1e-5,
-            "node {k} (σ {s}): plane {u} w {}",
-            at.w[0]
-        );
+        let first = at.plane[0] / plane;
+        for (j, &w) in at.w[0].iter().enumerate() {
+            let want = if first + j == k { 1.0 } else { 0.0 };
+            assert!(
+                (w - want).abs() < 1e-5,
+                "node {k} (σ {s}): first plane {first}, weights {:?}",
+                at.w[0]
+            );
+        }
+        assert!((at.w[0].iter().sum::<f32>() - 1.0).abs() < 1e-6);
     }
-    assert_eq!(lut::absorption_node(0, RES.n_abs), 0.0);
-    assert_eq!(lut::absorption_node(3, RES.n_abs), lut::SIGMA_CA_MAX);
+    assert_eq!(lut::absorption_node(0, RES.n_abs, scale), 0.0);
+    assert_eq!(lut::absorption_node(3, RES.n_abs, scale), lut::SIGMA_CA_MAX);
     // Out of the domain: NaN and negatives at the lossless node, beyond 1000 at the last.
     let at = lut.locate_colour(Rgb([f32::NAN, -3.0, f32::INFINITY]));
-    assert_eq!((at.plane[0], at.w[0]), (0, 0.0));
-    assert_eq!((at.plane[1], at.w[1]), (0, 0.0));
-    assert_eq!((at.plane[2], at.w[2]), (2 * plane, 1.0));
+    assert_eq!((at.plane[0], at.w[0]), (0, [1.0, 0.0, 0.0]));
+    assert_eq!((at.plane[1], at.w[1]), (0, [1.0, 0.0, 0.0]));
+    assert_eq!((at.plane[2], at.w[2]), (plane, [0.0, 0.0, 1.0]));
     // The coordinate is monotone and maps [0, 1000] onto [0, 1].
     let mut prev = -1.0;
     for k in 0..=2000 {
         let s = 1000.0 * (k as f32 / 2000.0).powi(4);
-        let u = lut::absorption_coordinate(s);
+        let u = lut::absorption_coordinate(s, scale);
         assert!(u >= prev && (0.0..=1.0).contains(&u), "{s}: {u}");
         prev = u;
     }
-    assert_eq!(lut::absorption_coordinate(1000.0), 1.0);
+    assert_eq!(lut::absorption_coordinate(1000.0, scale), 1.0);
     // The default colour is the preset's, and `at` with it evaluates as the LUT does.
     assert_eq!(
         lut.default_colour(),

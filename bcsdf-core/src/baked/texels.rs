@@ -23,8 +23,8 @@ pub(crate) trait NKernel: Copy {
     /// table scale itself, not scale × 2^112 (`BakedBcsdf::place`).
     const TRUE_HALVES: bool;
 
-    /// Table `N` at one colour, as [`n_trilinear`].
-    fn n_trilinear(
+    /// Table `N` at one colour, as [`n_at_colour`].
+    fn n_at_colour(
         self,
         data: &[u8],
         width: usize,
@@ -35,14 +35,15 @@ pub(crate) trait NKernel: Copy {
 }
 
 /// Where a colour reads table `N` (docs/lut.md "The absorption axis"): per RGB channel, the
-/// first texel of the lower absorption plane and the weight of the upper one
+/// first texel of the first of its three absorption planes and the three planes' weights
 /// (`BakedBcsdf::locate_colour`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ColourAt {
-    /// Texel offset k·(n_phi·n_theta_r) of plane k, the lower node of each channel.
+    /// Texel offset k·(n_phi·n_theta_r) of plane k, the first of each channel's three nodes.
     pub(crate) plane: [usize; 3],
-    /// Weight of plane k + 1, per channel.
-    pub(crate) w: [f32; 3],
+    /// Weights of planes k, k + 1, k + 2 per channel (quadratic Lagrange weights; they sum
+    /// to 1).
+    pub(crate) w: [[f32; 3]; 3],
     /// Texels per plane (the distance from plane k to plane k + 1).
     pub(crate) stride: usize,
 }
@@ -54,7 +55,7 @@ pub(crate) struct Baseline;
 impl NKernel for Baseline {
     const TRUE_HALVES: bool = false;
     #[inline(always)]
-    fn n_trilinear(
+    fn n_at_colour(
         self,
         data: &[u8],
         width: usize,
@@ -62,7 +63,7 @@ impl NKernel for Baseline {
         w: [f32; 4],
         at: &ColourAt,
     ) -> [f32; 12] {
-        n_trilinear(data, width, index, w, at)
+        n_at_colour(data, width, index, w, at)
     }
 }
 
@@ -85,26 +86,40 @@ pub(crate) fn corner_weights(wy: f32, wx: f32, k: f32) -> [f32; 4] {
     [ky0 * (1.0 - wx), ky0 * wx, ky1 * (1.0 - wx), ky1 * wx]
 }
 
-/// The eight weights of one colour channel's trilinear read, in the order the kernels sum
-/// them: for the left texels (a, b, c, d) and the right texels, where a and b are the two
-/// |θ_r| rows of the lower plane, c and d those of the upper, `t` the upper plane's weight.
+/// The twelve weights of one colour channel's read, in the order the kernels sum them: for
+/// the left texels and for the right texels, the two |θ_r| rows of plane k, then of plane
+/// k + 1, then of plane k + 2; `t` holds the three planes' weights.
 #[inline(always)]
-pub(crate) fn plane_weights(w: [f32; 4], t: f32) -> ([f32; 4], [f32; 4]) {
-    let (s0, s1) = (1.0 - t, t);
+pub(crate) fn plane_weights(w: [f32; 4], t: [f32; 3]) -> ([f32; 6], [f32; 6]) {
     (
-        [s0 * w[0], s0 * w[2], s1 * w[0], s1 * w[2]],
-        [s0 * w[1], s0 * w[3], s1 * w[1], s1 * w[3]],
+        [
+            t[0] * w[0],
+            t[0] * w[2],
+            t[1] * w[0],
+            t[1] * w[2],
+            t[2] * w[0],
+            t[2] * w[2],
+        ],
+        [
+            t[0] * w[1],
+            t[0] * w[3],
+            t[1] * w[1],
+            t[1] * w[3],
+            t[2] * w[1],
+            t[2] * w[3],
+        ],
     )
 }
 
 /// Table `N` (4 channels: R, TT, TRT, s per plane) at one colour: for each RGB channel c,
 /// bilinearly in (|θ_r|, |φ|) with corner weights `w` ([`corner_weights`]) at texel `index`
-/// of the two planes of `at` around that channel's σ_ca, and linearly between the planes.
-/// Per channel and family the sum is (((a·wa + b·wb) + c·wc) + d·wd) over the left texels,
-/// the same over the right texels, then left + right ([`plane_weights`]). Returns the
-/// families' RGB, family-major (R.R, R.G, R.B, TT.R, …).
+/// of the three planes of `at` around that channel's σ_ca, combined with the planes'
+/// quadratic weights. Per channel and family the sum runs over the six rows of the left
+/// texels in [`plane_weights`] order, the same over the right texels, then left + right;
+/// the result is kept ≥ 0 (the quadratic can undershoot where a family falls to 0).
+/// Returns the families' RGB, family-major (R.R, R.G, R.B, TT.R, …).
 #[inline(always)]
-pub(crate) fn n_trilinear(
+pub(crate) fn n_at_colour(
     data: &[u8],
     width: usize,
     index: usize,
@@ -113,23 +128,27 @@ pub(crate) fn n_trilinear(
 ) -> [f32; 12] {
     let mut out = [0.0; 12];
     for c in 0..3 {
-        let lo_texel = at.plane[c] + index;
-        let hi_texel = lo_texel + at.stride;
-        let a = F4::halves8(bytes::<16>(data, 8 * lo_texel));
-        let b = F4::halves8(bytes::<16>(data, 8 * (lo_texel + width)));
-        let cc = F4::halves8(bytes::<16>(data, 8 * hi_texel));
-        let d = F4::halves8(bytes::<16>(data, 8 * (hi_texel + width)));
+        let t0 = at.plane[c] + index;
+        let rows = [
+            t0,
+            t0 + width,
+            t0 + at.stride,
+            t0 + at.stride + width,
+            t0 + 2 * at.stride,
+            t0 + 2 * at.stride + width,
+        ]
+        .map(|t| F4::halves8(bytes::<16>(data, 8 * t)));
         let (l, r) = plane_weights(w, at.w[c]);
-        let side = |s: usize, k: [f32; 4]| {
-            let [k0, k1, k2, k3] = k.map(F4::splat);
-            a[s].mul(k0)
-                .add(b[s].mul(k1))
-                .add(cc[s].mul(k2))
-                .add(d[s].mul(k3))
+        let side = |s: usize, k: [f32; 6]| {
+            let mut acc = rows[0][s].mul(F4::splat(k[0]));
+            for i in 1..6 {
+                acc = acc.add(rows[i][s].mul(F4::splat(k[i])));
+            }
+            acc
         };
         let v = side(0, l).add(side(1, r)).to_array();
         for f in 0..4 {
-            out[3 * f + c] = v[f];
+            out[3 * f + c] = v[f].max(0.0);
         }
     }
     out
@@ -179,7 +198,7 @@ pub(crate) fn ms_bilinear(data: &[u8], width: usize, index: usize, w: [f32; 4]) 
 /// Table `N` with AVX and F16C: `vcvtph2ps` converts eight halves per instruction (true
 /// values, so the weights `w` must not carry the 2^112 of the biased decode: the evaluator
 /// takes it off the table scale once, at load ([`NKernel::TRUE_HALVES`]), which keeps every product
-/// and sum bit for bit those of [`n_trilinear`]: a power-of-two rescaling, exact in the normal
+/// and sum bit for bit those of [`n_at_colour`]: a power-of-two rescaling, exact in the normal
 /// range the weights stay in), a texel pair (both texels' four families) in one 256-bit
 /// register.
 ///
@@ -206,7 +225,7 @@ impl Avx2F16c {
 impl NKernel for Avx2F16c {
     const TRUE_HALVES: bool = true;
     #[inline(always)]
-    fn n_trilinear(
+    fn n_at_colour(
         self,
         data: &[u8],
         width: usize,
@@ -220,14 +239,16 @@ impl NKernel for Avx2F16c {
         };
         let mut out = [0.0; 12];
         for c in 0..3 {
-            let lo_texel = at.plane[c] + index;
-            let hi_texel = lo_texel + at.stride;
+            let t0 = at.plane[c] + index;
             let rows = [
-                bytes::<16>(data, 8 * lo_texel),
-                bytes::<16>(data, 8 * (lo_texel + width)),
-                bytes::<16>(data, 8 * hi_texel),
-                bytes::<16>(data, 8 * (hi_texel + width)),
-            ];
+                t0,
+                t0 + width,
+                t0 + at.stride,
+                t0 + at.stride + width,
+                t0 + 2 * at.stride,
+                t0 + 2 * at.stride + width,
+            ]
+            .map(|t| bytes::<16>(data, 8 * t));
             let (l, r) = plane_weights(w, at.w[c]);
             let mut v = [0.0f32; 4];
             // SAFETY: `self` exists, so `detect` found AVX, AVX2 and F16C on this CPU and OS
@@ -235,7 +256,7 @@ impl NKernel for Avx2F16c {
             // (`bytes` keeps it inside `data`); the store writes the 4 floats of `v`.
             unsafe {
                 // A texel pair: the left texel's four families in lanes 0–3, the right's in
-                // 4–7, each lane the same products and sums as `n_trilinear`.
+                // 4–7, each lane the same products and sums as `n_at_colour`.
                 let pair = |b: &[u8; 16]| -> __m256 {
                     _mm256_cvtph_ps(_mm_loadu_si128(b.as_ptr().cast()))
                 };
@@ -248,7 +269,7 @@ impl NKernel for Avx2F16c {
                 _mm_storeu_ps(v.as_mut_ptr(), sum);
             }
             for f in 0..4 {
-                out[3 * f + c] = v[f];
+                out[3 * f + c] = v[f].max(0.0);
             }
         }
         out

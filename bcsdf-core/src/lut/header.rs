@@ -73,6 +73,13 @@ fn pigment_record(pigment: &Pigment) -> (u32, [f32; 3]) {
 }
 
 impl LutHeader {
+    /// The scale s₀ of this LUT's absorption axis ([`super::absorption_scale`] of the
+    /// parameters' κ; header byte 156).
+    #[must_use]
+    pub fn absorption_scale(&self) -> f32 {
+        super::absorption_scale(self.params.kappa)
+    }
+
     /// The header as bytes, checksum field zero (see [`seal`](super::seal)).
     #[must_use]
     pub fn encode(&self) -> [u8; HEADER_LEN] {
@@ -124,7 +131,7 @@ impl LutHeader {
             }
             None => w.bytes(&[0u8; RESERVED - PROFILES]),
         }
-        w.u32(0); // reserved
+        w.f32(self.absorption_scale());
         debug_assert_eq!(w.at, CHECKSUM.start);
         out
     }
@@ -230,8 +237,16 @@ impl LutHeader {
                 })
             }
         };
-        if bytes[RESERVED..CHECKSUM.start].iter().any(|&b| b != 0) {
-            return Err(LutError::Field { field: "reserved" });
+        let stored = f32::from_le_bytes([
+            bytes[RESERVED],
+            bytes[RESERVED + 1],
+            bytes[RESERVED + 2],
+            bytes[RESERVED + 3],
+        ]);
+        if stored.to_bits() != super::absorption_scale(params.kappa).to_bits() {
+            return Err(LutError::Field {
+                field: "absorption_scale",
+            });
         }
         Ok(LutHeader {
             res,

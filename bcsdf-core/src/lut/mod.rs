@@ -56,7 +56,7 @@
 //! | 120 | profile seed (u64) |
 //! | 128 | photon budget: per C^N cell, per C^M row (2 × u32) |
 //! | 136 | profile resolution: n_sigma, n_h, n_psi, n_in, n_out (5 × u32) |
-//! | 156 | reserved (u32, zero) |
+//! | 156 | the absorption axis's scale s₀ (f32, [`absorption_scale`] of the parameters' κ) |
 //! | 160 | checksum: FNV-1a 64 of every other byte of the blob (u64) |
 //! | 168 | table data (u16 halves) |
 //! | [`LutResolution::sampling_start`] | sampling section (f32 prefix sums, [`cdf`]) |
@@ -86,7 +86,7 @@ pub const HEADER_LEN: usize = 168;
 /// Byte offset of the profile provenance block.
 const PROFILES: usize = 112;
 
-/// Byte offset of the reserved (zero) word before the checksum.
+/// Byte offset of the absorption axis's scale, the word before the checksum.
 const RESERVED: usize = 156;
 
 /// Byte range of the checksum field.
@@ -96,41 +96,53 @@ pub const CHECKSUM: Range<usize> = 160..168;
 /// §2): the last node of the absorption axis.
 pub const SIGMA_CA_MAX: f32 = 1000.0;
 
-/// The knee s₀ of the absorption axis (per fiber radius): σ_ca is placed on the axis by
-/// σ/(σ + s₀), so half the nodes lie below σ = s₀ (chosen by measurement, docs/lut.md "The
-/// absorption axis").
-pub const ABSORPTION_KNEE: f32 = 3.0;
+/// The absorption axis's scale for a fiber without a medulla, s₀ at κ = 0 (per fiber
+/// radius; chosen by measurement, docs/lut.md "The absorption axis").
+pub const ABSORPTION_SCALE_HAIR: f32 = 1.25;
 
-/// (σ/(σ + s₀)) at [`SIGMA_CA_MAX`]: the compressed coordinate of the last node.
-const ABSORPTION_COORD_MAX: f32 = SIGMA_CA_MAX / (SIGMA_CA_MAX + ABSORPTION_KNEE);
+/// The scale s₀ of the absorption axis of a LUT whose fibers have medulla ratio `kappa`:
+/// [`ABSORPTION_SCALE_HAIR`]/(1 − κ), κ clamped to [0, 0.95]. The light a fiber's absorbing
+/// families carry falls off with σ_ca over the cortex path it crosses, about 2(1 − κ) radii
+/// for light that reaches the medulla, so the axis stretches with 1/(1 − κ) (docs/lut.md
+/// "The absorption axis"). Stored in the header (byte 156) and checked against this rule.
+#[must_use]
+pub fn absorption_scale(kappa: f32) -> f32 {
+    #[allow(clippy::manual_clamp)]
+    let k = kappa.max(0.0).min(0.95);
+    ABSORPTION_SCALE_HAIR / (1.0 - k)
+}
 
-/// The position of σ_ca on the absorption axis, in [0, 1]: (σ/(σ + s₀))/(σ_max/(σ_max + s₀))
-/// with s₀ = [`ABSORPTION_KNEE`] and σ_max = [`SIGMA_CA_MAX`] (docs/lut.md "The absorption
-/// axis"). Node k of n lies at k/(n − 1) ([`absorption_node`]). σ above σ_max (and +∞) gives
-/// 1, NaN and negative σ give 0 (the callers pass validated [`crate::Absorption`]s).
+/// The position of σ_ca on an absorption axis of scale `scale` ([`absorption_scale`]), in
+/// [0, 1]: x = 1 − e^(−σ/s₀) (docs/lut.md "The absorption axis"). Node k of n lies at
+/// x = k/(n − 1) ([`absorption_node`]); the last node, x = 1, is σ = [`SIGMA_CA_MAX`] (the
+/// fully absorbing limit: every σ above about 110 s₀ maps to 1 in f32). NaN and negative σ
+/// give 0 (the callers pass validated [`crate::Absorption`]s). Branch-free
+/// ([`crate::math::exp_neg_saturating`]), so a lane loop over channels vectorises.
 #[inline(always)]
 #[must_use]
-pub fn absorption_coordinate(sigma: f32) -> f32 {
+pub fn absorption_coordinate(sigma: f32, scale: f32) -> f32 {
     // `max` first maps NaN to 0 (`clamp` would keep it).
     #[allow(clippy::manual_clamp)]
     let s = sigma.max(0.0).min(SIGMA_CA_MAX);
-    // Divided (not multiplied by the reciprocal) so that σ_max lands on exactly 1.
-    (s / (s + ABSORPTION_KNEE) / ABSORPTION_COORD_MAX).min(1.0)
+    (1.0 - crate::math::exp_neg_saturating(s / scale)).min(1.0)
 }
 
-/// σ_ca of node `k` of an absorption axis of `nodes` nodes: the inverse of
-/// [`absorption_coordinate`] at k/(nodes − 1), computed in f64; node 0 is σ = 0 (lossless) and
-/// the last node is exactly [`SIGMA_CA_MAX`].
+/// σ_ca of node `k` of an absorption axis of `nodes` nodes and scale `scale`: the inverse of
+/// [`absorption_coordinate`] at x = k/(nodes − 1), σ = −s₀·ln(1 − x), computed in f64; node
+/// 0 is σ = 0 (lossless) and the last node is exactly [`SIGMA_CA_MAX`].
 #[must_use]
-pub fn absorption_node(k: usize, nodes: u32) -> f32 {
+pub fn absorption_node(k: usize, nodes: u32, scale: f32) -> f32 {
     let last = nodes.saturating_sub(1).max(1) as usize;
     if k >= last {
         return SIGMA_CA_MAX;
     }
-    let v = k as f64 / last as f64 * f64::from(SIGMA_CA_MAX)
-        / (f64::from(SIGMA_CA_MAX) + f64::from(ABSORPTION_KNEE));
-    (f64::from(ABSORPTION_KNEE) * v / (1.0 - v)) as f32
+    let x = k as f64 / last as f64;
+    (-f64::from(scale) * libm::log(1.0 - x)) as f32
 }
+
+/// Fewest nodes of the absorption axis: a colour reads three planes
+/// (quadratic interpolation, docs/lut.md "The absorption axis").
+pub const MIN_ABSORPTION_NODES: u32 = 3;
 
 /// Largest node count accepted on any axis.
 pub const MAX_NODES: u32 = 8192;
@@ -255,11 +267,17 @@ impl LutResolution {
         self.n_phi as usize * self.n_theta_r as usize
     }
 
-    /// Checks every axis has 2 ..= [`MAX_NODES`] nodes and the tables hold at most
+    /// Checks every axis has 2 ..= [`MAX_NODES`] nodes (the absorption axis at least
+    /// [`MIN_ABSORPTION_NODES`]) and the tables hold at most
     /// [`MAX_VALUES`] values.
     pub fn validate(&self) -> Result<(), LutError> {
         for (axis, nodes) in self.axes() {
-            if !(2..=MAX_NODES).contains(&nodes) {
+            let fewest = if axis == "n_abs" {
+                MIN_ABSORPTION_NODES
+            } else {
+                2
+            };
+            if !(fewest..=MAX_NODES).contains(&nodes) {
                 return Err(LutError::Resolution { axis, nodes });
             }
         }

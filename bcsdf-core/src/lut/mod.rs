@@ -112,11 +112,14 @@ pub fn absorption_scale(kappa: f32) -> f32 {
     ABSORPTION_SCALE_HAIR / (1.0 - k)
 }
 
-/// The position of σ_ca on an absorption axis of scale `scale` ([`absorption_scale`]), in
-/// [0, 1]: x = 1 − e^(−σ/s₀) (docs/lut.md "The absorption axis"). Node k of n lies at
-/// x = k/(n − 1) ([`absorption_node`]); the last node, x = 1, is σ = [`SIGMA_CA_MAX`] (the
-/// fully absorbing limit: every σ above about 110 s₀ maps to 1 in f32). NaN and negative σ
-/// give 0 (the callers pass validated [`crate::Absorption`]s). Branch-free
+/// The position of σ_ca on an absorption axis of scale s₀ = `scale` ([`absorption_scale`]),
+/// in [0, 1]: x = 1 − ½(e^(−σ/s_h) + e^(−σ/s₀)), s_h = [`ABSORPTION_SCALE_HAIR`]
+/// (docs/lut.md "The absorption axis"): half the nodes follow the fast fall-off of light
+/// that crosses the whole cortex, half the slow one of light that reaches the medulla; for a
+/// fiber without a medulla both are s_h. Node k of n lies at x = k/(n − 1)
+/// ([`absorption_node`]); the last node, x = 1, is σ = [`SIGMA_CA_MAX`] (the fully
+/// absorbing limit: every σ above about 110 s₀ maps to 1 in f32). NaN and negative σ give 0
+/// (the callers pass validated [`crate::Absorption`]s). Branch-free
 /// ([`crate::math::exp_neg_saturating`]), so a lane loop over channels vectorises.
 #[inline(always)]
 #[must_use]
@@ -124,20 +127,36 @@ pub fn absorption_coordinate(sigma: f32, scale: f32) -> f32 {
     // `max` first maps NaN to 0 (`clamp` would keep it).
     #[allow(clippy::manual_clamp)]
     let s = sigma.max(0.0).min(SIGMA_CA_MAX);
-    (1.0 - crate::math::exp_neg_saturating(s / scale)).min(1.0)
+    let e = crate::math::exp_neg_saturating(s / ABSORPTION_SCALE_HAIR)
+        + crate::math::exp_neg_saturating(s / scale);
+    (1.0 - 0.5 * e).min(1.0)
 }
 
 /// σ_ca of node `k` of an absorption axis of `nodes` nodes and scale `scale`: the inverse of
-/// [`absorption_coordinate`] at x = k/(nodes − 1), σ = −s₀·ln(1 − x), computed in f64; node
-/// 0 is σ = 0 (lossless) and the last node is exactly [`SIGMA_CA_MAX`].
+/// [`absorption_coordinate`] at x = k/(nodes − 1), found by bisection in f64 (60 halvings of
+/// [0, 1000]); node 0 is σ = 0 (lossless) and the last node is exactly [`SIGMA_CA_MAX`].
 #[must_use]
 pub fn absorption_node(k: usize, nodes: u32, scale: f32) -> f32 {
     let last = nodes.saturating_sub(1).max(1) as usize;
     if k >= last {
         return SIGMA_CA_MAX;
     }
+    if k == 0 {
+        return 0.0;
+    }
     let x = k as f64 / last as f64;
-    (-f64::from(scale) * libm::log(1.0 - x)) as f32
+    let (sh, s0) = (f64::from(ABSORPTION_SCALE_HAIR), f64::from(scale));
+    let coord = |s: f64| 1.0 - 0.5 * (libm::exp(-s / sh) + libm::exp(-s / s0));
+    let (mut lo, mut hi) = (0.0f64, f64::from(SIGMA_CA_MAX));
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if coord(mid) < x {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (0.5 * (lo + hi)) as f32
 }
 
 /// Fewest nodes of the absorption axis: a colour reads three planes
@@ -245,7 +264,7 @@ impl LutResolution {
         n_phi: 128,
         n_ms_i: 96,
         n_ms_r: 96,
-        n_abs: 16,
+        n_abs: 22,
     };
 
     /// The node counts with their names, in header order, for messages and metadata.

@@ -96,6 +96,11 @@ struct Cli {
     #[arg(long, value_name = "N", default_value_t = LutResolution::DEFAULT.n_ms_i)]
     res_ms: u32,
 
+    /// Nodes of the absorption axis, sigma_ca over [0, 1000] per fiber radius (planes of the
+    /// N tables; at least 3; docs/lut.md "The absorption axis").
+    #[arg(long, value_name = "N", default_value_t = LutResolution::DEFAULT.n_abs)]
+    res_abs: u32,
+
     /// Threads (default and 0: one per core; at most 8 per core, above 4096 refused). The
     /// LUTs are the same bits for any count.
     #[arg(long, value_name = "N")]
@@ -204,7 +209,7 @@ fn options(cli: &Cli) -> Result<BakeOptions, Failure> {
         n_phi: cli.res_phi,
         n_ms_i: cli.res_ms,
         n_ms_r: cli.res_ms,
-        n_abs: LutResolution::DEFAULT.n_abs,
+        n_abs: cli.res_abs,
     };
     res.validate().map_err(input)?;
     let (budget, note) =
@@ -336,10 +341,11 @@ fn print_summary(
 ) {
     let pct = |v: f64| format!("{:.3}%", 100.0 * v);
     println!(
-        "LUT resolution: n_sum {} | n_theta_r {} x n_phi {} | n_ms {} x {}   budget: E1 {} E_albedo {} E_peak {}",
+        "LUT resolution: n_sum {} | n_theta_r {} x n_phi {} x n_abs {} | n_ms {} x {}   budget: E1 {} E_albedo {} E_peak {}",
         res.n_sum,
         res.n_theta_r,
         res.n_phi,
+        res.n_abs,
         res.n_ms_i,
         res.n_ms_r,
         pct(budget.e1),

@@ -416,7 +416,8 @@ pub fn set_help() -> String {
     let keys: Vec<&str> = bcsdf_core::SCHEMA.iter().map(|spec| spec.key).collect();
     format!(
         "Override one parameter of the preset; repeatable, applied left to right. KEY is one \
-         of {}; sigma_ca also takes r,g,b, closure takes report or energy.",
+         of {}; sigma_ca also takes r,g,b, closure takes report or energy. With --lut only \
+         the colour keys (the LUT is read at that sigma_ca).",
         keys.join(", ")
     )
 }
@@ -433,7 +434,8 @@ pub struct ModelArgs {
     pub presets: PresetsArgs,
 
     /// Override one parameter of the preset; repeatable, applied left to right (the keys:
-    /// [`set_help`], from `bcsdf_core::SCHEMA`).
+    /// [`set_help`], from `bcsdf_core::SCHEMA`). With `--lut`, only the colour keys: the
+    /// LUT is read at that σ_ca.
     #[arg(long = "set", value_name = "KEY=VALUE", help = set_help())]
     pub set: Vec<String>,
 
@@ -443,7 +445,7 @@ pub struct ModelArgs {
         long,
         value_name = "FILE",
         conflicts_with_all = [
-            "preset", "presets", "set",
+            "preset", "presets",
             "cache_dir", "no_cache", "seed", "photons_scale", "threads",
         ]
     )]

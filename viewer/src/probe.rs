@@ -44,7 +44,7 @@ impl Query {
     pub fn unsupported(&self, target: &Target<'_>, pdf: bool) -> Option<String> {
         let h = self.h?;
         match target {
-            Target::Baked(_) => Some(format!(
+            Target::Baked(..) => Some(format!(
                 "h = {h} asks for the near field, but a LUT holds the far field only \
                  (expected `theta_i theta_r phi`)"
             )),
@@ -67,13 +67,10 @@ impl Query {
                 let density = pdf.then(|| Bcsdf::pdf(model, a));
                 write_lobes(out, &model.eval_far_lobes(a), density)
             }
-            (Target::Baked(baked), _) => {
-                if pdf {
-                    let (families, density) = baked.eval_with_pdf(a);
-                    write_families(out, &families, Some(density))
-                } else {
-                    write_families(out, &Bcsdf::eval(baked, a), None)
-                }
+            (Target::Baked(baked, colour), _) => {
+                let at = baked.at(colour);
+                let density = pdf.then(|| Bcsdf::pdf(&at, a));
+                write_families(out, &Bcsdf::eval(&at, a), density)
             }
         }
     }

@@ -37,7 +37,13 @@ pub fn run(args: &SampleArgs) -> Result<(), Error> {
     let mut out = BufWriter::new(io::stdout().lock());
     let failed = match source.target()? {
         Target::Analytic(model) => draw(&model, theta_r, args.count, args.sampling_seed, &mut out),
-        Target::Baked(baked) => draw(&baked, theta_r, args.count, args.sampling_seed, &mut out),
+        Target::Baked(baked, colour) => draw(
+            &baked.at(&colour),
+            theta_r,
+            args.count,
+            args.sampling_seed,
+            &mut out,
+        ),
     }?;
     out.flush()?;
     if failed > 0 {

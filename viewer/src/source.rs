@@ -9,7 +9,7 @@ use bake::lutfile;
 use bake::profiles::{self, CacheOutcome, OwnedModel, ProfileKey, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut;
-use bcsdf_core::{FurBcsdf, FurParams, PhotonBudget, ProfileLayout, Resolution};
+use bcsdf_core::{Absorption, FurBcsdf, FurParams, PhotonBudget, ProfileLayout, Resolution};
 use std::fs::File;
 use std::io::{self, IsTerminal, Read, Write};
 use std::path::{Path, PathBuf};
@@ -22,12 +22,14 @@ const EXR_MAGIC: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];
 pub enum Source {
     /// The analytic model of a preset, with its medulla profiles.
     Analytic(OwnedModel),
-    /// A baked LUT: the validated blob and the file it came from.
+    /// A baked LUT: the validated blob, the file it came from and the colour to read it at.
     Baked {
         /// The LUT file (named in messages).
         path: PathBuf,
         /// The blob (`bcsdf_core::lut` layout), validated.
         blob: Vec<u8>,
+        /// The colour (σ_ca) the LUT is evaluated at: its preset's, or `--set`'s.
+        colour: Absorption,
     },
 }
 
@@ -37,8 +39,8 @@ pub enum Source {
 pub enum Target<'a> {
     /// The analytic model: far field per lobe, near field, sampling.
     Analytic(FurBcsdf<'a>),
-    /// The baked tables: far field per lobe family, sampling.
-    Baked(BakedBcsdf<'a>),
+    /// The baked tables at one colour: far field per lobe family, sampling.
+    Baked(BakedBcsdf<'a>, Absorption),
 }
 
 impl Source {
@@ -46,10 +48,15 @@ impl Source {
     /// medulla profiles made as `profile_args` say.
     pub fn load(args: &ModelArgs, profile_args: &ProfileArgs) -> Result<Source, Error> {
         match (&args.lut, &args.preset) {
-            (Some(path), _) => Ok(Source::Baked {
-                path: path.clone(),
-                blob: read_lut(path)?,
-            }),
+            (Some(path), _) => {
+                let blob = read_lut(path)?;
+                let colour = lut_colour(path, &blob, &args.set)?;
+                Ok(Source::Baked {
+                    path: path.clone(),
+                    blob,
+                    colour,
+                })
+            }
             (None, Some(preset)) => {
                 preset_model(preset, &args.presets, &args.set, profile_args).map(Source::Analytic)
             }
@@ -62,11 +69,32 @@ impl Source {
     pub fn target(&self) -> Result<Target<'_>, Error> {
         match self {
             Source::Analytic(model) => Ok(Target::Analytic(model.model())),
-            Source::Baked { path, blob } => BakedBcsdf::from_bytes(blob)
-                .map(Target::Baked)
+            Source::Baked { path, blob, colour } => BakedBcsdf::from_bytes(blob)
+                .map(|lut| Target::Baked(lut, *colour))
                 .map_err(|e| Error::input(format!("{}: {e}", path.display()))),
         }
     }
+}
+
+/// The colour a LUT is read at: its parameters' σ_ca, or the σ_ca that `set` (`--set`
+/// overrides applied to the LUT's parameters) gives. Only the colour keys can change: every
+/// other parameter is baked into the tables, and an override of one is refused by name.
+pub fn lut_colour(path: &Path, blob: &[u8], set: &[String]) -> Result<Absorption, Error> {
+    let header = lut::LutHeader::decode(blob)
+        .map_err(|e| Error::input(format!("{}: {e}", path.display())))?;
+    let mut input = header.params;
+    bake::apply_overrides(&mut input, set).map_err(|e| Error::input(format!("--set {e}")))?;
+    let mut rest = input;
+    rest.pigment = header.params.pigment;
+    if rest != header.params {
+        return Err(Error::input(format!(
+            "--set with --lut {}: only the colour (sigma_ca or the melanin keys) can change; \
+             the LUT's other parameters are baked into its tables",
+            path.display()
+        )));
+    }
+    let params = FurParams::new(&input).map_err(|e| Error::input(format!("--set: {e}")))?;
+    Absorption::from_sigma(params.sigma_ca()).map_err(|e| Error::input(format!("--set: {e}")))
 }
 
 /// Reads a LUT written by `bake` and returns its validated blob. The reader is chosen by

@@ -286,17 +286,22 @@ impl LutResolution {
         self.n_phi as usize * self.n_theta_r as usize
     }
 
+    /// The fewest nodes axis `axis` may have: [`MIN_ABSORPTION_NODES`] for `n_abs`, else 2.
+    #[must_use]
+    pub fn fewest_nodes(axis: &str) -> u32 {
+        if axis == "n_abs" {
+            MIN_ABSORPTION_NODES
+        } else {
+            2
+        }
+    }
+
     /// Checks every axis has 2 ..= [`MAX_NODES`] nodes (the absorption axis at least
     /// [`MIN_ABSORPTION_NODES`]) and the tables hold at most
     /// [`MAX_VALUES`] values.
     pub fn validate(&self) -> Result<(), LutError> {
         for (axis, nodes) in self.axes() {
-            let fewest = if axis == "n_abs" {
-                MIN_ABSORPTION_NODES
-            } else {
-                2
-            };
-            if !(fewest..=MAX_NODES).contains(&nodes) {
+            if !(Self::fewest_nodes(axis)..=MAX_NODES).contains(&nodes) {
                 return Err(LutError::Resolution { axis, nodes });
             }
         }
@@ -487,7 +492,8 @@ impl fmt::Display for LutError {
             ),
             LutError::Resolution { axis, nodes } => write!(
                 f,
-                "LUT axis {axis} has {nodes} nodes (valid: 2 to {MAX_NODES})"
+                "LUT axis {axis} has {nodes} nodes (valid: {} to {MAX_NODES})",
+                LutResolution::fewest_nodes(axis)
             ),
             LutError::TooLarge { values } => write!(
                 f,

@@ -138,7 +138,7 @@ pub struct ErrorBudget {
 }
 
 /// A metric above its budget.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Exceeded {
     /// Metric name (`E1`, `E_albedo`, `E_peak`).
     pub metric: &'static str,
@@ -148,6 +148,8 @@ pub struct Exceeded {
     pub value: f64,
     /// Budget.
     pub budget: f64,
+    /// The colour it was measured at, when not the preset's own ([`colour_set`] labels).
+    pub colour: Option<String>,
 }
 
 impl fmt::Display for Exceeded {
@@ -159,7 +161,11 @@ impl fmt::Display for Exceeded {
             self.channel,
             100.0 * self.value,
             100.0 * self.budget
-        )
+        )?;
+        match &self.colour {
+            Some(c) => write!(f, " at colour {c}"),
+            None => Ok(()),
+        }
     }
 }
 
@@ -213,6 +219,7 @@ impl ErrorBudget {
                 // NaN counts as exceeded.
                 if values[c].is_nan() || values[c] > budget {
                     out.push(Exceeded {
+                        colour: None,
                         metric,
                         channel,
                         value: values[c],
@@ -308,34 +315,40 @@ fn ratio(a: f64, b: f64) -> f64 {
     }
 }
 
+/// `n` random colours (at most 16; labels `random k`): each channel log-uniform over
+/// [0.01, 1000], a lossless channel in every fourth colour and a channel ≥ 100 in the next;
+/// fixed seed, so every run measures the same colours ([`colour_set`]).
+pub fn random_colours(n: usize) -> Vec<(String, Absorption)> {
+    let mut rng = Pcg32::new(2026, 12);
+    (0..n.min(16))
+        .map(|k| {
+            let mut s = [0.0f32; 3];
+            for c in &mut s {
+                *c = 10f32.powf(-2.0 + 5.0 * rng.uniform());
+            }
+            if k % 4 == 0 {
+                s[k / 4 % 3] = 0.0;
+            }
+            if k % 4 == 1 {
+                s[(k / 4 + 1) % 3] = 100.0 + 900.0 * rng.uniform();
+            }
+            (
+                format!("random {k}"),
+                Absorption::from_sigma(Rgb(s)).unwrap_or(Absorption::LOSSLESS),
+            )
+        })
+        .collect()
+}
+
 /// The colours a LUT is measured at (docs/lut.md "The absorption axis"): for a preset whose
-/// own σ_ca is `own`, that colour, 16 random colours (each channel log-uniform over
-/// [0.01, 1000], a lossless channel in four of them and a channel ≥ 100 in four others; fixed
-/// seed) and eight melanin mixes (eumelanin 0–8, pheomelanin 0–2), with labels.
+/// own σ_ca is `own`, that colour, the 16 [`random_colours`] and eight melanin mixes
+/// (eumelanin 0–8, pheomelanin 0–2), with labels.
 pub fn colour_set(own: Rgb) -> Vec<(String, Absorption)> {
     let mut out = vec![(
         "own".to_string(),
         Absorption::from_sigma(own).unwrap_or(Absorption::LOSSLESS),
     )];
-    let mut rng = Pcg32::new(2026, 12);
-    for k in 0..16 {
-        let mut s = [0.0f32; 3];
-        for c in &mut s {
-            // log-uniform over [0.01, 1000]
-            *c = 10f32.powf(-2.0 + 5.0 * rng.uniform());
-        }
-        // Include the domain's ends: a lossless channel and a channel ≥ 100.
-        if k % 4 == 0 {
-            s[k / 4 % 3] = 0.0;
-        }
-        if k % 4 == 1 {
-            s[(k / 4 + 1) % 3] = 100.0 + 900.0 * rng.uniform();
-        }
-        out.push((
-            format!("random {k}"),
-            Absorption::from_sigma(Rgb(s)).unwrap_or(Absorption::LOSSLESS),
-        ));
-    }
+    out.extend(random_colours(16));
     for (eu, pheo) in [
         (0.0, 0.0),
         (0.2, 0.0),

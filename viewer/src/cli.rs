@@ -322,6 +322,12 @@ pub struct CompareArgs {
     /// means the default). Results are the same bits for any count.
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
+
+    /// Also measure the LUT at this many random colours (0 to 16; a fixed set, each channel
+    /// of σ_ca over [0.01, 1000] with lossless and ≥ 100 channels among them) against the
+    /// analytic model at each colour, within the same budget.
+    #[arg(long, value_name = "N", default_value_t = 3, value_parser = clap::value_parser!(u8).range(0..=16))]
+    pub colours: u8,
 }
 
 /// Where presets come from.

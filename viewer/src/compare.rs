@@ -305,8 +305,32 @@ fn compare_file(
 
     let t = Instant::now();
     let errors = metrics::compare(&analytic, &baked, &MetricSet::DEFAULT);
+    let mut exceeded = budget.check(&errors);
+    // The same budget at other colours: the LUT read at each against the analytic model
+    // with that σ_ca (docs/lut.md "The absorption axis").
+    let mut colour_lines = String::new();
+    for (label, colour) in metrics::random_colours(usize::from(args.colours)) {
+        let reference = owned
+            .at_sigma(&colour)
+            .map_err(|e| Failure::Fatal(Error::Failure(e.to_string())))?;
+        let e = metrics::compare(&reference.model(), &baked.at(&colour), &MetricSet::DEFAULT);
+        let over = budget.check(&e);
+        let [r, g, b] = colour.sigma().0;
+        let w = e.worst();
+        let _ = writeln!(
+            colour_lines,
+            "  at {label} (sigma_ca {r:.3}, {g:.3}, {b:.3}): E1 {:.3}%  E_albedo {:.3}%  E_peak {:.3}%  {}",
+            100.0 * w[0],
+            100.0 * w[1],
+            100.0 * w[2],
+            if over.is_empty() { "ok" } else { "OVER BUDGET" }
+        );
+        exceeded.extend(over.into_iter().map(|x| metrics::Exceeded {
+            colour: Some(label.clone()),
+            ..x
+        }));
+    }
     let metric_seconds = t.elapsed().as_secs_f64();
-    let exceeded = budget.check(&errors);
     let preset = if file.meta.preset.is_empty() {
         stem(lut)
     } else {
@@ -341,6 +365,7 @@ fn compare_file(
 
     let mut text = String::new();
     preset_table(&mut text, lut, &outcome, file.meta.errors.as_ref(), budget);
+    text.push_str(&colour_lines);
     let _ = writeln!(
         text,
         "  time: metrics {metric_seconds:.1} s{}",

@@ -100,6 +100,10 @@ pub const SIGMA_CA_MAX: f32 = 1000.0;
 /// radius; chosen by measurement, docs/lut.md "The absorption axis").
 pub const ABSORPTION_SCALE_HAIR: f32 = 1.25;
 
+/// The scale of the absorption axis's square-root term, s_q (per fiber radius; docs/lut.md
+/// "The absorption axis").
+pub const ABSORPTION_SCALE_ROOT: f32 = 0.25;
+
 /// The scale s₀ of the absorption axis of a LUT whose fibers have medulla ratio `kappa`:
 /// [`ABSORPTION_SCALE_HAIR`]/(1 − κ), κ clamped to [0, 0.95]. The light a fiber's absorbing
 /// families carry falls off with σ_ca over the cortex path it crosses, about 2(1 − κ) radii
@@ -127,7 +131,7 @@ pub fn absorption_coordinate(sigma: f32, scale: f32) -> f32 {
     // `max` first maps NaN to 0 (`clamp` would keep it).
     #[allow(clippy::manual_clamp)]
     let s = sigma.max(0.0).min(SIGMA_CA_MAX);
-    let e = crate::math::exp_neg_saturating(s / ABSORPTION_SCALE_HAIR)
+    let e = crate::math::exp_neg_saturating(libm::sqrtf(s / ABSORPTION_SCALE_ROOT))
         + crate::math::exp_neg_saturating(s / scale);
     (1.0 - 0.5 * e).min(1.0)
 }
@@ -145,8 +149,9 @@ pub fn absorption_node(k: usize, nodes: u32, scale: f32) -> f32 {
         return 0.0;
     }
     let x = k as f64 / last as f64;
-    let (sh, s0) = (f64::from(ABSORPTION_SCALE_HAIR), f64::from(scale));
-    let coord = |s: f64| 1.0 - 0.5 * (libm::exp(-s / sh) + libm::exp(-s / s0));
+    let s0 = f64::from(scale);
+    let sq = f64::from(ABSORPTION_SCALE_ROOT);
+    let coord = |s: f64| 1.0 - 0.5 * (libm::exp(-libm::sqrt(s / sq)) + libm::exp(-s / s0));
     let (mut lo, mut hi) = (0.0f64, f64::from(SIGMA_CA_MAX));
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);

@@ -86,6 +86,22 @@ pub fn sample(model: &FurBcsdf<'_>, planes: &[FurBcsdf<'_>], res: LutResolution)
                 .collect()
         })
         .collect();
+    // Absorption only takes light away: every plane is kept at or below the lossless plane,
+    // texel by texel and family by family. The model breaks this only where the energy
+    // closure's residual is evaluated at the pole row (|θ_r| = 90°, values below 1e-10);
+    // the clamp keeps the sampler's density (the lossless plane) positive wherever any
+    // colour's S is (docs/lut.md "The absorption axis").
+    let plane_rows = res.n_theta_r as usize;
+    let mut rows = rows;
+    for pr in plane_rows..rows.len() {
+        let (lossless, rest) = rows.split_at_mut(plane_rows);
+        let row = &mut rest[pr - plane_rows];
+        for (texel, top) in row.iter_mut().zip(&lossless[pr % plane_rows]) {
+            for (v, t) in texel.iter_mut().zip(top) {
+                v[0] = v[0].min(t[0]);
+            }
+        }
+    }
     tables[Table::N as usize] = rows
         .iter()
         .flat_map(|row| row.iter().flat_map(|fam| fam.iter().map(|rgb| rgb[0])))

@@ -116,6 +116,9 @@ pub fn absorption_scale(kappa: f32) -> f32 {
     ABSORPTION_SCALE_HAIR / (1.0 - k)
 }
 
+/// The share of the absorption axis's nodes given to its square-root term.
+const ROOT_SHARE: f32 = 0.4;
+
 /// The position of σ_ca on an absorption axis of scale s₀ = `scale` ([`absorption_scale`]),
 /// in [0, 1]: x = 1 − ½(e^(−σ/s_h) + e^(−σ/s₀)), s_h = [`ABSORPTION_SCALE_HAIR`]
 /// (docs/lut.md "The absorption axis"): half the nodes follow the fast fall-off of light
@@ -131,14 +134,14 @@ pub fn absorption_coordinate(sigma: f32, scale: f32) -> f32 {
     // `max` first maps NaN to 0 (`clamp` would keep it).
     #[allow(clippy::manual_clamp)]
     let s = sigma.max(0.0).min(SIGMA_CA_MAX);
-    let e = crate::math::exp_neg_saturating(libm::sqrtf(s / ABSORPTION_SCALE_ROOT))
-        + crate::math::exp_neg_saturating(s / scale);
-    (1.0 - 0.5 * e).min(1.0)
+    let e = ROOT_SHARE * crate::math::exp_neg_saturating(libm::sqrtf(s / ABSORPTION_SCALE_ROOT))
+        + (1.0 - ROOT_SHARE) * crate::math::exp_neg_saturating(s / scale);
+    (1.0 - e).min(1.0)
 }
 
 /// σ_ca of node `k` of an absorption axis of `nodes` nodes and scale `scale`: the inverse of
-/// [`absorption_coordinate`] at x = k/(nodes − 1), found by bisection in f64 (60 halvings of
-/// [0, 1000]); node 0 is σ = 0 (lossless) and the last node is exactly [`SIGMA_CA_MAX`].
+/// [`absorption_coordinate`] at x = k/(nodes − 1), found by bisection on that function (f32,
+/// to the last bit of σ); node 0 is σ = 0 (lossless) and the last node is exactly [`SIGMA_CA_MAX`].
 #[must_use]
 pub fn absorption_node(k: usize, nodes: u32, scale: f32) -> f32 {
     let last = nodes.saturating_sub(1).max(1) as usize;
@@ -148,20 +151,27 @@ pub fn absorption_node(k: usize, nodes: u32, scale: f32) -> f32 {
     if k == 0 {
         return 0.0;
     }
-    let x = k as f64 / last as f64;
-    let s0 = f64::from(scale);
-    let sq = f64::from(ABSORPTION_SCALE_ROOT);
-    let coord = |s: f64| 1.0 - 0.5 * (libm::exp(-libm::sqrt(s / sq)) + libm::exp(-s / s0));
-    let (mut lo, mut hi) = (0.0f64, f64::from(SIGMA_CA_MAX));
-    for _ in 0..60 {
+    let x = k as f32 / last as f32;
+    // Bisection on the coordinate itself (one formula): the largest f32 σ whose coordinate
+    // is below x, or the smallest at or above it, whichever lands nearer.
+    let (mut lo, mut hi) = (0.0f32, SIGMA_CA_MAX);
+    for _ in 0..64 {
         let mid = 0.5 * (lo + hi);
-        if coord(mid) < x {
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if absorption_coordinate(mid, scale) < x {
             lo = mid;
         } else {
             hi = mid;
         }
     }
-    (0.5 * (lo + hi)) as f32
+    let near = |s: f32| (absorption_coordinate(s, scale) - x).abs();
+    if near(lo) < near(hi) {
+        lo
+    } else {
+        hi
+    }
 }
 
 /// Fewest nodes of the absorption axis: a colour reads three planes

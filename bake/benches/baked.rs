@@ -35,7 +35,7 @@ use bcsdf_core::baked::{BakedBcsdf, Kernel};
 use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
-use bcsdf_core::{presets, Angles, FurParams};
+use bcsdf_core::{presets, Absorption, Angles, FurParams};
 use bcsdf_core::{Rgb, Vec3};
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 
@@ -312,6 +312,27 @@ fn bench(c: &mut Criterion) {
                 black_box(baked.eval_far(black_box(a)).total())
             })
         });
+        // A colour per query (docs/lut.md "The absorption axis"): 256 random σ_ca.
+        let colours: Vec<Absorption> = (0..256)
+            .map(|k| {
+                let u = |j: u32| ((k * 3 + j) as f32 * 0.618_034).fract();
+                Absorption::from_sigma(Rgb([0, 1, 2].map(|j| 10f32.powf(-2.0 + 5.0 * u(j)))))
+                    .unwrap()
+            })
+            .collect();
+        let mut i = 0usize;
+        c.bench_function(&format!("far_field_baked_colour/{name}"), |b| {
+            b.iter(|| {
+                let k = i & 255;
+                i += 1;
+                black_box(
+                    baked
+                        .at(black_box(&colours[k]))
+                        .eval_far(black_box(&qs[k]))
+                        .total(),
+                )
+            })
+        });
         let mut i = 0usize;
         c.bench_function(&format!("far_field_baked_report/{name}"), |b| {
             b.iter(|| {
@@ -355,6 +376,16 @@ fn bench(c: &mut Criterion) {
                 })
             });
         }
+        group.throughput(Throughput::Elements(256));
+        let mut out = vec![Rgb::ZERO; 256];
+        group.bench_function("colours-256", |b| {
+            b.iter(|| {
+                black_box(&baked)
+                    .eval_far_batch_colours(&ti[..256], &tr[..256], &ph[..256], &colours, &mut out)
+                    .unwrap();
+                black_box(&out);
+            })
+        });
         group.finish();
     }
 }

@@ -40,9 +40,10 @@ fn angles(theta_i: f32, theta_r: f32, phi: f32) -> Angles {
     Angles::new(c(theta_i), c(theta_r), phi).expect("clamped finite angles are valid")
 }
 
-/// Samples every table of `model` at its nodes, table `N`'s plane k from `planes[k]`, the
-/// model at σ_ca = `lut::absorption_node(k, res.n_abs, s₀)` (grey); [`absorption_planes`] makes
-/// them. Tables `M` and `M_s` do not depend on σ_ca.
+/// Samples every table of `model` at its nodes, table `N`'s plane k from channel k mod 3 of
+/// `planes[k / 3]`, the model whose RGB σ_ca are the nodes 3j, 3j + 1, 3j + 2 of the
+/// absorption axis ([`absorption_planes`] makes them: a channel depends on its own σ_ca
+/// alone, so one model gives three planes). Tables `M` and `M_s` do not depend on σ_ca.
 pub fn sample(model: &FurBcsdf<'_>, planes: &[FurBcsdf<'_>], res: LutResolution) -> TableValues {
     let mut tables: [Vec<f32>; TABLE_COUNT] = Default::default();
 
@@ -56,15 +57,15 @@ pub fn sample(model: &FurBcsdf<'_>, planes: &[FurBcsdf<'_>], res: LutResolution)
         })
         .collect();
 
-    // N_g(|θ_r|, |φ|) per absorption plane: one far-field azimuthal evaluation per node
-    // gives all four families (the energy closure's residual, `Lobe::Residual`, shares TRT's
-    // M: N_TRT carries it); the planes are grey, so channel 0 is the plane's value.
+    // N_g(|θ_r|, |φ|) per absorption plane: one far-field azimuthal evaluation per node and
+    // plane model gives all four families of three planes (the energy closure's residual,
+    // `Lobe::Residual`, shares TRT's M: N_TRT carries it).
     assert_eq!(
         planes.len(),
-        res.n_abs as usize,
-        "one model per absorption node"
+        (res.n_abs as usize).div_ceil(3),
+        "one model per three absorption nodes"
     );
-    let rows: Vec<Vec<[[f32; 3]; 4]>> = (0..res.n_abs as usize * res.n_theta_r as usize)
+    let model_rows: Vec<Vec<[[f32; 3]; 4]>> = (0..planes.len() * res.n_theta_r as usize)
         .into_par_iter()
         .map(|pr| {
             let model = &planes[pr / res.n_theta_r as usize];
@@ -83,6 +84,17 @@ pub fn sample(model: &FurBcsdf<'_>, planes: &[FurBcsdf<'_>], res: LutResolution)
                     }
                     fam
                 })
+                .collect()
+        })
+        .collect();
+    // Plane k, row r: channel k mod 3 of model k / 3's row r.
+    let n_rows = res.n_theta_r as usize;
+    let rows: Vec<Vec<[[f32; 3]; 4]>> = (0..res.n_abs as usize * n_rows)
+        .map(|pr| {
+            let (k, r) = (pr / n_rows, pr % n_rows);
+            model_rows[(k / 3) * n_rows + r]
+                .iter()
+                .map(|fam| fam.map(|rgb| [rgb[k % 3]; 3]))
                 .collect()
         })
         .collect();
@@ -266,17 +278,19 @@ pub fn rebuild_model(
     }
 }
 
-/// The models of table `N`'s absorption planes: `model` at σ_ca = `lut::absorption_node(k,
-/// n_abs, s₀)` in every channel, k = 0 .. n_abs, s₀ = `lut::absorption_scale(κ)` ([`OwnedModel::at_sigma`]: the residual of each
-/// colour from `model`'s cache, or generated).
+/// The models of table `N`'s absorption planes: model j is `model` at the RGB σ_ca of nodes
+/// 3j, 3j + 1, 3j + 2 (`lut::absorption_node(k, n_abs, s₀)`, s₀ = `lut::absorption_scale(κ)`;
+/// past the last node, the last node again), ⌈n_abs/3⌉ models ([`OwnedModel::at_sigma`]: the
+/// residual of each colour from `model`'s cache, or generated: one simulation gives three
+/// planes).
 pub fn absorption_planes(
     model: &OwnedModel,
     n_abs: u32,
 ) -> Result<Vec<OwnedModel>, crate::profiles::Error> {
     let scale = lut::absorption_scale(model.model().params().kappa());
-    (0..n_abs as usize)
-        .map(|k| {
-            let sigma = Rgb::splat(lut::absorption_node(k, n_abs, scale));
+    (0..(n_abs as usize).div_ceil(3))
+        .map(|j| {
+            let sigma = Rgb([0, 1, 2].map(|c| lut::absorption_node(3 * j + c, n_abs, scale)));
             let a = Absorption::from_sigma(sigma).expect("absorption nodes lie in [0, 1000]");
             model.at_sigma(&a)
         })

@@ -96,12 +96,15 @@ fn lossless_furnace_keeps_the_azimuthal_energy() {
     for preset in presets::PRESETS.iter() {
         let p = lossless(&preset.input, Closure::Energy);
         let analytic: FurBcsdf = FurBcsdf::unscattered(p);
-        // Table `N`'s absorption planes: the same model at each node's σ_ca.
+        // Table `N`'s absorption planes: the same model at the nodes' σ_ca, three nodes (one
+        // per channel) per model, as `tables::absorption_planes` makes them.
         let scale = bcsdf_core::lut::absorption_scale(p.kappa());
-        let planes: Vec<FurBcsdf> = (0..res.n_abs as usize)
-            .map(|k| {
-                let s =
-                    bcsdf_core::Rgb::splat(bcsdf_core::lut::absorption_node(k, res.n_abs, scale));
+        let planes: Vec<FurBcsdf> = (0..(res.n_abs as usize).div_ceil(3))
+            .map(|j| {
+                let s = bcsdf_core::Rgb(
+                    [0, 1, 2]
+                        .map(|c| bcsdf_core::lut::absorption_node(3 * j + c, res.n_abs, scale)),
+                );
                 FurBcsdf::unscattered(p.with_absorption(&Absorption::from_sigma(s).unwrap()))
             })
             .collect();

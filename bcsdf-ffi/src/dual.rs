@@ -6,7 +6,7 @@
 //! starts with plain integers readable whatever the bytes are: a magic number the same in
 //! every build, the [`DUAL_BUILD_TAG`] of the build that opened it, the source checksum the
 //! blob records, and a check mixing the three. Then the decoded evaluator
-//! (`bcsdf_core::dual::DualLut`, about 146 KB of f32), whose bits only this build can
+//! (`bcsdf_core::dual::DualLut`, about 590 KB of f32), whose bits only this build can
 //! interpret. Unlike a `fur_lut`, it owns everything it reads: the blob's bytes are decoded
 //! into it and not borrowed.
 
@@ -70,7 +70,10 @@ fn status_of(e: &DualError) -> fur_status {
             fur_status::FUR_ERR_DUAL_VERSION
         }
         DualError::Checksum => fur_status::FUR_ERR_DUAL_CHECKSUM,
-        DualError::Layout | DualError::Attenuation(_) | DualError::Value(_) => {
+        DualError::Layout
+        | DualError::Attenuation(_)
+        | DualError::Value(_)
+        | DualError::Colour => {
             fur_status::FUR_ERR_DUAL_INVALID
         }
         DualError::Source { .. } => fur_status::FUR_ERR_DUAL_SOURCE,
@@ -158,7 +161,7 @@ pub unsafe extern "C" fn fur_dual_open(
     let slice: &[u8] = tri!(unsafe { open_bytes(bytes, len, out, close) });
     let o = out.cast::<OpenedDual>();
     // `DualLut::EMPTY` is promoted to a static (no Drop, no interior mutability): copying
-    // it from there puts no 146 KB temporary on the caller's stack.
+    // it from there puts no 590 KB temporary on the caller's stack.
     let empty: &'static DualLut = &DualLut::EMPTY;
     // SAFETY: `o` is aligned and writable for an `OpenedDual` (`out` is checked, and
     // `OpenedDual` fits in `fur_dual` with no stricter alignment: static assertions); the

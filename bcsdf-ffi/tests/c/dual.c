@@ -144,7 +144,7 @@ int main(int argc, char **argv) {
     }
     init_queries();
     bytes = read_file(argv[1], &len);
-    /* 150 KiB each: on the heap, zeroed (= FUR_DUAL_INIT). */
+    /* 586 KiB each: on the heap, zeroed (= FUR_DUAL_INIT). */
     dual = (fur_dual *)calloc(1, sizeof(fur_dual));
     other = (fur_dual *)calloc(1, sizeof(fur_dual));
     copy = bytes ? (unsigned char *)malloc(len + 64) : NULL;

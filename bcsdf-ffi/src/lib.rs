@@ -111,6 +111,8 @@ pub enum fur_status {
     /// The fur_dual was not computed from the LUT it is checked against
     /// (`fur_dual_check_lut`): its .furdual blob records another LUT's checksum, or none.
     FUR_ERR_DUAL_SOURCE = 20,
+    /// A colour (sigma_ca) channel is NaN or negative; nothing was evaluated (0 written).
+    FUR_ERR_COLOUR = 21,
 }
 
 /// The lobe family a sample was drawn from (docs/model.md sections 5, 6).

@@ -31,11 +31,11 @@ use super::coat::node_coat;
 use super::{coat_decay, local_backscatter, Attenuation, DualTables, PHI_NODES, THETA_NODES};
 use crate::absorption::Absorption;
 use crate::baked::BakedBcsdf;
-use crate::lut::{absorption_coordinate, absorption_node, SIGMA_CA_MAX};
-use crate::spectrum::Rgb;
 use crate::lobes::FAMILY_COUNT;
+use crate::lut::{absorption_coordinate, absorption_node, SIGMA_CA_MAX};
 use crate::lut::{fnv1a64, fnv1a64_continue};
 use crate::math::Math;
+use crate::spectrum::Rgb;
 use core::fmt;
 
 /// The first eight bytes of a `.furdual` blob.
@@ -162,6 +162,8 @@ pub struct DualLut {
     /// The preset's own σ_ca (the blob's header) and its place on the axis.
     pub(super) default: Absorption,
     pub(super) default_at: DualColour,
+    /// √σ_ca of the absorption nodes (the interpolation variable).
+    pub(super) sqrt_nodes: [f32; ABS_NODES],
     /// [absorption node][θ node][field].
     pub(super) nodes: [[[f32; FIELDS]; THETA_NODES]; ABS_NODES],
     /// [absorption node][family][θ node][φ node].
@@ -184,18 +186,30 @@ pub struct DualColour {
 /// tables exactly.
 const NODE_SNAP: f32 = 1e-4;
 
+/// √σ_ca of each absorption node ([`absorption_node`]), the interpolation variable.
+fn sqrt_nodes() -> [f32; ABS_NODES] {
+    core::array::from_fn(|k| libm::sqrtf(absorption_node(k, ABS_NODES as u32)))
+}
+
 impl DualColour {
-    /// σ_ca per channel on the axis of [`ABS_NODES`] nodes: linear in
-    /// [`absorption_coordinate`] (the LUT's mapping; the measured interpolation error is in
-    /// the module's tests). NaN and negative channels read node 0, large ones the last node.
-    #[must_use]
-    pub fn new(sigma: Rgb) -> DualColour {
+    /// σ_ca per channel on the axis of [`ABS_NODES`] nodes whose √σ are `sqrt_nodes`: the
+    /// cell by [`absorption_coordinate`] (the LUT's mapping), the weight linear in √σ within
+    /// the cell (measured against linear in the coordinate: the dual quantities of a nearly
+    /// lossless fiber go as √σ, docs in the module's tests). NaN and negative channels read
+    /// node 0, large ones the last node.
+    fn locate(sigma: Rgb, sqrt_nodes: &[f32; ABS_NODES]) -> DualColour {
         let last = (ABS_NODES - 1) as f32;
         let mut at = DualColour::default();
         for c in 0..3 {
             let u = (absorption_coordinate(sigma.0[c]) * last).clamp(0.0, last);
             let mut k = (u as usize).min(ABS_NODES - 2);
-            let mut w = u - k as f32;
+            #[allow(clippy::manual_clamp)] // NaN → 0
+            let s = libm::sqrtf(sigma.0[c].max(0.0).min(SIGMA_CA_MAX));
+            let (lo, hi) = (sqrt_nodes[k], sqrt_nodes[k + 1]);
+            let mut w = ((s - lo) / (hi - lo)).clamp(0.0, 1.0);
+            if !w.is_finite() {
+                w = 0.0;
+            }
             if w < NODE_SNAP {
                 w = 0.0;
             } else if w > 1.0 - NODE_SNAP {
@@ -259,7 +273,13 @@ fn node_fields(tables: &DualTables, attenuation: Attenuation, k: usize, c: usize
 }
 
 /// Writes channel `c` of `tables` as absorption node `a` of `blob` (rounded to halves).
-fn put_node(blob: &mut [u8; BLOB_LEN], a: usize, tables: &DualTables, attenuation: Attenuation, c: usize) {
+fn put_node(
+    blob: &mut [u8; BLOB_LEN],
+    a: usize,
+    tables: &DualTables,
+    attenuation: Attenuation,
+    c: usize,
+) {
     let mut at = HEADER_LEN + 2 * a * NODE_HALVES;
     let mut put = |v: f32| {
         blob[at..at + 2].copy_from_slice(&half_bits(v).to_le_bytes());
@@ -372,6 +392,7 @@ impl DualLut {
             node: [0; 3],
             w: [0.0; 3],
         },
+        sqrt_nodes: [0.0; ABS_NODES],
         nodes: [[[0.0; FIELDS]; THETA_NODES]; ABS_NODES],
         n_g: [[[[0.0; PHI_NODES]; THETA_NODES]; FAMILY_COUNT]; ABS_NODES],
         coat: [[[0.0; 2]; THETA_NODES]; ABS_NODES],
@@ -464,7 +485,8 @@ impl DualLut {
         self.attenuation = attenuation;
         self.source = u64::from_le_bytes(bytes[40..48].try_into().unwrap_or([0; 8]));
         self.default = default;
-        self.default_at = DualColour::new(colour);
+        self.sqrt_nodes = sqrt_nodes();
+        self.default_at = DualColour::locate(colour, &self.sqrt_nodes);
         let mut i = 0;
         for a in 0..ABS_NODES {
             for node in self.nodes[a].iter_mut() {
@@ -499,7 +521,7 @@ impl DualLut {
     /// `absorption` located on the blob's absorption axis, for [`DualLut::eval_located`].
     #[must_use]
     pub fn locate(&self, absorption: &Absorption) -> DualColour {
-        DualColour::new(absorption.sigma())
+        DualColour::locate(absorption.sigma(), &self.sqrt_nodes)
     }
 
     /// The attenuation the blob was made for.

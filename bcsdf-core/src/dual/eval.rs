@@ -2,11 +2,11 @@
 //! (docs/model.md §13), channels in the lanes of `[f32; 4]` rows so that the per-channel work
 //! (lerps, the six Gaussians) runs as straight-line lane loops.
 
+use super::blob::DualColour;
 use super::blob::{
     A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, RHO2, R_RHO, SD, SIGMA_B0,
 };
 use super::coat::{backscatter_factor, downward_flux, power_of_decay};
-use super::blob::DualColour;
 use super::{theta_position, Density, DualLut, Fibers, MIN_VARIANCE, PHI_NODES, THETA_NODES};
 use crate::absorption::Absorption;
 use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};

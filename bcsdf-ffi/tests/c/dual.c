@@ -153,7 +153,7 @@ int main(int argc, char **argv) {
         return 2;
     }
     EXPECT(len == FUR_DUAL_BLOB_LEN);
-    EXPECT(sizeof(fur_dual) == 153600);
+    EXPECT(sizeof(fur_dual) == 600000);
     memcpy(copy, bytes, len);
 
     /* Open from a heap copy, then free the copy: nothing is borrowed (Valgrind and ASan see
@@ -210,6 +210,22 @@ int main(int argc, char **argv) {
         EXPECT(fur_dual_close(other) == FUR_OK);
         EXPECT(is_zero(other));
         EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, NULL, b) == FUR_OK);
+        /* The colour: the preset's own sigma_ca (the blob's header, bytes 64..76) is what
+         * NULL evaluates, bit for bit; another colour gives another value; a NaN or negative
+         * channel is refused with zeros written. */
+        {
+            float own[3], dark[3] = {50.0f, 80.0f, 200.0f}, bad[3] = {0.1f, NAN, 0.2f};
+            memcpy(own, bytes + 64, sizeof own);
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, NULL, a) == FUR_OK);
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, own, b) == FUR_OK);
+            EXPECT(memcmp(a, b, sizeof a) == 0);
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, dark, b) == FUR_OK);
+            EXPECT(memcmp(a, b, sizeof a) != 0);
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, bad, b) == FUR_ERR_COLOUR &&
+                   b[0] == 0.0f && b[1] == 0.0f && b[2] == 0.0f);
+            bad[1] = -1.0f;
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, bad, b) == FUR_ERR_COLOUR);
+        }
     }
 
     /* NULL arguments for every function. */
@@ -329,10 +345,14 @@ int main(int argc, char **argv) {
     REFUSED(len, FUR_ERR_DUAL_CHECKSUM);
     /* A NaN half (0x7e00, little-endian) in the first field, resealed: the checksum holds,
      * the value check refuses it. Then a positive log2 of the decay (1.0 = 0x3c00). */
-    copy[64] = 0x00, copy[65] = 0x7e;
+    copy[80] = 0x00, copy[81] = 0x7e;
     reseal(copy, len);
     REFUSED(len, FUR_ERR_DUAL_INVALID);
-    copy[64] = 0x00, copy[65] = 0x3c;
+    copy[80] = 0x00, copy[81] = 0x3c;
+    reseal(copy, len);
+    REFUSED(len, FUR_ERR_DUAL_INVALID);
+    /* A NaN preset colour (sigma_ca R, f32 at bytes 64..68), resealed. */
+    copy[66] = 0xc0, copy[67] = 0x7f;
     reseal(copy, len);
     REFUSED(len, FUR_ERR_DUAL_INVALID);
     /* The unchanged copy opens (the reseal is right), and evaluates like the first. */

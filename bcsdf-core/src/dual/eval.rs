@@ -64,6 +64,7 @@ impl DualLut {
     /// clamped to the end nodes, NaN reads node 0; then linear between the channel's two
     /// absorption nodes). Lane 3 is 0.
     #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
     fn field(&self, col: &DualColour, (k, w): (usize, f32), f: usize) -> Lanes {
         let mut out = [0.0f32; 4];
         for c in 0..3 {
@@ -79,6 +80,7 @@ impl DualLut {
     /// Derived coat quantity `q` ([`RHO2`] or [`R_RHO`]) at θ and the colour, interpolated
     /// like [`DualLut::field`].
     #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
     fn coat(&self, col: &DualColour, (k, w): (usize, f32), q: usize) -> Lanes {
         let mut out = [0.0f32; 4];
         for c in 0..3 {
@@ -95,6 +97,7 @@ impl DualLut {
     /// `w`, which [`bilinear_weights`] computes once for the four families), then linear
     /// between each channel's two absorption nodes.
     #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
     fn n_g(&self, col: &DualColour, g: usize, k: usize, j: usize, w: &[f32; 4]) -> Lanes {
         let mut out = [0.0f32; 4];
         for c in 0..3 {

@@ -171,7 +171,10 @@ fn between_nodes_the_term_is_within_the_measured_interpolation_error() {
     // Measured (human hair, these 12 colours): 0.022 above the first node, 0.20 in the first
     // cell (σ in (0, 0.21)), where the lossless node σ = 0 differs most from its neighbour;
     // linear in the axis coordinate instead of √σ measured 0.020 and 0.34.
-    assert!(worst_rel < 0.03, "worst relative L1 above node 1: {worst_rel}");
+    assert!(
+        worst_rel < 0.03,
+        "worst relative L1 above node 1: {worst_rel}"
+    );
     assert!(
         worst_first < 0.25,
         "worst relative L1 in the first cell: {worst_first}"

@@ -109,9 +109,9 @@ fn colour(k: usize) -> [f32; 3] {
     let mut c = [0.0f32; 3];
     for (ch, v) in c.iter_mut().enumerate() {
         let u = r.uniform();
-        *v = if k % 7 == 0 {
+        *v = if k.is_multiple_of(7) {
             absorption_node(1 + (u * (ABS_NODES - 1) as f32) as usize, ABS_NODES as u32)
-        } else if k % 11 == 0 && ch == 0 {
+        } else if k.is_multiple_of(11) && ch == 0 {
             1000.0 + 5000.0 * u
         } else {
             10f32.powf(u * 1.0 - 0.65)

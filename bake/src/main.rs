@@ -28,7 +28,7 @@ Writes <OUT>/<preset>.exr (one f16 layer per table, metadata attributes: version
 axes, scales, profile provenance, measured error) and <OUT>/<preset>.furlut (the raw
 little-endian blob that bcsdf_core::baked::BakedBcsdf::from_bytes reads in place, e.g. from
 include_bytes!), and <OUT>/<preset>.furdual (the dual-scattering tables computed from that
-LUT, 54 976 bytes of f16, bcsdf_core::dual::DualLut::decode; docs/model.md §13). Files are
+LUT, 292 944 bytes of f16: one grey table set per node of the absorption axis, bcsdf_core::dual::DualLut::decode; docs/model.md §13). Files are
 written to a temporary file and renamed, so an interrupted bake never leaves a partial LUT
 under the final name. The table layout is in docs/lut.md.
 

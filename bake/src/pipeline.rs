@@ -11,7 +11,7 @@ use crate::tables;
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::dual::{self, Attenuation, DualTables, Quadrature};
 use bcsdf_core::lut::{self as core_lut, LutResolution};
-use bcsdf_core::{FurParams, ParamError};
+use bcsdf_core::{Absorption, FurParams, ParamError, Rgb};
 use std::fmt;
 use std::io;
 use std::path::{Path, PathBuf};
@@ -188,16 +188,28 @@ pub fn output_paths(out_dir: &Path, name: &str) -> Result<OutputPaths, BakeError
 }
 
 /// The `.furdual` blob of a baked LUT (docs/model.md §13): [`DualTables::compute`] over the
-/// baked evaluator at [`Quadrature::DEFAULT`], encoded for the shipped
-/// [`Attenuation::Coat`], tagged with the LUT's checksum.
+/// baked evaluator at each node of the blob's absorption axis, at the grey colour of the node
+/// (`baked.at(σ_k, σ_k, σ_k)`, [`dual::encode_axis`]), at [`Quadrature::DEFAULT`], encoded
+/// for the shipped [`Attenuation::Coat`], tagged with the LUT's checksum and the preset's own
+/// colour.
 pub fn dual_blob(lut_blob: &[u8], baked: &BakedBcsdf<'_>) -> Box<[u8; dual::BLOB_LEN]> {
     let mut tables = Box::new(DualTables::ZERO);
-    tables.compute(baked, Quadrature::DEFAULT);
-    Box::new(dual::encode(
-        &tables,
+    let mut blob: Box<[u8; dual::BLOB_LEN]> = vec![0u8; dual::BLOB_LEN]
+        .into_boxed_slice()
+        .try_into()
+        .expect("BLOB_LEN bytes");
+    dual::encode_axis(
+        &mut blob,
+        &mut tables,
+        |sigma, t| {
+            let grey = Absorption::from_sigma(Rgb::splat(sigma)).unwrap_or(Absorption::LOSSLESS);
+            t.compute(&baked.at(&grey), Quadrature::DEFAULT);
+        },
         Attenuation::Coat,
         core_lut::checksum(lut_blob),
-    ))
+        baked.absorption(),
+    );
+    blob
 }
 
 /// Bakes one preset into `opts.out_dir`; `on_step` hears each step as it starts.

@@ -1039,8 +1039,15 @@ fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
 
 @group(0) @binding(3) var<storage, read> fur_dual: array<u32>;
 
-// Words of the .furdual header before the first half.
-const FUR_DUAL_HEADER_WORDS: u32 = 16u;
+// Words of the .furdual header before the first half (format 2).
+const FUR_DUAL_HEADER_WORDS: u32 = 20u;
+// The absorption axis (dual::ABS_NODES nodes at lut::absorption_node): per node one grey
+// set of tables, its fields (64 x 15 halves) then its N^G (4 x 64 x 32 halves).
+const FUR_DUAL_ABS_NODES: u32 = 16u;
+const FUR_DUAL_NODE_HALVES: u32 = 9152u;
+// lut::ABSORPTION_KNEE and lut::SIGMA_CA_MAX (the LUT's absorption coordinate).
+const FUR_DUAL_KNEE: f32 = 3.0;
+const FUR_DUAL_SIGMA_MAX: f32 = 1000.0;
 // Fields per theta node (dual::FIELDS) and their indices (blob.rs): log2 mu (the downward
 // flux's decay per fiber), beta_f (rad), the local backscatter's back-half and front-half
 // energy, Delta_b, sigma_b0, a_f^2, then each family's mean of x and its standard deviation.
@@ -1057,8 +1064,8 @@ const FUR_DUAL_SD: u32 = 11u;
 // Table nodes: theta (cell centres over [-pi/2, pi/2]), |phi| (j pi/31, ends included).
 const FUR_DUAL_THETA_NODES: u32 = 64u;
 const FUR_DUAL_PHI_NODES: u32 = 32u;
-// Halves of the node fields, before N^G: 64 x 15 x 3.
-const FUR_DUAL_NG_START: u32 = 2880u;
+// Halves of one absorption node's fields, before its N^G: 64 x 15.
+const FUR_DUAL_NG_START: u32 = 960u;
 // 64/pi and 31/pi as the CPU's f32 quotients (dual::theta_position, the phi position).
 const FUR_DUAL_THETA_SCALE: f32 = 20.3718319;
 const FUR_DUAL_PHI_SCALE: f32 = 9.86760616;
@@ -1094,9 +1101,45 @@ fn fur_dual_half(h: u32) -> f32 {
     return select(pair.x, pair.y, (h & 1u) == 1u);
 }
 
-// Three consecutive halves (the RGB of one stored value) from half h.
-fn fur_dual_rgb(h: u32) -> vec3<f32> {
-    return vec3<f32>(fur_dual_half(h), fur_dual_half(h + 1u), fur_dual_half(h + 2u));
+// Half h within absorption node a[c] per channel c: the RGB of one stored value at each
+// channel's own node.
+fn fur_dual_rgb(a: vec3<u32>, h: u32) -> vec3<f32> {
+    let n = a * FUR_DUAL_NODE_HALVES + vec3<u32>(h);
+    return vec3<f32>(fur_dual_half(n.x), fur_dual_half(n.y), fur_dual_half(n.z));
+}
+
+// A colour located on the absorption axis (dual::DualColour): per channel the lower node and
+// the weight of the upper one. Set by fur_eval_dual for the functions below.
+struct FurDualColour {
+    node: vec3<u32>,
+    w: vec3<f32>,
+}
+var<private> fur_dual_at: FurDualColour;
+
+// sigma_ca of absorption node k (lut::absorption_node, here in f32): the inverse of the
+// coordinate at k/15.
+fn fur_dual_sigma_node(k: vec3<u32>) -> vec3<f32> {
+    let v = vec3<f32>(k) / f32(FUR_DUAL_ABS_NODES - 1u) * (FUR_DUAL_SIGMA_MAX / (FUR_DUAL_SIGMA_MAX + FUR_DUAL_KNEE));
+    return select(FUR_DUAL_KNEE * v / (1.0 - v), vec3<f32>(FUR_DUAL_SIGMA_MAX), k >= vec3<u32>(FUR_DUAL_ABS_NODES - 1u));
+}
+
+// DualColour::locate: the cell by the LUT's coordinate (sigma/(sigma + s0))/(max/(max + s0)),
+// the weight linear in sqrt(sigma) within it, weights within 1e-4 of a node snapped to it.
+fn fur_dual_locate(sigma_in: vec3<f32>) -> FurDualColour {
+    let s = select(min(max(sigma_in, vec3<f32>(0.0)), vec3<f32>(FUR_DUAL_SIGMA_MAX)), vec3<f32>(0.0), fur_is_nan3(sigma_in));
+    let last = f32(FUR_DUAL_ABS_NODES - 1u);
+    let coord = min(s / (s + FUR_DUAL_KNEE) / (FUR_DUAL_SIGMA_MAX / (FUR_DUAL_SIGMA_MAX + FUR_DUAL_KNEE)), vec3<f32>(1.0));
+    let u = clamp(coord * last, vec3<f32>(0.0), vec3<f32>(last));
+    var k = min(vec3<u32>(u), vec3<u32>(FUR_DUAL_ABS_NODES - 2u));
+    let lo = sqrt(fur_dual_sigma_node(k));
+    let hi = sqrt(fur_dual_sigma_node(k + 1u));
+    var w = clamp((sqrt(s) - lo) / (hi - lo), vec3<f32>(0.0), vec3<f32>(1.0));
+    w = select(w, vec3<f32>(0.0), fur_is_nan3(w) | (w < vec3<f32>(1e-4)));
+    let up = (w > vec3<f32>(1.0 - 1e-4)) & (k + 2u < vec3<u32>(FUR_DUAL_ABS_NODES));
+    k = select(k, k + 1u, up);
+    w = select(w, vec3<f32>(0.0), up);
+    w = select(w, vec3<f32>(1.0), w > vec3<f32>(1.0 - 1e-4));
+    return FurDualColour(k, w);
 }
 
 // True for NaN, on the bits (see fur_finite).
@@ -1120,30 +1163,44 @@ fn fur_dual_theta(theta: f32) -> FurLoc {
     return FurLoc(k, t - f32(k));
 }
 
-// Field f at theta node k as stored (DualLut::nodes[k][f]).
-fn fur_dual_node(k: u32, f: u32) -> vec3<f32> {
-    return fur_dual_rgb(3u * (k * FUR_DUAL_FIELDS + f));
+// Field f at theta node k as stored at absorption node a[c] per channel
+// (DualLut::nodes[a][k][f]).
+fn fur_dual_node(a: vec3<u32>, k: u32, f: u32) -> vec3<f32> {
+    return fur_dual_rgb(a, k * FUR_DUAL_FIELDS + f);
 }
 
-// Field f at theta (DualLut::field): linear between nodes k and k + 1, a + (b - a) w.
+// Field f at theta and the located colour (DualLut::field): linear between theta nodes k
+// and k + 1 at each channel's two absorption nodes, a + (b - a) w, then between those.
 fn fur_dual_field(l: FurLoc, f: u32) -> vec3<f32> {
-    let a = fur_dual_node(l.i, f);
-    let b = fur_dual_node(l.i + 1u, f);
-    return a + (b - a) * l.w;
+    let lo = fur_dual_at.node;
+    let a0 = fur_dual_node(lo, l.i, f);
+    let b0 = fur_dual_node(lo, l.i + 1u, f);
+    let a1 = fur_dual_node(lo + 1u, l.i, f);
+    let b1 = fur_dual_node(lo + 1u, l.i + 1u, f);
+    let v0 = a0 + (b0 - a0) * l.w;
+    let v1 = a1 + (b1 - a1) * l.w;
+    return v0 + (v1 - v0) * fur_dual_at.w;
 }
 
 // N^G of family g at the theta and |phi| positions (DualLut::n_g): bilinear, the four
 // corners weighted as dual's bilinear_weights does, summed in the same order.
-fn fur_dual_ng(g: u32, l: FurLoc, p: FurLoc) -> vec3<f32> {
+// At each channel's two absorption nodes, then linear between them.
+fn fur_dual_ng_at(a: vec3<u32>, g: u32, l: FurLoc, p: FurLoc) -> vec3<f32> {
     let row0 = (g * FUR_DUAL_THETA_NODES + l.i) * FUR_DUAL_PHI_NODES + p.i;
     let row1 = row0 + FUR_DUAL_PHI_NODES;
-    let t00 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * row0);
-    let t01 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * (row0 + 1u));
-    let t10 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * row1);
-    let t11 = fur_dual_rgb(FUR_DUAL_NG_START + 3u * (row1 + 1u));
+    let t00 = fur_dual_rgb(a, FUR_DUAL_NG_START + row0);
+    let t01 = fur_dual_rgb(a, FUR_DUAL_NG_START + row0 + 1u);
+    let t10 = fur_dual_rgb(a, FUR_DUAL_NG_START + row1);
+    let t11 = fur_dual_rgb(a, FUR_DUAL_NG_START + row1 + 1u);
     let w = l.w;
     let v = p.w;
     return (1.0 - w) * (1.0 - v) * t00 + (1.0 - w) * v * t01 + w * (1.0 - v) * t10 + w * v * t11;
+}
+
+fn fur_dual_ng(g: u32, l: FurLoc, p: FurLoc) -> vec3<f32> {
+    let v0 = fur_dual_ng_at(fur_dual_at.node, g, l, p);
+    let v1 = fur_dual_ng_at(fur_dual_at.node + 1u, g, l, p);
+    return v0 + (v1 - v0) * fur_dual_at.w;
 }
 
 // 1/sqrt(v) for normal v > 0, the operations of math::rsqrt_newton on the CPU: the
@@ -1275,9 +1332,9 @@ struct FurCoat {
     r_rho: vec3<f32>,
 }
 
-fn fur_dual_coat_node(k: u32) -> FurCoat {
-    let log2_mu = fur_dual_node(k, FUR_DUAL_LOG2_DECAY);
-    let a = clamp(fur_dual_node(k, FUR_DUAL_A_F2), vec3<f32>(0.0), vec3<f32>(1.0));
+fn fur_dual_coat_node(n: vec3<u32>, k: u32) -> FurCoat {
+    let log2_mu = fur_dual_node(n, k, FUR_DUAL_LOG2_DECAY);
+    let a = clamp(fur_dual_node(n, k, FUR_DUAL_A_F2), vec3<f32>(0.0), vec3<f32>(1.0));
     let mu = fur_dual_power(log2_mu, 1.0);
     let t = a * fur_rsqrt_newton(max(a, vec3<f32>(1e-30)));
     return FurCoat(fur_reflectance_squared(mu, t), fur_reflection_product(mu, t));
@@ -1285,10 +1342,19 @@ fn fur_dual_coat_node(k: u32) -> FurCoat {
 
 // rho^2 and r rho at theta: each derived at the two nodes, then linear between them, a + (b - a) w
 // (DualLut::eval's coat lookup).
+// (At each channel's two absorption nodes, then linear between them, as DualLut::coat.)
 fn fur_dual_coat(l: FurLoc) -> FurCoat {
-    let a = fur_dual_coat_node(l.i);
-    let b = fur_dual_coat_node(l.i + 1u);
-    return FurCoat(a.rho2 + (b.rho2 - a.rho2) * l.w, a.r_rho + (b.r_rho - a.r_rho) * l.w);
+    let lo = fur_dual_at.node;
+    let a0 = fur_dual_coat_node(lo, l.i);
+    let b0 = fur_dual_coat_node(lo, l.i + 1u);
+    let a1 = fur_dual_coat_node(lo + 1u, l.i);
+    let b1 = fur_dual_coat_node(lo + 1u, l.i + 1u);
+    let w = fur_dual_at.w;
+    let rho0 = a0.rho2 + (b0.rho2 - a0.rho2) * l.w;
+    let rho1 = a1.rho2 + (b1.rho2 - a1.rho2) * l.w;
+    let rr0 = a0.r_rho + (b0.r_rho - a0.r_rho) * l.w;
+    let rr1 = a1.r_rho + (b1.r_rho - a1.r_rho) * l.w;
+    return FurCoat(rho0 + (rho1 - rho0) * w, rr0 + (rr1 - rr0) * w);
 }
 
 // A fiber count or density factor as the CPU's contract takes it: NaN and values <= 0 give
@@ -1332,7 +1398,9 @@ fn fur_dual_below(x: f32) -> f32 {
 // Invalid angles (as fur_eval_far) give 0; n NaN or < 0 is 0, n > 1e6 (or +inf) is 1e6;
 // m < 0 is 0, m NaN, +inf or > 1e6 is 1e6; densities NaN or < 0 are 0, clamped to 4. The
 // result is finite and >= 0.
-fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, fibers_below: f32, d_f_in: f32, d_b_in: f32) -> vec3<f32> {
+fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, fibers_below: f32, d_f_in: f32, d_b_in: f32, sigma_ca: vec3<f32>) -> vec3<f32> {
+    // The colour: each channel reads the absorption axis at its own sigma_ca.
+    fur_dual_at = fur_dual_locate(sigma_ca);
     let zero = vec3<f32>(0.0);
     if (!fur_valid(theta_i, theta_r, phi_in)) {
         return zero;
@@ -1409,12 +1477,12 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, fibers_be
 // fur_eval_dual from world-space vectors: wi toward the light, wr toward the viewer, u the
 // fiber tangent (any lengths), at the angles of fur_angles_from_dirs (the baked
 // evaluator's polynomial conversion, `BakedBcsdf::angles_from_dirs`); 0 for unusable vectors.
-fn fur_eval_dual_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>, fibers: f32, fibers_below: f32, d_f: f32, d_b: f32) -> vec3<f32> {
+fn fur_eval_dual_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>, fibers: f32, fibers_below: f32, d_f: f32, d_b: f32, sigma_ca: vec3<f32>) -> vec3<f32> {
     let a = fur_angles_from_dirs(wi, wr, u);
     if (!a.ok) {
         return vec3<f32>(0.0);
     }
-    return fur_eval_dual(a.theta_i, a.theta_r, a.phi, fibers, fibers_below, d_f, d_b);
+    return fur_eval_dual(a.theta_i, a.theta_r, a.phi, fibers, fibers_below, d_f, d_b, sigma_ca);
 }
 
 // ---- Entry points for the tests and `viewer probe --gpu` (bindings 1 and 2; 3 for dual) ----
@@ -1504,22 +1572,24 @@ fn fur_pdf_main(@builtin(global_invocation_id) id: vec3<u32>) {
     fur_results[16u * q] = fur_pdf_far(a.x, a.y, a.z);
 }
 
-// Dual-scattering queries (bindings 1, 2 and 3): two vec4 per evaluation,
-// (theta_i, theta_r, phi, fibers) and (d_f, d_b, fibers_below, unused); results: RGB in the
+// Dual-scattering queries (bindings 1, 2 and 3): three vec4 per evaluation,
+// (theta_i, theta_r, phi, fibers), (d_f, d_b, fibers_below, unused) and (sigma_ca RGB,
+// unused); results: RGB in the
 // first three of 16 floats, the rest 0.
 @compute @workgroup_size(64)
 fn fur_dual_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let q = id.x;
-    if (2u * q + 1u >= arrayLength(&fur_queries)) {
+    if (3u * q + 2u >= arrayLength(&fur_queries)) {
         return;
     }
-    let a = fur_queries[2u * q];
-    let d = fur_queries[2u * q + 1u];
-    fur_store_rgb(q, fur_eval_dual(a.x, a.y, a.z, a.w, d.z, d.x, d.y));
+    let a = fur_queries[3u * q];
+    let d = fur_queries[3u * q + 1u];
+    let sigma = fur_queries[3u * q + 2u];
+    fur_store_rgb(q, fur_eval_dual(a.x, a.y, a.z, a.w, d.z, d.x, d.y, sigma.xyz));
 }
 
 // Dual-scattering vector queries (bindings 1, 2 and 3): four vec4 per evaluation,
-// (wi, fibers), (wr, d_f), (tangent, d_b), (fibers_below, unused, unused, unused); results
+// (wi, fibers), (wr, d_f), (tangent, d_b), (fibers_below, sigma_ca RGB); results
 // as fur_dual_main.
 @compute @workgroup_size(64)
 fn fur_dual_dirs_main(@builtin(global_invocation_id) id: vec3<u32>) {
@@ -1531,5 +1601,5 @@ fn fur_dual_dirs_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let wr = fur_queries[4u * q + 1u];
     let u = fur_queries[4u * q + 2u];
     let below = fur_queries[4u * q + 3u];
-    fur_store_rgb(q, fur_eval_dual_dirs(wi.xyz, wr.xyz, u.xyz, wi.w, below.x, wr.w, u.w));
+    fur_store_rgb(q, fur_eval_dual_dirs(wi.xyz, wr.xyz, u.xyz, wi.w, below.x, wr.w, u.w, below.yzw));
 }

@@ -53,14 +53,15 @@
 #define FUR_LUT_WORDS 256
 
 /**
- * 64-bit words of storage in a `fur_dual` (153 600 bytes, 150 KiB).
+ * 64-bit words of storage in a `fur_dual` (600 000 bytes, about 586 KiB: the tables of the
+ * 16 nodes of the absorption axis).
  */
-#define FUR_DUAL_WORDS 19200
+#define FUR_DUAL_WORDS 75000
 
 /**
  * Length in bytes of every `.furdual` blob `fur_dual_open` accepts.
  */
-#define FUR_DUAL_BLOB_LEN 54976
+#define FUR_DUAL_BLOB_LEN 292944
 
 /**
  * Status of a call; `FUR_OK` (0) is success. `fur_status_str` describes each.
@@ -156,6 +157,10 @@ typedef enum fur_status {
    * (`fur_dual_check_lut`): its .furdual blob records another LUT's checksum, or none.
    */
   FUR_ERR_DUAL_SOURCE = 20,
+  /**
+   * A colour (sigma_ca) channel is NaN or negative; nothing was evaluated (0 written).
+   */
+  FUR_ERR_COLOUR = 21,
 } fur_status;
 
 /**
@@ -182,7 +187,7 @@ typedef enum fur_family {
 
 /**
  * Decoded dual-scattering tables (docs/model.md §13): fixed-size, caller-owned storage of
- * `FUR_DUAL_WORDS` 64-bit words (153 600 bytes, 150 KiB: allocate it on the heap, e.g.
+ * `FUR_DUAL_WORDS` 64-bit words (600 000 bytes, about 586 KiB: allocate it on the heap, e.g.
  * `calloc(1, sizeof(fur_dual))`, or in static storage, rather than on a thread's stack).
  * Its contents are private, and only meaningful in the process and the build of this
  * library that opened it (another build's is refused with `FUR_ERR_OTHER_BUILD`).
@@ -330,14 +335,18 @@ enum fur_status fur_dual_check_lut(const struct fur_dual *FUR_RESTRICT dual,
  * where S is `fur_eval_far`'s value and V = clamp(1 - fibers, 0, 1) the fraction of direct
  * light; the result is in S's units (multiply it, like S, by cos(theta_i) and the light's
  * radiance). Finite and >= 0. The value is `DualLut::eval` with
- * `Fibers::new(fibers, fibers_below)`, bit for bit.
+ * `Fibers::new(fibers, fibers_below)`, bit for bit, at the colour `sigma_ca` (3 floats:
+ * the cortex absorption per fiber radius, RGB; each channel reads the tables' absorption
+ * axis at its own value, `DualLut::eval_at`), or at the preset's own colour when
+ * `sigma_ca` is NULL (`DualLut::eval`). A NaN or negative channel writes 0 and returns
+ * `FUR_ERR_COLOUR`; channels above 1000 are 1000.
  *
  * Invalid angles write 0 and return `FUR_ERR_ANGLE`. `out_rgb` must not overlap `*dual`
- * (`FUR_ERR_OVERLAP`, nothing written).
+ * or `sigma_ca` (`FUR_ERR_OVERLAP`, nothing written).
  *
  * # Safety
- * `dual` is NULL or points to an initialised `fur_dual`; `out_rgb` is NULL or points to 3
- * writable floats.
+ * `dual` is NULL or points to an initialised `fur_dual`; `sigma_ca` is NULL or points to 3
+ * readable floats; `out_rgb` is NULL or points to 3 writable floats.
  */
 enum fur_status fur_eval_dual(const struct fur_dual *FUR_RESTRICT dual,
                               float theta_i,
@@ -347,6 +356,7 @@ enum fur_status fur_eval_dual(const struct fur_dual *FUR_RESTRICT dual,
                               float fibers_below,
                               float d_f,
                               float d_b,
+                              const float *FUR_RESTRICT sigma_ca,
                               float *FUR_RESTRICT out_rgb);
 
 /**
@@ -355,15 +365,16 @@ enum fur_status fur_eval_dual(const struct fur_dual *FUR_RESTRICT dual,
  * `out_rgb[3]`; `fibers` (n, toward the light), `fibers_below` (m, beyond the point along
  * -wi; INFINITY or NaN for a semi-infinite coat), `d_f`, `d_b` and the result as in
  * `fur_eval_dual`, with the same contract (add it to S * V, multiply by cos(theta_i) and
- * the light's radiance). The angles are those `DualLut::eval_dirs` converts to (the baked
+ * the light's radiance), the colour `sigma_ca` too (NULL: the preset's own; a NaN or
+ * negative channel writes 0 and returns `FUR_ERR_COLOUR`). The angles are those `DualLut::eval_dirs` converts to (the baked
  * evaluator's conversion). A vector with a component that is not finite, or of zero (below
  * the smallest normal float) or overflowing length, writes 0 and returns
- * `FUR_ERR_DIRECTION`. `out_rgb` must not overlap the three vectors or `*dual`
+ * `FUR_ERR_DIRECTION`. `out_rgb` must not overlap the three vectors, `sigma_ca` or `*dual`
  * (`FUR_ERR_OVERLAP`, nothing written).
  *
  * # Safety
- * `dual` is NULL or points to an initialised `fur_dual`; each vector is NULL or points to 3
- * readable floats; `out_rgb` is NULL or points to 3 writable floats.
+ * `dual` is NULL or points to an initialised `fur_dual`; each vector and `sigma_ca` is NULL
+ * or points to 3 readable floats; `out_rgb` is NULL or points to 3 writable floats.
  */
 enum fur_status fur_eval_dual_dirs(const struct fur_dual *FUR_RESTRICT dual,
                                    const float *FUR_RESTRICT wi,
@@ -373,6 +384,7 @@ enum fur_status fur_eval_dual_dirs(const struct fur_dual *FUR_RESTRICT dual,
                                    float fibers_below,
                                    float d_f,
                                    float d_b,
+                                   const float *FUR_RESTRICT sigma_ca,
                                    float *FUR_RESTRICT out_rgb);
 
 /**

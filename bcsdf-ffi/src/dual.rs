@@ -6,15 +6,15 @@
 //! starts with plain integers readable whatever the bytes are: a magic number the same in
 //! every build, the [`DUAL_BUILD_TAG`] of the build that opened it, the source checksum the
 //! blob records, and a check mixing the three. Then the decoded evaluator
-//! (`bcsdf_core::dual::DualLut`, about 146 KB of f32), whose bits only this build can
+//! (`bcsdf_core::dual::DualLut`, about 590 KB of f32), whose bits only this build can
 //! interpret. Unlike a `fur_lut`, it owns everything it reads: the blob's bytes are decoded
 //! into it and not borrowed.
 
 use crate::args::{check_ptr, disjoint, open_bytes, read3, write3, Region};
 use crate::handle::build_tag;
 use crate::{fur_dual, fur_lut, fur_status};
-use bcsdf_core::dual::{Density, DualError, DualLut, Fibers, DUAL_FORMAT_VERSION};
-use bcsdf_core::Angles;
+use bcsdf_core::dual::{Density, DualColour, DualError, DualLut, Fibers, DUAL_FORMAT_VERSION};
+use bcsdf_core::{Absorption, Angles, Rgb};
 use core::mem::{align_of, offset_of, size_of, MaybeUninit};
 
 /// What a `fur_dual` holds.
@@ -53,6 +53,23 @@ pub(crate) const DUAL_BUILD_TAG: u64 = build_tag(&[
     align_of::<DualLut>(),
 ]);
 
+/// The colour `sigma_ca` points to (3 floats, σ_ca per fiber radius, RGB) located on the
+/// decoded tables' absorption axis; NULL is the preset's own colour. Channels above 1000 are
+/// 1000 ([`Absorption::from_sigma`]).
+///
+/// # Safety
+/// `sigma_ca` is NULL or points to 3 readable floats.
+unsafe fn colour_of(lut: &DualLut, sigma_ca: *const f32) -> Result<DualColour, fur_status> {
+    if sigma_ca.is_null() {
+        return Ok(lut.locate(&lut.absorption()));
+    }
+    // SAFETY: forwarded caller guarantee (non-NULL here).
+    let s = unsafe { read3(sigma_ca) }?;
+    Absorption::from_sigma(Rgb(s))
+        .map(|a| lut.locate(&a))
+        .map_err(|_| fur_status::FUR_ERR_COLOUR)
+}
+
 /// A 64-bit mix of the integers an open `fur_dual` carries (SplitMix64 finaliser).
 fn check_of(build: u64, source: u64) -> u64 {
     let mut z = DUAL_MAGIC ^ build.rotate_left(29) ^ source.wrapping_mul(0x9e37_79b9_7f4a_7c15);
@@ -70,7 +87,7 @@ fn status_of(e: &DualError) -> fur_status {
             fur_status::FUR_ERR_DUAL_VERSION
         }
         DualError::Checksum => fur_status::FUR_ERR_DUAL_CHECKSUM,
-        DualError::Layout | DualError::Attenuation(_) | DualError::Value(_) => {
+        DualError::Layout | DualError::Attenuation(_) | DualError::Value(_) | DualError::Colour => {
             fur_status::FUR_ERR_DUAL_INVALID
         }
         DualError::Source { .. } => fur_status::FUR_ERR_DUAL_SOURCE,
@@ -158,7 +175,7 @@ pub unsafe extern "C" fn fur_dual_open(
     let slice: &[u8] = tri!(unsafe { open_bytes(bytes, len, out, close) });
     let o = out.cast::<OpenedDual>();
     // `DualLut::EMPTY` is promoted to a static (no Drop, no interior mutability): copying
-    // it from there puts no 146 KB temporary on the caller's stack.
+    // it from there puts no 590 KB temporary on the caller's stack.
     let empty: &'static DualLut = &DualLut::EMPTY;
     // SAFETY: `o` is aligned and writable for an `OpenedDual` (`out` is checked, and
     // `OpenedDual` fits in `fur_dual` with no stricter alignment: static assertions); the
@@ -256,14 +273,18 @@ fn density(d_f: f32, d_b: f32) -> Density {
 /// where S is `fur_eval_far`'s value and V = clamp(1 - fibers, 0, 1) the fraction of direct
 /// light; the result is in S's units (multiply it, like S, by cos(theta_i) and the light's
 /// radiance). Finite and >= 0. The value is `DualLut::eval` with
-/// `Fibers::new(fibers, fibers_below)`, bit for bit.
+/// `Fibers::new(fibers, fibers_below)`, bit for bit, at the colour `sigma_ca` (3 floats:
+/// the cortex absorption per fiber radius, RGB; each channel reads the tables' absorption
+/// axis at its own value, `DualLut::eval_at`), or at the preset's own colour when
+/// `sigma_ca` is NULL (`DualLut::eval`). A NaN or negative channel writes 0 and returns
+/// `FUR_ERR_COLOUR`; channels above 1000 are 1000.
 ///
 /// Invalid angles write 0 and return `FUR_ERR_ANGLE`. `out_rgb` must not overlap `*dual`
-/// (`FUR_ERR_OVERLAP`, nothing written).
+/// or `sigma_ca` (`FUR_ERR_OVERLAP`, nothing written).
 ///
 /// # Safety
-/// `dual` is NULL or points to an initialised `fur_dual`; `out_rgb` is NULL or points to 3
-/// writable floats.
+/// `dual` is NULL or points to an initialised `fur_dual`; `sigma_ca` is NULL or points to 3
+/// readable floats; `out_rgb` is NULL or points to 3 writable floats.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)] // the C signature: three angles, two counts, two factors
 pub unsafe extern "C" fn fur_eval_dual(
@@ -275,20 +296,36 @@ pub unsafe extern "C" fn fur_eval_dual(
     fibers_below: f32,
     d_f: f32,
     d_b: f32,
+    sigma_ca: *const f32,
     out_rgb: *mut f32,
 ) -> fur_status {
     // SAFETY: forwarded caller guarantee on `dual`.
     let open = tri!(unsafe { opened(dual) });
     tri!(check_ptr(out_rgb));
-    tri!(disjoint(Region::of(out_rgb, 3), &[open.region]));
-    let (v, status) = match Angles::new(theta_i, theta_r, phi) {
-        Ok(a) => (
-            open.lut
-                .eval(&a, Fibers::new(fibers, fibers_below), density(d_f, d_b))
-                .0,
-            fur_status::FUR_OK,
-        ),
-        Err(_) => ([0.0; 3], fur_status::FUR_ERR_ANGLE),
+    if !sigma_ca.is_null() {
+        tri!(check_ptr(sigma_ca));
+    }
+    tri!(disjoint(
+        Region::of(out_rgb, 3),
+        &[open.region, Region::of(sigma_ca, 3)]
+    ));
+    // SAFETY: forwarded caller guarantee on `sigma_ca`.
+    let (v, status) = match unsafe { colour_of(open.lut, sigma_ca) } {
+        Err(e) => ([0.0; 3], e),
+        Ok(colour) => match Angles::new(theta_i, theta_r, phi) {
+            Ok(a) => (
+                open.lut
+                    .eval_located(
+                        &a,
+                        Fibers::new(fibers, fibers_below),
+                        density(d_f, d_b),
+                        &colour,
+                    )
+                    .0,
+                fur_status::FUR_OK,
+            ),
+            Err(_) => ([0.0; 3], fur_status::FUR_ERR_ANGLE),
+        },
     };
     // SAFETY: non-NULL and aligned (checked); 3 writable floats by the caller's contract,
     // disjoint from `*dual` (checked).
@@ -301,15 +338,16 @@ pub unsafe extern "C" fn fur_eval_dual(
 /// `out_rgb[3]`; `fibers` (n, toward the light), `fibers_below` (m, beyond the point along
 /// -wi; INFINITY or NaN for a semi-infinite coat), `d_f`, `d_b` and the result as in
 /// `fur_eval_dual`, with the same contract (add it to S * V, multiply by cos(theta_i) and
-/// the light's radiance). The angles are those `DualLut::eval_dirs` converts to (the baked
+/// the light's radiance), the colour `sigma_ca` too (NULL: the preset's own; a NaN or
+/// negative channel writes 0 and returns `FUR_ERR_COLOUR`). The angles are those `DualLut::eval_dirs` converts to (the baked
 /// evaluator's conversion). A vector with a component that is not finite, or of zero (below
 /// the smallest normal float) or overflowing length, writes 0 and returns
-/// `FUR_ERR_DIRECTION`. `out_rgb` must not overlap the three vectors or `*dual`
+/// `FUR_ERR_DIRECTION`. `out_rgb` must not overlap the three vectors, `sigma_ca` or `*dual`
 /// (`FUR_ERR_OVERLAP`, nothing written).
 ///
 /// # Safety
-/// `dual` is NULL or points to an initialised `fur_dual`; each vector is NULL or points to 3
-/// readable floats; `out_rgb` is NULL or points to 3 writable floats.
+/// `dual` is NULL or points to an initialised `fur_dual`; each vector and `sigma_ca` is NULL
+/// or points to 3 readable floats; `out_rgb` is NULL or points to 3 writable floats.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)] // the C signature: three vectors, two counts, two factors
 pub unsafe extern "C" fn fur_eval_dual_dirs(
@@ -321,11 +359,15 @@ pub unsafe extern "C" fn fur_eval_dual_dirs(
     fibers_below: f32,
     d_f: f32,
     d_b: f32,
+    sigma_ca: *const f32,
     out_rgb: *mut f32,
 ) -> fur_status {
     // SAFETY: forwarded caller guarantee on `dual`.
     let open = tri!(unsafe { opened(dual) });
     tri!(check_ptr(out_rgb));
+    if !sigma_ca.is_null() {
+        tri!(check_ptr(sigma_ca));
+    }
     // SAFETY: forwarded caller guarantee on `wi`.
     let wi_v = tri!(unsafe { read3(wi) });
     // SAFETY: forwarded caller guarantee on `wr`.
@@ -337,18 +379,29 @@ pub unsafe extern "C" fn fur_eval_dual_dirs(
         Region::of(wi, 3),
         Region::of(wr, 3),
         Region::of(tangent, 3),
+        Region::of(sigma_ca, 3),
     ];
     tri!(disjoint(Region::of(out_rgb, 3), &inputs));
+    // SAFETY: forwarded caller guarantee on `sigma_ca`.
+    let colour = match unsafe { colour_of(open.lut, sigma_ca) } {
+        Ok(c) => c,
+        Err(e) => {
+            // SAFETY: non-NULL and aligned (checked); 3 writable floats, disjoint (checked).
+            unsafe { write3(out_rgb, [0.0; 3]) };
+            return e;
+        }
+    };
     // `DualLut::try_eval_dirs`: the Rust API's value bit for bit, and its verdict on the
     // directions from the same conversion (0 written for rejected ones).
     let counts = Fibers::new(fibers, fibers_below);
-    let (v, status) = match open
-        .lut
-        .try_eval_dirs(wi_v, wr_v, t_v, counts, density(d_f, d_b))
-    {
-        Ok(v) => (v.0, fur_status::FUR_OK),
-        Err(_) => ([0.0; 3], fur_status::FUR_ERR_DIRECTION),
-    };
+    let (v, status) =
+        match open
+            .lut
+            .try_eval_dirs_located(wi_v, wr_v, t_v, counts, density(d_f, d_b), &colour)
+        {
+            Ok(v) => (v.0, fur_status::FUR_OK),
+            Err(_) => ([0.0; 3], fur_status::FUR_ERR_DIRECTION),
+        };
     // SAFETY: non-NULL and aligned (checked); 3 writable floats by the caller's contract,
     // disjoint from the inputs and `*dual` (checked).
     unsafe { write3(out_rgb, v) };
@@ -406,7 +459,18 @@ mod tests {
         // its length, `out` 3 writable floats; the vectors are live arrays.
         unsafe {
             assert_eq!(
-                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, f32::INFINITY, 1.0, 1.0, out),
+                fur_eval_dual(
+                    p,
+                    0.1,
+                    0.2,
+                    0.3,
+                    1.0,
+                    f32::INFINITY,
+                    1.0,
+                    1.0,
+                    core::ptr::null(),
+                    out
+                ),
                 fur_status::FUR_ERR_NOT_OPEN
             );
             assert_eq!(
@@ -429,7 +493,7 @@ mod tests {
             for n in [0.0, 0.5, 2.0, f32::NAN] {
                 for m in [0.0, 2.5, f32::INFINITY, f32::NAN] {
                     assert_eq!(
-                        fur_eval_dual(p, 0.3, -0.2, 2.5, n, m, 1.0, 1.0, out),
+                        fur_eval_dual(p, 0.3, -0.2, 2.5, n, m, 1.0, 1.0, core::ptr::null(), out),
                         fur_status::FUR_OK
                     );
                     if let Some(want) = &want {
@@ -437,6 +501,47 @@ mod tests {
                         assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
                     }
                 }
+            }
+            // A colour: each channel at its own σ_ca, `DualLut::eval_at` bit for bit; NaN or
+            // negative channels refused with zeros written.
+            for sigma in [[0.0f32, 0.2, 0.4], [0.05, 3.0, 700.0], [2.0e3, 0.3, 1.0]] {
+                assert_eq!(
+                    fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 1.5, 1.0, 1.0, sigma.as_ptr(), out),
+                    fur_status::FUR_OK
+                );
+                if let Some(want) = &want {
+                    let colour = Absorption::from_sigma(Rgb(sigma)).unwrap();
+                    let w = want
+                        .eval_at(&a, Fibers::new(2.0, 1.5), Density::DEFAULT, &colour)
+                        .0;
+                    assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
+                }
+            }
+            for bad in [[f32::NAN, 0.2, 0.4], [0.1, -1.0, 0.4]] {
+                rgb = [-1.0; 3];
+                assert_eq!(
+                    fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 1.5, 1.0, 1.0, bad.as_ptr(), out),
+                    fur_status::FUR_ERR_COLOUR
+                );
+                assert_eq!(rgb, [0.0; 3]);
+                rgb = [-1.0; 3];
+                let (wi, wr, t) = ([0.3f32, 0.8, 0.2], [-0.6f32, 0.7, -0.1], [0.0f32, 0.2, 1.0]);
+                assert_eq!(
+                    fur_eval_dual_dirs(
+                        p,
+                        wi.as_ptr(),
+                        wr.as_ptr(),
+                        t.as_ptr(),
+                        2.0,
+                        1.5,
+                        1.0,
+                        1.0,
+                        bad.as_ptr(),
+                        out
+                    ),
+                    fur_status::FUR_ERR_COLOUR
+                );
+                assert_eq!(rgb, [0.0; 3]);
             }
             // The count below matters: no fibers below reflect less than the deep coat.
             let mut deep = [0.0f32; 3];
@@ -450,13 +555,25 @@ mod tests {
                     f32::INFINITY,
                     1.0,
                     1.0,
+                    core::ptr::null(),
                     deep.as_mut_ptr()
                 ),
                 fur_status::FUR_OK
             );
             assert!(deep.iter().any(|&v| v > 0.0));
             assert_eq!(
-                fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 0.0, 1.0, 1.0, out),
+                fur_eval_dual(
+                    p,
+                    0.3,
+                    -0.2,
+                    2.5,
+                    2.0,
+                    0.0,
+                    1.0,
+                    1.0,
+                    core::ptr::null(),
+                    out
+                ),
                 fur_status::FUR_OK
             );
             assert!(rgb.iter().zip(&deep).all(|(s, d)| s < d));
@@ -472,6 +589,7 @@ mod tests {
                         m,
                         0.5,
                         2.0,
+                        core::ptr::null(),
                         out
                     ),
                     fur_status::FUR_OK
@@ -499,6 +617,7 @@ mod tests {
                     0.0,
                     1.0,
                     1.0,
+                    core::ptr::null(),
                     p.cast::<f32>().add(8)
                 ),
                 fur_status::FUR_ERR_OVERLAP
@@ -523,7 +642,18 @@ mod tests {
                 fur_status::FUR_ERR_DUAL_FORMAT
             );
             assert_eq!(
-                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, f32::INFINITY, 1.0, 1.0, out),
+                fur_eval_dual(
+                    p,
+                    0.1,
+                    0.2,
+                    0.3,
+                    1.0,
+                    f32::INFINITY,
+                    1.0,
+                    1.0,
+                    core::ptr::null(),
+                    out
+                ),
                 fur_status::FUR_ERR_NOT_OPEN
             );
 
@@ -534,13 +664,35 @@ mod tests {
             );
             (*p)._opaque[1] ^= 1;
             assert_eq!(
-                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, f32::INFINITY, 1.0, 1.0, out),
+                fur_eval_dual(
+                    p,
+                    0.1,
+                    0.2,
+                    0.3,
+                    1.0,
+                    f32::INFINITY,
+                    1.0,
+                    1.0,
+                    core::ptr::null(),
+                    out
+                ),
                 fur_status::FUR_ERR_OTHER_BUILD
             );
             (*p)._opaque[1] ^= 1;
             assert_eq!(fur_dual_close(p), fur_status::FUR_OK);
             assert_eq!(
-                fur_eval_dual(p, 0.1, 0.2, 0.3, 1.0, f32::INFINITY, 1.0, 1.0, out),
+                fur_eval_dual(
+                    p,
+                    0.1,
+                    0.2,
+                    0.3,
+                    1.0,
+                    f32::INFINITY,
+                    1.0,
+                    1.0,
+                    core::ptr::null(),
+                    out
+                ),
                 fur_status::FUR_ERR_NOT_OPEN
             );
         }

@@ -26,12 +26,13 @@ pub extern "C" fn fur_status_str(status: i32) -> &'static c_char {
         12 => b"nothing can be sampled at this view angle (zero BCSDF)\0",
         13 => b"the fur_lut or fur_dual was opened by another build of this library\0",
         14 => b"an output buffer overlaps an input buffer, the fur_lut, the fur_dual or the bytes\0",
-        15 => b"the dual-scattering (.furdual) bytes are not 54976 bytes long (truncated or trailing data)\0",
+        15 => b"the dual-scattering (.furdual) bytes are not 292944 bytes long (truncated or trailing data)\0",
         16 => b"the bytes are not a dual-scattering (.furdual) blob (bad magic)\0",
         17 => b"the dual-scattering blob was made by another format or model version: re-bake it\0",
         18 => b"the dual-scattering blob checksum does not match: the data was changed after baking\0",
         19 => b"the dual-scattering blob has another layout, an unknown attenuation or an invalid value\0",
         20 => b"the dual-scattering blob was not computed from this LUT (another LUT's checksum, or none recorded)\0",
+        21 => b"a colour (sigma_ca) channel is NaN or negative\0",
         _ => b"unknown status\0",
     };
     as_c_char(s.first().unwrap_or(&0))

@@ -111,6 +111,8 @@ pub enum fur_status {
     /// The fur_dual was not computed from the LUT it is checked against
     /// (`fur_dual_check_lut`): its .furdual blob records another LUT's checksum, or none.
     FUR_ERR_DUAL_SOURCE = 20,
+    /// A colour (sigma_ca) channel is NaN or negative; nothing was evaluated (0 written).
+    FUR_ERR_COLOUR = 21,
 }
 
 /// The lobe family a sample was drawn from (docs/model.md sections 5, 6).
@@ -159,11 +161,12 @@ pub struct fur_lut {
     pub _opaque: [u64; FUR_LUT_WORDS],
 }
 
-/// 64-bit words of storage in a `fur_dual` (153 600 bytes, 150 KiB).
-pub const FUR_DUAL_WORDS: usize = 19_200;
+/// 64-bit words of storage in a `fur_dual` (600 000 bytes, about 586 KiB: the tables of the
+/// 16 nodes of the absorption axis).
+pub const FUR_DUAL_WORDS: usize = 75_000;
 
 /// Length in bytes of every `.furdual` blob `fur_dual_open` accepts.
-pub const FUR_DUAL_BLOB_LEN: usize = 54_976;
+pub const FUR_DUAL_BLOB_LEN: usize = 292_944;
 
 /// A closed `fur_dual` (all zeroes), for Rust callers; C and C++ use the header's
 /// `FUR_DUAL_INIT` initialiser (or zeroed memory: `calloc`), the same bits.
@@ -172,7 +175,7 @@ pub const FUR_DUAL_INIT: fur_dual = fur_dual {
 };
 
 /// Decoded dual-scattering tables (docs/model.md §13): fixed-size, caller-owned storage of
-/// `FUR_DUAL_WORDS` 64-bit words (153 600 bytes, 150 KiB: allocate it on the heap, e.g.
+/// `FUR_DUAL_WORDS` 64-bit words (600 000 bytes, about 586 KiB: allocate it on the heap, e.g.
 /// `calloc(1, sizeof(fur_dual))`, or in static storage, rather than on a thread's stack).
 /// Its contents are private, and only meaningful in the process and the build of this
 /// library that opened it (another build's is refused with `FUR_ERR_OTHER_BUILD`).

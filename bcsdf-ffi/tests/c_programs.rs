@@ -214,14 +214,25 @@ const FUR_ERR_DIRECTION: i32 = 11;
 fn dual_blob(lut: &[u8]) -> Vec<u8> {
     let baked = BakedBcsdf::from_bytes(lut).unwrap();
     let mut tables = Box::new(DualTables::ZERO);
-    tables.compute(
-        &baked,
-        Quadrature {
-            theta_steps: 32,
-            phi_steps: 16,
+    let mut blob = vec![0u8; dual::BLOB_LEN];
+    dual::encode_axis(
+        (&mut blob[..]).try_into().unwrap(),
+        &mut tables,
+        |sigma, t| {
+            let grey = bcsdf_core::Absorption::from_sigma(bcsdf_core::Rgb::splat(sigma)).unwrap();
+            t.compute(
+                &baked.at(&grey),
+                Quadrature {
+                    theta_steps: 32,
+                    phi_steps: 16,
+                },
+            );
         },
+        Attenuation::Coat,
+        bcsdf_core::lut::checksum(lut),
+        baked.absorption(),
     );
-    dual::encode(&tables, Attenuation::Coat, bcsdf_core::lut::checksum(lut)).to_vec()
+    blob
 }
 
 fn decoded(blob: &[u8]) -> Box<DualLut> {

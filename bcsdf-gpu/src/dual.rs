@@ -29,6 +29,10 @@ pub struct DualQuery {
     pub fibers: Fibers,
     /// The density factors d_f, d_b.
     pub density: Density,
+    /// The colour: σ_ca per fiber radius, RGB (each channel reads the blob's absorption
+    /// axis at its own value, `DualLut::eval_at`; the preset's own is
+    /// `DualLut::absorption`).
+    pub sigma_ca: [f32; 3],
 }
 
 /// One dual-scattering query from world-space vectors (`DualLut::eval_dirs`'s arguments).
@@ -45,6 +49,8 @@ pub struct DualDirsQuery {
     pub fibers: Fibers,
     /// The density factors d_f, d_b.
     pub density: Density,
+    /// The colour, as in [`DualQuery::sigma_ca`].
+    pub sigma_ca: [f32; 3],
 }
 
 /// A validated `.furdual` blob on a GPU device, with the compute pipelines of the shader's
@@ -106,9 +112,11 @@ impl GpuDual {
                 .iter()
                 .flat_map(|q| {
                     let [ti, tr, phi] = q.angles;
+                    let [r, g, b] = q.sigma_ca;
                     [
                         [ti, tr, phi, q.fibers.to_light],
                         [q.density.d_f, q.density.d_b, q.fibers.below, 0.0],
+                        [r, g, b, 0.0],
                     ]
                 })
                 .collect();
@@ -134,7 +142,7 @@ impl GpuDual {
                         w(q.wi, q.fibers.to_light),
                         w(q.wr, q.density.d_f),
                         w(q.tangent, q.density.d_b),
-                        [q.fibers.below, 0.0, 0.0, 0.0],
+                        [q.fibers.below, q.sigma_ca[0], q.sigma_ca[1], q.sigma_ca[2]],
                     ]
                 })
                 .collect();

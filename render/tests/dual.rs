@@ -338,3 +338,85 @@ fn fit_density() {
         });
     }
 }
+
+/// The dual term at a colour its tables were not computed for (docs/model.md §13, the
+/// absorption axis of `.furdual` format 2): the blob holds one grey table set per node of the
+/// absorption axis, each computed from the preset at that grey σ_ca (as `bake` computes them
+/// from `lut.at`), and records `colour` as its own, so `Method::Dual` evaluates every channel
+/// interpolated along the axis at `colour`; `path` renders the preset with its σ_ca replaced
+/// by `colour`. Mean luminance within 10 % of `path` for two presets at two colours each, on
+/// `ball`, `path` at 32 spp. `cargo test -p render --test dual -- --ignored --nocapture
+/// dual_at_a_colour`.
+#[test]
+#[ignore]
+fn dual_at_a_colour_between_the_nodes_is_within_the_bounds_of_the_path_tracer() {
+    use bcsdf_core::dual::{encode_axis, BLOB_LEN};
+    use bcsdf_core::{Absorption, Rgb};
+    let colours = [Rgb([0.35, 0.6, 1.1]), Rgb([2.5, 4.5, 8.0])];
+    let mut failures = Vec::new();
+    for preset in ["dog", "deer"] {
+        let mut input = presets::find(preset).unwrap().input;
+        input.closure = Closure::Energy;
+        // The node tables, once per preset (the colour only changes the header's default).
+        let t = std::time::Instant::now();
+        let mut nodes: Vec<Box<DualTables>> = Vec::new();
+        let mut scratch = Box::new(DualTables::ZERO);
+        let mut blob = vec![0u8; BLOB_LEN];
+        encode_axis(
+            (&mut blob[..]).try_into().unwrap(),
+            &mut scratch,
+            |sigma, tables| {
+                let grey = Absorption::from_sigma(Rgb::splat(sigma)).unwrap();
+                common::with_model(&grey.apply(&input), |model| {
+                    tables.compute(
+                        model,
+                        Quadrature {
+                            theta_steps: 96,
+                            phi_steps: 64,
+                        },
+                    );
+                });
+                nodes.push(Box::new(tables.clone()));
+            },
+            SHIPPED.1,
+            0,
+            Absorption::LOSSLESS,
+        );
+        println!(
+            "{preset}: 16 node tables in {:.1} s",
+            t.elapsed().as_secs_f64()
+        );
+        for sigma in colours {
+            let colour = Absorption::from_sigma(sigma).unwrap();
+            let mut k = 0;
+            encode_axis(
+                (&mut blob[..]).try_into().unwrap(),
+                &mut scratch,
+                |_, tables| {
+                    tables.clone_from(&nodes[k]);
+                    k += 1;
+                },
+                SHIPPED.1,
+                0,
+                colour,
+            );
+            let mut lut = Box::new(DualLut::EMPTY);
+            lut.decode(&blob).unwrap();
+            assert_eq!(lut.absorption(), colour);
+            common::with_model(&colour.apply(&input), |model| {
+                let ((md, rd), (ms, _)) = measure(model, &lut, SceneKind::Ball, SHIPPED.0, 32);
+                println!(
+                    "{preset} at sigma_ca {:?}: dual mean {:+.1} % tiles {:.1} %, single mean {:+.1} %",
+                    sigma.0,
+                    100.0 * md,
+                    100.0 * rd,
+                    100.0 * ms
+                );
+                if md.abs() > 0.10 {
+                    failures.push(format!("{preset} {:?}: dual mean {md:+.3}", sigma.0));
+                }
+            });
+        }
+    }
+    assert!(failures.is_empty(), "{failures:?}");
+}

@@ -1,7 +1,10 @@
 //! The `.furdual` blob (docs/model.md §13, "Stored tables"): what [`DualLut::eval`] reads at
 //! each θ node, derived from [`DualTables`] for one [`Attenuation`], as little-endian f16.
 //!
-//! Layout ([`BLOB_LEN`] = 54 976 bytes):
+//! Format 2 (the absorption axis): one grey (one-channel) set of tables per node of an
+//! absorption axis of [`ABS_NODES`] nodes at σ_ca = [`crate::lut::absorption_node`]`(k,
+//! ABS_NODES)`, the node positions of the LUT's axis at its default resolution. Layout
+//! ([`BLOB_LEN`] = 292 944 bytes):
 //!
 //! | bytes | content |
 //! |---|---|
@@ -10,12 +13,13 @@
 //! | 12..16 | [`crate::MODEL_VERSION`] of the model the tables came from (u32) |
 //! | 16..32 | θ nodes (64), φ nodes (32), families (4), fields per node ([`FIELDS`] = 15), u32 each |
 //! | 32..36 | [`Attenuation::code`] (u32) |
-//! | 36..40 | zero |
+//! | 36..40 | absorption nodes n_abs ([`ABS_NODES`], u32) |
 //! | 40..48 | source: the checksum of the LUT the tables were computed from, 0 if none (u64) |
 //! | 48..56 | zero |
 //! | 56..64 | FNV-1a 64 of every other byte (u64) |
-//! | 64.. | fields, [θ node k][field f][channel c] (64 × 15 × 3 halves) |
-//! | then | N^G, [family g][θ node k][φ node j][channel c] (4 × 64 × 32 × 3 halves) |
+//! | 64..76 | the preset's own σ_ca, RGB (f32 each): the colour [`DualLut::eval`] evaluates |
+//! | 76..80 | zero |
+//! | 80.. | per absorption node a: fields [θ node k][field f] (64 × 15 halves), then N^G [family g][θ node k][φ node j] (4 × 64 × 32 halves) |
 //!
 //! The fields of a node ([`FIELDS`], in this order): log₂ μ (the downward flux's decay per
 //! fiber, [`super::coat_decay`]), β_f (the forward spread's width per fiber, rad), the local
@@ -25,27 +29,37 @@
 
 use super::coat::node_coat;
 use super::{coat_decay, local_backscatter, Attenuation, DualTables, PHI_NODES, THETA_NODES};
+use crate::absorption::Absorption;
 use crate::baked::BakedBcsdf;
 use crate::lobes::FAMILY_COUNT;
+use crate::lut::{absorption_coordinate, absorption_node, SIGMA_CA_MAX};
 use crate::lut::{fnv1a64, fnv1a64_continue};
 use crate::math::Math;
+use crate::spectrum::Rgb;
 use core::fmt;
 
 /// The first eight bytes of a `.furdual` blob.
 pub const DUAL_MAGIC: [u8; 8] = *b"FURDUAL\0";
 /// The blob format this build reads and writes.
-pub const DUAL_FORMAT_VERSION: u32 = 1;
+pub const DUAL_FORMAT_VERSION: u32 = 2;
+/// Nodes of the absorption axis of a `.furdual` blob: σ_ca = [`absorption_node`]`(k,
+/// ABS_NODES)` (the LUT's default [`crate::lut::LutResolution::DEFAULT`] `n_abs`, so the
+/// same node positions as a default LUT's axis).
+pub const ABS_NODES: usize = 16;
 /// Quantities stored per θ node and channel.
 pub const FIELDS: usize = 7 + 2 * FAMILY_COUNT;
 
-const HEADER_LEN: usize = 64;
+const HEADER_LEN: usize = 80;
 const CHECKSUM_AT: usize = 56;
-const FIELD_HALVES: usize = THETA_NODES * FIELDS * 3;
-const NG_HALVES: usize = FAMILY_COUNT * THETA_NODES * PHI_NODES * 3;
+const COLOUR_AT: usize = 64;
+/// Halves of one absorption node's fields and N^G (one channel).
+const FIELD_HALVES: usize = THETA_NODES * FIELDS;
+const NG_HALVES: usize = FAMILY_COUNT * THETA_NODES * PHI_NODES;
+const NODE_HALVES: usize = FIELD_HALVES + NG_HALVES;
 /// Length of every `.furdual` blob in bytes.
-pub const BLOB_LEN: usize = HEADER_LEN + 2 * (FIELD_HALVES + NG_HALVES);
-// The dual-scattering storage budget (docs/model.md §13): at most 64 KB per preset.
-const _: () = assert!(BLOB_LEN <= 64 * 1024);
+pub const BLOB_LEN: usize = HEADER_LEN + 2 * ABS_NODES * NODE_HALVES;
+// The dual-scattering storage budget with the absorption axis: at most 512 KB per preset.
+const _: () = assert!(BLOB_LEN <= 512 * 1024);
 
 /// Field indices within a node.
 pub(super) const LOG2_DECAY: usize = 0;
@@ -81,6 +95,8 @@ pub enum DualError {
     Attenuation(u32),
     /// The checksum does not match the bytes.
     Checksum,
+    /// The recorded preset colour (σ_ca) is NaN, negative or above [`SIGMA_CA_MAX`].
+    Colour,
     /// A stored value is infinite, NaN or outside its field's range (the half's index).
     Value(usize),
     /// The blob was not computed from the LUT it is paired with ([`DualLut::check_lut`]):
@@ -117,6 +133,9 @@ impl fmt::Display for DualError {
             DualError::Checksum => {
                 f.write_str("dual-scattering blob is corrupt (checksum mismatch)")
             }
+            DualError::Colour => f.write_str(
+                "dual-scattering blob records an invalid preset colour (sigma_ca outside [0, 1000])",
+            ),
             DualError::Value(i) => write!(
                 f,
                 "dual-scattering blob holds an invalid value (half {i}: infinite, NaN or out of range)"
@@ -133,17 +152,79 @@ impl fmt::Display for DualError {
     }
 }
 
-/// The quantities [`DualLut::eval`] reads (docs/model.md §13), decoded to f32, channels in
-/// lanes 0–2 of four (lane 3 zero). About 146 KB; fixed size, no allocation. Only
+/// The quantities [`DualLut::eval`] reads (docs/model.md §13), decoded to f32: one grey set
+/// per absorption node ([`ABS_NODES`]). About 590 KB; fixed size, no allocation. Only
 /// [`DualLut::decode`] fills it, so every value is finite and within its field's range.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DualLut {
     pub(super) attenuation: Attenuation,
     pub(super) source: u64,
-    pub(super) nodes: [[[f32; 4]; FIELDS]; THETA_NODES],
-    pub(super) n_g: [[[[f32; 4]; PHI_NODES]; THETA_NODES]; FAMILY_COUNT],
-    /// (ρ², rρ) of the coat at each θ node ([`super::coat::node_coat`]), derived at decode.
-    pub(super) coat: [[[f32; 4]; 2]; THETA_NODES],
+    /// The preset's own σ_ca (the blob's header) and its place on the axis.
+    pub(super) default: Absorption,
+    pub(super) default_at: DualColour,
+    /// √σ_ca of the absorption nodes (the interpolation variable).
+    pub(super) sqrt_nodes: [f32; ABS_NODES],
+    /// [absorption node][θ node][field].
+    pub(super) nodes: [[[f32; FIELDS]; THETA_NODES]; ABS_NODES],
+    /// [absorption node][family][θ node][φ node].
+    pub(super) n_g: [[[[f32; PHI_NODES]; THETA_NODES]; FAMILY_COUNT]; ABS_NODES],
+    /// (ρ², rρ) of the coat at each absorption and θ node ([`super::coat::node_coat`]),
+    /// derived at decode.
+    pub(super) coat: [[[f32; 2]; THETA_NODES]; ABS_NODES],
+}
+
+/// A colour located on a `.furdual` blob's absorption axis ([`DualLut::locate`]): per RGB
+/// channel the lower absorption node and the weight of the upper one. Cheap to copy.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DualColour {
+    pub(super) node: [usize; 3],
+    pub(super) w: [f32; 3],
+}
+
+/// Weights within this distance of 0 or 1 read the node itself: a colour computed at a node
+/// (σ = [`absorption_node`], whose coordinate is an integer up to rounding) reads that node's
+/// tables exactly.
+const NODE_SNAP: f32 = 1e-4;
+
+/// √σ_ca of each absorption node ([`absorption_node`]), the interpolation variable.
+fn sqrt_nodes() -> [f32; ABS_NODES] {
+    core::array::from_fn(|k| libm::sqrtf(absorption_node(k, ABS_NODES as u32)))
+}
+
+impl DualColour {
+    /// σ_ca per channel on the axis of [`ABS_NODES`] nodes whose √σ are `sqrt_nodes`: the
+    /// cell by [`absorption_coordinate`] (the LUT's mapping), the weight linear in √σ within
+    /// the cell (measured against linear in the coordinate: the dual quantities of a nearly
+    /// lossless fiber go as √σ, docs in the module's tests). NaN and negative channels read
+    /// node 0, large ones the last node.
+    fn locate(sigma: Rgb, sqrt_nodes: &[f32; ABS_NODES]) -> DualColour {
+        let last = (ABS_NODES - 1) as f32;
+        let mut at = DualColour::default();
+        for c in 0..3 {
+            let u = (absorption_coordinate(sigma.0[c]) * last).clamp(0.0, last);
+            let mut k = (u as usize).min(ABS_NODES - 2);
+            #[allow(clippy::manual_clamp)] // NaN → 0
+            let s = libm::sqrtf(sigma.0[c].max(0.0).min(SIGMA_CA_MAX));
+            let (lo, hi) = (sqrt_nodes[k], sqrt_nodes[k + 1]);
+            let mut w = ((s - lo) / (hi - lo)).clamp(0.0, 1.0);
+            if !w.is_finite() {
+                w = 0.0;
+            }
+            if w < NODE_SNAP {
+                w = 0.0;
+            } else if w > 1.0 - NODE_SNAP {
+                if k + 2 < ABS_NODES {
+                    k += 1;
+                    w = 0.0;
+                } else {
+                    w = 1.0;
+                }
+            }
+            at.node[c] = k;
+            at.w[c] = w;
+        }
+        at
+    }
 }
 
 /// Finite, saturated to the f16 range, rounded to the nearest half.
@@ -191,13 +272,36 @@ fn node_fields(tables: &DualTables, attenuation: Attenuation, k: usize, c: usize
     out
 }
 
-/// The `.furdual` blob of `tables` for `attenuation` (docs/model.md §13): the node fields and
-/// N^G rounded to the nearest half (non-finite values as 0, magnitudes saturated at 65504),
-/// `source` the checksum of the LUT the tables were computed from (0 for none). No
-/// allocation (the blob is returned by value).
-#[must_use]
-pub fn encode(tables: &DualTables, attenuation: Attenuation, source: u64) -> [u8; BLOB_LEN] {
-    let mut blob = [0u8; BLOB_LEN];
+/// Writes channel `c` of `tables` as absorption node `a` of `blob` (rounded to halves).
+fn put_node(
+    blob: &mut [u8; BLOB_LEN],
+    a: usize,
+    tables: &DualTables,
+    attenuation: Attenuation,
+    c: usize,
+) {
+    let mut at = HEADER_LEN + 2 * a * NODE_HALVES;
+    let mut put = |v: f32| {
+        blob[at..at + 2].copy_from_slice(&half_bits(v).to_le_bytes());
+        at += 2;
+    };
+    for k in 0..THETA_NODES {
+        for v in node_fields(tables, attenuation, k, c) {
+            put(v);
+        }
+    }
+    for g in 0..FAMILY_COUNT {
+        for k in 0..THETA_NODES {
+            for j in 0..PHI_NODES {
+                put(non_negative(tables.n_g[g][k][j][c]));
+            }
+        }
+    }
+}
+
+/// Writes the header of a blob recording `attenuation`, `source` and the preset colour
+/// `default`, then its checksum (the nodes must be written before).
+fn seal(blob: &mut [u8; BLOB_LEN], attenuation: Attenuation, source: u64, default: Absorption) {
     blob[..8].copy_from_slice(&DUAL_MAGIC);
     let words = [
         DUAL_FORMAT_VERSION,
@@ -207,35 +311,61 @@ pub fn encode(tables: &DualTables, attenuation: Attenuation, source: u64) -> [u8
         FAMILY_COUNT as u32,
         FIELDS as u32,
         attenuation.code(),
+        ABS_NODES as u32,
     ];
     for (i, w) in words.iter().enumerate() {
         blob[8 + 4 * i..12 + 4 * i].copy_from_slice(&w.to_le_bytes());
     }
     blob[40..48].copy_from_slice(&source.to_le_bytes());
-    let mut at = HEADER_LEN;
-    let mut put = |v: f32| {
-        blob[at..at + 2].copy_from_slice(&half_bits(v).to_le_bytes());
-        at += 2;
-    };
-    for k in 0..THETA_NODES {
-        let per_channel = [0, 1, 2].map(|c| node_fields(tables, attenuation, k, c));
-        for f in 0..FIELDS {
-            for fields in &per_channel {
-                put(fields[f]);
-            }
-        }
+    blob[48..56].fill(0);
+    for (c, v) in default.sigma().0.iter().enumerate() {
+        blob[COLOUR_AT + 4 * c..COLOUR_AT + 4 * c + 4].copy_from_slice(&v.to_le_bytes());
     }
-    for g in 0..FAMILY_COUNT {
-        for k in 0..THETA_NODES {
-            for j in 0..PHI_NODES {
-                for c in 0..3 {
-                    put(non_negative(tables.n_g[g][k][j][c]));
-                }
-            }
-        }
+    blob[COLOUR_AT + 12..HEADER_LEN].fill(0);
+    let sum = checksum_of(&blob[..]);
+    blob[CHECKSUM_AT..CHECKSUM_AT + 8].copy_from_slice(&sum.to_le_bytes());
+}
+
+/// The `.furdual` blob of a BCSDF over the absorption axis (docs/model.md §13): for each node
+/// a, `tables_at(σ_a, tables)` fills `tables` (a scratch buffer) with the tables of the
+/// BCSDF at the grey colour σ_ca = σ_a ([`absorption_node`]`(a, ABS_NODES)`), of which
+/// channel 0 is stored (the node fields and N^G rounded to the nearest half, non-finite values
+/// as 0, magnitudes saturated at 65504). `source` is the checksum of the LUT the tables were
+/// computed from (0 for none), `default` the preset's own colour. No allocation.
+pub fn encode_axis<F: FnMut(f32, &mut DualTables)>(
+    blob: &mut [u8; BLOB_LEN],
+    tables: &mut DualTables,
+    mut tables_at: F,
+    attenuation: Attenuation,
+    source: u64,
+    default: Absorption,
+) {
+    for a in 0..ABS_NODES {
+        tables_at(absorption_node(a, ABS_NODES as u32), tables);
+        put_node(blob, a, tables, attenuation, 0);
     }
-    let sum = checksum_of(&blob);
-    blob[CHECKSUM_AT..HEADER_LEN].copy_from_slice(&sum.to_le_bytes());
+    seal(blob, attenuation, source, default);
+}
+
+/// The preset colour [`encode`] records: channel c at absorption node c.
+fn channel_nodes() -> Absorption {
+    let s = Rgb([0, 1, 2].map(|c| absorption_node(c, ABS_NODES as u32)));
+    Absorption::from_sigma(s).unwrap_or(Absorption::LOSSLESS)
+}
+
+/// A blob of one colour's RGB `tables` (computed at one fixed σ_ca, e.g. a BCSDF without a
+/// LUT): channel c is stored at absorption node c (nodes 3 and up repeat channel 2), and the
+/// recorded preset colour is σ_ca = ([`absorption_node`] 0, 1, 2), so that [`DualLut::eval`]
+/// evaluates exactly these tables per channel. Evaluating such a blob at another colour reads
+/// the other channels' tables: for per-colour evaluation use [`encode_axis`]. Otherwise as
+/// [`encode_axis`]. The blob is returned by value (no allocation).
+#[must_use]
+pub fn encode(tables: &DualTables, attenuation: Attenuation, source: u64) -> [u8; BLOB_LEN] {
+    let mut blob = [0u8; BLOB_LEN];
+    for a in 0..ABS_NODES {
+        put_node(&mut blob, a, tables, attenuation, a.min(2));
+    }
+    seal(&mut blob, attenuation, source, channel_nodes());
     blob
 }
 
@@ -243,7 +373,7 @@ pub fn encode(tables: &DualTables, attenuation: Attenuation, source: u64) -> [u8
 pub(super) fn checksum_of(blob: &[u8]) -> u64 {
     let mut copy = [0u8; HEADER_LEN];
     copy.copy_from_slice(&blob[..HEADER_LEN]);
-    copy[CHECKSUM_AT..].fill(0);
+    copy[CHECKSUM_AT..CHECKSUM_AT + 8].fill(0);
     // The header with its checksum field zeroed, then the body.
     fnv1a64_continue(fnv1a64(&copy), &blob[HEADER_LEN..])
 }
@@ -257,14 +387,22 @@ impl DualLut {
     pub const EMPTY: DualLut = DualLut {
         attenuation: Attenuation::Coat,
         source: 0,
-        nodes: [[[0.0; 4]; FIELDS]; THETA_NODES],
-        n_g: [[[[0.0; 4]; PHI_NODES]; THETA_NODES]; FAMILY_COUNT],
-        coat: [[[0.0; 4]; 2]; THETA_NODES],
+        default: Absorption::LOSSLESS,
+        default_at: DualColour {
+            node: [0; 3],
+            w: [0.0; 3],
+        },
+        sqrt_nodes: [0.0; ABS_NODES],
+        nodes: [[[0.0; FIELDS]; THETA_NODES]; ABS_NODES],
+        n_g: [[[[0.0; PHI_NODES]; THETA_NODES]; FAMILY_COUNT]; ABS_NODES],
+        coat: [[[0.0; 2]; THETA_NODES]; ABS_NODES],
     };
 
     /// Reads a `.furdual` blob into `self` after checking all of it: length, magic, format and
-    /// model versions, layout, attenuation, checksum, and every value (finite; log₂ μ ≤ 0;
-    /// widths, energies, ā_f² ∈ [0, 1] and N^G ≥ 0). On error `self` is left as it was.
+    /// model versions, layout (the absorption axis's node count included), attenuation,
+    /// checksum, the preset colour (σ_ca in [0, [`SIGMA_CA_MAX`]]), and every value (finite;
+    /// log₂ μ ≤ 0; widths, energies, ā_f² ∈ [0, 1] and N^G ≥ 0). On error `self` is left as it
+    /// was.
     ///
     /// # Errors
     /// The first check that fails, as a [`DualError`].
@@ -288,32 +426,51 @@ impl DualLut {
             word(bytes, 20),
             word(bytes, 24),
             word(bytes, 28),
+            word(bytes, 36),
         ];
-        let expected = [THETA_NODES, PHI_NODES, FAMILY_COUNT, FIELDS].map(|v| v as u32);
-        if dims != expected || word(bytes, 36) != 0 || bytes[48..56].iter().any(|&b| b != 0) {
+        let expected = [THETA_NODES, PHI_NODES, FAMILY_COUNT, FIELDS, ABS_NODES].map(|v| v as u32);
+        if dims != expected
+            || bytes[48..56].iter().any(|&b| b != 0)
+            || bytes[COLOUR_AT + 12..HEADER_LEN].iter().any(|&b| b != 0)
+        {
             return Err(DualError::Layout);
         }
         let code = word(bytes, 32);
         let Some(attenuation) = Attenuation::from_code(code) else {
             return Err(DualError::Attenuation(code));
         };
-        let stored =
-            u64::from_le_bytes(bytes[CHECKSUM_AT..HEADER_LEN].try_into().unwrap_or([0; 8]));
+        let stored = u64::from_le_bytes(
+            bytes[CHECKSUM_AT..CHECKSUM_AT + 8]
+                .try_into()
+                .unwrap_or([0; 8]),
+        );
         if stored != checksum_of(bytes) {
             return Err(DualError::Checksum);
         }
+        let colour = Rgb([0, 1, 2].map(|c| f32::from_bits(word(bytes, COLOUR_AT + 4 * c))));
+        if colour
+            .0
+            .iter()
+            .any(|&v| !(v.is_finite() && (0.0..=SIGMA_CA_MAX).contains(&v)))
+        {
+            return Err(DualError::Colour);
+        }
+        let Ok(default) = Absorption::from_sigma(colour) else {
+            return Err(DualError::Colour);
+        };
         let half = |i: usize| {
             let at = HEADER_LEN + 2 * i;
             half::f16::from_bits(u16::from_le_bytes([bytes[at], bytes[at + 1]])).to_f32()
         };
         // Check every value before writing any.
-        for i in 0..FIELD_HALVES + NG_HALVES {
+        for i in 0..ABS_NODES * NODE_HALVES {
             let v = half(i);
+            let within = i % NODE_HALVES;
             let ok = v.is_finite()
-                && if i >= FIELD_HALVES {
+                && if within >= FIELD_HALVES {
                     v >= 0.0
                 } else {
-                    match (i / 3) % FIELDS {
+                    match within % FIELDS {
                         LOG2_DECAY => v <= 0.0,
                         A_F2 => (0.0..=1.0).contains(&v),
                         BETA_F | BACK | FRONT | SIGMA_B0 => v >= 0.0,
@@ -327,35 +484,44 @@ impl DualLut {
         }
         self.attenuation = attenuation;
         self.source = u64::from_le_bytes(bytes[40..48].try_into().unwrap_or([0; 8]));
+        self.default = default;
+        self.sqrt_nodes = sqrt_nodes();
+        self.default_at = DualColour::locate(colour, &self.sqrt_nodes);
         let mut i = 0;
-        for node in self.nodes.iter_mut() {
-            for field in node.iter_mut() {
-                for lane in field.iter_mut().take(3) {
-                    *lane = half(i);
+        for a in 0..ABS_NODES {
+            for node in self.nodes[a].iter_mut() {
+                for field in node.iter_mut() {
+                    *field = half(i);
                     i += 1;
                 }
-                field[3] = 0.0;
             }
-        }
-        for (node, coat) in self.nodes.iter().zip(self.coat.iter_mut()) {
-            for c in 0..4 {
-                let (rho2, r_rho) = node_coat(node[LOG2_DECAY][c], node[A_F2][c]);
-                coat[RHO2][c] = rho2;
-                coat[R_RHO][c] = r_rho;
+            for (node, coat) in self.nodes[a].iter().zip(self.coat[a].iter_mut()) {
+                let (rho2, r_rho) = node_coat(node[LOG2_DECAY], node[A_F2]);
+                coat[RHO2] = rho2;
+                coat[R_RHO] = r_rho;
             }
-        }
-        for family in self.n_g.iter_mut() {
-            for row in family.iter_mut() {
-                for texel in row.iter_mut() {
-                    for lane in texel.iter_mut().take(3) {
-                        *lane = half(i);
+            for family in self.n_g[a].iter_mut() {
+                for row in family.iter_mut() {
+                    for texel in row.iter_mut() {
+                        *texel = half(i);
                         i += 1;
                     }
-                    texel[3] = 0.0;
                 }
             }
         }
         Ok(())
+    }
+
+    /// The preset's own colour recorded in the blob: what [`DualLut::eval`] evaluates.
+    #[must_use]
+    pub fn absorption(&self) -> Absorption {
+        self.default
+    }
+
+    /// `absorption` located on the blob's absorption axis, for [`DualLut::eval_located`].
+    #[must_use]
+    pub fn locate(&self, absorption: &Absorption) -> DualColour {
+        DualColour::locate(absorption.sigma(), &self.sqrt_nodes)
     }
 
     /// The attenuation the blob was made for.

@@ -2,11 +2,13 @@
 //! (docs/model.md §13), channels in the lanes of `[f32; 4]` rows so that the per-channel work
 //! (lerps, the six Gaussians) runs as straight-line lane loops.
 
+use super::blob::DualColour;
 use super::blob::{
     A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, RHO2, R_RHO, SD, SIGMA_B0,
 };
 use super::coat::{backscatter_factor, downward_flux, power_of_decay};
-use super::{theta_position, Density, DualLut, Fibers, MIN_VARIANCE, PHI_NODES};
+use super::{theta_position, Density, DualLut, Fibers, MIN_VARIANCE, PHI_NODES, THETA_NODES};
+use crate::absorption::Absorption;
 use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::FAMILY_COUNT;
 use crate::math::{
@@ -20,11 +22,6 @@ type Lanes = [f32; 4];
 
 /// Lanes of the spread term's Gaussians: four per family and four for the backscatter.
 const SPREAD_LANES: usize = 4 * (FAMILY_COUNT + 1);
-
-#[inline(always)]
-fn lerp(a: &Lanes, b: &Lanes, w: f32) -> Lanes {
-    core::array::from_fn(|c| a[c] + (b[c] - a[c]) * w)
-}
 
 /// The weights of the corners (k, j), (k, j + 1), (k + 1, j), (k + 1, j + 1) of a bilinear
 /// lookup at fractions `w` (θ) and `v` (φ).
@@ -63,26 +60,75 @@ pub(super) fn gauss_reachable<const L: usize>(d: &[f32; L], v: &[f32; L], ti: f3
 }
 
 impl DualLut {
-    /// Field `f` at θ (linear between nodes, clamped to the end nodes; NaN reads node 0).
+    /// Field `f` at θ and the located colour (per channel: linear between the θ nodes,
+    /// clamped to the end nodes, NaN reads node 0; then linear between the channel's two
+    /// absorption nodes). Lane 3 is 0.
     #[inline(always)]
-    fn field(&self, (k, w): (usize, f32), f: usize) -> Lanes {
-        lerp(&self.nodes[k][f], &self.nodes[k + 1][f], w)
+    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
+    fn field(&self, col: &DualColour, (k, w): (usize, f32), f: usize) -> Lanes {
+        let mut out = [0.0f32; 4];
+        for c in 0..3 {
+            let (a, wa) = (col.node[c], col.w[c]);
+            let (lo, hi) = (&self.nodes[a], &self.nodes[a + 1]);
+            let v0 = lo[k][f] + (lo[k + 1][f] - lo[k][f]) * w;
+            let v1 = hi[k][f] + (hi[k + 1][f] - hi[k][f]) * w;
+            out[c] = v0 + (v1 - v0) * wa;
+        }
+        out
     }
 
-    /// Derived coat quantity `q` ([`RHO2`] or [`R_RHO`]) at θ, linear between the nodes' values
+    /// Derived coat quantity `q` ([`RHO2`] or [`R_RHO`]) at θ and the colour, interpolated
     /// like [`DualLut::field`].
     #[inline(always)]
-    fn coat(&self, (k, w): (usize, f32), q: usize) -> Lanes {
-        lerp(&self.coat[k][q], &self.coat[k + 1][q], w)
+    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
+    fn coat(&self, col: &DualColour, (k, w): (usize, f32), q: usize) -> Lanes {
+        let mut out = [0.0f32; 4];
+        for c in 0..3 {
+            let (a, wa) = (col.node[c], col.w[c]);
+            let (lo, hi) = (&self.coat[a], &self.coat[a + 1]);
+            let v0 = lo[k][q] + (lo[k + 1][q] - lo[k][q]) * w;
+            let v1 = hi[k][q] + (hi[k + 1][q] - hi[k][q]) * w;
+            out[c] = v0 + (v1 - v0) * wa;
+        }
+        out
     }
 
     /// N^G of family `g` at θ node `k` and |φ| node `j` (bilinear with the corner weights
-    /// `w`, which [`bilinear_weights`] computes once for the four families).
+    /// `w`, which [`bilinear_weights`] computes once for the four families), then linear
+    /// between each channel's two absorption nodes.
     #[inline(always)]
-    fn n_g(&self, g: usize, k: usize, j: usize, w: &[f32; 4]) -> Lanes {
-        let t = &self.n_g[g];
-        let (a, b, c, d) = (&t[k][j], &t[k][j + 1], &t[k + 1][j], &t[k + 1][j + 1]);
-        core::array::from_fn(|l| w[0] * a[l] + w[1] * b[l] + w[2] * c[l] + w[3] * d[l])
+    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
+    fn n_g(&self, col: &DualColour, g: usize, k: usize, j: usize, w: &[f32; 4]) -> Lanes {
+        let mut out = [0.0f32; 4];
+        for c in 0..3 {
+            let (a, wa) = (col.node[c], col.w[c]);
+            let at = |t: &[[f32; PHI_NODES]; THETA_NODES]| {
+                w[0] * t[k][j] + w[1] * t[k][j + 1] + w[2] * t[k + 1][j] + w[3] * t[k + 1][j + 1]
+            };
+            let v0 = at(&self.n_g[a][g]);
+            let v1 = at(&self.n_g[a + 1][g]);
+            out[c] = v0 + (v1 - v0) * wa;
+        }
+        out
+    }
+
+    /// [`DualLut::eval_located`] at the preset's own colour ([`DualLut::absorption`]).
+    #[must_use]
+    pub fn eval(&self, angles: &Angles, fibers: Fibers, density: Density) -> Rgb {
+        self.eval_located(angles, fibers, density, &self.default_at)
+    }
+
+    /// [`DualLut::eval_located`] at colour `absorption` (each RGB channel reads the
+    /// absorption axis at its own σ_ca).
+    #[must_use]
+    pub fn eval_at(
+        &self,
+        angles: &Angles,
+        fibers: Fibers,
+        density: Density,
+        absorption: &Absorption,
+    ) -> Rgb {
+        self.eval_located(angles, fibers, density, &self.locate(absorption))
     }
 
     /// The dual-scattering term to add to single scattering (docs/model.md §13), RGB, in S's
@@ -109,10 +155,21 @@ impl DualLut {
     ///   (θ_i ∈ [−π/2, π/2]; the mass kept at or above 0.05), so that each lobe returns its
     ///   stored energy.
     ///
+    /// Every quantity is read at the located colour `colour` ([`DualLut::locate`]): each RGB
+    /// channel interpolates its node quantities linearly along the absorption axis (in
+    /// [`crate::lut::absorption_coordinate`]) at its own σ_ca.
+    ///
     /// Contract: the counts as in [`Fibers`]; the density factors as in [`Density`]. The
     /// result is finite and ≥ 0 for every input; nothing panics or allocates.
     #[must_use]
-    pub fn eval(&self, angles: &Angles, fibers: Fibers, density: Density) -> Rgb {
+    pub fn eval_located(
+        &self,
+        angles: &Angles,
+        fibers: Fibers,
+        density: Density,
+        colour: &DualColour,
+    ) -> Rgb {
+        let col = colour;
         let (n, m) = fibers.sanitized();
         let (d_f, d_b) = density.sanitized();
         let (ti, tr, phi) = (angles.theta_i(), angles.theta_r(), angles.phi());
@@ -123,20 +180,20 @@ impl DualLut {
         let here = theta_position(tr);
         let abs_phi = wrap_angle(phi).abs();
         let back_half = abs_phi < 0.5 * PI;
-        let stored = self.field(here, if back_half { BACK } else { FRONT });
+        let stored = self.field(col, here, if back_half { BACK } else { FRONT });
         // The coat below at θ_r: m layers instead of the semi-infinite stack.
-        let log2_mu_here = self.field(here, LOG2_DECAY);
-        let a_f2 = self.field(here, A_F2);
-        let rho2_here = self.coat(here, RHO2);
-        let r_rho_here = self.coat(here, R_RHO);
+        let log2_mu_here = self.field(col, here, LOG2_DECAY);
+        let a_f2 = self.field(col, here, A_F2);
+        let rho2_here = self.coat(col, here, RHO2);
+        let r_rho_here = self.coat(col, here, R_RHO);
         // Lane loops, not `array::from_fn` closures: those were left as calls per lane.
         let mut half = [0.0f32; 4];
         for c in 0..4 {
             let mu_2m = power_of_decay(log2_mu_here[c], 2.0 * m);
             half[c] = stored[c] * backscatter_factor(r_rho_here[c], rho2_here[c], mu_2m);
         }
-        let sigma_b0 = self.field(here, SIGMA_B0);
-        let delta = self.field(here, DELTA_B);
+        let sigma_b0 = self.field(col, here, SIGMA_B0);
+        let delta = self.field(col, here, DELTA_B);
         let d_back: Lanes = core::array::from_fn(|c| x - delta[c]);
         let v_back: Lanes = core::array::from_fn(|c| {
             let s = (1.0 + d_b * a_f2[c]) * sigma_b0[c];
@@ -153,9 +210,9 @@ impl DualLut {
         }
         if n > 0.0 {
             let along = theta_position(-ti);
-            let log2_mu = self.field(along, LOG2_DECAY);
-            let rho2 = self.coat(along, RHO2);
-            let beta_f = self.field(along, BETA_F);
+            let log2_mu = self.field(col, along, LOG2_DECAY);
+            let rho2 = self.coat(col, along, RHO2);
+            let beta_f = self.field(col, along, BETA_F);
             let mut spread = [0.0f32; 4];
             for c in 0..4 {
                 let mu_n = power_of_decay(log2_mu[c], n);
@@ -178,8 +235,8 @@ impl DualLut {
                 let mut d = [0.0f32; SPREAD_LANES];
                 let mut v = [0.0f32; SPREAD_LANES];
                 for g in 0..FAMILY_COUNT {
-                    let mean = self.field(here, MEAN + g);
-                    let sd = self.field(here, SD + g);
+                    let mean = self.field(col, here, MEAN + g);
+                    let sd = self.field(col, here, SD + g);
                     for c in 0..4 {
                         d[4 * g + c] = x - mean[c];
                         v[4 * g + c] = sd[c] * sd[c] + s2f[c];
@@ -192,7 +249,7 @@ impl DualLut {
                 let gv = gauss_reachable(&d, &v, ti);
                 let mut f_s = [0.0f32; 4];
                 for g in 0..FAMILY_COUNT {
-                    let ng = self.n_g(g, here.0, j, &corners);
+                    let ng = self.n_g(col, g, here.0, j, &corners);
                     for c in 0..4 {
                         f_s[c] += ng[c] * gv[4 * g + c];
                     }
@@ -241,7 +298,24 @@ impl DualLut {
         fibers: Fibers,
         density: Density,
     ) -> Result<Rgb, AngleError> {
+        self.try_eval_dirs_located(wi, wr, tangent, fibers, density, &self.default_at)
+    }
+
+    /// [`DualLut::try_eval_dirs`] at a located colour ([`DualLut::locate`]), the value of
+    /// [`DualLut::eval_located`].
+    ///
+    /// # Errors
+    /// The [`AngleError`] of the direction-to-angle conversion.
+    pub fn try_eval_dirs_located(
+        &self,
+        wi: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+        fibers: Fibers,
+        density: Density,
+        colour: &DualColour,
+    ) -> Result<Rgb, AngleError> {
         let [ti, tr, phi] = polynomial_angles::<Libm>(wi, wr, tangent)?;
-        Ok(self.eval(&Angles::new(ti, tr, phi)?, fibers, density))
+        Ok(self.eval_located(&Angles::new(ti, tr, phi)?, fibers, density, colour))
     }
 }

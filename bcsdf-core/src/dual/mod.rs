@@ -22,7 +22,10 @@ mod tables;
 #[cfg(test)]
 mod tests;
 
-pub use blob::{encode, DualError, DualLut, BLOB_LEN, DUAL_FORMAT_VERSION, DUAL_MAGIC, FIELDS};
+pub use blob::{
+    encode, encode_axis, DualColour, DualError, DualLut, ABS_NODES, BLOB_LEN, DUAL_FORMAT_VERSION,
+    DUAL_MAGIC, FIELDS,
+};
 pub use tables::{Quadrature, MAX_PHI_STEPS};
 
 use crate::lobes::FAMILY_COUNT;

@@ -144,7 +144,7 @@ int main(int argc, char **argv) {
     }
     init_queries();
     bytes = read_file(argv[1], &len);
-    /* 150 KiB each: on the heap, zeroed (= FUR_DUAL_INIT). */
+    /* 586 KiB each: on the heap, zeroed (= FUR_DUAL_INIT). */
     dual = (fur_dual *)calloc(1, sizeof(fur_dual));
     other = (fur_dual *)calloc(1, sizeof(fur_dual));
     copy = bytes ? (unsigned char *)malloc(len + 64) : NULL;
@@ -153,7 +153,7 @@ int main(int argc, char **argv) {
         return 2;
     }
     EXPECT(len == FUR_DUAL_BLOB_LEN);
-    EXPECT(sizeof(fur_dual) == 153600);
+    EXPECT(sizeof(fur_dual) == 600000);
     memcpy(copy, bytes, len);
 
     /* Open from a heap copy, then free the copy: nothing is borrowed (Valgrind and ASan see
@@ -176,7 +176,7 @@ int main(int argc, char **argv) {
                 for (k = 0; k < N_DENSITY; k++) {
                     fur_status st;
                     rgb[0] = rgb[1] = rgb[2] = -1.0f;
-                    st = fur_eval_dual(dual, TI[i], TR[i], PH[i], FIBERS[f], BELOW[b], DF[k], DB[k],
+                    st = fur_eval_dual(dual, TI[i], TR[i], PH[i], FIBERS[f], BELOW[b], DF[k], DB[k], NULL,
                                        rgb);
                     printf("dual %u %u %u %u %d %08x %08x %08x\n", (unsigned)i, (unsigned)f,
                            (unsigned)b, (unsigned)k, (int)st, bits(rgb[0]), bits(rgb[1]),
@@ -188,7 +188,7 @@ int main(int argc, char **argv) {
                 fur_status st;
                 rgb[0] = rgb[1] = rgb[2] = -1.0f;
                 st = fur_eval_dual_dirs(dual, WI[i], WR[i], WT[i], DIR_FIBERS[f], DIR_BELOW[b], 1.0f,
-                                        1.0f, rgb);
+                                        1.0f, NULL, rgb);
                 printf("dualdirs %u %u %u %d %08x %08x %08x\n", (unsigned)i, (unsigned)f,
                        (unsigned)b, (int)st, bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
             }
@@ -196,20 +196,36 @@ int main(int argc, char **argv) {
     {
         float a[3], b[3];
         memcpy(other, dual, sizeof *dual);
-        EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, a) == FUR_OK);
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, b) == FUR_OK);
+        EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, NULL, a) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, NULL, b) == FUR_OK);
         EXPECT(memcmp(a, b, sizeof a) == 0);
         EXPECT(a[0] > 0.0f || a[1] > 0.0f || a[2] > 0.0f);
         /* The coat below matters: a point on the skin (0 below) gets less back from it than
          * one over a semi-infinite coat; NaN below is the semi-infinite coat. */
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 0.0f, 1.0f, 1.0f, a) == FUR_OK);
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, INFINITY, 1.0f, 1.0f, b) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 0.0f, 1.0f, 1.0f, NULL, a) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, INFINITY, 1.0f, 1.0f, NULL, b) == FUR_OK);
         EXPECT(a[0] < b[0] && a[1] < b[1] && a[2] < b[2]);
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, NAN, 1.0f, 1.0f, a) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, NAN, 1.0f, 1.0f, NULL, a) == FUR_OK);
         EXPECT(memcmp(a, b, sizeof a) == 0);
         EXPECT(fur_dual_close(other) == FUR_OK);
         EXPECT(is_zero(other));
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, b) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, NULL, b) == FUR_OK);
+        /* The colour: the preset's own sigma_ca (the blob's header, bytes 64..76) is what
+         * NULL evaluates, bit for bit; another colour gives another value; a NaN or negative
+         * channel is refused with zeros written. */
+        {
+            float own[3], dark[3] = {50.0f, 80.0f, 200.0f}, bad[3] = {0.1f, NAN, 0.2f};
+            memcpy(own, bytes + 64, sizeof own);
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, NULL, a) == FUR_OK);
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, own, b) == FUR_OK);
+            EXPECT(memcmp(a, b, sizeof a) == 0);
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, dark, b) == FUR_OK);
+            EXPECT(memcmp(a, b, sizeof a) != 0);
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, bad, b) == FUR_ERR_COLOUR &&
+                   b[0] == 0.0f && b[1] == 0.0f && b[2] == 0.0f);
+            bad[1] = -1.0f;
+            EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, bad, b) == FUR_ERR_COLOUR);
+        }
     }
 
     /* NULL arguments for every function. */
@@ -218,32 +234,32 @@ int main(int argc, char **argv) {
     EXPECT(fur_dual_open(copy, len, NULL) == FUR_ERR_NULL);
     EXPECT(fur_dual_open(copy, 0, other) == FUR_ERR_LENGTH);
     EXPECT(fur_dual_close(NULL) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual(NULL, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(NULL, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(dual, NULL, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(dual, wi, NULL, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(dual, wi, wr, NULL, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NULL);
-    EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual(NULL, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, NULL) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(NULL, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(dual, NULL, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(dual, wi, NULL, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(dual, wi, wr, NULL, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NULL);
+    EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, NULL) == FUR_ERR_NULL);
 
     /* Misaligned pointers. */
-    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, misaligned) == FUR_ERR_ALIGNMENT);
-    EXPECT(fur_eval_dual_dirs(dual, misaligned, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_ALIGNMENT);
+    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, misaligned) == FUR_ERR_ALIGNMENT);
+    EXPECT(fur_eval_dual_dirs(dual, misaligned, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_ALIGNMENT);
     EXPECT(fur_eval_dual(( const fur_dual *)((const char *)dual + 4), 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f,
-                         1.0f, rgb) == FUR_ERR_ALIGNMENT);
+                         1.0f, NULL, rgb) == FUR_ERR_ALIGNMENT);
     EXPECT(fur_dual_open(copy, len, (fur_dual *)(void *)((char *)other + 4)) == FUR_ERR_ALIGNMENT);
     EXPECT(fur_dual_close((fur_dual *)(void *)((char *)other + 4)) == FUR_ERR_ALIGNMENT);
 
     /* Bad angles and directions: 0 written. */
     rgb[0] = -1.0f;
-    EXPECT(fur_eval_dual(dual, 2.0f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_ANGLE && rgb[0] == 0.0f);
+    EXPECT(fur_eval_dual(dual, 2.0f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_ANGLE && rgb[0] == 0.0f);
     rgb[0] = -1.0f;
-    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, INFINITY, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_ANGLE &&
+    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, INFINITY, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_ANGLE &&
            rgb[0] == 0.0f);
     {
         const float zero[3] = {0.0f, 0.0f, 0.0f};
         rgb[0] = -1.0f;
-        EXPECT(fur_eval_dual_dirs(dual, zero, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_DIRECTION &&
+        EXPECT(fur_eval_dual_dirs(dual, zero, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_DIRECTION &&
                rgb[0] == 0.0f);
     }
 
@@ -252,14 +268,14 @@ int main(int argc, char **argv) {
     {
         float v[4] = {0.3f, 0.8f, 0.2f, 0.0f};
         unsigned char *big = (unsigned char *)malloc(sizeof(fur_dual) + len);
-        EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f,
+        EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL,
                              (float *)opaque(&dual->_opaque[100])) == FUR_ERR_OVERLAP);
-        EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f,
+        EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL,
                                   (float *)opaque(&dual->_opaque[FUR_DUAL_WORDS - 1])) ==
                FUR_ERR_OVERLAP);
-        EXPECT(fur_eval_dual_dirs(dual, v, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, (float *)opaque(v + 1)) ==
+        EXPECT(fur_eval_dual_dirs(dual, v, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, (float *)opaque(v + 1)) ==
                FUR_ERR_OVERLAP);
-        EXPECT(fur_eval_dual_dirs(dual, wi, wr, v, 1.0f, 2.5f, 1.0f, 1.0f, (float *)opaque(v + 2)) ==
+        EXPECT(fur_eval_dual_dirs(dual, wi, wr, v, 1.0f, 2.5f, 1.0f, 1.0f, NULL, (float *)opaque(v + 2)) ==
                FUR_ERR_OVERLAP);
         EXPECT(v[0] == 0.3f && v[1] == 0.8f && v[2] == 0.2f && v[3] == 0.0f);
         if (!big) return 2;
@@ -269,34 +285,34 @@ int main(int argc, char **argv) {
         EXPECT(memcmp(big + sizeof(fur_dual) - 8, bytes, len) == 0);
         free(big);
         /* The fur_dual still evaluates. */
-        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_OK);
+        EXPECT(fur_eval_dual(dual, TI[0], TR[0], PH[0], 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_OK);
     }
 
     /* Never opened: calloc'd, FUR_DUAL_INIT, 0xa5-filled. */
     memset(other, 0, sizeof *other);
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
     {
         static fur_dual init = FUR_DUAL_INIT;
-        EXPECT(fur_eval_dual(&init, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
-        EXPECT(fur_eval_dual_dirs(&init, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_eval_dual(&init, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
+        EXPECT(fur_eval_dual_dirs(&init, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
     }
     memset(other, 0xa5, sizeof *other);
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
-    EXPECT(fur_eval_dual_dirs(other, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual_dirs(other, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
 
     /* Another build's fur_dual: word 1 holds the build tag; a changed check word (3) or
      * source (2) is not an open fur_dual. */
     memcpy(other, dual, sizeof *dual);
     other->_opaque[1] ^= 1u;
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_OTHER_BUILD);
-    EXPECT(fur_eval_dual_dirs(other, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_OTHER_BUILD);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_OTHER_BUILD);
+    EXPECT(fur_eval_dual_dirs(other, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_OTHER_BUILD);
     other->_opaque[1] ^= 1u;
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_OK);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_OK);
     other->_opaque[3] ^= 1u;
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
     other->_opaque[3] ^= 1u;
     other->_opaque[2] ^= 1u;
-    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
     EXPECT(fur_dual_close(other) == FUR_OK);
     EXPECT(is_zero(other));
 
@@ -307,7 +323,7 @@ int main(int argc, char **argv) {
         memcpy(other, dual, sizeof *dual);                      \
         EXPECT(fur_dual_open(copy, (n), other) == (status));    \
         EXPECT(is_zero(other));                                 \
-        EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN); \
+        EXPECT(fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN); \
         memcpy(copy, bytes, len);                               \
     } while (0)
     REFUSED(len - 1, FUR_ERR_DUAL_LENGTH);
@@ -329,17 +345,21 @@ int main(int argc, char **argv) {
     REFUSED(len, FUR_ERR_DUAL_CHECKSUM);
     /* A NaN half (0x7e00, little-endian) in the first field, resealed: the checksum holds,
      * the value check refuses it. Then a positive log2 of the decay (1.0 = 0x3c00). */
-    copy[64] = 0x00, copy[65] = 0x7e;
+    copy[80] = 0x00, copy[81] = 0x7e;
     reseal(copy, len);
     REFUSED(len, FUR_ERR_DUAL_INVALID);
-    copy[64] = 0x00, copy[65] = 0x3c;
+    copy[80] = 0x00, copy[81] = 0x3c;
+    reseal(copy, len);
+    REFUSED(len, FUR_ERR_DUAL_INVALID);
+    /* A NaN preset colour (sigma_ca R, f32 at bytes 64..68), resealed. */
+    copy[66] = 0xc0, copy[67] = 0x7f;
     reseal(copy, len);
     REFUSED(len, FUR_ERR_DUAL_INVALID);
     /* The unchanged copy opens (the reseal is right), and evaluates like the first. */
     reseal(copy, len);
     EXPECT(memcmp(copy, bytes, len) == 0);
     EXPECT(fur_dual_open(copy, len, other) == FUR_OK);
-    EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_OK);
+    EXPECT(fur_eval_dual(other, TI[0], TR[0], PH[0], 2.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_OK);
     EXPECT(fur_dual_close(other) == FUR_OK);
 
     /* Pairing with LUTs (fur_dual_check_lut): the LUT the blob was computed from, another
@@ -405,7 +425,7 @@ int main(int argc, char **argv) {
         }
         st = fur_dual_open(copy, n, other);
         if (st >= FUR_ERR_DUAL_LENGTH && st <= FUR_ERR_DUAL_INVALID &&
-            fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN)
+            fur_eval_dual(other, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN)
             refused++;
         else if (n == 0 && st == FUR_ERR_LENGTH)
             refused++;
@@ -416,8 +436,8 @@ int main(int argc, char **argv) {
     /* Closed: refused, and reads nothing else. */
     EXPECT(fur_dual_close(dual) == FUR_OK);
     EXPECT(is_zero(dual));
-    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
-    EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual(dual, 0.1f, 0.2f, 0.3f, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
+    EXPECT(fur_eval_dual_dirs(dual, wi, wr, t, 1.0f, 2.5f, 1.0f, 1.0f, NULL, rgb) == FUR_ERR_NOT_OPEN);
     EXPECT(fur_dual_close(dual) == FUR_OK);
 
     free(copy);

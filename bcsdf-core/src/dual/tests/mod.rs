@@ -355,5 +355,6 @@ fn the_local_backscatter_is_zinkes_series() {
 }
 
 mod attenuation;
+mod axis;
 mod coat;
 mod stored;

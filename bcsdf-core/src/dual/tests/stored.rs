@@ -19,20 +19,21 @@ fn the_blob_round_trips_to_half_precision() {
         let f = &t.fiber[k];
         for c in 0..3 {
             let mu = coat_decay(Attenuation::Coat, f.a_f[c], f.a_b[c]);
-            let got = libm::exp2f(lut.nodes[k][blob::LOG2_DECAY][c]);
+            let got = libm::exp2f(lut.nodes[c][k][blob::LOG2_DECAY]);
             assert!((got - mu).abs() < 1e-3 * mu, "μ {got} vs {mu}");
             let (back, front) =
                 local_backscatter(Attenuation::Coat, f.big_a_b[c], f.a_f[c], f.a_b[c]);
-            assert!((lut.nodes[k][blob::BACK][c] - back).abs() <= 5e-4 * back);
-            assert!((lut.nodes[k][blob::FRONT][c] - front).abs() <= 5e-4 * front);
-            assert_eq!(lut.nodes[k][blob::BACK][3], 0.0);
+            assert!((lut.nodes[c][k][blob::BACK] - back).abs() <= 5e-4 * back);
+            assert!((lut.nodes[c][k][blob::FRONT] - front).abs() <= 5e-4 * front);
         }
         let ng = t.n_g[0][k][5][1];
-        assert!((lut.n_g[0][k][5][1] - ng).abs() <= 5e-4 * ng);
+        assert!((lut.n_g[1][0][k][5] - ng).abs() <= 5e-4 * ng);
+        // Nodes 3 and up repeat channel 2.
+        assert_eq!(lut.n_g[ABS_NODES - 1][0][k][5], lut.n_g[2][0][k][5]);
     }
     // Forward stores μ = ā_f.
     let fwd = lut_of(&t, Attenuation::Forward);
-    assert!((libm::exp2f(fwd.nodes[3][blob::LOG2_DECAY][0]) - 0.6).abs() < 1e-3);
+    assert!((libm::exp2f(fwd.nodes[0][3][blob::LOG2_DECAY]) - 0.6).abs() < 1e-3);
 }
 
 #[test]
@@ -66,15 +67,30 @@ fn a_damaged_blob_is_refused_and_leaves_the_evaluator_alone() {
     b[50] = 1;
     cases.push((b, DualError::Layout));
     let mut b = good.to_vec();
+    b[36] = 17; // n_abs
+    cases.push((b, DualError::Layout));
+    let mut b = good.to_vec();
+    b[77] = 1;
+    cases.push((b, DualError::Layout));
+    let mut b = good.to_vec();
     b[32] = 3;
     cases.push((b, DualError::Attenuation(3)));
+    // Sealed but a hostile preset colour: NaN, negative, above the axis.
+    for v in [f32::NAN, -1.0, 1000.5] {
+        let mut b = good.to_vec();
+        b[68..72].copy_from_slice(&v.to_le_bytes());
+        reseal(&mut b);
+        cases.push((b, DualError::Colour));
+    }
     let mut b = good.to_vec();
     b[1000] ^= 1;
     cases.push((b, DualError::Checksum));
     // Sealed but hostile values: a NaN, an infinity, a negative width, ā_f² above 1, a
     // positive log₂ μ, a negative N^G.
-    let field = |k: usize, f: usize, c: usize| (k * FIELDS + f) * 3 + c;
-    let ng0 = THETA_NODES * FIELDS * 3;
+    // Channel c is absorption node c ([`encode`]); a node is its fields, then its N^G.
+    let node = THETA_NODES * FIELDS + FAMILY_COUNT * THETA_NODES * PHI_NODES;
+    let field = |k: usize, f: usize, c: usize| c * node + k * FIELDS + f;
+    let ng0 = (ABS_NODES - 1) * node + THETA_NODES * FIELDS;
     for (i, bits) in [
         (field(4, blob::MEAN, 1), 0x7e00u16),
         (field(4, blob::DELTA_B, 0), 0x7c00),
@@ -84,7 +100,7 @@ fn a_damaged_blob_is_refused_and_leaves_the_evaluator_alone() {
         (ng0 + 77, 0x8001),
     ] {
         let mut b = good.to_vec();
-        b[64 + 2 * i..66 + 2 * i].copy_from_slice(&bits.to_le_bytes());
+        b[80 + 2 * i..82 + 2 * i].copy_from_slice(&bits.to_le_bytes());
         reseal(&mut b);
         cases.push((b, DualError::Value(i)));
     }
@@ -165,8 +181,8 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
     };
     let lerp_at = |theta: f32, f: usize, c: usize| {
         let (k, w) = theta_position(theta);
-        f64::from(lut.nodes[k][f][c]) * f64::from(1.0 - w)
-            + f64::from(lut.nodes[k + 1][f][c]) * f64::from(w)
+        f64::from(lut.nodes[c][k][f]) * f64::from(1.0 - w)
+            + f64::from(lut.nodes[c][k + 1][f]) * f64::from(w)
     };
     // (R_k, T_k) of k layers by the adding recursion.
     let stack = |t: f64, r: f64, k: u32| {
@@ -204,8 +220,8 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
             let (k, w) = theta_position(tr);
             let p = f64::from(phi) * (PHI_NODES - 1) as f64 / pi;
             let (j, v) = (p as usize, p - p.floor());
-            let tab = &lut.n_g[fam];
-            let at = |kk: usize, jj: usize| f64::from(tab[kk][jj][c]);
+            let tab = &lut.n_g[c][fam];
+            let at = |kk: usize, jj: usize| f64::from(tab[kk][jj]);
             let ng = (at(k, j) * (1.0 - v) + at(k, j + 1) * v) * f64::from(1.0 - w)
                 + (at(k + 1, j) * (1.0 - v) + at(k + 1, j + 1) * v) * f64::from(w);
             let mean = lerp_at(tr, blob::MEAN + fam, c);

@@ -20,10 +20,10 @@
 mod common;
 
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::dual::axis_node;
 use bcsdf_core::dual::{
     encode_axis, Attenuation, Density, DualLut, DualTables, Fibers, Quadrature, ABS_NODES, BLOB_LEN,
 };
-use bcsdf_core::lut::absorption_node;
 use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
 use bcsdf_core::{presets, Absorption, Angles, Rgb};
@@ -110,7 +110,7 @@ fn colour(k: usize) -> [f32; 3] {
     for (ch, v) in c.iter_mut().enumerate() {
         let u = r.uniform();
         *v = if k.is_multiple_of(7) {
-            absorption_node(1 + (u * (ABS_NODES - 1) as f32) as usize, ABS_NODES as u32)
+            axis_node(1 + (u * (ABS_NODES - 1) as f32) as usize)
         } else if k.is_multiple_of(11) && ch == 0 {
             1000.0 + 5000.0 * u
         } else {

@@ -2,8 +2,8 @@
 //! each θ node, derived from [`DualTables`] for one [`Attenuation`], as little-endian f16.
 //!
 //! Format 2 (the absorption axis): one grey (one-channel) set of tables per node of an
-//! absorption axis of [`ABS_NODES`] nodes at σ_ca = [`crate::lut::absorption_node`]`(k,
-//! ABS_NODES)`, the node positions of the LUT's axis at its default resolution. Layout
+//! absorption axis of [`ABS_NODES`] nodes at σ_ca = [`axis_node`]`(k)` (the dual tables' own
+//! axis, σ/(σ + 3) up to σ_ca = 1000). Layout
 //! ([`BLOB_LEN`] = 292 944 bytes):
 //!
 //! | bytes | content |
@@ -32,11 +32,39 @@ use super::{coat_decay, local_backscatter, Attenuation, DualTables, PHI_NODES, T
 use crate::absorption::Absorption;
 use crate::baked::BakedBcsdf;
 use crate::lobes::FAMILY_COUNT;
-use crate::lut::{absorption_coordinate, absorption_node, SIGMA_CA_MAX};
+use crate::lut::SIGMA_CA_MAX;
 use crate::lut::{fnv1a64, fnv1a64_continue};
 use crate::math::Math;
 use crate::spectrum::Rgb;
 use core::fmt;
+
+/// The knee of the dual tables' absorption axis (per fiber radius): σ_ca sits at
+/// σ/(σ + 3), normalised to 1 at σ_ca = [`SIGMA_CA_MAX`] (the WGSL's `fur_dual_locate`
+/// mirrors it). The dual tables' own axis, independent of the LUT's (docs/model.md §13).
+const AXIS_KNEE: f64 = 3.0;
+
+/// The position of σ_ca on the dual tables' absorption axis, in [0, 1]: (σ/(σ + 3)) /
+/// (1000/1003); NaN and negatives give 0, above 1000 gives 1.
+#[must_use]
+pub fn axis_coordinate(sigma: f32) -> f32 {
+    #[allow(clippy::manual_clamp)]
+    let s = sigma.max(0.0).min(SIGMA_CA_MAX);
+    let max = SIGMA_CA_MAX / (SIGMA_CA_MAX + AXIS_KNEE as f32);
+    (s / (s + AXIS_KNEE as f32) / max).min(1.0)
+}
+
+/// σ_ca of node `k` of the dual tables' axis ([`ABS_NODES`] nodes): the inverse of
+/// [`axis_coordinate`] at k/(n − 1) in f64; node 0 is 0, the last node exactly 1000.
+#[must_use]
+pub fn axis_node(k: usize) -> f32 {
+    let last = ABS_NODES - 1;
+    if k >= last {
+        return SIGMA_CA_MAX;
+    }
+    let max = f64::from(SIGMA_CA_MAX) / (f64::from(SIGMA_CA_MAX) + AXIS_KNEE);
+    let v = k as f64 / last as f64 * max;
+    (AXIS_KNEE * v / (1.0 - v)) as f32
+}
 
 /// The first eight bytes of a `.furdual` blob.
 pub const DUAL_MAGIC: [u8; 8] = *b"FURDUAL\0";
@@ -188,12 +216,12 @@ const NODE_SNAP: f32 = 1e-4;
 
 /// √σ_ca of each absorption node ([`absorption_node`]), the interpolation variable.
 fn sqrt_nodes() -> [f32; ABS_NODES] {
-    core::array::from_fn(|k| libm::sqrtf(absorption_node(k, ABS_NODES as u32)))
+    core::array::from_fn(|k| libm::sqrtf(axis_node(k)))
 }
 
 impl DualColour {
     /// σ_ca per channel on the axis of [`ABS_NODES`] nodes whose √σ are `sqrt_nodes`: the
-    /// cell by [`absorption_coordinate`] (the LUT's mapping), the weight linear in √σ within
+    /// cell by [`axis_coordinate`], the weight linear in √σ within
     /// the cell (measured against linear in the coordinate: the dual quantities of a nearly
     /// lossless fiber go as √σ, docs in the module's tests). NaN and negative channels read
     /// node 0, large ones the last node.
@@ -201,7 +229,7 @@ impl DualColour {
         let last = (ABS_NODES - 1) as f32;
         let mut at = DualColour::default();
         for c in 0..3 {
-            let u = (absorption_coordinate(sigma.0[c]) * last).clamp(0.0, last);
+            let u = (axis_coordinate(sigma.0[c]) * last).clamp(0.0, last);
             let mut k = (u as usize).min(ABS_NODES - 2);
             #[allow(clippy::manual_clamp)] // NaN → 0
             let s = libm::sqrtf(sigma.0[c].max(0.0).min(SIGMA_CA_MAX));
@@ -341,7 +369,7 @@ pub fn encode_axis<F: FnMut(f32, &mut DualTables)>(
     default: Absorption,
 ) {
     for a in 0..ABS_NODES {
-        tables_at(absorption_node(a, ABS_NODES as u32), tables);
+        tables_at(axis_node(a), tables);
         put_node(blob, a, tables, attenuation, 0);
     }
     seal(blob, attenuation, source, default);
@@ -349,7 +377,7 @@ pub fn encode_axis<F: FnMut(f32, &mut DualTables)>(
 
 /// The preset colour [`encode`] records: channel c at absorption node c.
 fn channel_nodes() -> Absorption {
-    let s = Rgb([0, 1, 2].map(|c| absorption_node(c, ABS_NODES as u32)));
+    let s = Rgb([0, 1, 2].map(|c| axis_node(c)));
     Absorption::from_sigma(s).unwrap_or(Absorption::LOSSLESS)
 }
 

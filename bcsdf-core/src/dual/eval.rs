@@ -157,7 +157,7 @@ impl DualLut {
     ///
     /// Every quantity is read at the located colour `colour` ([`DualLut::locate`]): each RGB
     /// channel interpolates its node quantities linearly along the absorption axis (in
-    /// [`crate::lut::absorption_coordinate`]) at its own σ_ca.
+    /// [`super::axis_coordinate`]) at its own σ_ca.
     ///
     /// Contract: the counts as in [`Fibers`]; the density factors as in [`Density`]. The
     /// result is finite and ≥ 0 for every input; nothing panics or allocates.

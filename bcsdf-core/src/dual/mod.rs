@@ -23,8 +23,8 @@ mod tables;
 mod tests;
 
 pub use blob::{
-    encode, encode_axis, DualColour, DualError, DualLut, ABS_NODES, BLOB_LEN, DUAL_FORMAT_VERSION,
-    DUAL_MAGIC, FIELDS,
+    axis_coordinate, axis_node, encode, encode_axis, DualColour, DualError, DualLut, ABS_NODES,
+    BLOB_LEN, DUAL_FORMAT_VERSION, DUAL_MAGIC, FIELDS,
 };
 pub use tables::{Quadrature, MAX_PHI_STEPS};
 

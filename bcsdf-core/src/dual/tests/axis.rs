@@ -5,8 +5,8 @@
 extern crate std;
 use super::*;
 use crate::absorption::Absorption;
+use crate::dual::blob::axis_node;
 use crate::frame::Angles;
-use crate::lut::absorption_node;
 use crate::params::{FurParams, FurParamsInput};
 use crate::presets;
 use crate::rng::Pcg32;
@@ -39,7 +39,7 @@ fn node_tables() -> Vec<Box<DualTables>> {
     (0..ABS_NODES)
         .map(|k| {
             let mut t = Box::new(DualTables::ZERO);
-            tables_at(Rgb::splat(absorption_node(k, ABS_NODES as u32)), &mut t);
+            tables_at(Rgb::splat(axis_node(k)), &mut t);
             t
         })
         .collect()
@@ -81,7 +81,7 @@ fn random_query(rng: &mut Pcg32) -> (Angles, Fibers) {
 fn the_axis_reads_each_channel_at_its_own_node() {
     let nodes = node_tables();
     let full = axis_lut(&nodes, |k| k);
-    let sigma_of = |k: usize| absorption_node(k, ABS_NODES as u32);
+    let sigma_of = |k: usize| axis_node(k);
     let mut rng = Pcg32::new(11, 5);
     let mut compared = 0;
     for (kr, kg, kb) in [(0, 0, 0), (3, 3, 3), (7, 2, 12), (15, 9, 1), (5, 14, 15)] {
@@ -119,7 +119,7 @@ fn between_nodes_the_term_is_within_the_measured_interpolation_error() {
     let mut rng = Pcg32::new(29, 3);
     let mut direct = Box::new(DualTables::ZERO);
     // Worst per-channel relative L1, in the first cell (σ below node 1) and above it.
-    let first = absorption_node(1, ABS_NODES as u32);
+    let first = axis_node(1);
     let (mut worst_first, mut worst_rel) = (0.0f64, 0.0f64);
     let (mut sum_abs, mut sum_ref) = (0.0f64, 0.0f64);
     for trial in 0..12 {

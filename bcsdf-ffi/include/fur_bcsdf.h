@@ -528,7 +528,7 @@ float fur_pdf_far(const struct fur_lut *FUR_RESTRICT lut, float theta_i, float t
  *
  * ```c
  * float sigma[3], rgb[3];
- * fur_sigma_from_melanin(0.4f, 1.5f, sigma);          /* a ginger strand */
+ * fur_sigma_from_melanin(0.4f, 1.5f, sigma); // a ginger strand
  * fur_eval_far_at(&lut, sigma, 0.5f, -0.35f, 0.785f, rgb);
  * ```
  *

@@ -316,7 +316,7 @@ fn with_colour(regions: [Region; 2], sigma_ca: *const f32) -> [Region; 3] {
 ///
 /// ```c
 /// float sigma[3], rgb[3];
-/// fur_sigma_from_melanin(0.4f, 1.5f, sigma);          /* a ginger strand */
+/// fur_sigma_from_melanin(0.4f, 1.5f, sigma); // a ginger strand
 /// fur_eval_far_at(&lut, sigma, 0.5f, -0.35f, 0.785f, rgb);
 /// ```
 ///

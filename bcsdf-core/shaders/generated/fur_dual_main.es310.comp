@@ -22,10 +22,17 @@ struct FurLoc {
     uint i;
     float w;
 };
+struct FurColour {
+    uvec3 plane;
+    vec3 w0_;
+    vec3 w1_;
+    vec3 w2_;
+};
 struct FurLookups {
     float m[3];
     float ms[2];
     float n[12];
+    float n0_[4];
     float front;
     float inv_cos2_;
 };
@@ -37,8 +44,7 @@ struct FurDensity {
     float step_;
     uint block;
     uint table;
-    uint first;
-    uint channels;
+    uint channel;
 };
 struct FurDirAngles {
     float theta_i;
@@ -86,8 +92,15 @@ const float FUR_HALF_PI = 1.5707964;
 const float FUR_TAU = 6.2831855;
 const float FUR_MIN_COS2_ = 0.0001;
 const float FUR_POLE_SLIVER = 0.010000167;
-const uint FUR_HEADER_HALVES = 80u;
-const uint FUR_CLOSURE_WORD = 26u;
+const uint FUR_HEADER_HALVES = 84u;
+const uint FUR_N_ABS_WORD = 9u;
+const uint FUR_SCALE_WORD = 10u;
+const uint FUR_ABS_SCALE_WORD = 39u;
+const float FUR_SIGMA_CA_MAX = 1000.0;
+const float FUR_LOG2_E = 1.442695;
+const float FUR_LN2_HI = 0.6933594;
+const float FUR_LN2_LO = -0.00021219444;
+const uint FUR_CLOSURE_WORD = 27u;
 const uint FUR_DUAL_HEADER_WORDS = 16u;
 const uint FUR_DUAL_FIELDS = 15u;
 const uint FUR_DUAL_LOG2_DECAY = 0u;
@@ -110,9 +123,6 @@ const float FUR_DUAL_MIN_VARIANCE = 3e-6;
 const float FUR_DUAL_MIN_MASS = 0.05;
 const float FUR_DUAL_TINY = 1e-6;
 const float FUR_LN2_ = 0.6931472;
-const float FUR_LOG2_E = 1.442695;
-const float FUR_LN2_HI = 0.6933594;
-const float FUR_LN2_LO = -0.00021219444;
 const float FUR_INV_SQRT_TAU = 0.3989423;
 const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
 const float FUR_ERF_A1_ = 0.07052308;
@@ -124,9 +134,9 @@ const float FUR_ERF_A6_ = 4.30638e-5;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_17_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_19_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_18_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_20_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -136,14 +146,39 @@ FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
 
 FurLoc fur_locate(FurAxis a, float x) {
     float u_7 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
-    int i = min(int(u_7), (int(a.nodes) - 2));
-    return FurLoc(uint(i), (u_7 - float(i)));
+    int i_1 = min(int(u_7), (int(a.nodes) - 2));
+    return FurLoc(uint(i_1), (u_7 - float(i_1)));
 }
 
-float fur_cos_within_half_pi(float x_1) {
+bvec3 fur_is_nan3_(vec3 x_1) {
+    return greaterThan((floatBitsToUint(x_1) & uvec3(2147483647u)), uvec3(2139095040u));
+}
+
+vec3 fur_exp_neg(vec3 x_in) {
+    vec3 p = vec3(0.00019875693);
+    vec3 x_15 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_14 = roundEven((x_15 * FUR_LOG2_E));
+    vec3 r_13 = (((k_14 * FUR_LN2_HI) - x_15) + (k_14 * FUR_LN2_LO));
+    vec3 z = (r_13 * r_13);
+    vec3 _e20 = p;
+    p = ((_e20 * r_13) + vec3(0.0013981999));
+    vec3 _e25 = p;
+    p = ((_e25 * r_13) + vec3(0.008333452));
+    vec3 _e30 = p;
+    p = ((_e30 * r_13) + vec3(0.041665796));
+    vec3 _e35 = p;
+    p = ((_e35 * r_13) + vec3(0.16666666));
+    vec3 _e40 = p;
+    p = ((_e40 * r_13) + vec3(0.5));
+    vec3 _e45 = p;
+    vec3 e = (((_e45 * z) + r_13) + vec3(1.0));
+    return mix(ldexp(e, -(ivec3(k_14))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+}
+
+float fur_cos_within_half_pi(float x_2) {
     float acc = -2.755732e-7;
     float acc_1 = 2.7557319e-6;
-    float a_4 = abs(x_1);
+    float a_4 = abs(x_2);
     if ((a_4 <= 0.7853982)) {
         float y_3 = (a_4 * a_4);
         float _e7 = acc;
@@ -157,8 +192,8 @@ float fur_cos_within_half_pi(float x_1) {
         float _e23 = acc;
         return ((_e23 * y_3) + 1.0);
     }
-    float r_13 = ((1.5707964 - a_4) + ((a_4 > 4.0) ? 0.0 : -4.371139e-8));
-    float y_4 = (r_13 * r_13);
+    float r_14 = ((1.5707964 - a_4) + ((a_4 > 4.0) ? 0.0 : -4.371139e-8));
+    float y_4 = (r_14 * r_14);
     float _e38 = acc_1;
     acc_1 = ((_e38 * y_4) - 0.0001984127);
     float _e42 = acc_1;
@@ -166,43 +201,43 @@ float fur_cos_within_half_pi(float x_1) {
     float _e46 = acc_1;
     acc_1 = ((_e46 * y_4) - 0.16666667);
     float _e50 = acc_1;
-    return (((_e50 * y_4) * r_13) + r_13);
+    return (((_e50 * y_4) * r_14) + r_14);
 }
 
-float fur_wrap_angle(float x_2) {
+float fur_wrap_angle(float x_3) {
     bool local = false;
     bool local_1 = false;
     bool local_2 = false;
     float y = 0.0;
     bool local_3 = false;
-    if ((x_2 > -3.1415927)) {
-        local = (x_2 <= FUR_PI);
+    if ((x_3 > -3.1415927)) {
+        local = (x_3 <= FUR_PI);
     } else {
         local = false;
     }
     bool _e8 = local;
     if (_e8) {
-        return x_2;
+        return x_3;
     }
-    if ((x_2 > FUR_PI)) {
-        local_1 = (x_2 <= 9.424778);
+    if ((x_3 > FUR_PI)) {
+        local_1 = (x_3 <= 9.424778);
     } else {
         local_1 = false;
     }
     bool _e16 = local_1;
     if (_e16) {
-        return (x_2 - FUR_TAU);
+        return (x_3 - FUR_TAU);
     }
-    if ((x_2 <= -3.1415927)) {
-        local_2 = (x_2 > -9.424778);
+    if ((x_3 <= -3.1415927)) {
+        local_2 = (x_3 > -9.424778);
     } else {
         local_2 = false;
     }
     bool _e26 = local_2;
     if (_e26) {
-        return (x_2 + FUR_TAU);
+        return (x_3 + FUR_TAU);
     }
-    y = (x_2 - (FUR_TAU * floor(((x_2 + FUR_PI) / FUR_TAU))));
+    y = (x_3 - (FUR_TAU * floor(((x_3 + FUR_PI) / FUR_TAU))));
     float _e38 = y;
     if ((_e38 <= -3.1415927)) {
         float _e41 = y;
@@ -229,12 +264,12 @@ float fur_wrap_angle(float x_2) {
 }
 
 FurFamilies fur_zero() {
-    vec3 z = vec3(0.0);
-    return FurFamilies(z, z, z, z, z);
+    vec3 z_1 = vec3(0.0);
+    return FurFamilies(z_1, z_1, z_1, z_1, z_1);
 }
 
-bool fur_finite(float x_3) {
-    return ((floatBitsToUint(x_3) & 2139095040u) != 2139095040u);
+bool fur_finite(float x_4) {
+    return ((floatBitsToUint(x_4) & 2139095040u) != 2139095040u);
 }
 
 bool fur_valid(float theta_i, float theta_r, float phi) {
@@ -277,7 +312,7 @@ uint fur_entries(uint nodes_1, uint block) {
 }
 
 FurFamilies fur_assemble(FurLookups l) {
-    vec3 f[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    vec3 f_2[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint k_1 = 0u;
     float mss = (l.ms[0] + (l.front * (l.ms[1] - l.ms[0])));
     float lon[4] = float[4](l.m[0], l.m[1], l.m[2], mss);
@@ -300,22 +335,22 @@ FurFamilies fur_assemble(FurLookups l) {
             uint _e32 = k_1;
             uint _e37 = k_1;
             uint _e44 = k_1;
-            f[_e28] = (vec3(l.n[(3u * _e32)], l.n[((3u * _e37) + 1u)], l.n[((3u * _e44) + 2u)]) * weight);
+            f_2[_e28] = (vec3(l.n[(3u * _e32)], l.n[((3u * _e37) + 1u)], l.n[((3u * _e44) + 2u)]) * weight);
         }
     }
-    vec3 _e55 = f[0];
-    vec3 _e57 = f[1];
-    vec3 _e59 = f[2];
-    vec3 _e61 = f[3];
-    vec3 _e63 = f[0];
-    vec3 _e65 = f[1];
-    vec3 _e68 = f[2];
-    vec3 _e71 = f[3];
+    vec3 _e55 = f_2[0];
+    vec3 _e57 = f_2[1];
+    vec3 _e59 = f_2[2];
+    vec3 _e61 = f_2[3];
+    vec3 _e63 = f_2[0];
+    vec3 _e65 = f_2[1];
+    vec3 _e68 = f_2[2];
+    vec3 _e71 = f_2[3];
     return FurFamilies(_e55, _e57, _e59, _e61, (((_e63 + _e65) + _e68) + _e71));
 }
 
-float fur_asin(float x_4) {
-    float ax_3 = min(abs(x_4), 1.0);
+float fur_asin(float x_5) {
+    float ax_3 = min(abs(x_5), 1.0);
     float x2_ = (ax_3 * ax_3);
     float x4_ = (x2_ * x2_);
     float p01_ = ((-0.001262491 * ax_3) + 0.00667009);
@@ -323,8 +358,8 @@ float fur_asin(float x_4) {
     float p45_ = ((-0.050174303 * ax_3) + 0.08897899);
     float p67_ = ((-0.2145988 * ax_3) + FUR_HALF_PI);
     float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
-    float r_14 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
-    return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_14)) : abs(r_14));
+    float r_15 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
+    return (((floatBitsToUint(x_5) & 2147483648u) != 0u) ? -(abs(r_15)) : abs(r_15));
 }
 
 float fur_atan_poly(float t_1) {
@@ -337,9 +372,9 @@ float fur_atan_poly(float t_1) {
     return ((((p01_1 * t2_) + p23_1) * t4_) + ((p45_1 * t2_) + p67_1));
 }
 
-float fur_atan2_(float y_1, float x_5) {
+float fur_atan2_(float y_1, float x_6) {
     float r = 0.0;
-    float ax_4 = abs(x_5);
+    float ax_4 = abs(x_6);
     float ay = abs(y_1);
     float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
     float t_11 = (a_5 * a_5);
@@ -350,7 +385,7 @@ float fur_atan2_(float y_1, float x_5) {
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
     float _e21 = r;
     float _e23 = r;
-    r = ((x_5 < 0.0) ? (FUR_PI - _e23) : _e21);
+    r = ((x_6 < 0.0) ? (FUR_PI - _e23) : _e21);
     float _e28 = r;
     float _e29 = r;
     return (((floatBitsToUint(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28);
@@ -407,8 +442,8 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_5 = dot(un, cross(wi, wr));
-    float x_15 = (dot(wi, wr) - (a_6 * b_3));
-    float _e64 = fur_atan2_(y_5, x_15);
+    float x_16 = (dot(wi, wr) - (a_6 * b_3));
+    float _e64 = fur_atan2_(y_5, x_16);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -466,7 +501,7 @@ float fur_weighted_linear_mass(float v0_2, float v1_2, float a_1, float b, float
 }
 
 float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, float len_3, float t_3) {
-    float x_6 = 0.5;
+    float x_7 = 0.5;
     bool local_14 = false;
     float lo = 0.0;
     float hi = 1.0;
@@ -493,7 +528,7 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
     bool _e39 = local_14;
     if (_e39) {
         float _e43 = fur_invert_linear(q0_, q1_, 1.0, (goal * (lin / total_1)));
-        x_6 = _e43;
+        x_7 = _e43;
     }
     bool loop_init_1 = true;
     while(true) {
@@ -508,25 +543,25 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
             break;
         }
         {
-            float _e53 = x_6;
-            float _e54 = x_6;
-            float _e57 = x_6;
+            float _e53 = x_7;
+            float _e54 = x_7;
+            float _e57 = x_7;
             float fx = ((_e53 * (q0_ + (_e54 * ((0.5 * cb) + ((_e57 * 0.33333334) * cc))))) - goal);
             if ((fx > 0.0)) {
-                float _e68 = x_6;
+                float _e68 = x_7;
                 hi = _e68;
             } else {
-                float _e69 = x_6;
+                float _e69 = x_7;
                 lo = _e69;
             }
-            float _e70 = x_6;
-            float _e71 = x_6;
+            float _e70 = x_7;
+            float _e71 = x_7;
             float d_7 = (q0_ + (_e70 * (cb + (_e71 * cc))));
             float _e76 = lo;
             float _e77 = hi;
             next = (0.5 * (_e76 + _e77));
             if ((d_7 > 0.0)) {
-                float _e84 = x_6;
+                float _e84 = x_7;
                 float n_1 = (_e84 - (fx / d_7));
                 float _e87 = lo;
                 if ((n_1 >= _e87)) {
@@ -541,16 +576,16 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
                 }
             }
             float _e95 = next;
-            float _e96 = x_6;
+            float _e96 = x_7;
             bool done = (abs((_e95 - _e96)) <= 1.2e-7);
             float _e101 = next;
-            x_6 = _e101;
+            x_7 = _e101;
             if (done) {
                 break;
             }
         }
     }
-    float _e105 = x_6;
+    float _e105 = x_7;
     float s_1 = clamp((_e105 * len_3), 0.0, len_3);
     float inset_1 = (len_3 * 9.536743e-7);
     if ((q0_ <= 0.0)) {
@@ -611,8 +646,8 @@ float fur_unit(float u_2) {
 }
 
 float fur_pole_keep(float cos_theta_i) {
-    float c_1 = max(cos_theta_i, 1e-6);
-    return min(((c_1 * c_1) * 10000.0), 1.0);
+    float c_2 = max(cos_theta_i, 1e-6);
+    return min(((c_2 * c_2) * 10000.0), 1.0);
 }
 
 float fur_sliver_keep(float s_in) {
@@ -704,8 +739,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_4 = (_e35 - t_6);
-            if ((f_4 > 0.0)) {
+            float f_6 = (_e35 - t_6);
+            if ((f_6 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -721,7 +756,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_2 = (_e57 - (f_4 / dens));
+                float n_2 = (_e57 - (f_6 / dens));
                 float _e60 = lo_2;
                 if ((n_2 >= _e60)) {
                     float _e64 = hi_1;
@@ -768,16 +803,12 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
     if (!((w_2 > 0.0))) {
         return 0.0;
     }
-    float mean0_ = (((l_3.n[0] + l_3.n[1]) + l_3.n[2]) * 0.33333334);
-    float mean1_ = (((l_3.n[3] + l_3.n[4]) + l_3.n[5]) * 0.33333334);
-    float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
-    float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p_3 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
-    float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p_3 * _e70);
-    float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
-    return _e76;
+    float p_3 = ((((l_3.m[0] * l_3.n0_[0]) + (l_3.m[1] * l_3.n0_[1])) + (l_3.m[2] * l_3.n0_[2])) + (ms_1 * l_3.n0_[3]));
+    float _e38 = fur_pole_keep(cos_theta_i_1);
+    float pg = (p_3 * _e38);
+    float _e44 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
+    return _e44;
 }
 
 float fur_dual_half(uint h_1) {
@@ -793,12 +824,8 @@ vec3 fur_dual_rgb(uint h_2) {
     return vec3(_e1, _e4, _e7);
 }
 
-bool fur_is_nan(float x_9) {
-    return ((floatBitsToUint(x_9) & 2147483647u) > 2139095040u);
-}
-
-bvec3 fur_is_nan3_(vec3 x_10) {
-    return greaterThan((floatBitsToUint(x_10) & uvec3(2147483647u)), uvec3(2139095040u));
+bool fur_is_nan(float x_10) {
+    return ((floatBitsToUint(x_10) & 2147483647u) > 2139095040u);
 }
 
 FurLoc fur_dual_theta(float theta) {
@@ -810,31 +837,31 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_14 = min(uint(_e17), 62u);
+    uint k_15 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_14, (_e21 - float(k_14)));
+    return FurLoc(k_15, (_e21 - float(k_15)));
 }
 
-vec3 fur_dual_node(uint k_9, uint f_1) {
-    vec3 _e7 = fur_dual_rgb((3u * ((k_9 * FUR_DUAL_FIELDS) + f_1)));
+vec3 fur_dual_node(uint k_9, uint f_3) {
+    vec3 _e7 = fur_dual_rgb((3u * ((k_9 * FUR_DUAL_FIELDS) + f_3)));
     return _e7;
 }
 
-vec3 fur_dual_field(FurLoc l_4, uint f_2) {
-    vec3 _e3 = fur_dual_node(l_4.i, f_2);
-    vec3 _e7 = fur_dual_node((l_4.i + 1u), f_2);
+vec3 fur_dual_field(FurLoc l_4, uint f_4) {
+    vec3 _e3 = fur_dual_node(l_4.i, f_4);
+    vec3 _e7 = fur_dual_node((l_4.i + 1u), f_4);
     return (_e3 + ((_e7 - _e3) * l_4.w));
 }
 
-vec3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p) {
-    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i);
+vec3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p_1) {
+    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p_1.i);
     uint row1_ = (row0_ + FUR_DUAL_PHI_NODES);
     vec3 _e17 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row0_)));
     vec3 _e24 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row0_ + 1u))));
     vec3 _e29 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row1_)));
     vec3 _e36 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row1_ + 1u))));
     float w_4 = l_5.w;
-    float v_3 = p.w;
+    float v_3 = p_1.w;
     return ((((((1.0 - w_4) * (1.0 - v_3)) * _e17) + (((1.0 - w_4) * v_3) * _e24)) + ((w_4 * (1.0 - v_3)) * _e29)) + ((w_4 * v_3) * _e36));
 }
 
@@ -854,27 +881,6 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
     vec3 _e31 = y_2;
     vec3 _e33 = y_2;
     return (_e30 * (vec3(1.5) - ((h_3 * _e31) * _e33)));
-}
-
-vec3 fur_exp_neg(vec3 x_in) {
-    vec3 p_1 = vec3(0.00019875693);
-    vec3 x_16 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_15 = roundEven((x_16 * FUR_LOG2_E));
-    vec3 r_15 = (((k_15 * FUR_LN2_HI) - x_16) + (k_15 * FUR_LN2_LO));
-    vec3 z_1 = (r_15 * r_15);
-    vec3 _e20 = p_1;
-    p_1 = ((_e20 * r_15) + vec3(0.0013981999));
-    vec3 _e25 = p_1;
-    p_1 = ((_e25 * r_15) + vec3(0.008333452));
-    vec3 _e30 = p_1;
-    p_1 = ((_e30 * r_15) + vec3(0.041665796));
-    vec3 _e35 = p_1;
-    p_1 = ((_e35 * r_15) + vec3(0.16666666));
-    vec3 _e40 = p_1;
-    p_1 = ((_e40 * r_15) + vec3(0.5));
-    vec3 _e45 = p_1;
-    vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_15))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
 vec3 fur_erf(vec3 x_11) {
@@ -1096,10 +1102,10 @@ vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fi
     return _e15;
 }
 
-void fur_store(uint q, FurFamilies f_3) {
+void fur_store(uint q, FurFamilies f_5) {
     uint k_12 = 0u;
     uint base = (16u * q);
-    vec3 parts[5] = vec3[5](f_3.r, f_3.tt, f_3.trt, f_3.scattered, f_3.total);
+    vec3 parts[5] = vec3[5](f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {

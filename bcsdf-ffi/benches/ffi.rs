@@ -13,7 +13,7 @@ use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::rng::Pcg32;
-use bcsdf_core::{presets, Angles, FurParams};
+use bcsdf_core::{presets, Absorption, Angles, FurParams, Rgb};
 use bcsdf_ffi::{
     fur_eval_far, fur_eval_far_at, fur_eval_far_batch, fur_eval_far_batch_at, fur_lut_close,
     fur_lut_open, fur_sample, fur_sample_pdf_far, fur_sample_pdf_far_at, fur_status, FUR_LUT_INIT,
@@ -131,6 +131,24 @@ fn bench(c: &mut Criterion) {
                 )
             };
             black_box(st)
+        })
+    });
+    // The core's batch with a colour per query (what fur_eval_far_batch_at calls, 32
+    // queries per call), for the C ABI's share of the cost.
+    let absorptions: Vec<Absorption> = colours
+        .iter()
+        .map(|c| Absorption::from_sigma(Rgb(*c)).unwrap())
+        .collect();
+    let mut rgb_out = vec![Rgb::ZERO; n];
+    c.bench_function("eval_far_batch_colours_256_rust", |b| {
+        b.iter(|| {
+            black_box(rust.eval_far_batch_colours(
+                &ti,
+                &tr,
+                &ph,
+                black_box(&absorptions),
+                &mut rgb_out,
+            ))
         })
     });
     // One path-tracer bounce: a sample and a light's pdf at the same view.

@@ -68,6 +68,9 @@ pub const MAX_DISPATCH: usize = 64 * 16_384;
 /// One far-field result: R, TT, TRT, scattered (RGB each), then the total (RGB).
 pub type GpuFamilies = [f32; 15];
 
+/// One sampling query: θ_r (radians) and three uniform numbers in [0, 1).
+pub type SampleQuery = (f32, [f32; 3]);
+
 /// A GPU result as the CPU's per-family type (the total is recomputed by `Families::total`).
 pub fn families(v: &GpuFamilies) -> bcsdf_core::Families {
     bcsdf_core::Families::from_array(core::array::from_fn(|f| {
@@ -277,7 +280,7 @@ impl GpuLut {
 
     /// Samples for `(theta_r, [u0, u1, u2])` queries at the LUT's own colour; `None` where
     /// nothing could be sampled.
-    pub fn sample(&self, queries: &[(f32, [f32; 3])]) -> Result<Vec<Option<GpuSample>>, GpuError> {
+    pub fn sample(&self, queries: &[SampleQuery]) -> Result<Vec<Option<GpuSample>>, GpuError> {
         self.sample_at(&self.own(queries))
     }
 
@@ -286,7 +289,7 @@ impl GpuLut {
     /// sampled.
     pub fn sample_at(
         &self,
-        queries: &[((f32, [f32; 3]), [f32; 3])],
+        queries: &[(SampleQuery, [f32; 3])],
     ) -> Result<Vec<Option<GpuSample>>, GpuError> {
         let mut out = Vec::with_capacity(queries.len());
         for chunk in queries.chunks(MAX_DISPATCH) {

@@ -24,7 +24,7 @@ use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
 use bcsdf_core::{presets, Absorption, Angles, Bcsdf, Closure, Rgb};
-use bcsdf_gpu::{GpuFamilies, GpuLut};
+use bcsdf_gpu::{GpuFamilies, GpuLut, SampleQuery};
 use common::{or_skip, preset_lut};
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -208,7 +208,7 @@ fn gpu_matches_cpu_for_every_preset() {
         let cq: Vec<([f32; 3], [f32; 3])> = q
             .iter()
             .enumerate()
-            .filter(|&(i, _)| i < 1 << 14 || i >= 1 << 16)
+            .filter(|&(i, _)| !(1 << 14..1 << 16).contains(&i))
             .map(|(i, a)| (*a, random_colour(i as u64)))
             .collect();
         let cpu: Vec<GpuFamilies> = cq
@@ -545,7 +545,7 @@ fn gpu_pdf_and_samples_match_cpu() {
 
         // Samples at random colours: the direction and pdf as at the LUT's own colour, the
         // weight S cos(theta_i)/pdf this colour's, compared where the direction is the CPU's.
-        let csq: Vec<((f32, [f32; 3]), [f32; 3])> = sq
+        let csq: Vec<(SampleQuery, [f32; 3])> = sq
             .iter()
             .enumerate()
             .map(|(i, s)| (*s, random_colour(1 << 21 | i as u64)))
@@ -571,8 +571,8 @@ fn gpu_pdf_and_samples_match_cpu() {
                 && c.family as u32 == x.family;
             same += usize::from(same_dir);
             if same_dir && c.angles.theta_i().abs() <= FRAC_PI_2 - 1e-2 {
-                for k in 0..3 {
-                    wpeak[k] = wpeak[k].max(c.weight.0[k]);
+                for (p, w) in wpeak.iter_mut().zip(c.weight.0) {
+                    *p = p.max(w);
                 }
                 // The CPU's weight at the nudged colours (the same direction: the sampler
                 // does not depend on the colour).

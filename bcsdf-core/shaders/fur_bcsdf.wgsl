@@ -16,6 +16,15 @@
 // phi_i. Invalid input (NaN, |theta| > pi/2, degenerate vectors) gives exactly 0, like the
 // CPU's `eval_far_dirs`.
 //
+// Colour (LUT format 5, docs/lut.md "The absorption axis"): fur_eval_far, fur_eval_far_dirs,
+// fur_pdf_far and fur_sample_far take the query's cortex absorption sigma_ca per RGB channel
+// as a vec3<f32> (per fiber radius; the CPU's `BakedBcsdf::at`). Table N holds n_abs planes,
+// each the four families at one sigma_ca; each channel reads three planes around its own
+// sigma_ca (fur_locate_colour). The LUT's own colour (what the CPU's methods without a colour
+// evaluate) is `BakedBcsdf::absorption()` on the host; validate colours there too
+// (`Absorption::from_sigma`): here NaN and negative channels read as 0 (lossless) and
+// channels above 1000 as 1000.
+//
 // Binding: group 0, binding 0 = the LUT words; binding 3 = the dual-scattering blob's words
 // (`fur_eval_dual`, docs/model.md §13, its section below). The entry points at the end
 // (bindings 1 and 2) serve the tests and `viewer probe --gpu`; an engine includes the
@@ -31,8 +40,15 @@ const FUR_TAU: f32 = 6.28318548;
 const FUR_MIN_COS2: f32 = 1e-4;
 // Width of the pole slivers where that floor acts (model::POLE_SLIVER).
 const FUR_POLE_SLIVER: f32 = 0.010000167;
-// Halves before the first table: the 160-byte header.
-const FUR_HEADER_HALVES: u32 = 80u;
+// Halves before the first table: the 168-byte header (LUT format 5).
+const FUR_HEADER_HALVES: u32 = 84u;
+// Header words: n_abs (byte 36), the first table scale (byte 40), the absorption axis's
+// scale s0 (byte 156, lut::absorption_scale).
+const FUR_N_ABS_WORD: u32 = 9u;
+const FUR_SCALE_WORD: u32 = 10u;
+const FUR_ABS_SCALE_WORD: u32 = 39u;
+// The largest sigma_ca of the absorption axis (lut::SIGMA_CA_MAX).
+const FUR_SIGMA_CA_MAX: f32 = 1000.0;
 
 // The far field per lobe family (R, TT, TRT, scattered), RGB each, and their sum.
 struct FurFamilies {
@@ -87,7 +103,47 @@ fn fur_half(h: u32) -> f32 {
 
 // Table scale x 2^112 of table t (0 M, 1 N, 2 M_s).
 fn fur_unbias(t: u32) -> f32 {
-    return bitcast<f32>(fur_word(9u + t)) * bitcast<f32>((127u + 112u) << 23u);
+    return bitcast<f32>(fur_word(FUR_SCALE_WORD + t)) * bitcast<f32>((127u + 112u) << 23u);
+}
+
+// Halves of one plane of table N (one absorption node): n_phi x n_theta_r texels of 4.
+fn fur_n_plane_halves() -> u32 {
+    return 4u * fur_word(6u) * fur_word(5u);
+}
+
+// Where a colour reads table N (BakedBcsdf::locate_colour): per RGB channel, the texel
+// offset k (n_phi n_theta_r) of the first of its three planes k, k + 1, k + 2 and their
+// quadratic Lagrange weights w0, w1, w2.
+struct FurColour {
+    plane: vec3<u32>,
+    w0: vec3<f32>,
+    w1: vec3<f32>,
+    w2: vec3<f32>,
+}
+
+// Per channel: x = 1 - 0.4 e^(-sqrt(sigma/s_q)) - 0.6 e^(-sigma/s0) (lut::absorption_coordinate,
+// with fur_exp_neg the CPU's exp_neg_saturating; s_q = lut::ABSORPTION_SCALE_ROOT; sigma kept
+// in [0, 1000], NaN 0), u = x (n_abs - 1), k = min(floor u,
+// n_abs - 3), t = u - k, weights (t - 1)(t - 2)/2, t(2 - t), t(t - 1)/2.
+// lut::ABSORPTION_SCALE_ROOT and the root term's share of the axis (lut::ROOT_SHARE).
+const FUR_ABS_SCALE_ROOT: f32 = 0.25;
+const FUR_ROOT_SHARE: f32 = 0.4;
+
+fn fur_locate_colour(sigma_ca: vec3<f32>) -> FurColour {
+    let n_abs = fur_word(FUR_N_ABS_WORD);
+    let last = f32(n_abs - 1u);
+    let scale = bitcast<f32>(fur_word(FUR_ABS_SCALE_WORD));
+    let s = select(min(max(sigma_ca, vec3<f32>(0.0)), vec3<f32>(FUR_SIGMA_CA_MAX)), vec3<f32>(0.0), fur_is_nan3(sigma_ca));
+    let e = FUR_ROOT_SHARE * fur_exp_neg(sqrt(s / FUR_ABS_SCALE_ROOT))
+        + (1.0 - FUR_ROOT_SHARE) * fur_exp_neg(s / scale);
+    let x = min(1.0 - e, vec3<f32>(1.0));
+    let u = clamp(x * last, vec3<f32>(0.0), vec3<f32>(last));
+    let k = min(vec3<u32>(u), vec3<u32>(n_abs - 3u));
+    let t = u - vec3<f32>(k);
+    let w0 = 0.5 * (t - 1.0) * (t - 2.0);
+    let w1 = t * (2.0 - t);
+    let w2 = 0.5 * t * (t - 1.0);
+    return FurColour(k * (fur_word(6u) * fur_word(5u)), w0, w1, w2);
 }
 
 // cos(x) for |x| <= pi/2, the same operations as math::cos_within_half_pi: the Taylor
@@ -153,11 +209,14 @@ fn fur_finite(x: f32) -> bool {
 }
 
 // The table lookups of one query (BakedBcsdf::lookups), for valid angles: M_g(theta_i +
-// theta_r), M^s back and front, the 12 N channels, |phi|/pi and 1/cos^2(theta_i).
+// theta_r), M^s back and front, the 12 N channels at the query's colour (family, then RGB),
+// the four families on the lossless plane (the sampler's density), |phi|/pi and
+// 1/cos^2(theta_i).
 struct FurLookups {
     m: array<f32, 3>,
     ms: array<f32, 2>,
     n: array<f32, 12>,
+    n0: array<f32, 4>,
     front: f32,
     inv_cos2: f32,
 }
@@ -167,7 +226,7 @@ fn fur_valid(theta_i: f32, theta_r: f32, phi: f32) -> bool {
         && abs(theta_i) <= FUR_HALF_PI && abs(theta_r) <= FUR_HALF_PI;
 }
 
-fn fur_lookups(theta_i: f32, theta_r: f32, phi_in: f32) -> FurLookups {
+fn fur_lookups(theta_i: f32, theta_r: f32, phi_in: f32, sigma_ca: vec3<f32>) -> FurLookups {
     let phi = fur_wrap_angle(phi_in);
     let n_sum = fur_word(4u);
     let n_theta_r = fur_word(5u);
@@ -176,7 +235,7 @@ fn fur_lookups(theta_i: f32, theta_r: f32, phi_in: f32) -> FurLookups {
     let n_ms_r = fur_word(8u);
     let m0 = FUR_HEADER_HALVES;
     let n0 = m0 + 3u * n_sum;
-    let s0 = n0 + 12u * n_phi * n_theta_r;
+    let s0 = n0 + fur_n_plane_halves() * fur_word(FUR_N_ABS_WORD);
 
     let abs_phi = abs(phi);
     let c = fur_cos_within_half_pi(theta_i);
@@ -221,7 +280,10 @@ fn fur_lookups(theta_i: f32, theta_r: f32, phi_in: f32) -> FurLookups {
     }
     let front_w = min(abs_phi * (1.0 / FUR_PI), 1.0);
 
-    // N (12 channels: family, then RGB) at (|theta_r|, |phi|): bilinear in table N.
+    // N (12 channels: family, then RGB) at (|theta_r|, |phi|) and the colour: per channel,
+    // bilinear in each of its three planes, the planes weighted quadratically
+    // (texels::n_at_colour: the six rows of the left texels in plane order, the same for the
+    // right texels, then left + right, kept >= 0).
     let lr = fur_locate(fur_axis(false, 1.0 / FUR_HALF_PI, n_theta_r), abs(theta_r));
     let lp = fur_locate(fur_axis(false, 1.0 / FUR_PI, n_phi), abs_phi);
     let kn = fur_unbias(1u);
@@ -232,16 +294,38 @@ fn fur_lookups(theta_i: f32, theta_r: f32, phi_in: f32) -> FurLookups {
     let v2 = ny1 * (1.0 - lp.w);
     let v3 = ny1 * lp.w;
     let j0 = lr.i * n_phi + lp.i;
+    let col = fur_locate_colour(sigma_ca);
+    let plane = fur_n_plane_halves();
     var n: array<f32, 12>;
-    for (var ch = 0u; ch < 12u; ch = ch + 1u) {
-        let t0 = fur_half(n0 + 12u * j0 + ch);
-        let t1 = fur_half(n0 + 12u * (j0 + 1u) + ch);
-        let b0 = fur_half(n0 + 12u * (j0 + n_phi) + ch);
-        let b1 = fur_half(n0 + 12u * (j0 + n_phi + 1u) + ch);
-        n[ch] = v0 * t0 + v1 * t1 + v2 * b0 + v3 * b1;
+    for (var c = 0u; c < 3u; c = c + 1u) {
+        let tw = vec3<f32>(col.w0[c], col.w1[c], col.w2[c]);
+        // Left and right weights of the rows (texels::plane_weights).
+        let l = array<f32, 6>(tw.x * v0, tw.x * v2, tw.y * v0, tw.y * v2, tw.z * v0, tw.z * v2);
+        let r = array<f32, 6>(tw.x * v1, tw.x * v3, tw.y * v1, tw.y * v3, tw.z * v1, tw.z * v3);
+        // First half of each row's left texel: planes k, k + 1, k + 2, rows |theta_r| and the next.
+        let h = n0 + 4u * (col.plane[c] + j0);
+        let rows = array<u32, 6>(h, h + 4u * n_phi, h + plane, h + plane + 4u * n_phi, h + 2u * plane, h + 2u * plane + 4u * n_phi);
+        for (var f = 0u; f < 4u; f = f + 1u) {
+            var left = fur_half(rows[0] + f) * l[0];
+            var right = fur_half(rows[0] + 4u + f) * r[0];
+            for (var i = 1u; i < 6u; i = i + 1u) {
+                left = left + fur_half(rows[i] + f) * l[i];
+                right = right + fur_half(rows[i] + 4u + f) * r[i];
+            }
+            n[3u * f + c] = max(left + right, 0.0);
+        }
+    }
+    // The lossless plane's four families (texels::n_lossless).
+    var nl: array<f32, 4>;
+    for (var f = 0u; f < 4u; f = f + 1u) {
+        let t0 = fur_half(n0 + 4u * j0 + f);
+        let t1 = fur_half(n0 + 4u * (j0 + 1u) + f);
+        let b0 = fur_half(n0 + 4u * (j0 + n_phi) + f);
+        let b1 = fur_half(n0 + 4u * (j0 + n_phi + 1u) + f);
+        nl[f] = v0 * t0 + v1 * t1 + v2 * b0 + v3 * b1;
     }
 
-    return FurLookups(m, ms, n, front_w, inv_cos2);
+    return FurLookups(m, ms, n, nl, front_w, inv_cos2);
 }
 
 // Far-field S per family from the lookups (BakedBcsdf::assemble).
@@ -256,13 +340,13 @@ fn fur_assemble(l: FurLookups) -> FurFamilies {
     return FurFamilies(f[0], f[1], f[2], f[3], ((f[0] + f[1]) + f[2]) + f[3]);
 }
 
-// Far-field S per lobe family (BakedBcsdf::eval_far). theta_i, theta_r in [-pi/2, pi/2], any
-// finite phi; anything else gives 0.
-fn fur_eval_far(theta_i: f32, theta_r: f32, phi: f32) -> FurFamilies {
+// Far-field S per lobe family at colour sigma_ca (BakedBcsdf::at(..).eval_far). theta_i,
+// theta_r in [-pi/2, pi/2], any finite phi; anything else gives 0.
+fn fur_eval_far(theta_i: f32, theta_r: f32, phi: f32, sigma_ca: vec3<f32>) -> FurFamilies {
     if (!fur_valid(theta_i, theta_r, phi)) {
         return fur_zero();
     }
-    return fur_assemble(fur_lookups(theta_i, theta_r, phi));
+    return fur_assemble(fur_lookups(theta_i, theta_r, phi, sigma_ca));
 }
 
 // asin and atan2 as the baked evaluator's direction conversion computes them on the CPU
@@ -345,14 +429,14 @@ fn fur_angles_from_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>) -> FurDirAng
     return FurDirAngles(theta_i, theta_r, abs(fur_atan2(y, x)), true);
 }
 
-// Far-field S from world-space vectors (BakedBcsdf::eval_far_dirs), at the angles of
-// fur_angles_from_dirs; 0 for unusable vectors.
-fn fur_eval_far_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>) -> FurFamilies {
+// Far-field S from world-space vectors at colour sigma_ca (BakedAt::eval_far_dirs), at the
+// angles of fur_angles_from_dirs; 0 for unusable vectors.
+fn fur_eval_far_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>, sigma_ca: vec3<f32>) -> FurFamilies {
     let a = fur_angles_from_dirs(wi, wr, u);
     if (!a.ok) {
         return fur_zero();
     }
-    return fur_eval_far(a.theta_i, a.theta_r, a.phi);
+    return fur_eval_far(a.theta_i, a.theta_r, a.phi, sigma_ca);
 }
 
 // ---- Sampling and pdf (sampling::baked, docs/model.md §10) ----
@@ -380,9 +464,8 @@ struct FurDensity {
     rows: u32,
     step: f32,
     block: u32,
-    table: u32,       // 0 M, 1 N, 2 M_s
-    first: u32,       // first channel
-    channels: u32,    // 1, or 3 (mean of RGB)
+    table: u32,       // 0 M, 1 N (its lossless plane), 2 M_s
+    channel: u32,
 }
 
 // f32 at an even byte offset of the blob.
@@ -406,43 +489,36 @@ fn fur_density(d: u32) -> FurDensity {
     let n_phi = fur_word(6u);
     let n_ms_i = fur_word(7u);
     let n_ms_r = fur_word(8u);
-    let values = 3u * n_sum + 12u * n_phi * n_theta_r + 2u * n_ms_i * n_ms_r;
-    var at = 160u + 2u * values;
+    let values = 3u * n_sum + fur_n_plane_halves() * fur_word(FUR_N_ABS_WORD) + 2u * n_ms_i * n_ms_r;
+    var at = 2u * FUR_HEADER_HALVES + 2u * values;
     let e_m = fur_entries(n_sum, 1u);
     let e_n = fur_entries(n_phi, 8u);
     let e_s = fur_entries(n_ms_i, 8u);
     if (d < 3u) {
-        return FurDensity(at + 4u * d * e_m, e_m, n_sum, 1u, 2.0 * FUR_PI / f32(n_sum - 1u), 1u, 0u, d, 1u);
+        return FurDensity(at + 4u * d * e_m, e_m, n_sum, 1u, 2.0 * FUR_PI / f32(n_sum - 1u), 1u, 0u, d);
     }
     at = at + 4u * 3u * e_m;
     if (d < 7u) {
         let f = d - 3u;
-        return FurDensity(at + 4u * f * n_theta_r * e_n, e_n, n_phi, n_theta_r, FUR_PI / f32(n_phi - 1u), 8u, 1u, 3u * f, 3u);
+        return FurDensity(at + 4u * f * n_theta_r * e_n, e_n, n_phi, n_theta_r, FUR_PI / f32(n_phi - 1u), 8u, 1u, f);
     }
     at = at + 4u * 4u * n_theta_r * e_n;
     if (d < 9u) {
         let x = d - 7u;
-        return FurDensity(at + 4u * x * n_ms_r * e_s, e_s, n_ms_i, n_ms_r, FUR_PI / f32(n_ms_i - 1u), 8u, 2u, x, 1u);
+        return FurDensity(at + 4u * x * n_ms_r * e_s, e_s, n_ms_i, n_ms_r, FUR_PI / f32(n_ms_i - 1u), 8u, 2u, x);
     }
     at = at + 4u * 2u * n_ms_r * e_s;
-    return FurDensity(at, e_n, n_phi, n_theta_r, FUR_PI / f32(n_phi - 1u), 8u, 1u, 9u, 3u);
+    return FurDensity(at, e_n, n_phi, n_theta_r, FUR_PI / f32(n_phi - 1u), 8u, 1u, 3u);
 }
 
-// lut::cdf::Nodes::value: density node value at (row, j).
+// lut::cdf::Nodes::value: density node value at (row, j) (table N: its lossless plane).
 fn fur_node(d: FurDensity, row: u32, j: u32) -> f32 {
-    let n_sum = fur_word(4u);
-    let n_theta_r = fur_word(5u);
-    let n_phi = fur_word(6u);
     let m0 = FUR_HEADER_HALVES;
-    let n0 = m0 + 3u * n_sum;
-    let s0 = n0 + 12u * n_phi * n_theta_r;
+    let n0 = m0 + 3u * fur_word(4u);
+    let s0 = n0 + fur_n_plane_halves() * fur_word(FUR_N_ABS_WORD);
     let starts = array<u32, 3>(m0, n0, s0);
-    let chans = array<u32, 3>(3u, 12u, 2u);
-    let base = starts[d.table] + (row * d.nodes + j) * chans[d.table] + d.first;
-    if (d.channels == 3u) {
-        let sum = fur_half(base) + fur_half(base + 1u) + fur_half(base + 2u);
-        return sum * (fur_unbias(d.table) * (1.0 / 3.0));
-    }
+    let chans = array<u32, 3>(3u, 4u, 2u);
+    let base = starts[d.table] + (row * d.nodes + j) * chans[d.table] + d.channel;
     return fur_half(base) * fur_unbias(d.table);
 }
 
@@ -843,8 +919,8 @@ fn fur_m_cdf(x: f32) -> vec3<f32> {
     return fur_m_at(fur_locate(fur_sum_axis(), x)).cdf;
 }
 
-// Header word of the closure (byte 104, after g): 0 report, 1 energy (docs/model.md §12).
-const FUR_CLOSURE_WORD: u32 = 26u;
+// Header word of the closure (byte 108, after g): 0 report, 1 energy (docs/model.md §12).
+const FUR_CLOSURE_WORD: u32 = 27u;
 
 // Byte offset of the 1/Z_g table (lut::LutResolution::norm_start): the end of the sampling
 // section, i.e. of its last density (the front-weighted N^s).
@@ -927,36 +1003,37 @@ fn fur_parts(theta_r: f32) -> FurParts {
     return FurParts(a, ranges);
 }
 
-// The mixture density per unit solid angle from the lookups and W (BakedBcsdf::density).
+// The mixture density per unit solid angle from the lookups and W (BakedBcsdf::density): the
+// lossless plane's N, the same for every colour.
 fn fur_density_of(l: FurLookups, w: f32, cos_theta_i: f32) -> f32 {
     if (!(w > 0.0)) {
         return 0.0;
     }
-    let mean0 = (l.n[0] + l.n[1] + l.n[2]) * (1.0 / 3.0);
-    let mean1 = (l.n[3] + l.n[4] + l.n[5]) * (1.0 / 3.0);
-    let mean2 = (l.n[6] + l.n[7] + l.n[8]) * (1.0 / 3.0);
-    let mean3 = (l.n[9] + l.n[10] + l.n[11]) * (1.0 / 3.0);
     // M^s's blend exactly as fur_assemble forms it.
     let ms = l.ms[0] + l.front * (l.ms[1] - l.ms[0]);
-    let p = l.m[0] * mean0 + l.m[1] * mean1 + l.m[2] * mean2 + ms * mean3;
+    let p = l.m[0] * l.n0[0] + l.m[1] * l.n0[1] + l.m[2] * l.n0[2] + ms * l.n0[3];
     // S's pole factor g (exactly 1 outside the slivers).
     let pg = p * fur_pole_keep(cos_theta_i);
     return fur_positive((pg / w) / max(cos_theta_i, 1e-6));
 }
 
 // Density per unit solid angle with which fur_sample_far draws omega_i (Bcsdf::pdf); 0 for
-// invalid angles.
-fn fur_pdf_far(theta_i: f32, theta_r: f32, phi: f32) -> f32 {
+// invalid angles. The sampler draws from the lossless plane, so the density is the same at
+// every colour: sigma_ca is taken for the same call shape as the other functions (and
+// BakedAt::pdf), and does not change the result.
+fn fur_pdf_far(theta_i: f32, theta_r: f32, phi: f32, sigma_ca: vec3<f32>) -> f32 {
     if (!fur_valid(theta_i, theta_r, phi)) {
         return 0.0;
     }
     let p = fur_parts(theta_r);
     let w = ((p.a[0] + p.a[1]) + p.a[2] + p.a[3]) + p.a[4];
-    return fur_density_of(fur_lookups(theta_i, theta_r, phi), w, fur_cos_within_half_pi(theta_i));
+    return fur_density_of(fur_lookups(theta_i, theta_r, phi, sigma_ca), w, fur_cos_within_half_pi(theta_i));
 }
 
-// Importance-samples omega_i given theta_r from three uniforms in [0, 1) (Bcsdf::sample).
-fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
+// Importance-samples omega_i given theta_r from three uniforms in [0, 1) at colour sigma_ca
+// (BakedAt::sample): the direction and pdf are the lossless plane's, the weight
+// S cos(theta_i)/pdf this colour's.
+fn fur_sample_far(theta_r: f32, u: vec3<f32>, sigma_ca: vec3<f32>) -> FurSample {
     var out = FurSample(0.0, 0.0, 0.0, vec3<f32>(0.0), 0u, false);
     if (!(fur_finite(theta_r) && abs(theta_r) <= FUR_HALF_PI)) {
         return out;
@@ -1011,7 +1088,7 @@ fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
     }
     let abs_phi = clamp(fur_rows_invert_between(nrows, 0.0, fur_rows_total(nrows), u.z), 0.0, FUR_PI);
     let phi = fur_wrap_angle(select(abs_phi, -abs_phi, negative));
-    let l = fur_lookups(theta_i, theta_r, phi);
+    let l = fur_lookups(theta_i, theta_r, phi, sigma_ca);
     let pdf = fur_density_of(l, total_weight, fur_cos_within_half_pi(theta_i));
     if (!(pdf > 0.0 && fur_finite(pdf))) {
         return out;
@@ -1041,11 +1118,11 @@ fn fur_sample_far(theta_r: f32, u: vec3<f32>) -> FurSample {
 
 // Words of the .furdual header before the first half (format 2).
 const FUR_DUAL_HEADER_WORDS: u32 = 20u;
-// The absorption axis (dual::ABS_NODES nodes at lut::absorption_node): per node one grey
+// The absorption axis (dual::ABS_NODES nodes at dual::axis_node): per node one grey
 // set of tables, its fields (64 x 15 halves) then its N^G (4 x 64 x 32 halves).
 const FUR_DUAL_ABS_NODES: u32 = 16u;
 const FUR_DUAL_NODE_HALVES: u32 = 9152u;
-// lut::ABSORPTION_KNEE and lut::SIGMA_CA_MAX (the LUT's absorption coordinate).
+// The dual tables' own absorption axis (dual::axis_coordinate): knee 3, up to SIGMA_CA_MAX.
 const FUR_DUAL_KNEE: f32 = 3.0;
 const FUR_DUAL_SIGMA_MAX: f32 = 1000.0;
 // Fields per theta node (dual::FIELDS) and their indices (blob.rs): log2 mu (the downward
@@ -1487,9 +1564,9 @@ fn fur_eval_dual_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>, fibers: f32, f
 
 // ---- Entry points for the tests and `viewer probe --gpu` (bindings 1 and 2; 3 for dual) ----
 
-// Queries: (theta_i, theta_r, phi, unused) per evaluation; or, for fur_eval_dirs_main,
-// three vec4 per evaluation (wi, wr, tangent; w unused); the sampling, pdf and
-// dual-scattering layouts at their entry points.
+// Queries: two vec4 per evaluation, (theta_i, theta_r, phi, unused) and (sigma_ca, unused);
+// or, for fur_eval_dirs_main, three vec4 per evaluation (wi, sigma_ca.r), (wr, sigma_ca.g),
+// (tangent, sigma_ca.b); the sampling, pdf and dual-scattering layouts at their entry points.
 @group(0) @binding(1) var<storage, read> fur_queries: array<vec4<f32>>;
 // Results: 16 floats per evaluation: R, TT, TRT, scattered (RGB each), total (RGB), 0.
 @group(0) @binding(2) var<storage, read_write> fur_results: array<f32>;
@@ -1519,11 +1596,11 @@ fn fur_store_rgb(q: u32, v: vec3<f32>) {
 @compute @workgroup_size(64)
 fn fur_eval_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let q = id.x;
-    if (q >= arrayLength(&fur_queries)) {
+    if (2u * q + 1u >= arrayLength(&fur_queries)) {
         return;
     }
-    let a = fur_queries[q];
-    fur_store(q, fur_eval_far(a.x, a.y, a.z));
+    let a = fur_queries[2u * q];
+    fur_store(q, fur_eval_far(a.x, a.y, a.z, fur_queries[2u * q + 1u].xyz));
 }
 
 @compute @workgroup_size(64)
@@ -1532,24 +1609,22 @@ fn fur_eval_dirs_main(@builtin(global_invocation_id) id: vec3<u32>) {
     if (3u * q + 2u >= arrayLength(&fur_queries)) {
         return;
     }
-    let f = fur_eval_far_dirs(
-        fur_queries[3u * q].xyz,
-        fur_queries[3u * q + 1u].xyz,
-        fur_queries[3u * q + 2u].xyz,
-    );
-    fur_store(q, f);
+    let wi = fur_queries[3u * q];
+    let wr = fur_queries[3u * q + 1u];
+    let u = fur_queries[3u * q + 2u];
+    fur_store(q, fur_eval_far_dirs(wi.xyz, wr.xyz, u.xyz, vec3<f32>(wi.w, wr.w, u.w)));
 }
 
-// Sampling queries: (theta_r, u0, u1, u2); results 8 floats: theta_i, phi, pdf, weight RGB,
-// family, ok (1 or 0).
+// Sampling queries: two vec4, (theta_r, u0, u1, u2) and (sigma_ca, unused); results 8 floats:
+// theta_i, phi, pdf, weight RGB, family, ok (1 or 0).
 @compute @workgroup_size(64)
 fn fur_sample_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let q = id.x;
-    if (q >= arrayLength(&fur_queries)) {
+    if (2u * q + 1u >= arrayLength(&fur_queries)) {
         return;
     }
-    let a = fur_queries[q];
-    let s = fur_sample_far(a.x, a.yzw);
+    let a = fur_queries[2u * q];
+    let s = fur_sample_far(a.x, a.yzw, fur_queries[2u * q + 1u].xyz);
     let base = 16u * q;
     fur_results[base] = s.theta_i;
     fur_results[base + 1u] = s.phi;
@@ -1561,15 +1636,16 @@ fn fur_sample_main(@builtin(global_invocation_id) id: vec3<u32>) {
     fur_results[base + 7u] = select(0.0, 1.0, s.ok);
 }
 
-// Pdf queries: (theta_i, theta_r, phi, unused); result: the pdf in the first float.
+// Pdf queries: two vec4, (theta_i, theta_r, phi, unused) and (sigma_ca, unused); result: the
+// pdf in the first float.
 @compute @workgroup_size(64)
 fn fur_pdf_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let q = id.x;
-    if (q >= arrayLength(&fur_queries)) {
+    if (2u * q + 1u >= arrayLength(&fur_queries)) {
         return;
     }
-    let a = fur_queries[q];
-    fur_results[16u * q] = fur_pdf_far(a.x, a.y, a.z);
+    let a = fur_queries[2u * q];
+    fur_results[16u * q] = fur_pdf_far(a.x, a.y, a.z, fur_queries[2u * q + 1u].xyz);
 }
 
 // Dual-scattering queries (bindings 1, 2 and 3): three vec4 per evaluation,

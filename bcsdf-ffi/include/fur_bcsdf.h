@@ -158,7 +158,9 @@ typedef enum fur_status {
    */
   FUR_ERR_DUAL_SOURCE = 20,
   /**
-   * A colour (sigma_ca) channel is NaN or negative; nothing was evaluated (0 written).
+   * A colour is invalid: a sigma_ca channel (or a melanin concentration) is NaN or
+   * negative (valid sigma_ca: [0, 1000] per fiber radius; larger values are clamped to
+   * 1000); the outputs for it are 0.
    */
   FUR_ERR_COLOUR = 21,
 } fur_status;
@@ -186,6 +188,32 @@ typedef enum fur_family {
 } fur_family;
 
 /**
+ * An opened LUT (docs/model.md §8): fixed-size, caller-owned storage (stack, arena, struct
+ * member), no heap. Its contents are private, and only meaningful in the process and the
+ * build of this library that opened it (another build's is refused with
+ * `FUR_ERR_OTHER_BUILD`).
+ *
+ * The contract, as for any C handle:
+ * 1. Initialise before use: `fur_lut l = FUR_LUT_INIT;` (zeroes), or open it at once.
+ *    `fur_lut_open` accepts uninitialised storage; every other function reads it, and
+ *    refuses a zeroed one with `FUR_ERR_NOT_OPEN`.
+ * 2. Open before use: `fur_lut_open(bytes, len, &l)` borrows the bytes.
+ * 3. Close before you free (or change) the bytes: `fur_lut_close(&l)` zeroes `l`, after which
+ *    every call with it returns `FUR_ERR_NOT_OPEN` without reading anything else. A copy
+ *    made by value is another open handle on the same bytes: close it too.
+ *
+ * A `fur_lut` whose bytes were freed without a close, or uninitialised storage, is the
+ * caller's error: no check can tell either from an open `fur_lut`, and using it reads freed
+ * or arbitrary memory.
+ */
+typedef struct fur_lut {
+  /**
+   * Opaque storage (8-byte aligned).
+   */
+  uint64_t _opaque[FUR_LUT_WORDS];
+} fur_lut;
+
+/**
  * Decoded dual-scattering tables (docs/model.md §13): fixed-size, caller-owned storage of
  * `FUR_DUAL_WORDS` 64-bit words (600 000 bytes, about 586 KiB: allocate it on the heap, e.g.
  * `calloc(1, sizeof(fur_dual))`, or in static storage, rather than on a thread's stack).
@@ -211,32 +239,6 @@ typedef struct fur_dual {
    */
   uint64_t _opaque[FUR_DUAL_WORDS];
 } fur_dual;
-
-/**
- * An opened LUT (docs/model.md §8): fixed-size, caller-owned storage (stack, arena, struct
- * member), no heap. Its contents are private, and only meaningful in the process and the
- * build of this library that opened it (another build's is refused with
- * `FUR_ERR_OTHER_BUILD`).
- *
- * The contract, as for any C handle:
- * 1. Initialise before use: `fur_lut l = FUR_LUT_INIT;` (zeroes), or open it at once.
- *    `fur_lut_open` accepts uninitialised storage; every other function reads it, and
- *    refuses a zeroed one with `FUR_ERR_NOT_OPEN`.
- * 2. Open before use: `fur_lut_open(bytes, len, &l)` borrows the bytes.
- * 3. Close before you free (or change) the bytes: `fur_lut_close(&l)` zeroes `l`, after which
- *    every call with it returns `FUR_ERR_NOT_OPEN` without reading anything else. A copy
- *    made by value is another open handle on the same bytes: close it too.
- *
- * A `fur_lut` whose bytes were freed without a close, or uninitialised storage, is the
- * caller's error: no check can tell either from an open `fur_lut`, and using it reads freed
- * or arbitrary memory.
- */
-typedef struct fur_lut {
-  /**
-   * Opaque storage (8-byte aligned).
-   */
-  uint64_t _opaque[FUR_LUT_WORDS];
-} fur_lut;
 
 /**
  * One importance sample (docs/model.md section 10), written by `fur_sample_far`.
@@ -267,6 +269,32 @@ typedef struct fur_sample {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * The colour of eumelanin and pheomelanin concentrations (the mix of the parameters'
+ * `melanin` pigment, docs/model.md §2), as σ_ca per RGB channel into `out_sigma_ca[3]`, for
+ * the `*_at` functions. A NaN or negative concentration gives `FUR_ERR_COLOUR` (nothing
+ * written); channels above 1000 are clamped to 1000.
+ *
+ * # Safety
+ * `out_sigma_ca` is NULL or points to 3 writable floats.
+ */
+enum fur_status fur_sigma_from_melanin(float eumelanin,
+                                       float pheomelanin,
+                                       float *FUR_RESTRICT out_sigma_ca);
+
+/**
+ * The LUT's own colour, the σ_ca of the parameters it was baked with (clamped to 1000), into
+ * `out_sigma_ca[3]`: what every function without `_at` evaluates, bit for bit
+ * (`fur_eval_far_at(lut, sigma, ...)` with this `sigma` equals `fur_eval_far(lut, ...)`).
+ * `out_sigma_ca` must not overlap `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `out_sigma_ca` is NULL or points to 3
+ * writable floats.
+ */
+enum fur_status fur_lut_sigma_ca(const struct fur_lut *FUR_RESTRICT lut,
+                                 float *FUR_RESTRICT out_sigma_ca);
 
 /**
  * Decodes the `.furdual` blob of `len` bytes at `bytes` (docs/model.md §13) into `*out`
@@ -498,6 +526,149 @@ enum fur_status fur_sample_pdf_far(const struct fur_lut *FUR_RESTRICT lut,
  * `lut` is NULL or points to an initialised `fur_lut`.
  */
 float fur_pdf_far(const struct fur_lut *FUR_RESTRICT lut, float theta_i, float theta_r, float phi);
+
+/**
+ * `fur_eval_far` at colour `sigma_ca[3]` (σ_ca per RGB channel, per fiber radius, in
+ * [0, 1000]; larger values are clamped to 1000): far-field S(omega_i, omega_r), RGB, into
+ * `out_rgb[3]`. A NaN or negative channel writes 0 and returns `FUR_ERR_COLOUR`; invalid
+ * angles write 0 and return `FUR_ERR_ANGLE`. `out_rgb` must not overlap `sigma_ca`, `*lut`
+ * or the LUT bytes (`FUR_ERR_OVERLAP`).
+ *
+ * ```c
+ * float sigma[3], rgb[3];
+ * fur_sigma_from_melanin(0.4f, 1.5f, sigma); // a ginger strand
+ * fur_eval_far_at(&lut, sigma, 0.5f, -0.35f, 0.785f, rgb);
+ * ```
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `sigma_ca` is NULL or points to 3
+ * readable floats; `out_rgb` is NULL or points to 3 writable floats.
+ */
+enum fur_status fur_eval_far_at(const struct fur_lut *FUR_RESTRICT lut,
+                                const float *FUR_RESTRICT sigma_ca,
+                                float theta_i,
+                                float theta_r,
+                                float phi,
+                                float *FUR_RESTRICT out_rgb);
+
+/**
+ * `fur_eval_far_families` at colour `sigma_ca[3]` (as `fur_eval_far_at`): S per lobe family
+ * into `out[12]` (R, TT, TRT, scattered, RGB each; 0 with `FUR_ERR_COLOUR` or
+ * `FUR_ERR_ANGLE`). `out` must not overlap `sigma_ca`, `*lut` or the LUT bytes
+ * (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `sigma_ca` is NULL or points to 3
+ * readable floats; `out` is NULL or points to 12 writable floats.
+ */
+enum fur_status fur_eval_far_families_at(const struct fur_lut *FUR_RESTRICT lut,
+                                         const float *FUR_RESTRICT sigma_ca,
+                                         float theta_i,
+                                         float theta_r,
+                                         float phi,
+                                         float *FUR_RESTRICT out);
+
+/**
+ * `fur_eval_far_dirs` at colour `sigma_ca[3]` (as `fur_eval_far_at`): far-field S from
+ * world-space vectors into `out_rgb[3]` (0 with `FUR_ERR_COLOUR` or `FUR_ERR_DIRECTION`).
+ * `out_rgb` must not overlap the three vectors, `sigma_ca`, `*lut` or the LUT bytes
+ * (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `sigma_ca` and each vector are NULL
+ * or point to 3 readable floats; `out_rgb` is NULL or points to 3 writable floats.
+ */
+enum fur_status fur_eval_far_dirs_at(const struct fur_lut *FUR_RESTRICT lut,
+                                     const float *FUR_RESTRICT sigma_ca,
+                                     const float *FUR_RESTRICT wi,
+                                     const float *FUR_RESTRICT wr,
+                                     const float *FUR_RESTRICT tangent,
+                                     float *FUR_RESTRICT out_rgb);
+
+/**
+ * `fur_eval_far_batch` with a colour per query: `sigma_ca[3n]` holds query k's σ_ca at
+ * `sigma_ca[3k .. 3k + 3]` (as `fur_eval_far_at`), the angles `theta_i[n]`, `theta_r[n]`,
+ * `phi[n]`, the results `out_rgb[3n]`; each entry equal bit for bit to `fur_eval_far_at`'s.
+ * `n` = 0 does nothing (any pointers). An entry with a NaN or negative colour channel, or an
+ * invalid angle, gives 0; the call evaluates every other entry and returns `FUR_ERR_COLOUR`
+ * if any colour was refused, else `FUR_ERR_ANGLE` if any angle was. The inputs may share
+ * memory with each other; `out_rgb` must not overlap them, `*lut` or the LUT bytes
+ * (`FUR_ERR_OVERLAP`, nothing written). `n` above `PTRDIFF_MAX / 12` gives `FUR_ERR_LENGTH`.
+ *
+ * # Safety
+ * For n > 0: `sigma_ca` is NULL or points to `3n` readable floats, the three angle pointers
+ * are NULL or point to `n` readable floats each, and `out_rgb` is NULL or points to `3n`
+ * writable floats.
+ */
+enum fur_status fur_eval_far_batch_at(const struct fur_lut *FUR_RESTRICT lut,
+                                      size_t n,
+                                      const float *FUR_RESTRICT sigma_ca,
+                                      const float *FUR_RESTRICT theta_i,
+                                      const float *FUR_RESTRICT theta_r,
+                                      const float *FUR_RESTRICT phi,
+                                      float *FUR_RESTRICT out_rgb);
+
+/**
+ * `fur_sample_far` at colour `sigma_ca[3]` (as `fur_eval_far_at`): importance-samples
+ * omega_i given theta_r into `*out`. The sampled direction and its pdf do not depend on the
+ * colour (the sampler draws from the LUT's lossless plane, docs/model.md section 10); the
+ * weight S cos(theta_i)/pdf is this colour's. `FUR_ERR_COLOUR` (nothing written) for a NaN
+ * or negative channel. `out` must not overlap `sigma_ca`, `*lut` or the LUT bytes
+ * (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `sigma_ca` is NULL or points to 3
+ * readable floats; `out` is NULL or points to a writable `fur_sample`.
+ */
+enum fur_status fur_sample_far_at(const struct fur_lut *FUR_RESTRICT lut,
+                                  const float *FUR_RESTRICT sigma_ca,
+                                  float theta_r,
+                                  float u0,
+                                  float u1,
+                                  float u2,
+                                  struct fur_sample *FUR_RESTRICT out);
+
+/**
+ * `fur_sample_pdf_far` at colour `sigma_ca[3]` (as `fur_eval_far_at`): a sample (its
+ * weight at this colour) and the density of another direction at the same view, bit for
+ * bit the results of `fur_sample_far_at` and `fur_pdf_far_at`. `FUR_ERR_COLOUR` (nothing
+ * written) for a NaN or negative channel; otherwise as `fur_sample_pdf_far`. `out` and
+ * `out_pdf` must not overlap each other, `sigma_ca`, `*lut` or the LUT bytes
+ * (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `sigma_ca` is NULL or points to 3
+ * readable floats; `out` is NULL or points to a writable `fur_sample`; `out_pdf` is NULL or
+ * points to a writable float.
+ */
+enum fur_status fur_sample_pdf_far_at(const struct fur_lut *FUR_RESTRICT lut,
+                                      const float *FUR_RESTRICT sigma_ca,
+                                      float theta_r,
+                                      float u0,
+                                      float u1,
+                                      float u2,
+                                      float theta_i,
+                                      float phi,
+                                      struct fur_sample *FUR_RESTRICT out,
+                                      float *FUR_RESTRICT out_pdf);
+
+/**
+ * `fur_pdf_far` at colour `sigma_ca[3]`: the density with which `fur_sample_far_at` draws
+ * omega_i. The sampler draws from the LUT's lossless plane whatever the colour, so this
+ * equals `fur_pdf_far` for every valid colour; the colour is taken (and checked) so that a
+ * caller passes one set of arguments to every `_at` call. 0 for invalid arguments (NULL,
+ * unopened or other-build `lut`, NULL or misaligned `sigma_ca`, a NaN or negative channel,
+ * invalid angles).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `sigma_ca` is NULL or points to 3
+ * readable floats.
+ */
+float fur_pdf_far_at(const struct fur_lut *FUR_RESTRICT lut,
+                     const float *FUR_RESTRICT sigma_ca,
+                     float theta_i,
+                     float theta_r,
+                     float phi);
 
 /**
  * Validates `len` bytes at `bytes` as a baked LUT (header, versions, lengths, checksum,

@@ -2,7 +2,9 @@
 //!
 //! The C ABI of the baked fur BCSDF (`bcsdf_core::baked::BakedBcsdf`): open a LUT from
 //! borrowed bytes, evaluate the far field (one direction, per family, from vectors, in
-//! batches), importance-sample it and query its pdf (docs/model.md §8, §10). The header
+//! batches), importance-sample it and query its pdf (docs/model.md §8, §10), at the LUT's own
+//! colour or, through the `_at` functions, at any cortex absorption σ_ca per RGB channel
+//! (LUT format 5, docs/lut.md "The absorption axis"; `eval.rs`, `colour.rs`). The header
 //! `include/fur_bcsdf.h` is generated from this file by cbindgen (`tests/header.rs` checks it
 //! is current). A `fur_dual`, decoded from a `.furdual` blob, evaluates the dual-scattering
 //! term added to single scattering behind other fibers (docs/model.md §13, `dual.rs`).
@@ -43,18 +45,21 @@ macro_rules! tri {
     };
 }
 
-// cbindgen writes the functions file by file in path order: dual, eval, handle, info.
+// cbindgen writes the functions file by file in path order: colour, dual, eval, handle, info.
 mod args;
+mod colour;
 mod dual;
 mod eval;
 mod handle;
 mod info;
 mod nostd;
 
+pub use colour::{fur_lut_sigma_ca, fur_sigma_from_melanin};
 pub use dual::{fur_dual_close, fur_dual_open, fur_eval_dual, fur_eval_dual_dirs};
 pub use eval::{
-    fur_eval_far, fur_eval_far_batch, fur_eval_far_dirs, fur_eval_far_families, fur_pdf_far,
-    fur_sample_far, fur_sample_pdf_far,
+    fur_eval_far, fur_eval_far_at, fur_eval_far_batch, fur_eval_far_batch_at, fur_eval_far_dirs,
+    fur_eval_far_dirs_at, fur_eval_far_families, fur_eval_far_families_at, fur_pdf_far,
+    fur_pdf_far_at, fur_sample_far, fur_sample_far_at, fur_sample_pdf_far, fur_sample_pdf_far_at,
 };
 pub use handle::{fur_lut_close, fur_lut_open};
 pub use info::{fur_lut_format_version, fur_model_version, fur_status_str, fur_version};
@@ -111,7 +116,9 @@ pub enum fur_status {
     /// The fur_dual was not computed from the LUT it is checked against
     /// (`fur_dual_check_lut`): its .furdual blob records another LUT's checksum, or none.
     FUR_ERR_DUAL_SOURCE = 20,
-    /// A colour (sigma_ca) channel is NaN or negative; nothing was evaluated (0 written).
+    /// A colour is invalid: a sigma_ca channel (or a melanin concentration) is NaN or
+    /// negative (valid sigma_ca: [0, 1000] per fiber radius; larger values are clamped to
+    /// 1000); the outputs for it are 0.
     FUR_ERR_COLOUR = 21,
 }
 

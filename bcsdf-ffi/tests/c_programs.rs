@@ -15,6 +15,12 @@
 //! `fur_dual_check_lut` (the LUT it was computed from, another LUT, blobs recording another
 //! source or none, closed handles).
 //!
+//! eval.c and eval.cpp also call every colour (`_at`) entry point: at the LUT's own colour
+//! (equal to the functions without `_at`), at 24 pseudo-random colours (eval.c's
+//! `colour_channel`, repeated here by [`c_colours`]: channels 0, below 20, in [100, 1000) and
+//! above 1000) and a melanin mix, compared with `BakedBcsdf::at` bit for bit; eval.c also
+//! refuses NaN, negative and NULL colours and overlapping outputs.
+//!
 //! The same clients also run under Valgrind memcheck and built with
 //! `-fsanitize=address,undefined`: any error report fails those tests. Where `valgrind` or
 //! the sanitizer runtimes are missing they print "skipped: …" and pass, unless
@@ -24,7 +30,7 @@ use bake::profiles::{build_model, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::dual::{self, Attenuation, Density, DualLut, DualTables, Fibers, Quadrature};
 use bcsdf_core::lut::LutResolution;
-use bcsdf_core::{presets, Angles, Bcsdf, FurParams, Libm};
+use bcsdf_core::{presets, Absorption, Angles, Bcsdf, FurParams, Libm, Rgb, Sample};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
@@ -111,6 +117,92 @@ fn hex(v: f32) -> String {
     format!("{:08x}", v.to_bits())
 }
 
+/// The colours eval.c draws (its `colour_channel`): 24 colours, 3 channels each.
+fn c_colours() -> Vec<[f32; 3]> {
+    let mut state: u64 = 0x2545_f491_4f6c_dd1d;
+    let scale = [0.01f32, 0.1, 1.0, 4.0, 20.0];
+    let mut channel = || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        let r = (state >> 33) as u32;
+        let u = (r & 0xffff) as f32 * (1.0 / 65536.0);
+        match (r >> 16) & 7 {
+            0 => 0.0,
+            1 => 100.0 + 900.0 * u,
+            2 => 1000.0 + 4000.0 * u,
+            k => u * scale[k as usize - 3],
+        }
+    };
+    (0..24).map(|_| [channel(), channel(), channel()]).collect()
+}
+
+fn sample_fields(s: &Sample) -> String {
+    format!(
+        "{} {} {} {} {} {} {}",
+        hex(s.angles.theta_i()),
+        hex(s.angles.phi()),
+        hex(s.pdf),
+        hex(s.weight.0[0]),
+        hex(s.weight.0[1]),
+        hex(s.weight.0[2]),
+        s.family as i32
+    )
+}
+
+/// The lines eval.c prints for the colour entry points, from `BakedBcsdf::at`.
+fn expected_colours(l: &BakedBcsdf<'_>) -> Vec<String> {
+    let own = l.absorption().sigma().0;
+    let mut out = vec![format!(
+        "own {} {} {}",
+        hex(own[0]),
+        hex(own[1]),
+        hex(own[2])
+    )];
+    let colours = c_colours();
+    // The draw covers the axis: lossless channels, the knee, >= 100 and the clamped end.
+    let all: Vec<f32> = colours.iter().flatten().copied().collect();
+    assert!(all.contains(&0.0) && all.iter().any(|&c| c > 0.0 && c < 1.25));
+    assert!(all.iter().any(|&c| (100.0..1000.0).contains(&c)));
+    assert!(all.iter().any(|&c| c > 1000.0));
+    let mut batch = Vec::new();
+    for (k, c) in colours.iter().enumerate() {
+        let i = k % 6;
+        out.push(format!(
+            "colour {k} {} {} {}",
+            hex(c[0]),
+            hex(c[1]),
+            hex(c[2])
+        ));
+        let at = l.at(&Absorption::from_sigma(Rgb(*c)).unwrap());
+        let a = Angles::new(TI[i], TR[i], PH[i]).unwrap();
+        let f = at.eval(&a);
+        let t = f.total().0;
+        out.push(format!("evalat {} {} {}", hex(t[0]), hex(t[1]), hex(t[2])));
+        batch.extend(t.map(hex));
+        let fam: Vec<String> = f.as_array().iter().flat_map(|c| c.0.map(hex)).collect();
+        out.push(format!("familiesat {}", fam.join(" ")));
+        out.push(format!("pdfat {}", hex(at.pdf(&a))));
+        let d = at
+            .eval_dirs([0.3, 0.8, 0.2], [-0.6, 0.7, -0.1], [0.0, 0.2, 1.0])
+            .total()
+            .0;
+        out.push(format!("dirsat {} {} {}", hex(d[0]), hex(d[1]), hex(d[2])));
+        let u = [0.1 + 0.03 * k as f32, 0.8, 0.37];
+        let s = at.sample(TR[i], u).unwrap();
+        out.push(format!("sampleat {}", sample_fields(&s)));
+        out.push(format!(
+            "samplepdfat {} {}",
+            sample_fields(&s),
+            hex(at.pdf(&a))
+        ));
+    }
+    out.push(format!("batchat {}", batch.join(" ")));
+    let m = Absorption::from_melanin(0.4, 1.5).unwrap().sigma().0;
+    out.push(format!("melanin {} {} {}", hex(m[0]), hex(m[1]), hex(m[2])));
+    out
+}
+
 /// The lines eval.c prints for the evaluation entry points, from the Rust evaluator.
 fn expected(blob: &[u8]) -> Vec<String> {
     let l = BakedBcsdf::from_bytes(blob).unwrap();
@@ -169,6 +261,7 @@ fn expected(blob: &[u8]) -> Vec<String> {
             hex(p)
         ));
     }
+    out.extend(expected_colours(&l));
     out
 }
 
@@ -451,6 +544,52 @@ fn check_cpp_output(run: &Output, blob: &[u8]) {
         hex(p)
     );
     assert!(stdout.lines().any(|x| x == line), "{stdout}\nwanted {line}");
+    // The colour entry points at the LUT's own colour, lossless, (0.5, 2, 150) and melanin
+    // (0.4, 1.5).
+    let colours = [
+        l.absorption(),
+        Absorption::LOSSLESS,
+        Absorption::from_sigma(Rgb([0.5, 2.0, 150.0])).unwrap(),
+        Absorption::from_melanin(0.4, 1.5).unwrap(),
+    ];
+    let mut want = Vec::new();
+    for (c, colour) in colours.iter().enumerate() {
+        let at = l.at(colour);
+        for i in 0..6 {
+            let t = at
+                .eval(&Angles::new(TI[i], TR[i], PH[i]).unwrap())
+                .total()
+                .0;
+            want.push(format!(
+                "evalat {c} {} {} {}",
+                hex(t[0]),
+                hex(t[1]),
+                hex(t[2])
+            ));
+        }
+        let s = at.sample(0.3, [0.2, 0.4, 0.6]).unwrap();
+        let w = s.weight.0;
+        want.push(format!(
+            "sampleat {c} {} {} {} {} {} {}",
+            hex(s.angles.theta_i()),
+            hex(s.angles.phi()),
+            hex(s.pdf),
+            hex(w[0]),
+            hex(w[1]),
+            hex(w[2])
+        ));
+    }
+    let got: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.starts_with("evalat ") || l.starts_with("sampleat "))
+        .collect();
+    assert_eq!(got, want);
+    assert!(
+        stdout
+            .lines()
+            .any(|x| x.starts_with("refused: a colour is invalid")),
+        "{stdout}"
+    );
 }
 
 /// dual.c's output: every evaluation equals Rust's bit for bit (and its status), there are no

@@ -7,7 +7,9 @@
 //!   `bcsdf-core/shaders/generated/` and a test regenerates and compares them;
 //! - [`GpuLut`]: a wgpu compute runner that binds a validated `.furlut` as a storage buffer of
 //!   u32 words and evaluates batches of queries through the shader, on the first adapter
-//!   (on a machine without a GPU: Mesa's llvmpipe Vulkan driver, an adapter of type Cpu);
+//!   (on a machine without a GPU: Mesa's llvmpipe Vulkan driver, an adapter of type Cpu), at
+//!   the LUT's own colour ([`GpuLut::eval`], ...) or at a cortex absorption σ_ca per query
+//!   ([`GpuLut::eval_at`], ..., LUT format 5: docs/lut.md "The absorption axis");
 //! - [`GpuDual`]: the same for the dual-scattering term (docs/model.md §13): a validated
 //!   `.furdual` blob bound as its own storage buffer, batches of queries evaluated by the
 //!   shader's `fur_eval_dual` / `fur_eval_dual_dirs` ([`ENTRY_DUAL`], [`ENTRY_DUAL_DIRS`]).
@@ -66,6 +68,9 @@ pub const MAX_DISPATCH: usize = 64 * 16_384;
 /// One far-field result: R, TT, TRT, scattered (RGB each), then the total (RGB).
 pub type GpuFamilies = [f32; 15];
 
+/// One sampling query: θ_r (radians) and three uniform numbers in [0, 1).
+pub type SampleQuery = (f32, [f32; 3]);
+
 /// A GPU result as the CPU's per-family type (the total is recomputed by `Families::total`).
 pub fn families(v: &GpuFamilies) -> bcsdf_core::Families {
     bcsdf_core::Families::from_array(core::array::from_fn(|f| {
@@ -74,7 +79,15 @@ pub fn families(v: &GpuFamilies) -> bcsdf_core::Families {
 }
 
 /// A validated LUT on a GPU device, with the compute pipelines of the evaluator.
+///
+/// Every query carries a colour, σ_ca per RGB channel (per fiber radius), which the shader
+/// functions take as a `vec3<f32>`: the `*_at` methods pass the caller's, the others the LUT's
+/// own ([`GpuLut::sigma_ca`], `BakedBcsdf::absorption`). Validate colours as
+/// `bcsdf_core::Absorption::from_sigma` does: the shader reads NaN and negative channels as
+/// 0 and channels above 1000 as 1000.
 pub struct GpuLut {
+    /// The LUT's own colour, σ_ca per RGB channel (`BakedBcsdf::absorption`).
+    sigma_ca: [f32; 3],
     device: wgpu::Device,
     queue: wgpu::Queue,
     lut: wgpu::Buffer,
@@ -167,7 +180,11 @@ impl GpuLut {
     /// [`GpuLut::new`] with another WGSL source of the same interface (the tests use it to
     /// show that the agreement test catches a wrong table index).
     pub fn with_shader(bytes: &[u8], wgsl: &str) -> Result<GpuLut, GpuError> {
-        BakedBcsdf::from_bytes(bytes).map_err(GpuError::Lut)?;
+        let sigma_ca = BakedBcsdf::from_bytes(bytes)
+            .map_err(GpuError::Lut)?
+            .absorption()
+            .sigma()
+            .0;
         let (device, queue, info) = device()?;
         let lut = words_buffer(&device, "fur-lut", bytes);
         let [eval, eval_dirs, sample, pdf] = pipelines(
@@ -176,6 +193,7 @@ impl GpuLut {
             [ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_SAMPLE, ENTRY_PDF],
         );
         Ok(GpuLut {
+            sigma_ca,
             device,
             queue,
             lut,
@@ -192,23 +210,48 @@ impl GpuLut {
         format!("{} ({:?})", self.adapter.name, self.adapter.device_type)
     }
 
-    /// Far field per family for `(theta_i, theta_r, phi)` queries (radians).
+    /// The LUT's own colour, σ_ca per RGB channel: what the methods without `_at` evaluate.
+    pub fn sigma_ca(&self) -> [f32; 3] {
+        self.sigma_ca
+    }
+
+    /// Far field per family for `(theta_i, theta_r, phi)` queries (radians), at the LUT's own
+    /// colour.
     pub fn eval(&self, queries: &[[f32; 3]]) -> Result<Vec<GpuFamilies>, GpuError> {
+        self.eval_at(&self.own(queries))
+    }
+
+    /// Far field per family for `((theta_i, theta_r, phi), sigma_ca)` queries: angles in
+    /// radians, each at its own colour.
+    pub fn eval_at(&self, queries: &[([f32; 3], [f32; 3])]) -> Result<Vec<GpuFamilies>, GpuError> {
         let mut out = Vec::with_capacity(queries.len());
         for chunk in queries.chunks(MAX_DISPATCH) {
-            let q: Vec<[f32; 4]> = chunk.iter().map(|a| [a[0], a[1], a[2], 0.0]).collect();
+            let q: Vec<[f32; 4]> = chunk
+                .iter()
+                .flat_map(|(a, s)| [[a[0], a[1], a[2], 0.0], [s[0], s[1], s[2], 0.0]])
+                .collect();
             out.extend(self.run(&self.eval, &q, chunk.len())?);
         }
         Ok(out)
     }
 
-    /// Far field per family for `(wi, wr, tangent)` world-space vector queries.
+    /// Far field per family for `(wi, wr, tangent)` world-space vector queries, at the LUT's
+    /// own colour.
     pub fn eval_dirs(&self, queries: &[[[f32; 3]; 3]]) -> Result<Vec<GpuFamilies>, GpuError> {
+        self.eval_dirs_at(&self.own(queries))
+    }
+
+    /// Far field per family for `((wi, wr, tangent), sigma_ca)` queries, each at its own
+    /// colour.
+    pub fn eval_dirs_at(
+        &self,
+        queries: &[([[f32; 3]; 3], [f32; 3])],
+    ) -> Result<Vec<GpuFamilies>, GpuError> {
         let mut out = Vec::with_capacity(queries.len());
         for chunk in queries.chunks(MAX_DISPATCH) {
             let q: Vec<[f32; 4]> = chunk
                 .iter()
-                .flat_map(|v| v.iter().map(|d| [d[0], d[1], d[2], 0.0]))
+                .flat_map(|(v, s)| (0..3).map(move |k| [v[k][0], v[k][1], v[k][2], s[k]]))
                 .collect();
             out.extend(self.run(&self.eval_dirs, &q, chunk.len())?);
         }
@@ -217,19 +260,43 @@ impl GpuLut {
 
     /// The sampling density (per unit solid angle) of `(theta_i, theta_r, phi)` queries.
     pub fn pdf(&self, queries: &[[f32; 3]]) -> Result<Vec<f32>, GpuError> {
+        self.pdf_at(&self.own(queries))
+    }
+
+    /// The sampling density of `((theta_i, theta_r, phi), sigma_ca)` queries: the same at
+    /// every colour (the sampler draws from the LUT's lossless plane); the colour is passed
+    /// through the shader's `fur_pdf_far` as for the other entry points.
+    pub fn pdf_at(&self, queries: &[([f32; 3], [f32; 3])]) -> Result<Vec<f32>, GpuError> {
         let mut out = Vec::with_capacity(queries.len());
         for chunk in queries.chunks(MAX_DISPATCH) {
-            let q: Vec<[f32; 4]> = chunk.iter().map(|a| [a[0], a[1], a[2], 0.0]).collect();
+            let q: Vec<[f32; 4]> = chunk
+                .iter()
+                .flat_map(|(a, s)| [[a[0], a[1], a[2], 0.0], [s[0], s[1], s[2], 0.0]])
+                .collect();
             out.extend(self.run(&self.pdf, &q, chunk.len())?.iter().map(|r| r[0]));
         }
         Ok(out)
     }
 
-    /// Samples for `(theta_r, [u0, u1, u2])` queries; `None` where nothing could be sampled.
-    pub fn sample(&self, queries: &[(f32, [f32; 3])]) -> Result<Vec<Option<GpuSample>>, GpuError> {
+    /// Samples for `(theta_r, [u0, u1, u2])` queries at the LUT's own colour; `None` where
+    /// nothing could be sampled.
+    pub fn sample(&self, queries: &[SampleQuery]) -> Result<Vec<Option<GpuSample>>, GpuError> {
+        self.sample_at(&self.own(queries))
+    }
+
+    /// Samples for `((theta_r, [u0, u1, u2]), sigma_ca)` queries: the direction and pdf do not
+    /// depend on the colour, the weight is this colour's; `None` where nothing could be
+    /// sampled.
+    pub fn sample_at(
+        &self,
+        queries: &[(SampleQuery, [f32; 3])],
+    ) -> Result<Vec<Option<GpuSample>>, GpuError> {
         let mut out = Vec::with_capacity(queries.len());
         for chunk in queries.chunks(MAX_DISPATCH) {
-            let q: Vec<[f32; 4]> = chunk.iter().map(|(t, u)| [*t, u[0], u[1], u[2]]).collect();
+            let q: Vec<[f32; 4]> = chunk
+                .iter()
+                .flat_map(|((t, u), s)| [[*t, u[0], u[1], u[2]], [s[0], s[1], s[2], 0.0]])
+                .collect();
             out.extend(self.run(&self.sample, &q, chunk.len())?.iter().map(|r| {
                 (r[7] == 1.0).then_some(GpuSample {
                     theta_i: r[0],
@@ -241,6 +308,11 @@ impl GpuLut {
             }));
         }
         Ok(out)
+    }
+
+    /// Queries paired with the LUT's own colour.
+    fn own<Q: Copy>(&self, queries: &[Q]) -> Vec<(Q, [f32; 3])> {
+        queries.iter().map(|&q| (q, self.sigma_ca)).collect()
     }
 
     fn run(

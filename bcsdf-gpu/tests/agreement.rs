@@ -5,6 +5,16 @@
 //! peak the largest value of that channel and family over the queries. A shader with one
 //! table index off by one must fail the same check.
 //!
+//! Colour (LUT format 5): the queries above run at the LUT's own colour (`GpuLut::eval`, the
+//! preset's σ_ca); 2¹⁴ angle queries, the vector queries, the pdfs and the samples run again
+//! each at a random colour (`random_colour`: channels over [0, 1000], 0 and ≥ 100 included,
+//! some above 1000, which both sides clamp) against `BakedBcsdf::at`, within the same bound
+//! plus the CPU's own change when the absorption coordinate's exponential e^(−σ/s0) moves by
+//! two ulps ([`colour_slack`]): the shader's `fur_exp_neg` differs from the CPU's by an ulp
+//! now and then (llvmpipe), and next to a node where a family falls by orders of magnitude
+//! (bobcat's TRT between the first two planes) the quadratic weights turn that ulp into 7e-5
+//! of the value. A shader whose absorption coordinate is wrong must fail that check.
+//!
 //! Without an adapter the tests print "skipped: no GPU adapter" and pass, unless
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
 
@@ -13,8 +23,8 @@ mod common;
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
-use bcsdf_core::{presets, Angles, Bcsdf, Closure};
-use bcsdf_gpu::{GpuFamilies, GpuLut};
+use bcsdf_core::{presets, Absorption, Angles, Bcsdf, Closure, Rgb};
+use bcsdf_gpu::{GpuFamilies, GpuLut, SampleQuery};
 use common::{or_skip, preset_lut};
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -23,6 +33,12 @@ const RELATIVE: f32 = 1e-5;
 /// difference in π/2 − |θ_i| or a sampled direction: 2.8e-6 measured on llvmpipe; 5.4e-4
 /// (and 1.9e-4 for the samples' pdfs) while the shader let the compiler fold π/2's low part.
 const POLE_RELATIVE: f32 = 1e-4;
+/// The samples' weights S·cos θ_i/pdf at random colours, where GPU and CPU drew the same
+/// direction (within 1e-4 rad, away from the poles), beyond the colour's last-bit slack: 3.8e-5
+/// measured on llvmpipe (red fox; every preset 4e-6 to 3.8e-5). S and the pdf each agree
+/// within RELATIVE; the rest comes from the direction's last bits and the shader's built-in
+/// cos θ_i against the CPU's libm (not separated).
+const SAMPLE_WEIGHT_RELATIVE: f32 = 1e-4;
 
 fn queries() -> Vec<[f32; 3]> {
     let mut q = Vec::new();
@@ -63,6 +79,57 @@ fn queries() -> Vec<[f32; 3]> {
     q
 }
 
+/// A random colour for query `i`: each channel 0 (1 in 8), in [100, 1000] (1 in 8), 1000 or
+/// above (1 in 16: 1000, 1500 or +inf, clamped to 1000 by both sides), else log-uniform over
+/// [1e-3, 100] (the absorption axis's knee is near s0 = 1.25).
+fn random_colour(i: u64) -> [f32; 3] {
+    let mut r = Pcg32::new(cell_stream(13, 1, i), cell_stream(13, 2, i));
+    core::array::from_fn(|_| {
+        let pick = r.uniform();
+        let v = r.uniform();
+        if pick < 0.125 {
+            0.0
+        } else if pick < 0.25 {
+            100.0 + 900.0 * v
+        } else if pick < 0.3125 {
+            [1000.0, 1500.0, f32::INFINITY][(3.0 * v) as usize % 3]
+        } else {
+            10f32.powf(5.0 * v - 3.0)
+        }
+    })
+}
+
+/// `sigma` with each channel's e^(−σ/s0) moved by `ulps` units in the last place of 1 (f64
+/// arithmetic, clamped to [0, 1000]): the colours whose absorption coordinate differs from
+/// `sigma`'s in its last bits.
+fn nudged(sigma: &[f32; 3], scale: f32, ulps: f64) -> [f32; 3] {
+    sigma.map(|s| {
+        let s = f64::from(s.min(1000.0));
+        let e = (-s / f64::from(scale)).exp() + ulps * f64::from(f32::EPSILON) / 2.0;
+        let e = e.clamp(1e-300, 1.0);
+        (-f64::from(scale) * e.ln()).clamp(0.0, 1000.0) as f32
+    })
+}
+
+/// Per value, how far the CPU's result moves when every channel's e^(−σ/s0) moves by two
+/// ulps either way: the part of a GPU–CPU difference that the absorption coordinate's last
+/// bit accounts for. `eval` gives the CPU's values at a colour.
+fn colour_slack(
+    sigma: &[f32; 3],
+    scale: f32,
+    eval: impl Fn(&[f32; 3]) -> GpuFamilies,
+) -> GpuFamilies {
+    let mid = eval(sigma);
+    let lo = eval(&nudged(sigma, scale, -2.0));
+    let hi = eval(&nudged(sigma, scale, 2.0));
+    core::array::from_fn(|k| (lo[k] - mid[k]).abs().max((hi[k] - mid[k]).abs()))
+}
+
+/// The CPU at colour `sigma`.
+fn cpu_colour(sigma: &[f32; 3]) -> Absorption {
+    Absorption::from_sigma(Rgb(*sigma)).unwrap()
+}
+
 fn cpu_angles(lut: &BakedBcsdf<'_>, q: &[f32; 3]) -> GpuFamilies {
     match Angles::new(q[0], q[1], q[2]) {
         Ok(a) => flatten(lut.eval_far(&a)),
@@ -80,6 +147,11 @@ fn flatten(f: bcsdf_core::Families) -> GpuFamilies {
 
 /// The worst |gpu − cpu| / max(cpu, 1e-3·peak) over all queries and values.
 fn worst(cpu: &[GpuFamilies], gpu: &[GpuFamilies]) -> (f32, usize) {
+    worst_with(cpu, gpu, &vec![[0.0; 15]; cpu.len()])
+}
+
+/// [`worst`] of the difference less `slack` (per query and value, at least 0).
+fn worst_with(cpu: &[GpuFamilies], gpu: &[GpuFamilies], slack: &[GpuFamilies]) -> (f32, usize) {
     let mut peak = [0.0f32; 15];
     for v in cpu {
         for (p, x) in peak.iter_mut().zip(v) {
@@ -90,7 +162,7 @@ fn worst(cpu: &[GpuFamilies], gpu: &[GpuFamilies]) -> (f32, usize) {
     for (i, (c, g)) in cpu.iter().zip(gpu).enumerate() {
         for k in 0..15 {
             let scale = c[k].max(1e-3 * peak[k]).max(f32::MIN_POSITIVE);
-            let e = (g[k] - c[k]).abs() / scale;
+            let e = ((g[k] - c[k]).abs() - slack[i][k]).max(0.0) / scale;
             let e = if e.is_nan() { f32::INFINITY } else { e };
             if e > w.0 {
                 w = (e, i);
@@ -128,6 +200,48 @@ fn gpu_matches_cpu_for_every_preset() {
             "{}: {e} at {:?}: cpu {:?} gpu {:?}",
             preset.name,
             q[at],
+            cpu[at],
+            got[at]
+        );
+
+        // The first 2^14 angle queries (and the edge and invalid ones), each at a random colour.
+        let cq: Vec<([f32; 3], [f32; 3])> = q
+            .iter()
+            .enumerate()
+            .filter(|&(i, _)| !(1 << 14..1 << 16).contains(&i))
+            .map(|(i, a)| (*a, random_colour(i as u64)))
+            .collect();
+        let cpu: Vec<GpuFamilies> = cq
+            .iter()
+            .map(|(a, s)| match Angles::new(a[0], a[1], a[2]) {
+                Ok(x) => flatten(cpu_lut.at(&cpu_colour(s)).eval_far(&x)),
+                Err(_) => [0.0; 15],
+            })
+            .collect();
+        let got = g.eval_at(&cq).unwrap();
+        let scale = cpu_lut.header().absorption_scale();
+        let slack: Vec<GpuFamilies> = cq
+            .iter()
+            .map(|(a, s)| match Angles::new(a[0], a[1], a[2]) {
+                Ok(x) => colour_slack(s, scale, |c| {
+                    flatten(cpu_lut.at(&cpu_colour(c)).eval_far(&x))
+                }),
+                Err(_) => [0.0; 15],
+            })
+            .collect();
+        let (plain, _) = worst(&cpu, &got);
+        let (e, at) = worst_with(&cpu, &got, &slack);
+        println!(
+            "{}: {} angle queries at random colours, worst relative difference {plain:.2e}; {e:.2e} beyond the coordinate's last bit, at {:?}",
+            preset.name,
+            cq.len(),
+            cq[at]
+        );
+        assert!(
+            e <= RELATIVE,
+            "{}: {e} at {:?}: cpu {:?} gpu {:?}",
+            preset.name,
+            cq[at],
             cpu[at],
             got[at]
         );
@@ -178,7 +292,85 @@ fn gpu_matches_cpu_for_every_preset() {
             cpu[at],
             got[at]
         );
+        // The vector queries again, each at a random colour.
+        let cvq: Vec<([[f32; 3]; 3], [f32; 3])> = vq
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (*v, random_colour(1 << 20 | i as u64)))
+            .collect();
+        let cpu: Vec<GpuFamilies> = cvq
+            .iter()
+            .map(|(v, s)| {
+                flatten(Bcsdf::eval_dirs(
+                    &cpu_lut.at(&cpu_colour(s)),
+                    v[0],
+                    v[1],
+                    v[2],
+                ))
+            })
+            .collect();
+        let got = g.eval_dirs_at(&cvq).unwrap();
+        let slack: Vec<GpuFamilies> = cvq
+            .iter()
+            .map(|(v, s)| {
+                colour_slack(s, scale, |c| {
+                    flatten(Bcsdf::eval_dirs(
+                        &cpu_lut.at(&cpu_colour(c)),
+                        v[0],
+                        v[1],
+                        v[2],
+                    ))
+                })
+            })
+            .collect();
+        let (plain, _) = worst(&cpu, &got);
+        let (e, at) = worst_with(&cpu, &got, &slack);
+        println!(
+            "{}: {} vector queries at random colours, worst relative difference {plain:.2e}; {e:.2e} beyond the coordinate's last bit",
+            preset.name,
+            cvq.len()
+        );
+        assert!(
+            e <= RELATIVE,
+            "{}: {e} at {:?}: cpu {:?} gpu {:?}",
+            preset.name,
+            cvq[at],
+            cpu[at],
+            got[at]
+        );
     }
+}
+
+#[test]
+fn a_wrong_absorption_coordinate_is_caught() {
+    // sigma * s0 instead of sigma / s0: right at sigma = 0 (the lossless plane) and at the
+    // clamped end, wrong in between, where the random colours lie.
+    let bytes = preset_lut("human-hair", Closure::Report);
+    let wrong = FUR_BCSDF_WGSL.replace("fur_exp_neg(s / scale)", "fur_exp_neg(s * scale)");
+    assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation applies");
+    let Some(g) = or_skip(GpuLut::with_shader(&bytes, &wrong)) else {
+        return;
+    };
+    let cpu_lut = BakedBcsdf::from_bytes(&bytes).unwrap();
+    let cq: Vec<([f32; 3], [f32; 3])> = queries()
+        .into_iter()
+        .take(1 << 12)
+        .enumerate()
+        .map(|(i, a)| (a, random_colour(i as u64)))
+        .collect();
+    let cpu: Vec<GpuFamilies> = cq
+        .iter()
+        .map(|(a, s)| {
+            let x = Angles::new(a[0], a[1], a[2]).unwrap();
+            flatten(cpu_lut.at(&cpu_colour(s)).eval_far(&x))
+        })
+        .collect();
+    let (e, _) = worst(&cpu, &g.eval_at(&cq).unwrap());
+    println!("wrong absorption coordinate: worst relative difference {e:.2e}");
+    assert!(
+        e > RELATIVE,
+        "the colour check missed a wrong absorption coordinate ({e})"
+    );
 }
 
 #[test]
@@ -257,6 +449,38 @@ fn gpu_pdf_and_samples_match_cpu() {
             preset.name
         );
 
+        // The pdf at random colours: the lossless plane's density, the same as above.
+        let cq: Vec<([f32; 3], [f32; 3])> = q
+            .iter()
+            .take(1 << 14)
+            .enumerate()
+            .map(|(i, a)| (*a, random_colour(i as u64)))
+            .collect();
+        let got_at = g.pdf_at(&cq).unwrap();
+        let mut worst_at = 0.0f32;
+        for (i, ((a, s), x)) in cq.iter().zip(&got_at).enumerate() {
+            let c =
+                Angles::new(a[0], a[1], a[2]).map_or(0.0, |x| cpu_lut.at(&cpu_colour(s)).pdf(&x));
+            assert_eq!(
+                c.to_bits(),
+                cpu[i].to_bits(),
+                "the CPU's pdf depends on the colour"
+            );
+            if a[0].abs() <= FRAC_PI_2 - 1e-2 {
+                let e = (x - c).abs() / c.max(1e-3 * peak);
+                worst_at = worst_at.max(if e.is_nan() { f32::INFINITY } else { e });
+            }
+        }
+        println!(
+            "{}: pdf at random colours, worst relative difference {worst_at:.2e}",
+            preset.name
+        );
+        assert!(
+            worst_at <= RELATIVE,
+            "{}: pdf at colours {worst_at}",
+            preset.name
+        );
+
         // Samples: the same uniforms on both sides.
         let n = 1u64 << 14;
         let sq: Vec<(f32, [f32; 3])> = (0..n)
@@ -316,6 +540,77 @@ fn gpu_pdf_and_samples_match_cpu() {
         assert!(
             worst_pole_pdf <= POLE_RELATIVE,
             "{}: pdf {worst_pole_pdf}",
+            preset.name
+        );
+
+        // Samples at random colours: the direction and pdf as at the LUT's own colour, the
+        // weight S cos(theta_i)/pdf this colour's, compared where the direction is the CPU's.
+        let csq: Vec<(SampleQuery, [f32; 3])> = sq
+            .iter()
+            .enumerate()
+            .map(|(i, s)| (*s, random_colour(1 << 21 | i as u64)))
+            .collect();
+        let got = g.sample_at(&csq).unwrap();
+        let (mut same, mut count, mut worst_w) = (0usize, 0usize, 0.0f32);
+        let mut wpeak = [0.0f32; 3];
+        let mut pairs = Vec::new();
+        for (((tr, u), s), gs) in csq.iter().zip(&got) {
+            let cs = cpu_lut.at(&cpu_colour(s)).sample(*tr, *u);
+            assert_eq!(
+                cs.is_some(),
+                gs.is_some(),
+                "{}: theta_r {tr} u {u:?}",
+                preset.name
+            );
+            let (Some(c), Some(x)) = (cs, gs) else {
+                continue;
+            };
+            count += 1;
+            let same_dir = (c.angles.theta_i() - x.theta_i).abs() <= 1e-4
+                && (c.angles.phi() - x.phi).abs() <= 1e-4
+                && c.family as u32 == x.family;
+            same += usize::from(same_dir);
+            if same_dir && c.angles.theta_i().abs() <= FRAC_PI_2 - 1e-2 {
+                for (p, w) in wpeak.iter_mut().zip(c.weight.0) {
+                    *p = p.max(w);
+                }
+                // The CPU's weight at the nudged colours (the same direction: the sampler
+                // does not depend on the colour).
+                let scale = cpu_lut.header().absorption_scale();
+                let w = |c: &[f32; 3]| {
+                    cpu_lut
+                        .at(&cpu_colour(c))
+                        .sample(*tr, *u)
+                        .map_or([0.0; 3], |q| q.weight.0)
+                };
+                let (lo, hi) = (w(&nudged(s, scale, -2.0)), w(&nudged(s, scale, 2.0)));
+                let slack: [f32; 3] = core::array::from_fn(|k| {
+                    (lo[k] - c.weight.0[k])
+                        .abs()
+                        .max((hi[k] - c.weight.0[k]).abs())
+                });
+                pairs.push((c.weight.0, x.weight, slack));
+            }
+        }
+        for (c, x, slack) in &pairs {
+            for k in 0..3 {
+                let d = ((x[k] - c[k]).abs() - slack[k]).max(0.0);
+                let e = d / c[k].max(1e-3 * wpeak[k]).max(f32::MIN_POSITIVE);
+                worst_w = worst_w.max(if e.is_nan() { f32::INFINITY } else { e });
+            }
+        }
+        println!(
+            "{}: {same} of {count} GPU samples at random colours at the CPU's direction and family; weight there (away from the poles) within {worst_w:.2e} beyond the coordinate's last bit",
+            preset.name
+        );
+        assert!(
+            same as f64 >= 0.999 * count as f64,
+            "{}: {same} of {count}",
+            preset.name
+        );
+        assert!(
+            worst_w <= SAMPLE_WEIGHT_RELATIVE,
+            "{}: weight {worst_w}",
             preset.name
         );
     }

@@ -7,8 +7,8 @@ using metal::uint;
 struct _mslBufferSizes {
     uint size0;
     uint size1;
-    uint size2;
     uint size3;
+    uint size4;
 };
 
 typedef uint type_1[1];
@@ -29,19 +29,29 @@ struct FurLoc {
     uint i;
     float w;
 };
-struct type_5 {
-    float inner[3];
-};
-struct type_6 {
-    float inner[2];
+struct FurColour {
+    metal::uint3 plane;
+    metal::float3 w0_;
+    metal::float3 w1_;
+    metal::float3 w2_;
 };
 struct type_7 {
+    float inner[3];
+};
+struct type_8 {
+    float inner[2];
+};
+struct type_9 {
     float inner[12];
 };
+struct type_10 {
+    float inner[4];
+};
 struct FurLookups {
-    type_5 m;
-    type_6 ms;
-    type_7 n;
+    type_7 m;
+    type_8 ms;
+    type_9 n;
+    type_10 n0_;
     float front;
     float inv_cos2_;
 };
@@ -53,13 +63,15 @@ struct FurDensity {
     float step;
     uint block;
     uint table;
-    uint first;
-    uint channels;
+    uint channel;
 };
-struct type_8 {
-    float inner[4];
+struct type_11 {
+    float inner[6];
 };
-struct type_9 {
+struct type_12 {
+    uint inner[6];
+};
+struct type_13 {
     metal::float3 inner[4];
 };
 struct FurDirAngles {
@@ -79,7 +91,7 @@ struct FurSample {
     bool ok;
     char _pad6[15];
 };
-struct type_10 {
+struct type_14 {
     uint inner[3];
 };
 struct FurRows {
@@ -101,24 +113,28 @@ struct FurMAt {
     metal::float3 cdf;
     metal::float3 value;
 };
-struct type_13 {
+struct type_17 {
     float inner[5];
 };
-struct type_14 {
+struct type_18 {
     FurRange inner[5];
 };
 struct FurParts {
-    type_13 a;
+    type_17 a;
     char _pad1[12];
-    type_14 ranges;
+    type_18 ranges;
+};
+struct FurDualColour {
+    metal::uint3 node;
+    metal::float3 w;
 };
 struct FurCoat {
     metal::float3 rho2_;
     metal::float3 r_rho;
 };
-typedef metal::float4 type_17[1];
-typedef float type_18[1];
-struct type_19 {
+typedef metal::float4 type_19[1];
+typedef float type_20[1];
+struct type_21 {
     metal::float3 inner[5];
 };
 constant float FUR_PI = 3.1415927;
@@ -126,9 +142,22 @@ constant float FUR_HALF_PI = 1.5707964;
 constant float FUR_TAU = 6.2831855;
 constant float FUR_MIN_COS2_ = 0.0001;
 constant float FUR_POLE_SLIVER = 0.010000167;
-constant uint FUR_HEADER_HALVES = 80u;
-constant uint FUR_CLOSURE_WORD = 26u;
-constant uint FUR_DUAL_HEADER_WORDS = 16u;
+constant uint FUR_HEADER_HALVES = 84u;
+constant uint FUR_N_ABS_WORD = 9u;
+constant uint FUR_SCALE_WORD = 10u;
+constant uint FUR_ABS_SCALE_WORD = 39u;
+constant float FUR_SIGMA_CA_MAX = 1000.0;
+constant float FUR_ABS_SCALE_ROOT = 0.25;
+constant float FUR_ROOT_SHARE = 0.4;
+constant float FUR_LOG2_E = 1.442695;
+constant float FUR_LN2_HI = 0.6933594;
+constant float FUR_LN2_LO = -0.00021219444;
+constant uint FUR_CLOSURE_WORD = 27u;
+constant uint FUR_DUAL_HEADER_WORDS = 20u;
+constant uint FUR_DUAL_ABS_NODES = 16u;
+constant uint FUR_DUAL_NODE_HALVES = 9152u;
+constant float FUR_DUAL_KNEE = 3.0;
+constant float FUR_DUAL_SIGMA_MAX = 1000.0;
 constant uint FUR_DUAL_FIELDS = 15u;
 constant uint FUR_DUAL_LOG2_DECAY = 0u;
 constant uint FUR_DUAL_BETA_F = 1u;
@@ -141,7 +170,7 @@ constant uint FUR_DUAL_MEAN = 7u;
 constant uint FUR_DUAL_SD = 11u;
 constant uint FUR_DUAL_THETA_NODES = 64u;
 constant uint FUR_DUAL_PHI_NODES = 32u;
-constant uint FUR_DUAL_NG_START = 2880u;
+constant uint FUR_DUAL_NG_START = 960u;
 constant float FUR_DUAL_THETA_SCALE = 20.371832;
 constant float FUR_DUAL_PHI_SCALE = 9.867606;
 constant float FUR_DUAL_MAX_FIBERS = 1000000.0;
@@ -150,9 +179,6 @@ constant float FUR_DUAL_MIN_VARIANCE = 0.000003;
 constant float FUR_DUAL_MIN_MASS = 0.05;
 constant float FUR_DUAL_TINY = 0.000001;
 constant float FUR_LN2_ = 0.6931472;
-constant float FUR_LOG2_E = 1.442695;
-constant float FUR_LN2_HI = 0.6933594;
-constant float FUR_LN2_LO = -0.00021219444;
 constant float FUR_INV_SQRT_TAU = 0.3989423;
 constant float FUR_FRAC_1_SQRT_2_ = 0.70710677;
 constant float FUR_ERF_A1_ = 0.07052308;
@@ -180,8 +206,8 @@ FurLoc fur_locate(
     float x
 ) {
     float u_7 = metal::min(metal::max((x * a.inv_step) + a.offset, 0.0), a.last);
-    int i = metal::min(naga_f2i32(u_7), as_type<int>(as_type<uint>(static_cast<int>(a.nodes)) - as_type<uint>(2)));
-    return FurLoc {static_cast<uint>(i), u_7 - static_cast<float>(i)};
+    int i_1 = metal::min(naga_f2i32(u_7), as_type<int>(as_type<uint>(static_cast<int>(a.nodes)) - as_type<uint>(2)));
+    return FurLoc {static_cast<uint>(i_1), u_7 - static_cast<float>(i_1)};
 }
 
 uint fur_word(
@@ -208,18 +234,94 @@ float fur_unbias(
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = fur_word(9u + t, fur_lut, _buffer_sizes);
+    uint _e3 = fur_word(FUR_SCALE_WORD + t, fur_lut, _buffer_sizes);
     return as_type<float>(_e3) * as_type<float>(2004877312u);
 }
 
+uint fur_n_plane_halves(
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e2 = fur_word(6u, fur_lut, _buffer_sizes);
+    uint _e5 = fur_word(5u, fur_lut, _buffer_sizes);
+    return (4u * _e2) * _e5;
+}
+
+metal::bool3 fur_is_nan3_(
+    metal::float3 x_1
+) {
+    return (as_type<metal::uint3>(x_1) & metal::uint3(2147483647u)) > metal::uint3(2139095040u);
+}
+
+metal::int3 naga_f2i32(metal::float3 value) {
+    return static_cast<metal::int3>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+metal::int3 naga_neg(metal::int3 val) {
+    return as_type<metal::int3>(-as_type<metal::uint3>(val));
+}
+
+metal::float3 fur_exp_neg(
+    metal::float3 x_in
+) {
+    metal::float3 p = metal::float3(0.00019875693);
+    metal::float3 x_15 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
+    metal::float3 k_16 = metal::rint(x_15 * FUR_LOG2_E);
+    metal::float3 r_13 = ((k_16 * FUR_LN2_HI) - x_15) + (k_16 * FUR_LN2_LO);
+    metal::float3 z = r_13 * r_13;
+    metal::float3 _e20 = p;
+    p = (_e20 * r_13) + metal::float3(0.0013981999);
+    metal::float3 _e25 = p;
+    p = (_e25 * r_13) + metal::float3(0.008333452);
+    metal::float3 _e30 = p;
+    p = (_e30 * r_13) + metal::float3(0.041665796);
+    metal::float3 _e35 = p;
+    p = (_e35 * r_13) + metal::float3(0.16666666);
+    metal::float3 _e40 = p;
+    p = (_e40 * r_13) + metal::float3(0.5);
+    metal::float3 _e45 = p;
+    metal::float3 e = ((_e45 * z) + r_13) + metal::float3(1.0);
+    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_16))), metal::float3(0.0), x_in > metal::float3(87.0));
+}
+
+metal::uint3 naga_f2u32(metal::float3 value) {
+    return static_cast<metal::uint3>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+FurColour fur_locate_colour(
+    metal::float3 sigma_ca,
+    device type_1 const& fur_lut,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e2 = fur_word(FUR_N_ABS_WORD, fur_lut, _buffer_sizes);
+    float last_2 = static_cast<float>(_e2 - 1u);
+    uint _e7 = fur_word(FUR_ABS_SCALE_WORD, fur_lut, _buffer_sizes);
+    float scale = as_type<float>(_e7);
+    metal::bool3 _e17 = fur_is_nan3_(sigma_ca);
+    metal::float3 s_1 = metal::select(metal::min(metal::max(sigma_ca, metal::float3(0.0)), metal::float3(1000.0)), metal::float3(0.0), _e17);
+    metal::float3 _e24 = fur_exp_neg(metal::sqrt(s_1 / metal::float3(0.25)));
+    metal::float3 _e29 = fur_exp_neg(s_1 / metal::float3(scale));
+    metal::float3 e_1 = (FUR_ROOT_SHARE * _e24) + (0.6 * _e29);
+    metal::float3 x_16 = metal::min(metal::float3(1.0) - e_1, metal::float3(1.0));
+    metal::float3 u_8 = metal::clamp(x_16 * last_2, metal::float3(0.0), metal::float3(last_2));
+    metal::uint3 k_17 = metal::min(naga_f2u32(u_8), metal::uint3(_e2 - 3u));
+    metal::float3 t_11 = u_8 - static_cast<metal::float3>(k_17);
+    metal::float3 w0_ = (0.5 * (t_11 - metal::float3(1.0))) * (t_11 - metal::float3(2.0));
+    metal::float3 w1_ = t_11 * (metal::float3(2.0) - t_11);
+    metal::float3 w2_ = (0.5 * t_11) * (t_11 - metal::float3(1.0));
+    uint _e70 = fur_word(6u, fur_lut, _buffer_sizes);
+    uint _e72 = fur_word(5u, fur_lut, _buffer_sizes);
+    return FurColour {k_17 * (_e70 * _e72), w0_, w1_, w2_};
+}
+
 float fur_cos_within_half_pi(
-    float x_1
+    float x_2
 ) {
     float acc = -0.0000002755732;
     float acc_1 = 0.0000027557319;
-    float a_4 = metal::abs(x_1);
-    if (a_4 <= 0.7853982) {
-        float y_3 = a_4 * a_4;
+    float a_7 = metal::abs(x_2);
+    if (a_7 <= 0.7853982) {
+        float y_3 = a_7 * a_7;
         float _e7 = acc;
         acc = (_e7 * y_3) + 0.000024801588;
         float _e11 = acc;
@@ -231,8 +333,8 @@ float fur_cos_within_half_pi(
         float _e23 = acc;
         return (_e23 * y_3) + 1.0;
     }
-    float r_13 = (1.5707964 - a_4) + ((a_4 > 4.0) ? 0.0 : -0.00000004371139);
-    float y_4 = r_13 * r_13;
+    float r_14 = (1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -0.00000004371139);
+    float y_4 = r_14 * r_14;
     float _e38 = acc_1;
     acc_1 = (_e38 * y_4) - 0.0001984127;
     float _e42 = acc_1;
@@ -240,45 +342,45 @@ float fur_cos_within_half_pi(
     float _e46 = acc_1;
     acc_1 = (_e46 * y_4) - 0.16666667;
     float _e50 = acc_1;
-    return ((_e50 * y_4) * r_13) + r_13;
+    return ((_e50 * y_4) * r_14) + r_14;
 }
 
 float fur_wrap_angle(
-    float x_2
+    float x_3
 ) {
     bool local = {};
     bool local_1 = {};
     bool local_2 = {};
     float y = {};
     bool local_3 = {};
-    if (x_2 > -3.1415927) {
-        local = x_2 <= FUR_PI;
+    if (x_3 > -3.1415927) {
+        local = x_3 <= FUR_PI;
     } else {
         local = false;
     }
     bool _e8 = local;
     if (_e8) {
-        return x_2;
+        return x_3;
     }
-    if (x_2 > FUR_PI) {
-        local_1 = x_2 <= 9.424778;
+    if (x_3 > FUR_PI) {
+        local_1 = x_3 <= 9.424778;
     } else {
         local_1 = false;
     }
     bool _e16 = local_1;
     if (_e16) {
-        return x_2 - FUR_TAU;
+        return x_3 - FUR_TAU;
     }
-    if (x_2 <= -3.1415927) {
-        local_2 = x_2 > -9.424778;
+    if (x_3 <= -3.1415927) {
+        local_2 = x_3 > -9.424778;
     } else {
         local_2 = false;
     }
     bool _e26 = local_2;
     if (_e26) {
-        return x_2 + FUR_TAU;
+        return x_3 + FUR_TAU;
     }
-    y = x_2 - (FUR_TAU * metal::floor((x_2 + FUR_PI) / FUR_TAU));
+    y = x_3 - (FUR_TAU * metal::floor((x_3 + FUR_PI) / FUR_TAU));
     float _e38 = y;
     if (_e38 <= -3.1415927) {
         float _e41 = y;
@@ -306,14 +408,14 @@ float fur_wrap_angle(
 
 FurFamilies fur_zero(
 ) {
-    metal::float3 z = metal::float3(0.0);
-    return FurFamilies {z, z, z, z, z};
+    metal::float3 z_1 = metal::float3(0.0);
+    return FurFamilies {z_1, z_1, z_1, z_1, z_1};
 }
 
 bool fur_finite(
-    float x_3
+    float x_4
 ) {
-    return (as_type<uint>(x_3) & 2139095040u) != 2139095040u;
+    return (as_type<uint>(x_4) & 2139095040u) != 2139095040u;
 }
 
 bool fur_valid(
@@ -377,33 +479,35 @@ FurDensity fur_density(
     uint _e6 = fur_word(6u, fur_lut, _buffer_sizes);
     uint _e8 = fur_word(7u, fur_lut, _buffer_sizes);
     uint _e10 = fur_word(8u, fur_lut, _buffer_sizes);
-    uint values = ((3u * _e2) + ((12u * _e6) * _e4)) + ((2u * _e8) * _e10);
-    at = 160u + (2u * values);
-    uint _e27 = fur_entries(_e2, 1u);
-    uint _e29 = fur_entries(_e6, 8u);
-    uint _e31 = fur_entries(_e8, 8u);
+    uint _e13 = fur_n_plane_halves(fur_lut, _buffer_sizes);
+    uint _e15 = fur_word(FUR_N_ABS_WORD, fur_lut, _buffer_sizes);
+    uint values = ((3u * _e2) + (_e13 * _e15)) + ((2u * _e8) * _e10);
+    at = 168u + (2u * values);
+    uint _e28 = fur_entries(_e2, 1u);
+    uint _e30 = fur_entries(_e6, 8u);
+    uint _e32 = fur_entries(_e8, 8u);
     if (d < 3u) {
-        uint _e34 = at;
-        return FurDensity {_e34 + ((4u * d) * _e27), _e27, _e2, 1u, 6.2831855 / static_cast<float>(_e2 - 1u), 1u, 0u, d, 1u};
+        uint _e35 = at;
+        return FurDensity {_e35 + ((4u * d) * _e28), _e28, _e2, 1u, 6.2831855 / static_cast<float>(_e2 - 1u), 1u, 0u, d};
     }
     uint _e49 = at;
-    at = _e49 + (12u * _e27);
+    at = _e49 + (12u * _e28);
     if (d < 7u) {
-        uint f_4 = d - 3u;
+        uint f_6 = d - 3u;
         uint _e57 = at;
-        return FurDensity {_e57 + (((4u * f_4) * _e4) * _e29), _e29, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 3u * f_4, 3u};
+        return FurDensity {_e57 + (((4u * f_6) * _e4) * _e30), _e30, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, f_6};
     }
-    uint _e74 = at;
-    at = _e74 + ((16u * _e4) * _e29);
+    uint _e71 = at;
+    at = _e71 + ((16u * _e4) * _e30);
     if (d < 9u) {
-        uint x_15 = d - 7u;
-        uint _e83 = at;
-        return FurDensity {_e83 + (((4u * x_15) * _e10) * _e31), _e31, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_15, 1u};
+        uint x_17 = d - 7u;
+        uint _e80 = at;
+        return FurDensity {_e80 + (((4u * x_17) * _e10) * _e32), _e32, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_17};
     }
-    uint _e98 = at;
-    at = _e98 + ((8u * _e10) * _e31);
-    uint _e103 = at;
-    return FurDensity {_e103, _e29, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 9u, 3u};
+    uint _e94 = at;
+    at = _e94 + ((8u * _e10) * _e32);
+    uint _e99 = at;
+    return FurDensity {_e99, _e30, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, 3u};
 }
 
 uint fur_norm_start(
@@ -419,13 +523,13 @@ float fur_f32_at(
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint w_3 = byte >> 2u;
+    uint w_4 = byte >> 2u;
     if ((byte & 3u) == 0u) {
-        uint _e9 = fur_lut[w_3];
+        uint _e9 = fur_lut[w_4];
         return as_type<float>(_e9);
     }
-    uint _e13 = fur_lut[w_3];
-    uint _e20 = fur_lut[w_3 + 1u];
+    uint _e13 = fur_lut[w_4];
+    uint _e20 = fur_lut[w_4 + 1u];
     return as_type<float>((_e13 >> 16u) | (_e20 << 16u));
 }
 
@@ -477,186 +581,286 @@ FurLookups fur_lookups(
     float theta_i_1,
     float theta_r_2,
     float phi_in,
+    metal::float3 sigma_ca_1,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    type_5 m = {};
+    type_7 m = {};
     uint ch = 0u;
     uint ch_1 = 0u;
-    type_6 ms = {};
+    type_8 ms = {};
     uint ch_2 = 0u;
-    type_7 n = {};
-    uint ch_3 = 0u;
-    float _e3 = fur_wrap_angle(phi_in);
-    uint _e5 = fur_word(4u, fur_lut, _buffer_sizes);
-    uint _e7 = fur_word(5u, fur_lut, _buffer_sizes);
-    uint _e9 = fur_word(6u, fur_lut, _buffer_sizes);
-    uint _e11 = fur_word(7u, fur_lut, _buffer_sizes);
-    uint _e13 = fur_word(8u, fur_lut, _buffer_sizes);
-    uint n0_ = FUR_HEADER_HALVES + (3u * _e5);
-    uint s0_ = n0_ + ((12u * _e9) * _e7);
-    float abs_phi = metal::abs(_e3);
-    float _e23 = fur_cos_within_half_pi(theta_i_1);
-    float inv_cos2_ = 1.0 / metal::max(_e23 * _e23, FUR_MIN_COS2_);
-    FurAxis _e31 = fur_axis(true, 0.15915494, _e5);
-    FurLoc _e33 = fur_locate(_e31, theta_i_1 + theta_r_2);
-    float _e35 = fur_unbias(0u, fur_lut, _buffer_sizes);
-    float wm0_ = (1.0 - _e33.w) * _e35;
-    float wm1_ = _e33.w * _e35;
+    type_9 n = {};
+    uint c = 0u;
+    uint f = {};
+    float left = {};
+    float right = {};
+    uint i = {};
+    type_10 nl = {};
+    uint f_1 = 0u;
+    float _e4 = fur_wrap_angle(phi_in);
+    uint _e6 = fur_word(4u, fur_lut, _buffer_sizes);
+    uint _e8 = fur_word(5u, fur_lut, _buffer_sizes);
+    uint _e10 = fur_word(6u, fur_lut, _buffer_sizes);
+    uint _e12 = fur_word(7u, fur_lut, _buffer_sizes);
+    uint _e14 = fur_word(8u, fur_lut, _buffer_sizes);
+    uint n0_ = FUR_HEADER_HALVES + (3u * _e6);
+    uint _e19 = fur_n_plane_halves(fur_lut, _buffer_sizes);
+    uint _e21 = fur_word(FUR_N_ABS_WORD, fur_lut, _buffer_sizes);
+    uint s0_ = n0_ + (_e19 * _e21);
+    float abs_phi = metal::abs(_e4);
+    float _e25 = fur_cos_within_half_pi(theta_i_1);
+    float inv_cos2_ = 1.0 / metal::max(_e25 * _e25, FUR_MIN_COS2_);
+    FurAxis _e33 = fur_axis(true, 0.15915494, _e6);
+    FurLoc _e35 = fur_locate(_e33, theta_i_1 + theta_r_2);
+    float _e37 = fur_unbias(0u, fur_lut, _buffer_sizes);
+    float wm0_ = (1.0 - _e35.w) * _e37;
+    float wm1_ = _e35.w * _e37;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e69 = ch;
-            ch = _e69 + 1u;
+            uint _e71 = ch;
+            ch = _e71 + 1u;
         }
         loop_init_1 = false;
-        uint _e45 = ch;
-        if (_e45 < 3u) {
+        uint _e47 = ch;
+        if (_e47 < 3u) {
         } else {
             break;
         }
         {
-            uint _e52 = ch;
-            float _e54 = fur_half((FUR_HEADER_HALVES + (3u * _e33.i)) + _e52, fur_lut, _buffer_sizes);
-            uint _e61 = ch;
-            float _e63 = fur_half((FUR_HEADER_HALVES + (3u * (_e33.i + 1u))) + _e61, fur_lut, _buffer_sizes);
-            uint _e64 = ch;
-            m.inner[_e64] = (wm0_ * _e54) + (wm1_ * _e63);
+            uint _e54 = ch;
+            float _e56 = fur_half((FUR_HEADER_HALVES + (3u * _e35.i)) + _e54, fur_lut, _buffer_sizes);
+            uint _e63 = ch;
+            float _e65 = fur_half((FUR_HEADER_HALVES + (3u * (_e35.i + 1u))) + _e63, fur_lut, _buffer_sizes);
+            uint _e66 = ch;
+            m.inner[_e66] = (wm0_ * _e56) + (wm1_ * _e65);
         }
     }
-    metal::float3 _e72 = fur_sphere_norms(theta_r_2, fur_lut, _buffer_sizes);
+    metal::float3 _e74 = fur_sphere_norms(theta_r_2, fur_lut, _buffer_sizes);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e86 = ch_1;
-            ch_1 = _e86 + 1u;
+            uint _e88 = ch_1;
+            ch_1 = _e88 + 1u;
         }
         loop_init_2 = false;
-        uint _e75 = ch_1;
-        if (_e75 < 3u) {
+        uint _e77 = ch_1;
+        if (_e77 < 3u) {
         } else {
             break;
         }
         {
-            uint _e78 = ch_1;
             uint _e80 = ch_1;
-            float _e82 = m.inner[_e80];
-            uint _e83 = ch_1;
-            m.inner[_e78] = _e82 * _e72[_e83];
+            uint _e82 = ch_1;
+            float _e84 = m.inner[_e82];
+            uint _e85 = ch_1;
+            m.inner[_e80] = _e84 * _e74[_e85];
         }
     }
-    FurAxis _e91 = fur_axis(true, 0.31830987, _e13);
-    FurLoc _e92 = fur_locate(_e91, theta_r_2);
-    FurAxis _e95 = fur_axis(true, 0.31830987, _e11);
-    FurLoc _e96 = fur_locate(_e95, theta_i_1);
-    float _e98 = fur_unbias(2u, fur_lut, _buffer_sizes);
+    FurAxis _e93 = fur_axis(true, 0.31830987, _e14);
+    FurLoc _e94 = fur_locate(_e93, theta_r_2);
+    FurAxis _e97 = fur_axis(true, 0.31830987, _e12);
+    FurLoc _e98 = fur_locate(_e97, theta_i_1);
+    float _e100 = fur_unbias(2u, fur_lut, _buffer_sizes);
     {
-        float ky0_ = (1.0 - _e92.w) * _e98;
-        float ky1_ = _e92.w * _e98;
-        float w0_ = ky0_ * (1.0 - _e96.w);
-        float w1_ = ky0_ * _e96.w;
-        float w2_ = ky1_ * (1.0 - _e96.w);
-        float w3_ = ky1_ * _e96.w;
-        uint i0_ = (_e92.i * _e11) + _e96.i;
+        float ky0_ = (1.0 - _e94.w) * _e100;
+        float ky1_ = _e94.w * _e100;
+        float w0_1 = ky0_ * (1.0 - _e98.w);
+        float w1_1 = ky0_ * _e98.w;
+        float w2_1 = ky1_ * (1.0 - _e98.w);
+        float w3_ = ky1_ * _e98.w;
+        uint i0_ = (_e94.i * _e12) + _e98.i;
         uint2 loop_bound_3 = uint2(4294967295u);
         bool loop_init_3 = true;
         while(true) {
             if (metal::all(loop_bound_3 == uint2(0u))) { break; }
             loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
             if (!loop_init_3) {
-                uint _e166 = ch_2;
-                ch_2 = _e166 + 1u;
+                uint _e168 = ch_2;
+                ch_2 = _e168 + 1u;
             }
             loop_init_3 = false;
-            uint _e124 = ch_2;
-            if (_e124 < 2u) {
+            uint _e126 = ch_2;
+            if (_e126 < 2u) {
             } else {
                 break;
             }
             {
-                uint _e130 = ch_2;
-                float _e132 = fur_half((s0_ + (2u * i0_)) + _e130, fur_lut, _buffer_sizes);
-                uint _e138 = ch_2;
-                float _e140 = fur_half((s0_ + (2u * (i0_ + 1u))) + _e138, fur_lut, _buffer_sizes);
-                uint _e145 = ch_2;
-                float _e147 = fur_half((s0_ + (2u * (i0_ + _e11))) + _e145, fur_lut, _buffer_sizes);
-                uint _e154 = ch_2;
-                float _e156 = fur_half((s0_ + (2u * ((i0_ + _e11) + 1u))) + _e154, fur_lut, _buffer_sizes);
-                uint _e157 = ch_2;
-                ms.inner[_e157] = (((w0_ * _e132) + (w1_ * _e140)) + (w2_ * _e147)) + (w3_ * _e156);
+                uint _e132 = ch_2;
+                float _e134 = fur_half((s0_ + (2u * i0_)) + _e132, fur_lut, _buffer_sizes);
+                uint _e140 = ch_2;
+                float _e142 = fur_half((s0_ + (2u * (i0_ + 1u))) + _e140, fur_lut, _buffer_sizes);
+                uint _e147 = ch_2;
+                float _e149 = fur_half((s0_ + (2u * (i0_ + _e12))) + _e147, fur_lut, _buffer_sizes);
+                uint _e156 = ch_2;
+                float _e158 = fur_half((s0_ + (2u * ((i0_ + _e12) + 1u))) + _e156, fur_lut, _buffer_sizes);
+                uint _e159 = ch_2;
+                ms.inner[_e159] = (((w0_1 * _e134) + (w1_1 * _e142)) + (w2_1 * _e149)) + (w3_ * _e158);
             }
         }
     }
     float front_w = metal::min(abs_phi * 0.31830987, 1.0);
-    FurAxis _e175 = fur_axis(false, 0.63661975, _e7);
-    FurLoc _e177 = fur_locate(_e175, metal::abs(theta_r_2));
-    FurAxis _e180 = fur_axis(false, 0.31830987, _e9);
-    FurLoc _e181 = fur_locate(_e180, abs_phi);
-    float _e183 = fur_unbias(1u, fur_lut, _buffer_sizes);
-    float ny0_ = (1.0 - _e177.w) * _e183;
-    float ny1_ = _e177.w * _e183;
-    float v0_8 = ny0_ * (1.0 - _e181.w);
-    float v1_8 = ny0_ * _e181.w;
-    float v2_ = ny1_ * (1.0 - _e181.w);
-    float v3_ = ny1_ * _e181.w;
-    uint j0_ = (_e177.i * _e9) + _e181.i;
+    FurAxis _e177 = fur_axis(false, 0.63661975, _e8);
+    FurLoc _e179 = fur_locate(_e177, metal::abs(theta_r_2));
+    FurAxis _e182 = fur_axis(false, 0.31830987, _e10);
+    FurLoc _e183 = fur_locate(_e182, abs_phi);
+    float _e185 = fur_unbias(1u, fur_lut, _buffer_sizes);
+    float ny0_ = (1.0 - _e179.w) * _e185;
+    float ny1_ = _e179.w * _e185;
+    float v0_8 = ny0_ * (1.0 - _e183.w);
+    float v1_8 = ny0_ * _e183.w;
+    float v2_ = ny1_ * (1.0 - _e183.w);
+    float v3_ = ny1_ * _e183.w;
+    uint j0_ = (_e179.i * _e10) + _e183.i;
+    FurColour _e208 = fur_locate_colour(sigma_ca_1, fur_lut, _buffer_sizes);
+    uint _e209 = fur_n_plane_halves(fur_lut, _buffer_sizes);
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e251 = ch_3;
-            ch_3 = _e251 + 1u;
+            uint _e342 = c;
+            c = _e342 + 1u;
         }
         loop_init_4 = false;
-        uint _e209 = ch_3;
-        if (_e209 < 12u) {
+        uint _e213 = c;
+        if (_e213 < 3u) {
         } else {
             break;
         }
         {
-            uint _e215 = ch_3;
-            float _e217 = fur_half((n0_ + (12u * j0_)) + _e215, fur_lut, _buffer_sizes);
-            uint _e223 = ch_3;
-            float _e225 = fur_half((n0_ + (12u * (j0_ + 1u))) + _e223, fur_lut, _buffer_sizes);
-            uint _e230 = ch_3;
-            float _e232 = fur_half((n0_ + (12u * (j0_ + _e9))) + _e230, fur_lut, _buffer_sizes);
-            uint _e239 = ch_3;
-            float _e241 = fur_half((n0_ + (12u * ((j0_ + _e9) + 1u))) + _e239, fur_lut, _buffer_sizes);
-            uint _e242 = ch_3;
-            n.inner[_e242] = (((v0_8 * _e217) + (v1_8 * _e225)) + (v2_ * _e232)) + (v3_ * _e241);
+            uint _e217 = c;
+            uint _e220 = c;
+            uint _e223 = c;
+            metal::float3 tw = metal::float3(_e208.w0_[_e217], _e208.w1_[_e220], _e208.w2_[_e223]);
+            type_11 l_8 = type_11 {{tw.x * v0_8, tw.x * v2_, tw.y * v0_8, tw.y * v2_, tw.z * v0_8, tw.z * v2_}};
+            type_11 r_15 = type_11 {{tw.x * v1_8, tw.x * v3_, tw.y * v1_8, tw.y * v3_, tw.z * v1_8, tw.z * v3_}};
+            uint _e254 = c;
+            uint h_3 = n0_ + (4u * (_e208.plane[_e254] + j0_));
+            type_12 rows = type_12 {{h_3, h_3 + (4u * _e10), h_3 + _e209, (h_3 + _e209) + (4u * _e10), h_3 + (2u * _e209), (h_3 + (2u * _e209)) + (4u * _e10)}};
+            f = 0u;
+            uint2 loop_bound_5 = uint2(4294967295u);
+            bool loop_init_5 = true;
+            while(true) {
+                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e339 = f;
+                    f = _e339 + 1u;
+                }
+                loop_init_5 = false;
+                uint _e279 = f;
+                if (_e279 < 4u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e283 = f;
+                    float _e285 = fur_half(rows.inner[0] + _e283, fur_lut, _buffer_sizes);
+                    left = _e285 * l_8.inner[0];
+                    uint _e292 = f;
+                    float _e294 = fur_half((rows.inner[0] + 4u) + _e292, fur_lut, _buffer_sizes);
+                    right = _e294 * r_15.inner[0];
+                    i = 1u;
+                    uint2 loop_bound_6 = uint2(4294967295u);
+                    bool loop_init_6 = true;
+                    while(true) {
+                        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                        if (!loop_init_6) {
+                            uint _e325 = i;
+                            i = _e325 + 1u;
+                        }
+                        loop_init_6 = false;
+                        uint _e300 = i;
+                        if (_e300 < 6u) {
+                        } else {
+                            break;
+                        }
+                        {
+                            float _e303 = left;
+                            uint _e304 = i;
+                            uint _e306 = f;
+                            float _e308 = fur_half(rows.inner[_e304] + _e306, fur_lut, _buffer_sizes);
+                            uint _e309 = i;
+                            left = _e303 + (_e308 * l_8.inner[_e309]);
+                            float _e313 = right;
+                            uint _e314 = i;
+                            uint _e318 = f;
+                            float _e320 = fur_half((rows.inner[_e314] + 4u) + _e318, fur_lut, _buffer_sizes);
+                            uint _e321 = i;
+                            right = _e313 + (_e320 * r_15.inner[_e321]);
+                        }
+                    }
+                    uint _e329 = f;
+                    uint _e331 = c;
+                    float _e334 = left;
+                    float _e335 = right;
+                    n.inner[(3u * _e329) + _e331] = metal::max(_e334 + _e335, 0.0);
+                }
+            }
         }
     }
-    type_5 _e254 = m;
-    type_6 _e255 = ms;
-    type_7 _e256 = n;
-    return FurLookups {_e254, _e255, _e256, front_w, inv_cos2_};
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e390 = f_1;
+            f_1 = _e390 + 1u;
+        }
+        loop_init_7 = false;
+        uint _e348 = f_1;
+        if (_e348 < 4u) {
+        } else {
+            break;
+        }
+        {
+            uint _e354 = f_1;
+            float _e356 = fur_half((n0_ + (4u * j0_)) + _e354, fur_lut, _buffer_sizes);
+            uint _e362 = f_1;
+            float _e364 = fur_half((n0_ + (4u * (j0_ + 1u))) + _e362, fur_lut, _buffer_sizes);
+            uint _e369 = f_1;
+            float _e371 = fur_half((n0_ + (4u * (j0_ + _e10))) + _e369, fur_lut, _buffer_sizes);
+            uint _e378 = f_1;
+            float _e380 = fur_half((n0_ + (4u * ((j0_ + _e10) + 1u))) + _e378, fur_lut, _buffer_sizes);
+            uint _e381 = f_1;
+            nl.inner[_e381] = (((v0_8 * _e356) + (v1_8 * _e364)) + (v2_ * _e371)) + (v3_ * _e380);
+        }
+    }
+    type_7 _e393 = m;
+    type_8 _e394 = ms;
+    type_9 _e395 = n;
+    type_10 _e396 = nl;
+    return FurLookups {_e393, _e394, _e395, _e396, front_w, inv_cos2_};
 }
 
 FurFamilies fur_assemble(
     FurLookups l
 ) {
-    type_9 f = {};
+    type_13 f_2 = {};
     uint k_1 = 0u;
     float mss = l.ms.inner[0] + (l.front * (l.ms.inner[1] - l.ms.inner[0]));
-    type_8 lon = type_8 {{l.m.inner[0], l.m.inner[1], l.m.inner[2], mss}};
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    type_10 lon = type_10 {{l.m.inner[0], l.m.inner[1], l.m.inner[2], mss}};
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_8) {
             uint _e51 = k_1;
             k_1 = _e51 + 1u;
         }
-        loop_init_5 = false;
+        loop_init_8 = false;
         uint _e21 = k_1;
         if (_e21 < 4u) {
         } else {
@@ -669,17 +873,17 @@ FurFamilies fur_assemble(
             uint _e32 = k_1;
             uint _e37 = k_1;
             uint _e44 = k_1;
-            f.inner[_e28] = metal::float3(l.n.inner[3u * _e32], l.n.inner[(3u * _e37) + 1u], l.n.inner[(3u * _e44) + 2u]) * weight;
+            f_2.inner[_e28] = metal::float3(l.n.inner[3u * _e32], l.n.inner[(3u * _e37) + 1u], l.n.inner[(3u * _e44) + 2u]) * weight;
         }
     }
-    metal::float3 _e55 = f.inner[0];
-    metal::float3 _e57 = f.inner[1];
-    metal::float3 _e59 = f.inner[2];
-    metal::float3 _e61 = f.inner[3];
-    metal::float3 _e63 = f.inner[0];
-    metal::float3 _e65 = f.inner[1];
-    metal::float3 _e68 = f.inner[2];
-    metal::float3 _e71 = f.inner[3];
+    metal::float3 _e55 = f_2.inner[0];
+    metal::float3 _e57 = f_2.inner[1];
+    metal::float3 _e59 = f_2.inner[2];
+    metal::float3 _e61 = f_2.inner[3];
+    metal::float3 _e63 = f_2.inner[0];
+    metal::float3 _e65 = f_2.inner[1];
+    metal::float3 _e68 = f_2.inner[2];
+    metal::float3 _e71 = f_2.inner[3];
     return FurFamilies {_e55, _e57, _e59, _e61, ((_e63 + _e65) + _e68) + _e71};
 }
 
@@ -687,23 +891,24 @@ FurFamilies fur_eval_far(
     float theta_i_2,
     float theta_r_3,
     float phi_1,
+    metal::float3 sigma_ca_2,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool _e3 = fur_valid(theta_i_2, theta_r_3, phi_1);
-    if (!(_e3)) {
-        FurFamilies _e5 = fur_zero();
-        return _e5;
+    bool _e4 = fur_valid(theta_i_2, theta_r_3, phi_1);
+    if (!(_e4)) {
+        FurFamilies _e6 = fur_zero();
+        return _e6;
     }
-    FurLookups _e6 = fur_lookups(theta_i_2, theta_r_3, phi_1, fur_lut, _buffer_sizes);
-    FurFamilies _e7 = fur_assemble(_e6);
-    return _e7;
+    FurLookups _e7 = fur_lookups(theta_i_2, theta_r_3, phi_1, sigma_ca_2, fur_lut, _buffer_sizes);
+    FurFamilies _e8 = fur_assemble(_e7);
+    return _e8;
 }
 
 float fur_asin(
-    float x_4
+    float x_5
 ) {
-    float ax_3 = metal::min(metal::abs(x_4), 1.0);
+    float ax_3 = metal::min(metal::abs(x_5), 1.0);
     float x2_ = ax_3 * ax_3;
     float x4_ = x2_ * x2_;
     float p01_ = (-0.001262491 * ax_3) + 0.00667009;
@@ -711,8 +916,8 @@ float fur_asin(
     float p45_ = (-0.050174303 * ax_3) + 0.08897899;
     float p67_ = (-0.2145988 * ax_3) + FUR_HALF_PI;
     float poly = (((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_);
-    float r_14 = FUR_HALF_PI - (metal::sqrt(1.0 - ax_3) * poly);
-    return ((as_type<uint>(x_4) & 2147483648u) != 0u) ? -(metal::abs(r_14)) : metal::abs(r_14);
+    float r_16 = FUR_HALF_PI - (metal::sqrt(1.0 - ax_3) * poly);
+    return ((as_type<uint>(x_5) & 2147483648u) != 0u) ? -(metal::abs(r_16)) : metal::abs(r_16);
 }
 
 float fur_atan_poly(
@@ -729,21 +934,21 @@ float fur_atan_poly(
 
 float fur_atan2_(
     float y_1,
-    float x_5
+    float x_6
 ) {
     float r = {};
-    float ax_4 = metal::abs(x_5);
+    float ax_4 = metal::abs(x_6);
     float ay = metal::abs(y_1);
-    float a_5 = metal::min(ax_4, ay) / metal::max(metal::max(ax_4, ay), 0.000000000000000000000000000000000000011754944);
-    float t_11 = a_5 * a_5;
-    float _e10 = fur_atan_poly(t_11);
-    r = a_5 + (a_5 * (t_11 * _e10));
+    float a_8 = metal::min(ax_4, ay) / metal::max(metal::max(ax_4, ay), 0.000000000000000000000000000000000000011754944);
+    float t_12 = a_8 * a_8;
+    float _e10 = fur_atan_poly(t_12);
+    r = a_8 + (a_8 * (t_12 * _e10));
     float _e15 = r;
     float _e17 = r;
     r = (ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15;
     float _e21 = r;
     float _e23 = r;
-    r = (x_5 < 0.0) ? (FUR_PI - _e23) : _e21;
+    r = (x_6 < 0.0) ? (FUR_PI - _e23) : _e21;
     float _e28 = r;
     float _e29 = r;
     return ((as_type<uint>(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28;
@@ -799,13 +1004,13 @@ FurDirAngles fur_angles_from_dirs(
         return none;
     }
     metal::float3 un = u * (1.0 / nu);
-    float a_6 = metal::dot(wi, un);
+    float a_9 = metal::dot(wi, un);
     float b_3 = metal::dot(wr, un);
-    float _e51 = fur_asin(metal::clamp(a_6 * (1.0 / ni), -1.0, 1.0));
+    float _e51 = fur_asin(metal::clamp(a_9 * (1.0 / ni), -1.0, 1.0));
     float _e58 = fur_asin(metal::clamp(b_3 * (1.0 / nr), -1.0, 1.0));
     float y_5 = metal::dot(un, metal::cross(wi, wr));
-    float x_16 = metal::dot(wi, wr) - (a_6 * b_3);
-    float _e64 = fur_atan2_(y_5, x_16);
+    float x_18 = metal::dot(wi, wr) - (a_9 * b_3);
+    float _e64 = fur_atan2_(y_5, x_18);
     return FurDirAngles {_e51, _e58, metal::abs(_e64), true};
 }
 
@@ -813,16 +1018,17 @@ FurFamilies fur_eval_far_dirs(
     metal::float3 wi_1,
     metal::float3 wr_1,
     metal::float3 u_1,
+    metal::float3 sigma_ca_3,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FurDirAngles _e3 = fur_angles_from_dirs(wi_1, wr_1, u_1);
-    if (!(_e3.ok)) {
-        FurFamilies _e6 = fur_zero();
-        return _e6;
+    FurDirAngles _e4 = fur_angles_from_dirs(wi_1, wr_1, u_1);
+    if (!(_e4.ok)) {
+        FurFamilies _e7 = fur_zero();
+        return _e7;
     }
-    FurFamilies _e10 = fur_eval_far(_e3.theta_i, _e3.theta_r, _e3.phi, fur_lut, _buffer_sizes);
-    return _e10;
+    FurFamilies _e11 = fur_eval_far(_e4.theta_i, _e4.theta_r, _e4.phi, sigma_ca_3, fur_lut, _buffer_sizes);
+    return _e11;
 }
 
 float fur_node(
@@ -832,25 +1038,17 @@ float fur_node(
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e4 = fur_word(4u, fur_lut, _buffer_sizes);
-    uint _e6 = fur_word(5u, fur_lut, _buffer_sizes);
-    uint _e8 = fur_word(6u, fur_lut, _buffer_sizes);
-    uint n0_1 = FUR_HEADER_HALVES + (3u * _e4);
-    uint s0_1 = n0_1 + ((12u * _e8) * _e6);
-    type_10 starts = type_10 {{FUR_HEADER_HALVES, n0_1, s0_1}};
-    type_10 chans = type_10 {{3u, 12u, 2u}};
-    uint base = (starts.inner[d_1.table] + (((row * d_1.nodes) + j) * chans.inner[d_1.table])) + d_1.first;
-    if (d_1.channels == 3u) {
-        float _e36 = fur_half(base, fur_lut, _buffer_sizes);
-        float _e39 = fur_half(base + 1u, fur_lut, _buffer_sizes);
-        float _e43 = fur_half(base + 2u, fur_lut, _buffer_sizes);
-        float sum = (_e36 + _e39) + _e43;
-        float _e46 = fur_unbias(d_1.table, fur_lut, _buffer_sizes);
-        return sum * (_e46 * 0.33333334);
-    }
-    float _e50 = fur_half(base, fur_lut, _buffer_sizes);
-    float _e52 = fur_unbias(d_1.table, fur_lut, _buffer_sizes);
-    return _e50 * _e52;
+    uint _e6 = fur_word(4u, fur_lut, _buffer_sizes);
+    uint n0_1 = FUR_HEADER_HALVES + (3u * _e6);
+    uint _e9 = fur_n_plane_halves(fur_lut, _buffer_sizes);
+    uint _e11 = fur_word(FUR_N_ABS_WORD, fur_lut, _buffer_sizes);
+    uint s0_1 = n0_1 + (_e9 * _e11);
+    type_14 starts = type_14 {{FUR_HEADER_HALVES, n0_1, s0_1}};
+    type_14 chans = type_14 {{3u, 4u, 2u}};
+    uint base = (starts.inner[d_1.table] + (((row * d_1.nodes) + j) * chans.inner[d_1.table])) + d_1.channel;
+    float _e30 = fur_half(base, fur_lut, _buffer_sizes);
+    float _e32 = fur_unbias(d_1.table, fur_lut, _buffer_sizes);
+    return _e30 * _e32;
 }
 
 FurRows fur_rows(
@@ -998,7 +1196,7 @@ float fur_invert_weighted_linear(
     float len_3,
     float t_3
 ) {
-    float x_6 = 0.5;
+    float x_7 = 0.5;
     bool local_14 = {};
     float lo = 0.0;
     float hi = 1.0;
@@ -1025,71 +1223,71 @@ float fur_invert_weighted_linear(
     bool _e39 = local_14;
     if (_e39) {
         float _e43 = fur_invert_linear(q0_, q1_, 1.0, goal * (lin / total_1));
-        x_6 = _e43;
+        x_7 = _e43;
     }
-    uint2 loop_bound_6 = uint2(4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e102 = k_4;
             k_4 = _e102 + 1u;
         }
-        loop_init_6 = false;
+        loop_init_9 = false;
         uint _e50 = k_4;
         if (_e50 < 8u) {
         } else {
             break;
         }
         {
-            float _e53 = x_6;
-            float _e54 = x_6;
-            float _e57 = x_6;
+            float _e53 = x_7;
+            float _e54 = x_7;
+            float _e57 = x_7;
             float fx = (_e53 * (q0_ + (_e54 * ((0.5 * cb) + ((_e57 * 0.33333334) * cc))))) - goal;
             if (fx > 0.0) {
-                float _e68 = x_6;
+                float _e68 = x_7;
                 hi = _e68;
             } else {
-                float _e69 = x_6;
+                float _e69 = x_7;
                 lo = _e69;
             }
-            float _e70 = x_6;
-            float _e71 = x_6;
+            float _e70 = x_7;
+            float _e71 = x_7;
             float d_7 = q0_ + (_e70 * (cb + (_e71 * cc)));
             float _e76 = lo;
             float _e77 = hi;
             next = 0.5 * (_e76 + _e77);
             if (d_7 > 0.0) {
-                float _e84 = x_6;
-                float n_1 = _e84 - (fx / d_7);
+                float _e84 = x_7;
+                float n_2 = _e84 - (fx / d_7);
                 float _e87 = lo;
-                if (n_1 >= _e87) {
+                if (n_2 >= _e87) {
                     float _e91 = hi;
-                    local_15 = n_1 <= _e91;
+                    local_15 = n_2 <= _e91;
                 } else {
                     local_15 = false;
                 }
                 bool _e94 = local_15;
                 if (_e94) {
-                    next = n_1;
+                    next = n_2;
                 }
             }
             float _e95 = next;
-            float _e96 = x_6;
+            float _e96 = x_7;
             bool done = metal::abs(_e95 - _e96) <= 0.00000012;
             float _e101 = next;
-            x_6 = _e101;
+            x_7 = _e101;
             if (done) {
                 break;
             }
         }
     }
-    float _e105 = x_6;
-    float s_1 = metal::clamp(_e105 * len_3, 0.0, len_3);
+    float _e105 = x_7;
+    float s_2 = metal::clamp(_e105 * len_3, 0.0, len_3);
     float inset_1 = len_3 * 0.0000009536743;
     if (q0_ <= 0.0) {
-        local_16 = s_1 < inset_1;
+        local_16 = s_2 < inset_1;
     } else {
         local_16 = false;
     }
@@ -1098,7 +1296,7 @@ float fur_invert_weighted_linear(
         return inset_1;
     }
     if (q1_ <= 0.0) {
-        local_17 = s_1 > (len_3 - inset_1);
+        local_17 = s_2 > (len_3 - inset_1);
     } else {
         local_17 = false;
     }
@@ -1106,7 +1304,7 @@ float fur_invert_weighted_linear(
     if (_e125) {
         return len_3 - inset_1;
     }
-    return s_1;
+    return s_2;
 }
 
 metal::float2 fur_rows_weights(
@@ -1178,10 +1376,10 @@ float fur_rows_invert(
     float last_m = 0.0;
     uint j_5 = {};
     len_4 = r_8.d.entries - 1u;
-    uint2 loop_bound_7 = uint2(4294967295u);
+    uint2 loop_bound_10 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         uint _e9 = len_4;
         if (_e9 <= 1u) {
             break;
@@ -1205,16 +1403,16 @@ float fur_rows_invert(
     float _e40 = fur_rows_value(r_8, first, fur_lut, _buffer_sizes);
     prev = _e40;
     j_5 = first;
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_7 = true;
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_7) {
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_10) {
             uint _e85 = j_5;
             j_5 = _e85 + 1u;
         }
-        loop_init_7 = false;
+        loop_init_10 = false;
         uint _e53 = j_5;
         if (_e53 < end) {
         } else {
@@ -1275,26 +1473,26 @@ float fur_rows_invert_between(
 ) {
     float inset_2 = (t1_ - t0_) * 0.0000009536743;
     float _e7 = fur_unit(u_3);
-    float t_12 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
-    float _e14 = fur_rows_invert(r_9, t_12, fur_lut, _buffer_sizes);
+    float t_13 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
+    float _e14 = fur_rows_invert(r_9, t_13, fur_lut, _buffer_sizes);
     return _e14;
 }
 
 float fur_pole_keep(
     float cos_theta_i
 ) {
-    float c_1 = metal::max(cos_theta_i, 0.000001);
-    return metal::min((c_1 * c_1) * 10000.0, 1.0);
+    float c_2 = metal::max(cos_theta_i, 0.000001);
+    return metal::min((c_2 * c_2) * 10000.0, 1.0);
 }
 
 float fur_sliver_keep(
     float s_in
 ) {
-    float s_2 = metal::abs(s_in);
-    if (!((s_2 < FUR_POLE_SLIVER))) {
+    float s_3 = metal::abs(s_in);
+    if (!((s_3 < FUR_POLE_SLIVER))) {
         return 1.0;
     }
-    float s2_ = s_2 * s_2;
+    float s2_ = s_3 * s_3;
     return metal::min((s2_ * (1.0 - (s2_ * 0.33333334))) * 10000.0, 1.0);
 }
 
@@ -1319,18 +1517,18 @@ float fur_sliver_piece_mass(
         return 0.0;
     }
     float slope = (v1_6 - v0_6) / len0_;
-    type_5 t_13 = type_5 {{0.11270166, 0.5, 0.8872983}};
-    type_5 w_4 = type_5 {{0.2777778, 0.44444445, 0.2777778}};
-    uint2 loop_bound_9 = uint2(4294967295u);
-    bool loop_init_8 = true;
+    type_7 t_14 = type_7 {{0.11270166, 0.5, 0.8872983}};
+    type_7 w_5 = type_7 {{0.2777778, 0.44444445, 0.2777778}};
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_8) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_11) {
             uint _e47 = k_5;
             k_5 = _e47 + 1u;
         }
-        loop_init_8 = false;
+        loop_init_11 = false;
         uint _e30 = k_5;
         if (_e30 < 3u) {
         } else {
@@ -1338,11 +1536,11 @@ float fur_sliver_piece_mass(
         }
         {
             uint _e33 = k_5;
-            float d_8 = t_13.inner[_e33] * len_5;
+            float d_8 = t_14.inner[_e33] * len_5;
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep((x0_ - pole) + d_8);
-            acc_3 = _e36 + ((w_4.inner[_e37] * (v0_6 + (slope * d_8))) * _e44);
+            acc_3 = _e36 + ((w_5.inner[_e37] * (v0_6 + (slope * d_8))) * _e44);
         }
     }
     float _e50 = acc_3;
@@ -1380,16 +1578,16 @@ float fur_invert_sliver_piece(
     float slope_1 = (v1_7 - v0_7) / len_6;
     hi_1 = len_6;
     d_4 = len_6 * (t_6 / _e6);
-    uint2 loop_bound_10 = uint2(4294967295u);
-    bool loop_init_9 = true;
+    uint2 loop_bound_13 = uint2(4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_9) {
+        if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+        if (!loop_init_12) {
             uint _e76 = k_6;
             k_6 = _e76 + 1u;
         }
-        loop_init_9 = false;
+        loop_init_12 = false;
         uint _e31 = k_6;
         if (_e31 < 16u) {
         } else {
@@ -1398,8 +1596,8 @@ float fur_invert_sliver_piece(
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_5 = _e35 - t_6;
-            if (f_5 > 0.0) {
+            float f_7 = _e35 - t_6;
+            if (f_7 > 0.0) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1415,17 +1613,17 @@ float fur_invert_sliver_piece(
             next_1 = 0.5 * (_e49 + _e50);
             if (dens > 0.0) {
                 float _e57 = d_4;
-                float n_2 = _e57 - (f_5 / dens);
+                float n_3 = _e57 - (f_7 / dens);
                 float _e60 = lo_2;
-                if (n_2 >= _e60) {
+                if (n_3 >= _e60) {
                     float _e64 = hi_1;
-                    local_20 = n_2 <= _e64;
+                    local_20 = n_3 <= _e64;
                 } else {
                     local_20 = false;
                 }
                 bool _e67 = local_20;
                 if (_e67) {
-                    next_1 = n_2;
+                    next_1 = n_3;
                 }
             }
             float _e68 = next_1;
@@ -1462,16 +1660,16 @@ metal::float3 fur_rows_sliver(
     float at_2 = a_3 - pole_2;
     out_1 = metal::float3(0.0, 0.0, b_2);
     j_6 = _e6.i;
-    uint2 loop_bound_11 = uint2(4294967295u);
-    bool loop_init_10 = true;
+    uint2 loop_bound_14 = uint2(4294967295u);
+    bool loop_init_13 = true;
     while(true) {
-        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_10) {
+        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_13) {
             uint _e92 = j_6;
             j_6 = _e92 + 1u;
         }
-        loop_init_10 = false;
+        loop_init_13 = false;
         uint _e17 = j_6;
         if (_e17 <= _e7.i) {
         } else {
@@ -1479,17 +1677,17 @@ metal::float3 fur_rows_sliver(
         }
         {
             uint _e21 = j_6;
-            float w0_1 = (_e21 == _e6.i) ? _e6.w : 0.0;
+            float w0_2 = (_e21 == _e6.i) ? _e6.w : 0.0;
             uint _e27 = j_6;
-            float w1_1 = (_e27 == _e7.i) ? _e7.w : 1.0;
-            if (w1_1 > w0_1) {
+            float w1_2 = (_e27 == _e7.i) ? _e7.w : 1.0;
+            if (w1_2 > w0_2) {
                 uint _e33 = j_6;
                 float _e34 = fur_rows_value(r_10, _e33, fur_lut, _buffer_sizes);
                 uint _e35 = j_6;
                 float _e38 = fur_rows_value(r_10, _e35 + 1u, fur_lut, _buffer_sizes);
-                float len_7 = (w1_1 - w0_1) * r_10.d.step;
-                float v0_9 = _e34 + ((_e38 - _e34) * w0_1);
-                float v1_9 = _e34 + ((_e38 - _e34) * w1_1);
+                float len_7 = (w1_2 - w0_2) * r_10.d.step;
+                float v0_9 = _e34 + ((_e38 - _e34) * w0_2);
+                float v1_9 = _e34 + ((_e38 - _e34) * w1_2);
                 float _e49 = off;
                 float _e52 = fur_sliver_piece_mass(v0_9, v1_9, len_7, at_2 + _e49, 0.0, len_7);
                 if (t_7 >= 0.0) {
@@ -1567,18 +1765,18 @@ float fur_rows_invert_kept(
         return _e19.z;
     }
     float mid = metal::max((g_2.raw - g_2.s.x) - g_2.s.z, 0.0);
-    float t_14 = t0_1 - g_2.s.y;
-    if (!((t_14 <= mid))) {
+    float t_15 = t0_1 - g_2.s.y;
+    if (!((t_15 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_14, mid), fur_lut, _buffer_sizes);
+        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_15, mid), fur_lut, _buffer_sizes);
         return _e50;
     }
-    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_14 - mid, fur_lut, _buffer_sizes);
+    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_15 - mid, fur_lut, _buffer_sizes);
     return _e57.z;
 }
 
@@ -1600,16 +1798,16 @@ FurMAt fur_m_at(
     uint g_3 = 0u;
     FurDensity _e2 = fur_density(0u, fur_lut, _buffer_sizes);
     float off_1 = l_1.w * _e2.step;
-    uint2 loop_bound_12 = uint2(4294967295u);
-    bool loop_init_11 = true;
+    uint2 loop_bound_15 = uint2(4294967295u);
+    bool loop_init_14 = true;
     while(true) {
-        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_11) {
+        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_14) {
             uint _e45 = g_3;
             g_3 = _e45 + 1u;
         }
-        loop_init_11 = false;
+        loop_init_14 = false;
         uint _e14 = g_3;
         if (_e14 < 3u) {
         } else {
@@ -1634,12 +1832,12 @@ FurMAt fur_m_at(
 }
 
 metal::float3 fur_m_cdf(
-    float x_7,
+    float x_8,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FurAxis _e1 = fur_sum_axis(fur_lut, _buffer_sizes);
-    FurLoc _e2 = fur_locate(_e1, x_7);
+    FurLoc _e2 = fur_locate(_e1, x_8);
     FurMAt _e3 = fur_m_at(_e2, fur_lut, _buffer_sizes);
     return _e3.cdf;
 }
@@ -1697,9 +1895,9 @@ FurParts fur_parts(
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    type_14 ranges = {};
+    type_18 ranges = {};
     uint g_4 = 0u;
-    uint x_8 = 0u;
+    uint x_9 = 0u;
     float lo_x = theta_r_5 - FUR_HALF_PI;
     float hi_x = theta_r_5 + FUR_HALF_PI;
     metal::float3 _e5 = fur_m_cdf(lo_x, fur_lut, _buffer_sizes);
@@ -1712,16 +1910,16 @@ FurParts fur_parts(
     float _e20 = fur_row_total(_e19, _e17, fur_lut, _buffer_sizes);
     FurDensity _e22 = fur_density(9u, fur_lut, _buffer_sizes);
     float _e23 = fur_row_total(_e22, _e17, fur_lut, _buffer_sizes);
-    uint2 loop_bound_13 = uint2(4294967295u);
-    bool loop_init_12 = true;
+    uint2 loop_bound_16 = uint2(4294967295u);
+    bool loop_init_15 = true;
     while(true) {
-        if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_12) {
+        if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_15) {
             uint _e44 = g_4;
             g_4 = _e44 + 1u;
         }
-        loop_init_12 = false;
+        loop_init_15 = false;
         uint _e27 = g_4;
         if (_e27 < 3u) {
         } else {
@@ -1739,25 +1937,25 @@ FurParts fur_parts(
             ranges.inner[_e36] = _e43;
         }
     }
-    uint2 loop_bound_14 = uint2(4294967295u);
-    bool loop_init_13 = true;
+    uint2 loop_bound_17 = uint2(4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_13) {
-            uint _e64 = x_8;
-            x_8 = _e64 + 1u;
+        if (metal::all(loop_bound_17 == uint2(0u))) { break; }
+        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+        if (!loop_init_16) {
+            uint _e64 = x_9;
+            x_9 = _e64 + 1u;
         }
-        loop_init_13 = false;
-        uint _e49 = x_8;
+        loop_init_16 = false;
+        uint _e49 = x_9;
         if (_e49 < 2u) {
         } else {
             break;
         }
         {
-            uint _e52 = x_8;
+            uint _e52 = x_9;
             FurRows _e53 = fur_ms_rows(_e52, theta_r_5, fur_lut, _buffer_sizes);
-            uint _e55 = x_8;
+            uint _e55 = x_9;
             FurAxis _e58 = fur_ms_i_axis(fur_lut, _buffer_sizes);
             float _e62 = fur_rows_total(_e53, fur_lut, _buffer_sizes);
             FurRange _e63 = fur_rows_range(_e53, _e58, -1.5707964, FUR_HALF_PI, 0.0, _e62, fur_lut, _buffer_sizes);
@@ -1787,9 +1985,9 @@ FurParts fur_parts(
     FurRange _e112 = ranges.inner[4];
     float _e113 = fur_range_kept(_e112);
     float _e117 = fur_positive((2.0 * _e113) * _e23);
-    type_13 a_7 = type_13 {{_e86, _e94, _e102, _e110, _e117}};
-    type_14 _e119 = ranges;
-    return FurParts {a_7, {}, _e119};
+    type_17 a_10 = type_17 {{_e86, _e94, _e102, _e110, _e117}};
+    type_18 _e119 = ranges;
+    return FurParts {a_10, {}, _e119};
 }
 
 float fur_density_of(
@@ -1800,40 +1998,38 @@ float fur_density_of(
     if (!((w_2 > 0.0))) {
         return 0.0;
     }
-    float mean0_ = ((l_3.n.inner[0] + l_3.n.inner[1]) + l_3.n.inner[2]) * 0.33333334;
-    float mean1_ = ((l_3.n.inner[3] + l_3.n.inner[4]) + l_3.n.inner[5]) * 0.33333334;
-    float mean2_ = ((l_3.n.inner[6] + l_3.n.inner[7]) + l_3.n.inner[8]) * 0.33333334;
-    float mean3_ = ((l_3.n.inner[9] + l_3.n.inner[10]) + l_3.n.inner[11]) * 0.33333334;
     float ms_1 = l_3.ms.inner[0] + (l_3.front * (l_3.ms.inner[1] - l_3.ms.inner[0]));
-    float p_3 = (((l_3.m.inner[0] * mean0_) + (l_3.m.inner[1] * mean1_)) + (l_3.m.inner[2] * mean2_)) + (ms_1 * mean3_);
-    float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = p_3 * _e70;
-    float _e76 = fur_positive((pg / w_2) / metal::max(cos_theta_i_1, 0.000001));
-    return _e76;
+    float p_4 = (((l_3.m.inner[0] * l_3.n0_.inner[0]) + (l_3.m.inner[1] * l_3.n0_.inner[1])) + (l_3.m.inner[2] * l_3.n0_.inner[2])) + (ms_1 * l_3.n0_.inner[3]);
+    float _e38 = fur_pole_keep(cos_theta_i_1);
+    float pg = p_4 * _e38;
+    float _e44 = fur_positive((pg / w_2) / metal::max(cos_theta_i_1, 0.000001));
+    return _e44;
 }
 
 float fur_pdf_far(
     float theta_i_3,
     float theta_r_6,
     float phi_2,
+    metal::float3 sigma_ca_4,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool _e3 = fur_valid(theta_i_3, theta_r_6, phi_2);
-    if (!(_e3)) {
+    bool _e4 = fur_valid(theta_i_3, theta_r_6, phi_2);
+    if (!(_e4)) {
         return 0.0;
     }
-    FurParts _e6 = fur_parts(theta_r_6, fur_lut, _buffer_sizes);
-    float w_5 = (((_e6.a.inner[0] + _e6.a.inner[1]) + _e6.a.inner[2]) + _e6.a.inner[3]) + _e6.a.inner[4];
-    FurLookups _e21 = fur_lookups(theta_i_3, theta_r_6, phi_2, fur_lut, _buffer_sizes);
-    float _e22 = fur_cos_within_half_pi(theta_i_3);
-    float _e23 = fur_density_of(_e21, w_5, _e22);
-    return _e23;
+    FurParts _e7 = fur_parts(theta_r_6, fur_lut, _buffer_sizes);
+    float w_6 = (((_e7.a.inner[0] + _e7.a.inner[1]) + _e7.a.inner[2]) + _e7.a.inner[3]) + _e7.a.inner[4];
+    FurLookups _e22 = fur_lookups(theta_i_3, theta_r_6, phi_2, sigma_ca_4, fur_lut, _buffer_sizes);
+    float _e23 = fur_cos_within_half_pi(theta_i_3);
+    float _e24 = fur_density_of(_e22, w_6, _e23);
+    return _e24;
 }
 
 FurSample fur_sample_far(
     float theta_r_7,
     metal::float3 u_5,
+    metal::float3 sigma_ca_5,
     device type_1 const& fur_lut,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1842,159 +2038,159 @@ FurSample fur_sample_far(
     float total = 0.0;
     uint k_7 = 0u;
     float acc_4 = 0.0;
-    uint c = 5u;
+    uint c_1 = 5u;
     float u0_ = 0.0;
     uint last = 5u;
     uint k_8 = 0u;
     float theta_i_4 = 0.0;
     FurRows nrows = {};
     bool local_26 = {};
-    bool _e11 = fur_finite(theta_r_7);
-    if (_e11) {
+    bool _e12 = fur_finite(theta_r_7);
+    if (_e12) {
         local_25 = metal::abs(theta_r_7) <= FUR_HALF_PI;
     } else {
         local_25 = false;
     }
-    bool _e18 = local_25;
-    if (!(_e18)) {
-        FurSample _e20 = out_3;
-        return _e20;
+    bool _e19 = local_25;
+    if (!(_e19)) {
+        FurSample _e21 = out_3;
+        return _e21;
     }
-    FurParts _e21 = fur_parts(theta_r_7, fur_lut, _buffer_sizes);
-    uint2 loop_bound_15 = uint2(4294967295u);
-    bool loop_init_14 = true;
+    FurParts _e22 = fur_parts(theta_r_7, fur_lut, _buffer_sizes);
+    uint2 loop_bound_18 = uint2(4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
-        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-        if (!loop_init_14) {
-            uint _e34 = k_7;
-            k_7 = _e34 + 1u;
+        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_17) {
+            uint _e35 = k_7;
+            k_7 = _e35 + 1u;
         }
-        loop_init_14 = false;
-        uint _e26 = k_7;
-        if (_e26 < 5u) {
+        loop_init_17 = false;
+        uint _e27 = k_7;
+        if (_e27 < 5u) {
         } else {
             break;
         }
         {
-            float _e29 = total;
-            uint _e31 = k_7;
-            total = _e29 + _e21.a.inner[_e31];
+            float _e30 = total;
+            uint _e32 = k_7;
+            total = _e30 + _e22.a.inner[_e32];
         }
     }
-    float _e37 = total;
-    if (!((_e37 > 0.0))) {
-        FurSample _e41 = out_3;
-        return _e41;
+    float _e38 = total;
+    if (!((_e38 > 0.0))) {
+        FurSample _e42 = out_3;
+        return _e42;
     }
-    float _e43 = fur_unit(u_5.x);
-    float _e44 = total;
-    float target_mass = _e43 * _e44;
-    uint2 loop_bound_16 = uint2(4294967295u);
-    bool loop_init_15 = true;
+    float _e44 = fur_unit(u_5.x);
+    float _e45 = total;
+    float target_mass = _e44 * _e45;
+    uint2 loop_bound_19 = uint2(4294967295u);
+    bool loop_init_18 = true;
     while(true) {
-        if (metal::all(loop_bound_16 == uint2(0u))) { break; }
-        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-        if (!loop_init_15) {
-            uint _e76 = k_8;
-            k_8 = _e76 + 1u;
+        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_18) {
+            uint _e77 = k_8;
+            k_8 = _e77 + 1u;
         }
-        loop_init_15 = false;
-        uint _e56 = k_8;
-        if (_e56 < 5u) {
+        loop_init_18 = false;
+        uint _e57 = k_8;
+        if (_e57 < 5u) {
         } else {
             break;
         }
         {
-            uint _e60 = k_8;
-            float wk = _e21.a.inner[_e60];
+            uint _e61 = k_8;
+            float wk = _e22.a.inner[_e61];
             if (!((wk > 0.0))) {
                 continue;
             }
-            uint _e65 = k_8;
-            last = _e65;
-            float _e66 = acc_4;
-            if (target_mass < (_e66 + wk)) {
-                uint _e69 = k_8;
-                c = _e69;
-                float _e70 = acc_4;
-                float _e73 = fur_unit((target_mass - _e70) / wk);
-                u0_ = _e73;
+            uint _e66 = k_8;
+            last = _e66;
+            float _e67 = acc_4;
+            if (target_mass < (_e67 + wk)) {
+                uint _e70 = k_8;
+                c_1 = _e70;
+                float _e71 = acc_4;
+                float _e74 = fur_unit((target_mass - _e71) / wk);
+                u0_ = _e74;
                 break;
             }
-            float _e74 = acc_4;
-            acc_4 = _e74 + wk;
+            float _e75 = acc_4;
+            acc_4 = _e75 + wk;
         }
     }
-    uint _e79 = c;
-    if (_e79 == 5u) {
-        uint _e82 = last;
-        c = _e82;
+    uint _e80 = c_1;
+    if (_e80 == 5u) {
+        uint _e83 = last;
+        c_1 = _e83;
         u0_ = 0.99999994;
     }
-    float total_weight = (((_e21.a.inner[0] + _e21.a.inner[1]) + _e21.a.inner[2]) + _e21.a.inner[3]) + _e21.a.inner[4];
-    float _e98 = u0_;
-    bool negative = _e98 < 0.5;
-    uint _e103 = c;
-    if (_e103 < 3u) {
-        uint _e106 = c;
-        FurDensity _e107 = fur_density(_e106, fur_lut, _buffer_sizes);
-        FurRows _e111 = fur_rows(_e107, 0u, 0.0, -3.1415927);
-        FurAxis _e112 = fur_sum_axis(fur_lut, _buffer_sizes);
-        uint _e114 = c;
-        float _e117 = fur_rows_invert_kept(_e111, _e112, _e21.ranges.inner[_e114], u_5.y, fur_lut, _buffer_sizes);
-        theta_i_4 = metal::clamp(_e117 - theta_r_7, -1.5707964, FUR_HALF_PI);
+    float total_weight = (((_e22.a.inner[0] + _e22.a.inner[1]) + _e22.a.inner[2]) + _e22.a.inner[3]) + _e22.a.inner[4];
+    float _e99 = u0_;
+    bool negative = _e99 < 0.5;
+    uint _e104 = c_1;
+    if (_e104 < 3u) {
+        uint _e107 = c_1;
+        FurDensity _e108 = fur_density(_e107, fur_lut, _buffer_sizes);
+        FurRows _e112 = fur_rows(_e108, 0u, 0.0, -3.1415927);
+        FurAxis _e113 = fur_sum_axis(fur_lut, _buffer_sizes);
+        uint _e115 = c_1;
+        float _e118 = fur_rows_invert_kept(_e112, _e113, _e22.ranges.inner[_e115], u_5.y, fur_lut, _buffer_sizes);
+        theta_i_4 = metal::clamp(_e118 - theta_r_7, -1.5707964, FUR_HALF_PI);
     } else {
-        uint _e122 = c;
-        FurRows _e125 = fur_ms_rows(_e122 - 3u, theta_r_7, fur_lut, _buffer_sizes);
-        FurAxis _e126 = fur_ms_i_axis(fur_lut, _buffer_sizes);
-        uint _e128 = c;
-        float _e131 = fur_rows_invert_kept(_e125, _e126, _e21.ranges.inner[_e128], u_5.y, fur_lut, _buffer_sizes);
-        theta_i_4 = metal::clamp(_e131, -1.5707964, FUR_HALF_PI);
+        uint _e123 = c_1;
+        FurRows _e126 = fur_ms_rows(_e123 - 3u, theta_r_7, fur_lut, _buffer_sizes);
+        FurAxis _e127 = fur_ms_i_axis(fur_lut, _buffer_sizes);
+        uint _e129 = c_1;
+        float _e132 = fur_rows_invert_kept(_e126, _e127, _e22.ranges.inner[_e129], u_5.y, fur_lut, _buffer_sizes);
+        theta_i_4 = metal::clamp(_e132, -1.5707964, FUR_HALF_PI);
     }
-    uint _e135 = c;
-    uint family = metal::min(_e135, 3u);
-    uint _e141 = fur_word(5u, fur_lut, _buffer_sizes);
-    FurAxis _e142 = fur_axis(false, 0.63661975, _e141);
-    FurLoc _e144 = fur_locate(_e142, metal::abs(theta_r_7));
-    FurDensity _e147 = fur_density(3u + family, fur_lut, _buffer_sizes);
-    FurRows _e151 = fur_rows(_e147, _e144.i, _e144.w, 0.0);
-    nrows = _e151;
-    uint _e153 = c;
-    if (_e153 >= 3u) {
-        uint _e156 = c;
-        FurRows _e161 = fur_rows_weighted(_e156 - 2u, _e144.i, _e144.w, fur_lut, _buffer_sizes);
-        nrows = _e161;
+    uint _e136 = c_1;
+    uint family = metal::min(_e136, 3u);
+    uint _e142 = fur_word(5u, fur_lut, _buffer_sizes);
+    FurAxis _e143 = fur_axis(false, 0.63661975, _e142);
+    FurLoc _e145 = fur_locate(_e143, metal::abs(theta_r_7));
+    FurDensity _e148 = fur_density(3u + family, fur_lut, _buffer_sizes);
+    FurRows _e152 = fur_rows(_e148, _e145.i, _e145.w, 0.0);
+    nrows = _e152;
+    uint _e154 = c_1;
+    if (_e154 >= 3u) {
+        uint _e157 = c_1;
+        FurRows _e162 = fur_rows_weighted(_e157 - 2u, _e145.i, _e145.w, fur_lut, _buffer_sizes);
+        nrows = _e162;
     }
-    FurRows _e162 = nrows;
-    FurRows _e164 = nrows;
-    float _e165 = fur_rows_total(_e164, fur_lut, _buffer_sizes);
-    float _e167 = fur_rows_invert_between(_e162, 0.0, _e165, u_5.z, fur_lut, _buffer_sizes);
-    float abs_phi_1 = metal::clamp(_e167, 0.0, FUR_PI);
-    float _e173 = fur_wrap_angle(negative ? -(abs_phi_1) : abs_phi_1);
-    float _e174 = theta_i_4;
-    FurLookups _e175 = fur_lookups(_e174, theta_r_7, _e173, fur_lut, _buffer_sizes);
-    float _e176 = theta_i_4;
-    float _e177 = fur_cos_within_half_pi(_e176);
-    float _e178 = fur_density_of(_e175, total_weight, _e177);
-    if (_e178 > 0.0) {
-        bool _e183 = fur_finite(_e178);
-        local_26 = _e183;
+    FurRows _e163 = nrows;
+    FurRows _e165 = nrows;
+    float _e166 = fur_rows_total(_e165, fur_lut, _buffer_sizes);
+    float _e168 = fur_rows_invert_between(_e163, 0.0, _e166, u_5.z, fur_lut, _buffer_sizes);
+    float abs_phi_1 = metal::clamp(_e168, 0.0, FUR_PI);
+    float _e174 = fur_wrap_angle(negative ? -(abs_phi_1) : abs_phi_1);
+    float _e175 = theta_i_4;
+    FurLookups _e176 = fur_lookups(_e175, theta_r_7, _e174, sigma_ca_5, fur_lut, _buffer_sizes);
+    float _e177 = theta_i_4;
+    float _e178 = fur_cos_within_half_pi(_e177);
+    float _e179 = fur_density_of(_e176, total_weight, _e178);
+    if (_e179 > 0.0) {
+        bool _e184 = fur_finite(_e179);
+        local_26 = _e184;
     } else {
         local_26 = false;
     }
-    bool _e185 = local_26;
-    if (!(_e185)) {
-        FurSample _e187 = out_3;
-        return _e187;
+    bool _e186 = local_26;
+    if (!(_e186)) {
+        FurSample _e188 = out_3;
+        return _e188;
     }
-    FurFamilies _e188 = fur_assemble(_e175);
-    float _e189 = theta_i_4;
-    float k_14 = metal::max(metal::cos(_e189), 0.0) / _e178;
-    float _e194 = theta_i_4;
-    out_3 = FurSample {_e194, _e173, _e178, {}, metal::max(_e188.total * k_14, metal::float3(0.0)), family, true};
-    FurSample _e202 = out_3;
-    return _e202;
+    FurFamilies _e189 = fur_assemble(_e176);
+    float _e190 = theta_i_4;
+    float k_18 = metal::max(metal::cos(_e190), 0.0) / _e179;
+    float _e195 = theta_i_4;
+    out_3 = FurSample {_e195, _e174, _e179, {}, metal::max(_e189.total * k_18, metal::float3(0.0)), family, true};
+    FurSample _e203 = out_3;
+    return _e203;
 }
 
 float fur_dual_half(
@@ -2008,26 +2204,67 @@ float fur_dual_half(
 }
 
 metal::float3 fur_dual_rgb(
+    metal::uint3 a_4,
     uint h_2,
     device type_1 const& fur_dual,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e1 = fur_dual_half(h_2, fur_dual, _buffer_sizes);
-    float _e4 = fur_dual_half(h_2 + 1u, fur_dual, _buffer_sizes);
-    float _e7 = fur_dual_half(h_2 + 2u, fur_dual, _buffer_sizes);
-    return metal::float3(_e1, _e4, _e7);
+    metal::uint3 n_4 = (a_4 * FUR_DUAL_NODE_HALVES) + metal::uint3(h_2);
+    float _e7 = fur_dual_half(n_4.x, fur_dual, _buffer_sizes);
+    float _e9 = fur_dual_half(n_4.y, fur_dual, _buffer_sizes);
+    float _e11 = fur_dual_half(n_4.z, fur_dual, _buffer_sizes);
+    return metal::float3(_e7, _e9, _e11);
+}
+
+metal::float3 fur_dual_sigma_node(
+    metal::uint3 k_9
+) {
+    metal::float3 v_3 = (static_cast<metal::float3>(k_9) / metal::float3(15.0)) * 0.997009;
+    return metal::select((FUR_DUAL_KNEE * v_3) / (metal::float3(1.0) - v_3), metal::float3(1000.0), k_9 >= metal::uint3(15u));
+}
+
+FurDualColour fur_dual_locate(
+    metal::float3 sigma_in
+) {
+    metal::uint3 k_10 = {};
+    metal::float3 w_3 = {};
+    metal::bool3 _e9 = fur_is_nan3_(sigma_in);
+    metal::float3 s_4 = metal::select(metal::min(metal::max(sigma_in, metal::float3(0.0)), metal::float3(1000.0)), metal::float3(0.0), _e9);
+    metal::float3 coord = metal::min((s_4 / (s_4 + metal::float3(3.0))) / metal::float3(0.997009), metal::float3(1.0));
+    metal::float3 u_9 = metal::clamp(coord * 15.0, metal::float3(0.0), metal::float3(15.0));
+    k_10 = metal::min(naga_f2u32(u_9), metal::uint3(14u));
+    metal::uint3 _e32 = k_10;
+    metal::float3 _e33 = fur_dual_sigma_node(_e32);
+    metal::float3 lo_4 = metal::sqrt(_e33);
+    metal::uint3 _e35 = k_10;
+    metal::float3 _e39 = fur_dual_sigma_node(_e35 + metal::uint3(1u));
+    metal::float3 hi_3 = metal::sqrt(_e39);
+    w_3 = metal::clamp((metal::sqrt(s_4) - lo_4) / (hi_3 - lo_4), metal::float3(0.0), metal::float3(1.0));
+    metal::float3 _e51 = w_3;
+    metal::float3 _e54 = w_3;
+    metal::bool3 _e55 = fur_is_nan3_(_e54);
+    metal::float3 _e56 = w_3;
+    w_3 = metal::select(_e51, metal::float3(0.0), _e55 | (_e56 < metal::float3(0.0001)));
+    metal::float3 _e62 = w_3;
+    metal::uint3 _e66 = k_10;
+    metal::bool3 up = (_e62 > metal::float3(0.9999)) & ((_e66 + metal::uint3(2u)) < metal::uint3(16u));
+    metal::uint3 _e74 = k_10;
+    metal::uint3 _e75 = k_10;
+    k_10 = metal::select(_e74, _e75 + metal::uint3(1u), up);
+    metal::float3 _e80 = w_3;
+    w_3 = metal::select(_e80, metal::float3(0.0), up);
+    metal::float3 _e84 = w_3;
+    metal::float3 _e87 = w_3;
+    w_3 = metal::select(_e84, metal::float3(1.0), _e87 > metal::float3(0.9999));
+    metal::uint3 _e92 = k_10;
+    metal::float3 _e93 = w_3;
+    return FurDualColour {_e92, _e93};
 }
 
 bool fur_is_nan(
-    float x_9
+    float x_10
 ) {
-    return (as_type<uint>(x_9) & 2147483647u) > 2139095040u;
-}
-
-metal::bool3 fur_is_nan3_(
-    metal::float3 x_10
-) {
-    return (as_type<metal::uint3>(x_10) & metal::uint3(2147483647u)) > metal::uint3(2139095040u);
+    return (as_type<uint>(x_10) & 2147483647u) > 2139095040u;
 }
 
 uint naga_f2u32(float value) {
@@ -2045,48 +2282,73 @@ FurLoc fur_dual_theta(
     float _e14 = t_8;
     t_8 = metal::min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_15 = metal::min(naga_f2u32(_e17), 62u);
+    uint k_19 = metal::min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc {k_15, _e21 - static_cast<float>(k_15)};
+    return FurLoc {k_19, _e21 - static_cast<float>(k_19)};
 }
 
 metal::float3 fur_dual_node(
-    uint k_9,
-    uint f_1,
+    metal::uint3 a_5,
+    uint k_11,
+    uint f_3,
     device type_1 const& fur_dual,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e7 = fur_dual_rgb(3u * ((k_9 * FUR_DUAL_FIELDS) + f_1), fur_dual, _buffer_sizes);
-    return _e7;
+    metal::float3 _e6 = fur_dual_rgb(a_5, (k_11 * FUR_DUAL_FIELDS) + f_3, fur_dual, _buffer_sizes);
+    return _e6;
 }
 
 metal::float3 fur_dual_field(
     FurLoc l_4,
-    uint f_2,
+    uint f_4,
+    device type_1 const& fur_dual,
+    thread FurDualColour& fur_dual_at,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::uint3 lo_5 = fur_dual_at.node;
+    metal::float3 _e6 = fur_dual_node(lo_5, l_4.i, f_4, fur_dual, _buffer_sizes);
+    metal::float3 _e10 = fur_dual_node(lo_5, l_4.i + 1u, f_4, fur_dual, _buffer_sizes);
+    metal::float3 _e15 = fur_dual_node(lo_5 + metal::uint3(1u), l_4.i, f_4, fur_dual, _buffer_sizes);
+    metal::float3 _e22 = fur_dual_node(lo_5 + metal::uint3(1u), l_4.i + 1u, f_4, fur_dual, _buffer_sizes);
+    metal::float3 v0_10 = _e6 + ((_e10 - _e6) * l_4.w);
+    metal::float3 v1_10 = _e15 + ((_e22 - _e15) * l_4.w);
+    metal::float3 _e34 = fur_dual_at.w;
+    return v0_10 + ((v1_10 - v0_10) * _e34);
+}
+
+metal::float3 fur_dual_ng_at(
+    metal::uint3 a_6,
+    uint g_5,
+    FurLoc l_5,
+    FurLoc p_1,
     device type_1 const& fur_dual,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = fur_dual_node(l_4.i, f_2, fur_dual, _buffer_sizes);
-    metal::float3 _e7 = fur_dual_node(l_4.i + 1u, f_2, fur_dual, _buffer_sizes);
-    return _e3 + ((_e7 - _e3) * l_4.w);
+    uint row0_ = (((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p_1.i;
+    uint row1_ = row0_ + FUR_DUAL_PHI_NODES;
+    metal::float3 _e16 = fur_dual_rgb(a_6, FUR_DUAL_NG_START + row0_, fur_dual, _buffer_sizes);
+    metal::float3 _e21 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row0_) + 1u, fur_dual, _buffer_sizes);
+    metal::float3 _e24 = fur_dual_rgb(a_6, FUR_DUAL_NG_START + row1_, fur_dual, _buffer_sizes);
+    metal::float3 _e29 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row1_) + 1u, fur_dual, _buffer_sizes);
+    float w_7 = l_5.w;
+    float v_4 = p_1.w;
+    return (((((1.0 - w_7) * (1.0 - v_4)) * _e16) + (((1.0 - w_7) * v_4) * _e21)) + ((w_7 * (1.0 - v_4)) * _e24)) + ((w_7 * v_4) * _e29);
 }
 
 metal::float3 fur_dual_ng(
-    uint g_5,
-    FurLoc l_5,
-    FurLoc p,
+    uint g_6,
+    FurLoc l_6,
+    FurLoc p_2,
     device type_1 const& fur_dual,
+    thread FurDualColour& fur_dual_at,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint row0_ = (((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i;
-    uint row1_ = row0_ + FUR_DUAL_PHI_NODES;
-    metal::float3 _e17 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * row0_), fur_dual, _buffer_sizes);
-    metal::float3 _e24 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * (row0_ + 1u)), fur_dual, _buffer_sizes);
-    metal::float3 _e29 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * row1_), fur_dual, _buffer_sizes);
-    metal::float3 _e36 = fur_dual_rgb(FUR_DUAL_NG_START + (3u * (row1_ + 1u)), fur_dual, _buffer_sizes);
-    float w_6 = l_5.w;
-    float v_3 = p.w;
-    return (((((1.0 - w_6) * (1.0 - v_3)) * _e17) + (((1.0 - w_6) * v_3) * _e24)) + ((w_6 * (1.0 - v_3)) * _e29)) + ((w_6 * v_3) * _e36);
+    metal::uint3 _e5 = fur_dual_at.node;
+    metal::float3 _e6 = fur_dual_ng_at(_e5, g_6, l_6, p_2, fur_dual, _buffer_sizes);
+    metal::uint3 _e9 = fur_dual_at.node;
+    metal::float3 _e13 = fur_dual_ng_at(_e9 + metal::uint3(1u), g_6, l_6, p_2, fur_dual, _buffer_sizes);
+    metal::float3 _e17 = fur_dual_at.w;
+    return _e6 + ((_e13 - _e6) * _e17);
 }
 
 metal::float3 fur_rsqrt_newton(
@@ -2094,64 +2356,33 @@ metal::float3 fur_rsqrt_newton(
 ) {
     metal::float3 y_2 = {};
     y_2 = as_type<metal::float3>(metal::uint3(1597463174u) - (as_type<metal::uint3>(v_1) >> metal::uint3(1u)));
-    metal::float3 h_3 = 0.5 * v_1;
+    metal::float3 h_4 = 0.5 * v_1;
     metal::float3 _e12 = y_2;
     metal::float3 _e13 = y_2;
     metal::float3 _e15 = y_2;
-    y_2 = _e12 * (metal::float3(1.5) - ((h_3 * _e13) * _e15));
+    y_2 = _e12 * (metal::float3(1.5) - ((h_4 * _e13) * _e15));
     metal::float3 _e21 = y_2;
     metal::float3 _e22 = y_2;
     metal::float3 _e24 = y_2;
-    y_2 = _e21 * (metal::float3(1.5) - ((h_3 * _e22) * _e24));
+    y_2 = _e21 * (metal::float3(1.5) - ((h_4 * _e22) * _e24));
     metal::float3 _e30 = y_2;
     metal::float3 _e31 = y_2;
     metal::float3 _e33 = y_2;
-    return _e30 * (metal::float3(1.5) - ((h_3 * _e31) * _e33));
-}
-
-metal::int3 naga_f2i32(metal::float3 value) {
-    return static_cast<metal::int3>(metal::clamp(value, -2147483600.0, 2147483500.0));
-}
-
-metal::int3 naga_neg(metal::int3 val) {
-    return as_type<metal::int3>(-as_type<metal::uint3>(val));
-}
-
-metal::float3 fur_exp_neg(
-    metal::float3 x_in
-) {
-    metal::float3 p_1 = metal::float3(0.00019875693);
-    metal::float3 x_17 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
-    metal::float3 k_16 = metal::rint(x_17 * FUR_LOG2_E);
-    metal::float3 r_15 = ((k_16 * FUR_LN2_HI) - x_17) + (k_16 * FUR_LN2_LO);
-    metal::float3 z_1 = r_15 * r_15;
-    metal::float3 _e20 = p_1;
-    p_1 = (_e20 * r_15) + metal::float3(0.0013981999);
-    metal::float3 _e25 = p_1;
-    p_1 = (_e25 * r_15) + metal::float3(0.008333452);
-    metal::float3 _e30 = p_1;
-    p_1 = (_e30 * r_15) + metal::float3(0.041665796);
-    metal::float3 _e35 = p_1;
-    p_1 = (_e35 * r_15) + metal::float3(0.16666666);
-    metal::float3 _e40 = p_1;
-    p_1 = (_e40 * r_15) + metal::float3(0.5);
-    metal::float3 _e45 = p_1;
-    metal::float3 e = ((_e45 * z_1) + r_15) + metal::float3(1.0);
-    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_16))), metal::float3(0.0), x_in > metal::float3(87.0));
+    return _e30 * (metal::float3(1.5) - ((h_4 * _e31) * _e33));
 }
 
 metal::float3 fur_erf(
     metal::float3 x_11
 ) {
     metal::bool3 _e7 = fur_is_nan3_(x_11);
-    metal::float3 a_8 = metal::select(metal::min(metal::abs(x_11), metal::float3(10.0)), metal::float3(0.0), _e7);
-    metal::float3 p_4 = (((((((((((FUR_ERF_A6_ * a_8) + metal::float3(0.0002765672)) * a_8) + metal::float3(0.0001520143)) * a_8) + metal::float3(0.009270527)) * a_8) + metal::float3(0.04228201)) * a_8) + metal::float3(0.07052308)) * a_8) + metal::float3(1.0);
-    metal::float3 p2_ = p_4 * p_4;
+    metal::float3 a_11 = metal::select(metal::min(metal::abs(x_11), metal::float3(10.0)), metal::float3(0.0), _e7);
+    metal::float3 p_5 = (((((((((((FUR_ERF_A6_ * a_11) + metal::float3(0.0002765672)) * a_11) + metal::float3(0.0001520143)) * a_11) + metal::float3(0.009270527)) * a_11) + metal::float3(0.04228201)) * a_11) + metal::float3(0.07052308)) * a_11) + metal::float3(1.0);
+    metal::float3 p2_ = p_5 * p_5;
     metal::float3 p4_ = p2_ * p2_;
     metal::float3 p8_ = p4_ * p4_;
-    metal::float3 e_1 = metal::float3(1.0) - (metal::float3(1.0) / (p8_ * p8_));
+    metal::float3 e_2 = metal::float3(1.0) - (metal::float3(1.0) / (p8_ * p8_));
     metal::uint3 sign = as_type<metal::uint3>(x_11) & metal::uint3(2147483648u);
-    return as_type<metal::float3>(as_type<metal::uint3>(e_1) | sign);
+    return as_type<metal::float3>(as_type<metal::uint3>(e_2) | sign);
 }
 
 metal::float3 fur_dual_between(
@@ -2167,24 +2398,24 @@ metal::float3 fur_dual_gauss(
     metal::float3 v_in,
     float theta_i_5
 ) {
-    metal::float3 v_4 = metal::clamp(v_in, metal::float3(0.000003), metal::float3(1000000000000000000000000000000.0));
-    metal::float3 _e8 = fur_rsqrt_newton(v_4);
+    metal::float3 v_5 = metal::clamp(v_in, metal::float3(0.000003), metal::float3(1000000000000000000000000000000.0));
+    metal::float3 _e8 = fur_rsqrt_newton(v_5);
     metal::float3 z_2 = d_6 * _e8;
     metal::float3 _e13 = fur_exp_neg((0.5 * z_2) * z_2);
-    metal::float3 g_7 = (_e13 * _e8) * FUR_INV_SQRT_TAU;
+    metal::float3 g_8 = (_e13 * _e8) * FUR_INV_SQRT_TAU;
     metal::float3 centre = ((d_6 - metal::float3(theta_i_5)) * _e8) * FUR_FRAC_1_SQRT_2_;
     metal::float3 half_range = (FUR_HALF_PI * _e8) * FUR_FRAC_1_SQRT_2_;
     metal::float3 _e27 = fur_erf(centre + half_range);
     metal::float3 _e29 = fur_erf(centre - half_range);
     metal::float3 mass_1 = 0.5 * (_e27 - _e29);
-    return g_7 / metal::max(mass_1, metal::float3(0.05));
+    return g_8 / metal::max(mass_1, metal::float3(0.05));
 }
 
 metal::float3 fur_dual_power(
     metal::float3 log2_mu,
-    float k_10
+    float k_12
 ) {
-    metal::float3 _e6 = fur_exp_neg((-(k_10) * FUR_LN2_) * log2_mu);
+    metal::float3 _e6 = fur_exp_neg((-(k_12) * FUR_LN2_) * log2_mu);
     return _e6;
 }
 
@@ -2224,36 +2455,46 @@ metal::float3 fur_backscatter_factor(
 ) {
     metal::float3 tiny = metal::float3(0.000001);
     metal::float3 g_den = metal::float3(1.0) - (rho2_1 * mu_2m_1);
-    metal::float3 g_8 = (metal::float3(1.0) - mu_2m_1) / metal::max(g_den, tiny);
-    metal::float3 den_3 = metal::float3(1.0) - (r_rho * g_8);
-    metal::float3 _e26 = fur_dual_between((g_8 * (metal::float3(1.0) - r_rho)) / metal::max(den_3, tiny), metal::float3(1.0));
+    metal::float3 g_9 = (metal::float3(1.0) - mu_2m_1) / metal::max(g_den, tiny);
+    metal::float3 den_3 = metal::float3(1.0) - (r_rho * g_9);
+    metal::float3 _e26 = fur_dual_between((g_9 * (metal::float3(1.0) - r_rho)) / metal::max(den_3, tiny), metal::float3(1.0));
     return metal::select(metal::float3(1.0), _e26, (g_den > tiny) & (den_3 > tiny));
 }
 
 FurCoat fur_dual_coat_node(
-    uint k_11,
+    metal::uint3 n_1,
+    uint k_13,
     device type_1 const& fur_dual,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e2 = fur_dual_node(k_11, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
-    metal::float3 _e4 = fur_dual_node(k_11, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
-    metal::float3 a_9 = metal::clamp(_e4, metal::float3(0.0), metal::float3(1.0));
-    metal::float3 _e11 = fur_dual_power(_e2, 1.0);
-    metal::float3 _e15 = fur_rsqrt_newton(metal::max(a_9, metal::float3(0.000000000000000000000000000001)));
-    metal::float3 t_15 = a_9 * _e15;
-    metal::float3 _e17 = fur_reflectance_squared(_e11, t_15);
-    metal::float3 _e18 = fur_reflection_product(_e11, t_15);
-    return FurCoat {_e17, _e18};
+    metal::float3 _e3 = fur_dual_node(n_1, k_13, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
+    metal::float3 _e5 = fur_dual_node(n_1, k_13, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
+    metal::float3 a_12 = metal::clamp(_e5, metal::float3(0.0), metal::float3(1.0));
+    metal::float3 _e12 = fur_dual_power(_e3, 1.0);
+    metal::float3 _e16 = fur_rsqrt_newton(metal::max(a_12, metal::float3(0.000000000000000000000000000001)));
+    metal::float3 t_16 = a_12 * _e16;
+    metal::float3 _e18 = fur_reflectance_squared(_e12, t_16);
+    metal::float3 _e19 = fur_reflection_product(_e12, t_16);
+    return FurCoat {_e18, _e19};
 }
 
 FurCoat fur_dual_coat(
-    FurLoc l_6,
+    FurLoc l_7,
     device type_1 const& fur_dual,
+    thread FurDualColour& fur_dual_at,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FurCoat _e2 = fur_dual_coat_node(l_6.i, fur_dual, _buffer_sizes);
-    FurCoat _e6 = fur_dual_coat_node(l_6.i + 1u, fur_dual, _buffer_sizes);
-    return FurCoat {_e2.rho2_ + ((_e6.rho2_ - _e2.rho2_) * l_6.w), _e2.r_rho + ((_e6.r_rho - _e2.r_rho) * l_6.w)};
+    metal::uint3 lo_6 = fur_dual_at.node;
+    FurCoat _e5 = fur_dual_coat_node(lo_6, l_7.i, fur_dual, _buffer_sizes);
+    FurCoat _e9 = fur_dual_coat_node(lo_6, l_7.i + 1u, fur_dual, _buffer_sizes);
+    FurCoat _e14 = fur_dual_coat_node(lo_6 + metal::uint3(1u), l_7.i, fur_dual, _buffer_sizes);
+    FurCoat _e21 = fur_dual_coat_node(lo_6 + metal::uint3(1u), l_7.i + 1u, fur_dual, _buffer_sizes);
+    metal::float3 w_8 = fur_dual_at.w;
+    metal::float3 rho0_ = _e5.rho2_ + ((_e9.rho2_ - _e5.rho2_) * l_7.w);
+    metal::float3 rho1_ = _e14.rho2_ + ((_e21.rho2_ - _e14.rho2_) * l_7.w);
+    metal::float3 rr0_ = _e5.r_rho + ((_e9.r_rho - _e5.r_rho) * l_7.w);
+    metal::float3 rr1_ = _e14.r_rho + ((_e21.r_rho - _e14.r_rho) * l_7.w);
+    return FurCoat {rho0_ + ((rho1_ - rho0_) * w_8), rr0_ + ((rr1_ - rr0_) * w_8)};
 }
 
 float fur_dual_clean(
@@ -2295,111 +2536,115 @@ metal::float3 fur_eval_dual(
     float fibers_below,
     float d_f_in,
     float d_b_in,
+    metal::float3 sigma_ca_6,
     device type_1 const& fur_dual,
+    thread FurDualColour& fur_dual_at,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 out_4 = {};
-    float p_2 = {};
+    float p_3 = {};
     metal::float3 f_s = {};
-    uint g_6 = 0u;
+    uint g_7 = 0u;
+    FurDualColour _e9 = fur_dual_locate(sigma_ca_6);
+    fur_dual_at = _e9;
     metal::float3 zero = metal::float3(0.0);
-    bool _e9 = fur_valid(theta_i_6, theta_r_8, phi_in_1);
-    if (!(_e9)) {
+    bool _e12 = fur_valid(theta_i_6, theta_r_8, phi_in_1);
+    if (!(_e12)) {
         return zero;
     }
-    float _e12 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
-    float _e13 = fur_dual_below(fibers_below);
-    float _e15 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
-    float _e17 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_18 = theta_i_6 + theta_r_8;
-    float _e19 = fur_cos_within_half_pi(theta_i_6);
-    float inv_cos2_1 = 1.0 / metal::max(_e19 * _e19, FUR_MIN_COS2_);
-    float direct = metal::clamp(1.0 - _e12, 0.0, 1.0);
-    FurLoc _e30 = fur_dual_theta(theta_r_8);
-    float _e31 = fur_wrap_angle(phi_in_1);
-    float abs_phi_2 = metal::abs(_e31);
-    metal::float3 _e38 = fur_dual_field(_e30, (abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT, fur_dual, _buffer_sizes);
-    metal::float3 _e40 = fur_dual_field(_e30, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
-    metal::float3 _e42 = fur_dual_field(_e30, FUR_DUAL_A_F2_, fur_dual, _buffer_sizes);
-    FurCoat _e43 = fur_dual_coat(_e30, fur_dual, _buffer_sizes);
-    metal::float3 _e46 = fur_dual_power(_e40, 2.0 * _e13);
-    metal::float3 _e49 = fur_backscatter_factor(_e43.r_rho, _e43.rho2_, _e46);
-    metal::float3 half_energy = _e38 * _e49;
-    metal::float3 _e52 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_, fur_dual, _buffer_sizes);
-    metal::float3 _e54 = fur_dual_field(_e30, FUR_DUAL_DELTA_B, fur_dual, _buffer_sizes);
-    metal::float3 d_back = metal::float3(x_18) - _e54;
-    metal::float3 s_b = (metal::float3(1.0) + (_e17 * _e42)) * _e52;
+    float _e15 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    float _e16 = fur_dual_below(fibers_below);
+    float _e18 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    float _e20 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    float x_19 = theta_i_6 + theta_r_8;
+    float _e22 = fur_cos_within_half_pi(theta_i_6);
+    float inv_cos2_1 = 1.0 / metal::max(_e22 * _e22, FUR_MIN_COS2_);
+    float direct = metal::clamp(1.0 - _e15, 0.0, 1.0);
+    FurLoc _e33 = fur_dual_theta(theta_r_8);
+    float _e34 = fur_wrap_angle(phi_in_1);
+    float abs_phi_2 = metal::abs(_e34);
+    metal::float3 _e41 = fur_dual_field(_e33, (abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT, fur_dual, fur_dual_at, _buffer_sizes);
+    metal::float3 _e43 = fur_dual_field(_e33, FUR_DUAL_LOG2_DECAY, fur_dual, fur_dual_at, _buffer_sizes);
+    metal::float3 _e45 = fur_dual_field(_e33, FUR_DUAL_A_F2_, fur_dual, fur_dual_at, _buffer_sizes);
+    FurCoat _e46 = fur_dual_coat(_e33, fur_dual, fur_dual_at, _buffer_sizes);
+    metal::float3 _e49 = fur_dual_power(_e43, 2.0 * _e16);
+    metal::float3 _e52 = fur_backscatter_factor(_e46.r_rho, _e46.rho2_, _e49);
+    metal::float3 half_energy = _e41 * _e52;
+    metal::float3 _e55 = fur_dual_field(_e33, FUR_DUAL_SIGMA_B0_, fur_dual, fur_dual_at, _buffer_sizes);
+    metal::float3 _e57 = fur_dual_field(_e33, FUR_DUAL_DELTA_B, fur_dual, fur_dual_at, _buffer_sizes);
+    metal::float3 d_back = metal::float3(x_19) - _e57;
+    metal::float3 s_b = (metal::float3(1.0) + (_e20 * _e45)) * _e55;
     metal::float3 v_back = s_b * s_b;
-    float back_scale = (_e17 * inv_cos2_1) / FUR_PI;
+    float back_scale = (_e20 * inv_cos2_1) / FUR_PI;
     out_4 = zero;
     if (direct > 0.0) {
-        metal::float3 _e71 = fur_dual_gauss(d_back, v_back, theta_i_6);
-        out_4 = ((direct * back_scale) * half_energy) * _e71;
+        metal::float3 _e74 = fur_dual_gauss(d_back, v_back, theta_i_6);
+        out_4 = ((direct * back_scale) * half_energy) * _e74;
     }
-    if (_e12 > 0.0) {
-        FurLoc _e76 = fur_dual_theta(-(theta_i_6));
-        metal::float3 _e78 = fur_dual_field(_e76, FUR_DUAL_LOG2_DECAY, fur_dual, _buffer_sizes);
-        metal::float3 _e80 = fur_dual_field(_e76, FUR_DUAL_BETA_F, fur_dual, _buffer_sizes);
-        metal::float3 _e81 = fur_dual_power(_e78, _e12);
-        metal::float3 _e84 = fur_dual_power(_e78, 2.0 * _e13);
-        FurCoat _e85 = fur_dual_coat(_e76, fur_dual, _buffer_sizes);
-        metal::float3 _e87 = fur_downward_flux(_e81, _e84, _e85.rho2_);
-        metal::float3 spread = metal::max(_e87 - metal::float3(direct), zero) * _e15;
+    if (_e15 > 0.0) {
+        FurLoc _e79 = fur_dual_theta(-(theta_i_6));
+        metal::float3 _e81 = fur_dual_field(_e79, FUR_DUAL_LOG2_DECAY, fur_dual, fur_dual_at, _buffer_sizes);
+        metal::float3 _e83 = fur_dual_field(_e79, FUR_DUAL_BETA_F, fur_dual, fur_dual_at, _buffer_sizes);
+        metal::float3 _e84 = fur_dual_power(_e81, _e15);
+        metal::float3 _e87 = fur_dual_power(_e81, 2.0 * _e16);
+        FurCoat _e88 = fur_dual_coat(_e79, fur_dual, fur_dual_at, _buffer_sizes);
+        metal::float3 _e90 = fur_downward_flux(_e84, _e87, _e88.rho2_);
+        metal::float3 spread = metal::max(_e90 - metal::float3(direct), zero) * _e18;
         if (metal::any(spread > zero)) {
-            metal::float3 s2f = (_e12 * _e80) * _e80;
-            p_2 = abs_phi_2 * FUR_DUAL_PHI_SCALE;
-            float _e99 = p_2;
-            float _e102 = p_2;
-            p_2 = (_e102 > 0.0) ? metal::min(_e99, 31.0) : 0.0;
-            float _e107 = p_2;
-            uint j_7 = metal::min(naga_f2u32(_e107), 30u);
-            float _e111 = p_2;
-            FurLoc at_phi = FurLoc {j_7, _e111 - static_cast<float>(j_7)};
+            metal::float3 s2f = (_e15 * _e83) * _e83;
+            p_3 = abs_phi_2 * FUR_DUAL_PHI_SCALE;
+            float _e102 = p_3;
+            float _e105 = p_3;
+            p_3 = (_e105 > 0.0) ? metal::min(_e102, 31.0) : 0.0;
+            float _e110 = p_3;
+            uint j_7 = metal::min(naga_f2u32(_e110), 30u);
+            float _e114 = p_3;
+            FurLoc at_phi = FurLoc {j_7, _e114 - static_cast<float>(j_7)};
             f_s = zero;
-            uint2 loop_bound_17 = uint2(4294967295u);
-            bool loop_init_16 = true;
+            uint2 loop_bound_20 = uint2(4294967295u);
+            bool loop_init_19 = true;
             while(true) {
-                if (metal::all(loop_bound_17 == uint2(0u))) { break; }
-                loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-                if (!loop_init_16) {
-                    uint _e139 = g_6;
-                    g_6 = _e139 + 1u;
+                if (metal::all(loop_bound_20 == uint2(0u))) { break; }
+                loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+                if (!loop_init_19) {
+                    uint _e142 = g_7;
+                    g_7 = _e142 + 1u;
                 }
-                loop_init_16 = false;
-                uint _e118 = g_6;
-                if (_e118 < 4u) {
+                loop_init_19 = false;
+                uint _e121 = g_7;
+                if (_e121 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e122 = g_6;
-                    metal::float3 _e124 = fur_dual_field(_e30, FUR_DUAL_MEAN + _e122, fur_dual, _buffer_sizes);
-                    uint _e126 = g_6;
-                    metal::float3 _e128 = fur_dual_field(_e30, FUR_DUAL_SD + _e126, fur_dual, _buffer_sizes);
-                    uint _e129 = g_6;
-                    metal::float3 _e130 = fur_dual_ng(_e129, _e30, at_phi, fur_dual, _buffer_sizes);
-                    metal::float3 v_5 = (_e128 * _e128) + s2f;
-                    metal::float3 _e133 = f_s;
-                    metal::float3 _e136 = fur_dual_gauss(metal::float3(x_18) - _e124, v_5, theta_i_6);
-                    f_s = _e133 + (_e130 * _e136);
+                    uint _e125 = g_7;
+                    metal::float3 _e127 = fur_dual_field(_e33, FUR_DUAL_MEAN + _e125, fur_dual, fur_dual_at, _buffer_sizes);
+                    uint _e129 = g_7;
+                    metal::float3 _e131 = fur_dual_field(_e33, FUR_DUAL_SD + _e129, fur_dual, fur_dual_at, _buffer_sizes);
+                    uint _e132 = g_7;
+                    metal::float3 _e133 = fur_dual_ng(_e132, _e33, at_phi, fur_dual, fur_dual_at, _buffer_sizes);
+                    metal::float3 v_6 = (_e131 * _e131) + s2f;
+                    metal::float3 _e136 = f_s;
+                    metal::float3 _e139 = fur_dual_gauss(metal::float3(x_19) - _e127, v_6, theta_i_6);
+                    f_s = _e136 + (_e133 * _e139);
                 }
             }
-            metal::float3 _e143 = fur_dual_gauss(d_back, v_back + s2f, theta_i_6);
-            metal::float3 _e144 = out_4;
-            metal::float3 _e145 = f_s;
-            out_4 = _e144 + (spread * ((_e145 * inv_cos2_1) + ((back_scale * half_energy) * _e143)));
+            metal::float3 _e146 = fur_dual_gauss(d_back, v_back + s2f, theta_i_6);
+            metal::float3 _e147 = out_4;
+            metal::float3 _e148 = f_s;
+            out_4 = _e147 + (spread * ((_e148 * inv_cos2_1) + ((back_scale * half_energy) * _e146)));
         }
     }
-    float _e153 = out_4.x;
-    bool _e154 = fur_finite(_e153);
-    float _e156 = out_4.y;
+    float _e156 = out_4.x;
     bool _e157 = fur_finite(_e156);
-    float _e159 = out_4.z;
+    float _e159 = out_4.y;
     bool _e160 = fur_finite(_e159);
-    metal::bool3 finite = metal::bool3(_e154, _e157, _e160);
-    metal::float3 _e162 = out_4;
-    metal::float3 _e163 = out_4;
-    return metal::select(zero, _e162, finite & (_e163 > zero));
+    float _e162 = out_4.z;
+    bool _e163 = fur_finite(_e162);
+    metal::bool3 finite = metal::bool3(_e157, _e160, _e163);
+    metal::float3 _e165 = out_4;
+    metal::float3 _e166 = out_4;
+    return metal::select(zero, _e165, finite & (_e166 > zero));
 }
 
 metal::float3 fur_eval_dual_dirs(
@@ -2410,50 +2655,52 @@ metal::float3 fur_eval_dual_dirs(
     float fibers_below_1,
     float d_f,
     float d_b,
+    metal::float3 sigma_ca_7,
     device type_1 const& fur_dual,
+    thread FurDualColour& fur_dual_at,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FurDirAngles _e7 = fur_angles_from_dirs(wi_2, wr_2, u_6);
-    if (!(_e7.ok)) {
+    FurDirAngles _e8 = fur_angles_from_dirs(wi_2, wr_2, u_6);
+    if (!(_e8.ok)) {
         return metal::float3(0.0);
     }
-    metal::float3 _e15 = fur_eval_dual(_e7.theta_i, _e7.theta_r, _e7.phi, fibers_1, fibers_below_1, d_f, d_b, fur_dual, _buffer_sizes);
-    return _e15;
+    metal::float3 _e16 = fur_eval_dual(_e8.theta_i, _e8.theta_r, _e8.phi, fibers_1, fibers_below_1, d_f, d_b, sigma_ca_7, fur_dual, fur_dual_at, _buffer_sizes);
+    return _e16;
 }
 
 void fur_store(
     uint q,
-    FurFamilies f_3,
-    device type_18& fur_results,
+    FurFamilies f_5,
+    device type_20& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_12 = 0u;
+    uint k_14 = 0u;
     uint base_1 = 16u * q;
-    type_19 parts = type_19 {{f_3.r, f_3.tt, f_3.trt, f_3.scattered, f_3.total}};
-    uint2 loop_bound_18 = uint2(4294967295u);
-    bool loop_init_17 = true;
+    type_21 parts = type_21 {{f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total}};
+    uint2 loop_bound_21 = uint2(4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-        if (!loop_init_17) {
-            uint _e46 = k_12;
-            k_12 = _e46 + 1u;
+        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e46 = k_14;
+            k_14 = _e46 + 1u;
         }
-        loop_init_17 = false;
-        uint _e12 = k_12;
+        loop_init_20 = false;
+        uint _e12 = k_14;
         if (_e12 < 5u) {
         } else {
             break;
         }
         {
-            uint _e17 = k_12;
-            uint _e21 = k_12;
+            uint _e17 = k_14;
+            uint _e21 = k_14;
             fur_results[base_1 + (3u * _e17)] = parts.inner[_e21].x;
-            uint _e26 = k_12;
-            uint _e32 = k_12;
+            uint _e26 = k_14;
+            uint _e32 = k_14;
             fur_results[(base_1 + (3u * _e26)) + 1u] = parts.inner[_e32].y;
-            uint _e37 = k_12;
-            uint _e43 = k_12;
+            uint _e37 = k_14;
+            uint _e43 = k_14;
             fur_results[(base_1 + (3u * _e37)) + 2u] = parts.inner[_e43].z;
         }
     }
@@ -2464,31 +2711,31 @@ void fur_store(
 void fur_store_rgb(
     uint q_1,
     metal::float3 v_2,
-    device type_18& fur_results,
+    device type_20& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_13 = 3u;
+    uint k_15 = 3u;
     uint base_2 = 16u * q_1;
     fur_results[base_2] = v_2.x;
     fur_results[base_2 + 1u] = v_2.y;
     fur_results[base_2 + 2u] = v_2.z;
-    uint2 loop_bound_19 = uint2(4294967295u);
-    bool loop_init_18 = true;
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_21 = true;
     while(true) {
-        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
-        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-        if (!loop_init_18) {
-            uint _e27 = k_13;
-            k_13 = _e27 + 1u;
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_21) {
+            uint _e27 = k_15;
+            k_15 = _e27 + 1u;
         }
-        loop_init_18 = false;
-        uint _e19 = k_13;
+        loop_init_21 = false;
+        uint _e19 = k_15;
         if (_e19 < 16u) {
         } else {
             break;
         }
         {
-            uint _e23 = k_13;
+            uint _e23 = k_15;
             fur_results[base_2 + _e23] = 0.0;
         }
     }
@@ -2500,17 +2747,18 @@ struct fur_eval_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_eval_main(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_17 const& fur_queries [[user(fake0)]]
-, device type_18& fur_results [[user(fake0)]]
+, device type_19 const& fur_queries [[user(fake0)]]
+, device type_20& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_2 = id.x;
-    if (q_2 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+    if (((2u * q_2) + 1u) >= (1 + (_buffer_sizes.size3 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_10 = fur_queries[q_2];
-    FurFamilies _e11 = fur_eval_far(a_10.x, a_10.y, a_10.z, fur_lut, _buffer_sizes);
-    fur_store(q_2, _e11, fur_results, _buffer_sizes);
+    metal::float4 a_13 = fur_queries[2u * q_2];
+    metal::float4 _e23 = fur_queries[(2u * q_2) + 1u];
+    FurFamilies _e25 = fur_eval_far(a_13.x, a_13.y, a_13.z, _e23.xyz, fur_lut, _buffer_sizes);
+    fur_store(q_2, _e25, fur_results, _buffer_sizes);
     return;
 }
 
@@ -2520,19 +2768,19 @@ struct fur_eval_dirs_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_eval_dirs_main(
   metal::uint3 id_1 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_17 const& fur_queries [[user(fake0)]]
-, device type_18& fur_results [[user(fake0)]]
+, device type_19 const& fur_queries [[user(fake0)]]
+, device type_20& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_3 = id_1.x;
-    if (((3u * q_3) + 2u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+    if (((3u * q_3) + 2u) >= (1 + (_buffer_sizes.size3 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 _e13 = fur_queries[3u * q_3];
-    metal::float4 _e21 = fur_queries[(3u * q_3) + 1u];
-    metal::float4 _e29 = fur_queries[(3u * q_3) + 2u];
-    FurFamilies _e31 = fur_eval_far_dirs(_e13.xyz, _e21.xyz, _e29.xyz, fur_lut, _buffer_sizes);
-    fur_store(q_3, _e31, fur_results, _buffer_sizes);
+    metal::float4 wi_3 = fur_queries[3u * q_3];
+    metal::float4 wr_3 = fur_queries[(3u * q_3) + 1u];
+    metal::float4 u_10 = fur_queries[(3u * q_3) + 2u];
+    FurFamilies _e35 = fur_eval_far_dirs(wi_3.xyz, wr_3.xyz, u_10.xyz, metal::float3(wi_3.w, wr_3.w, u_10.w), fur_lut, _buffer_sizes);
+    fur_store(q_3, _e35, fur_results, _buffer_sizes);
     return;
 }
 
@@ -2542,25 +2790,26 @@ struct fur_sample_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_sample_main(
   metal::uint3 id_2 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_17 const& fur_queries [[user(fake0)]]
-, device type_18& fur_results [[user(fake0)]]
+, device type_19 const& fur_queries [[user(fake0)]]
+, device type_20& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_4 = id_2.x;
-    if (q_4 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+    if (((2u * q_4) + 1u) >= (1 + (_buffer_sizes.size3 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_11 = fur_queries[q_4];
-    FurSample _e10 = fur_sample_far(a_11.x, a_11.yzw, fur_lut, _buffer_sizes);
+    metal::float4 a_14 = fur_queries[2u * q_4];
+    metal::float4 _e22 = fur_queries[(2u * q_4) + 1u];
+    FurSample _e24 = fur_sample_far(a_14.x, a_14.yzw, _e22.xyz, fur_lut, _buffer_sizes);
     uint base_3 = 16u * q_4;
-    fur_results[base_3] = _e10.theta_i;
-    fur_results[base_3 + 1u] = _e10.phi;
-    fur_results[base_3 + 2u] = _e10.pdf;
-    fur_results[base_3 + 3u] = _e10.weight[0];
-    fur_results[base_3 + 4u] = _e10.weight[1];
-    fur_results[base_3 + 5u] = _e10.weight[2];
-    fur_results[base_3 + 6u] = static_cast<float>(_e10.family);
-    fur_results[base_3 + 7u] = _e10.ok ? 1.0 : 0.0;
+    fur_results[base_3] = _e24.theta_i;
+    fur_results[base_3 + 1u] = _e24.phi;
+    fur_results[base_3 + 2u] = _e24.pdf;
+    fur_results[base_3 + 3u] = _e24.weight[0];
+    fur_results[base_3 + 4u] = _e24.weight[1];
+    fur_results[base_3 + 5u] = _e24.weight[2];
+    fur_results[base_3 + 6u] = static_cast<float>(_e24.family);
+    fur_results[base_3 + 7u] = _e24.ok ? 1.0 : 0.0;
     return;
 }
 
@@ -2570,17 +2819,18 @@ struct fur_pdf_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_pdf_main(
   metal::uint3 id_3 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_17 const& fur_queries [[user(fake0)]]
-, device type_18& fur_results [[user(fake0)]]
+, device type_19 const& fur_queries [[user(fake0)]]
+, device type_20& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_5 = id_3.x;
-    if (q_5 >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+    if (((2u * q_5) + 1u) >= (1 + (_buffer_sizes.size3 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_12 = fur_queries[q_5];
-    float _e15 = fur_pdf_far(a_12.x, a_12.y, a_12.z, fur_lut, _buffer_sizes);
-    fur_results[16u * q_5] = _e15;
+    metal::float4 a_15 = fur_queries[2u * q_5];
+    metal::float4 _e27 = fur_queries[(2u * q_5) + 1u];
+    float _e29 = fur_pdf_far(a_15.x, a_15.y, a_15.z, _e27.xyz, fur_lut, _buffer_sizes);
+    fur_results[16u * q_5] = _e29;
     return;
 }
 
@@ -2590,18 +2840,20 @@ struct fur_dual_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_dual_main(
   metal::uint3 id_4 [[thread_position_in_grid]]
 , device type_1 const& fur_dual [[user(fake0)]]
-, device type_17 const& fur_queries [[user(fake0)]]
-, device type_18& fur_results [[user(fake0)]]
+, device type_19 const& fur_queries [[user(fake0)]]
+, device type_20& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    FurDualColour fur_dual_at = {};
     uint q_6 = id_4.x;
-    if (((2u * q_6) + 1u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+    if (((3u * q_6) + 2u) >= (1 + (_buffer_sizes.size3 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 a_13 = fur_queries[2u * q_6];
-    metal::float4 d_10 = fur_queries[(2u * q_6) + 1u];
-    metal::float3 _e28 = fur_eval_dual(a_13.x, a_13.y, a_13.z, a_13.w, d_10.z, d_10.x, d_10.y, fur_dual, _buffer_sizes);
-    fur_store_rgb(q_6, _e28, fur_results, _buffer_sizes);
+    metal::float4 a_16 = fur_queries[3u * q_6];
+    metal::float4 d_10 = fur_queries[(3u * q_6) + 1u];
+    metal::float4 sigma = fur_queries[(3u * q_6) + 2u];
+    metal::float3 _e36 = fur_eval_dual(a_16.x, a_16.y, a_16.z, a_16.w, d_10.z, d_10.x, d_10.y, sigma.xyz, fur_dual, fur_dual_at, _buffer_sizes);
+    fur_store_rgb(q_6, _e36, fur_results, _buffer_sizes);
     return;
 }
 
@@ -2611,19 +2863,20 @@ struct fur_dual_dirs_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_dual_dirs_main(
   metal::uint3 id_5 [[thread_position_in_grid]]
 , device type_1 const& fur_dual [[user(fake0)]]
-, device type_17 const& fur_queries [[user(fake0)]]
-, device type_18& fur_results [[user(fake0)]]
+, device type_19 const& fur_queries [[user(fake0)]]
+, device type_20& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    FurDualColour fur_dual_at = {};
     uint q_7 = id_5.x;
-    if (((4u * q_7) + 3u) >= (1 + (_buffer_sizes.size2 - 0 - 16) / 16)) {
+    if (((4u * q_7) + 3u) >= (1 + (_buffer_sizes.size3 - 0 - 16) / 16)) {
         return;
     }
-    metal::float4 wi_3 = fur_queries[4u * q_7];
-    metal::float4 wr_3 = fur_queries[(4u * q_7) + 1u];
-    metal::float4 u_8 = fur_queries[(4u * q_7) + 2u];
+    metal::float4 wi_4 = fur_queries[4u * q_7];
+    metal::float4 wr_4 = fur_queries[(4u * q_7) + 1u];
+    metal::float4 u_11 = fur_queries[(4u * q_7) + 2u];
     metal::float4 below = fur_queries[(4u * q_7) + 3u];
-    metal::float3 _e42 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, below.x, wr_3.w, u_8.w, fur_dual, _buffer_sizes);
-    fur_store_rgb(q_7, _e42, fur_results, _buffer_sizes);
+    metal::float3 _e43 = fur_eval_dual_dirs(wi_4.xyz, wr_4.xyz, u_11.xyz, wi_4.w, below.x, wr_4.w, u_11.w, below.yzw, fur_dual, fur_dual_at, _buffer_sizes);
+    fur_store_rgb(q_7, _e43, fur_results, _buffer_sizes);
     return;
 }

@@ -22,10 +22,17 @@ struct FurLoc {
     uint i;
     float w;
 };
+struct FurColour {
+    uvec3 plane;
+    vec3 w0_;
+    vec3 w1_;
+    vec3 w2_;
+};
 struct FurLookups {
     float m[3];
     float ms[2];
     float n[12];
+    float n0_[4];
     float front;
     float inv_cos2_;
 };
@@ -37,8 +44,7 @@ struct FurDensity {
     float step_;
     uint block;
     uint table;
-    uint first;
-    uint channels;
+    uint channel;
 };
 struct FurDirAngles {
     float theta_i;
@@ -77,6 +83,10 @@ struct FurParts {
     float a[5];
     FurRange ranges[5];
 };
+struct FurDualColour {
+    uvec3 node;
+    vec3 w;
+};
 struct FurCoat {
     vec3 rho2_;
     vec3 r_rho;
@@ -86,9 +96,22 @@ const float FUR_HALF_PI = 1.5707964;
 const float FUR_TAU = 6.2831855;
 const float FUR_MIN_COS2_ = 0.0001;
 const float FUR_POLE_SLIVER = 0.010000167;
-const uint FUR_HEADER_HALVES = 80u;
-const uint FUR_CLOSURE_WORD = 26u;
-const uint FUR_DUAL_HEADER_WORDS = 16u;
+const uint FUR_HEADER_HALVES = 84u;
+const uint FUR_N_ABS_WORD = 9u;
+const uint FUR_SCALE_WORD = 10u;
+const uint FUR_ABS_SCALE_WORD = 39u;
+const float FUR_SIGMA_CA_MAX = 1000.0;
+const float FUR_ABS_SCALE_ROOT = 0.25;
+const float FUR_ROOT_SHARE = 0.4;
+const float FUR_LOG2_E = 1.442695;
+const float FUR_LN2_HI = 0.6933594;
+const float FUR_LN2_LO = -0.00021219444;
+const uint FUR_CLOSURE_WORD = 27u;
+const uint FUR_DUAL_HEADER_WORDS = 20u;
+const uint FUR_DUAL_ABS_NODES = 16u;
+const uint FUR_DUAL_NODE_HALVES = 9152u;
+const float FUR_DUAL_KNEE = 3.0;
+const float FUR_DUAL_SIGMA_MAX = 1000.0;
 const uint FUR_DUAL_FIELDS = 15u;
 const uint FUR_DUAL_LOG2_DECAY = 0u;
 const uint FUR_DUAL_BETA_F = 1u;
@@ -101,7 +124,7 @@ const uint FUR_DUAL_MEAN = 7u;
 const uint FUR_DUAL_SD = 11u;
 const uint FUR_DUAL_THETA_NODES = 64u;
 const uint FUR_DUAL_PHI_NODES = 32u;
-const uint FUR_DUAL_NG_START = 2880u;
+const uint FUR_DUAL_NG_START = 960u;
 const float FUR_DUAL_THETA_SCALE = 20.371832;
 const float FUR_DUAL_PHI_SCALE = 9.867606;
 const float FUR_DUAL_MAX_FIBERS = 1000000.0;
@@ -110,9 +133,6 @@ const float FUR_DUAL_MIN_VARIANCE = 3e-6;
 const float FUR_DUAL_MIN_MASS = 0.05;
 const float FUR_DUAL_TINY = 1e-6;
 const float FUR_LN2_ = 0.6931472;
-const float FUR_LOG2_E = 1.442695;
-const float FUR_LN2_HI = 0.6933594;
-const float FUR_LN2_LO = -0.00021219444;
 const float FUR_INV_SQRT_TAU = 0.3989423;
 const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
 const float FUR_ERF_A1_ = 0.07052308;
@@ -124,9 +144,11 @@ const float FUR_ERF_A6_ = 4.30638e-5;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_17_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+FurDualColour fur_dual_at = FurDualColour(uvec3(0u), vec3(0.0));
 
-layout(std430) buffer type_18_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_19_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+
+layout(std430) buffer type_20_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -136,16 +158,41 @@ FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
 
 FurLoc fur_locate(FurAxis a, float x) {
     float u_7 = min(max(((x * a.inv_step) + a.offset), 0.0), a.last);
-    int i = min(int(u_7), (int(a.nodes) - 2));
-    return FurLoc(uint(i), (u_7 - float(i)));
+    int i_1 = min(int(u_7), (int(a.nodes) - 2));
+    return FurLoc(uint(i_1), (u_7 - float(i_1)));
 }
 
-float fur_cos_within_half_pi(float x_1) {
+bvec3 fur_is_nan3_(vec3 x_1) {
+    return greaterThan((floatBitsToUint(x_1) & uvec3(2147483647u)), uvec3(2139095040u));
+}
+
+vec3 fur_exp_neg(vec3 x_in) {
+    vec3 p = vec3(0.00019875693);
+    vec3 x_15 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_16 = roundEven((x_15 * FUR_LOG2_E));
+    vec3 r_13 = (((k_16 * FUR_LN2_HI) - x_15) + (k_16 * FUR_LN2_LO));
+    vec3 z = (r_13 * r_13);
+    vec3 _e20 = p;
+    p = ((_e20 * r_13) + vec3(0.0013981999));
+    vec3 _e25 = p;
+    p = ((_e25 * r_13) + vec3(0.008333452));
+    vec3 _e30 = p;
+    p = ((_e30 * r_13) + vec3(0.041665796));
+    vec3 _e35 = p;
+    p = ((_e35 * r_13) + vec3(0.16666666));
+    vec3 _e40 = p;
+    p = ((_e40 * r_13) + vec3(0.5));
+    vec3 _e45 = p;
+    vec3 e = (((_e45 * z) + r_13) + vec3(1.0));
+    return mix(ldexp(e, -(ivec3(k_16))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+}
+
+float fur_cos_within_half_pi(float x_2) {
     float acc = -2.755732e-7;
     float acc_1 = 2.7557319e-6;
-    float a_4 = abs(x_1);
-    if ((a_4 <= 0.7853982)) {
-        float y_3 = (a_4 * a_4);
+    float a_7 = abs(x_2);
+    if ((a_7 <= 0.7853982)) {
+        float y_3 = (a_7 * a_7);
         float _e7 = acc;
         acc = ((_e7 * y_3) + 2.4801588e-5);
         float _e11 = acc;
@@ -157,8 +204,8 @@ float fur_cos_within_half_pi(float x_1) {
         float _e23 = acc;
         return ((_e23 * y_3) + 1.0);
     }
-    float r_13 = ((1.5707964 - a_4) + ((a_4 > 4.0) ? 0.0 : -4.371139e-8));
-    float y_4 = (r_13 * r_13);
+    float r_14 = ((1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -4.371139e-8));
+    float y_4 = (r_14 * r_14);
     float _e38 = acc_1;
     acc_1 = ((_e38 * y_4) - 0.0001984127);
     float _e42 = acc_1;
@@ -166,43 +213,43 @@ float fur_cos_within_half_pi(float x_1) {
     float _e46 = acc_1;
     acc_1 = ((_e46 * y_4) - 0.16666667);
     float _e50 = acc_1;
-    return (((_e50 * y_4) * r_13) + r_13);
+    return (((_e50 * y_4) * r_14) + r_14);
 }
 
-float fur_wrap_angle(float x_2) {
+float fur_wrap_angle(float x_3) {
     bool local = false;
     bool local_1 = false;
     bool local_2 = false;
     float y = 0.0;
     bool local_3 = false;
-    if ((x_2 > -3.1415927)) {
-        local = (x_2 <= FUR_PI);
+    if ((x_3 > -3.1415927)) {
+        local = (x_3 <= FUR_PI);
     } else {
         local = false;
     }
     bool _e8 = local;
     if (_e8) {
-        return x_2;
+        return x_3;
     }
-    if ((x_2 > FUR_PI)) {
-        local_1 = (x_2 <= 9.424778);
+    if ((x_3 > FUR_PI)) {
+        local_1 = (x_3 <= 9.424778);
     } else {
         local_1 = false;
     }
     bool _e16 = local_1;
     if (_e16) {
-        return (x_2 - FUR_TAU);
+        return (x_3 - FUR_TAU);
     }
-    if ((x_2 <= -3.1415927)) {
-        local_2 = (x_2 > -9.424778);
+    if ((x_3 <= -3.1415927)) {
+        local_2 = (x_3 > -9.424778);
     } else {
         local_2 = false;
     }
     bool _e26 = local_2;
     if (_e26) {
-        return (x_2 + FUR_TAU);
+        return (x_3 + FUR_TAU);
     }
-    y = (x_2 - (FUR_TAU * floor(((x_2 + FUR_PI) / FUR_TAU))));
+    y = (x_3 - (FUR_TAU * floor(((x_3 + FUR_PI) / FUR_TAU))));
     float _e38 = y;
     if ((_e38 <= -3.1415927)) {
         float _e41 = y;
@@ -229,12 +276,12 @@ float fur_wrap_angle(float x_2) {
 }
 
 FurFamilies fur_zero() {
-    vec3 z = vec3(0.0);
-    return FurFamilies(z, z, z, z, z);
+    vec3 z_1 = vec3(0.0);
+    return FurFamilies(z_1, z_1, z_1, z_1, z_1);
 }
 
-bool fur_finite(float x_3) {
-    return ((floatBitsToUint(x_3) & 2139095040u) != 2139095040u);
+bool fur_finite(float x_4) {
+    return ((floatBitsToUint(x_4) & 2139095040u) != 2139095040u);
 }
 
 bool fur_valid(float theta_i, float theta_r, float phi) {
@@ -277,7 +324,7 @@ uint fur_entries(uint nodes_1, uint block) {
 }
 
 FurFamilies fur_assemble(FurLookups l) {
-    vec3 f[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    vec3 f_2[4] = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
     uint k_1 = 0u;
     float mss = (l.ms[0] + (l.front * (l.ms[1] - l.ms[0])));
     float lon[4] = float[4](l.m[0], l.m[1], l.m[2], mss);
@@ -300,22 +347,22 @@ FurFamilies fur_assemble(FurLookups l) {
             uint _e32 = k_1;
             uint _e37 = k_1;
             uint _e44 = k_1;
-            f[_e28] = (vec3(l.n[(3u * _e32)], l.n[((3u * _e37) + 1u)], l.n[((3u * _e44) + 2u)]) * weight);
+            f_2[_e28] = (vec3(l.n[(3u * _e32)], l.n[((3u * _e37) + 1u)], l.n[((3u * _e44) + 2u)]) * weight);
         }
     }
-    vec3 _e55 = f[0];
-    vec3 _e57 = f[1];
-    vec3 _e59 = f[2];
-    vec3 _e61 = f[3];
-    vec3 _e63 = f[0];
-    vec3 _e65 = f[1];
-    vec3 _e68 = f[2];
-    vec3 _e71 = f[3];
+    vec3 _e55 = f_2[0];
+    vec3 _e57 = f_2[1];
+    vec3 _e59 = f_2[2];
+    vec3 _e61 = f_2[3];
+    vec3 _e63 = f_2[0];
+    vec3 _e65 = f_2[1];
+    vec3 _e68 = f_2[2];
+    vec3 _e71 = f_2[3];
     return FurFamilies(_e55, _e57, _e59, _e61, (((_e63 + _e65) + _e68) + _e71));
 }
 
-float fur_asin(float x_4) {
-    float ax_3 = min(abs(x_4), 1.0);
+float fur_asin(float x_5) {
+    float ax_3 = min(abs(x_5), 1.0);
     float x2_ = (ax_3 * ax_3);
     float x4_ = (x2_ * x2_);
     float p01_ = ((-0.001262491 * ax_3) + 0.00667009);
@@ -323,8 +370,8 @@ float fur_asin(float x_4) {
     float p45_ = ((-0.050174303 * ax_3) + 0.08897899);
     float p67_ = ((-0.2145988 * ax_3) + FUR_HALF_PI);
     float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
-    float r_14 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
-    return (((floatBitsToUint(x_4) & 2147483648u) != 0u) ? -(abs(r_14)) : abs(r_14));
+    float r_15 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
+    return (((floatBitsToUint(x_5) & 2147483648u) != 0u) ? -(abs(r_15)) : abs(r_15));
 }
 
 float fur_atan_poly(float t_1) {
@@ -337,20 +384,20 @@ float fur_atan_poly(float t_1) {
     return ((((p01_1 * t2_) + p23_1) * t4_) + ((p45_1 * t2_) + p67_1));
 }
 
-float fur_atan2_(float y_1, float x_5) {
+float fur_atan2_(float y_1, float x_6) {
     float r = 0.0;
-    float ax_4 = abs(x_5);
+    float ax_4 = abs(x_6);
     float ay = abs(y_1);
-    float a_5 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_11 = (a_5 * a_5);
+    float a_8 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
+    float t_11 = (a_8 * a_8);
     float _e10 = fur_atan_poly(t_11);
-    r = (a_5 + (a_5 * (t_11 * _e10)));
+    r = (a_8 + (a_8 * (t_11 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
     float _e21 = r;
     float _e23 = r;
-    r = ((x_5 < 0.0) ? (FUR_PI - _e23) : _e21);
+    r = ((x_6 < 0.0) ? (FUR_PI - _e23) : _e21);
     float _e28 = r;
     float _e29 = r;
     return (((floatBitsToUint(y_1) & 2147483648u) != 0u) ? -(_e29) : _e28);
@@ -402,13 +449,13 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
         return none;
     }
     vec3 un = (u * (1.0 / nu));
-    float a_6 = dot(wi, un);
+    float a_9 = dot(wi, un);
     float b_3 = dot(wr, un);
-    float _e51 = fur_asin(clamp((a_6 * (1.0 / ni)), -1.0, 1.0));
+    float _e51 = fur_asin(clamp((a_9 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_5 = dot(un, cross(wi, wr));
-    float x_15 = (dot(wi, wr) - (a_6 * b_3));
-    float _e64 = fur_atan2_(y_5, x_15);
+    float x_16 = (dot(wi, wr) - (a_9 * b_3));
+    float _e64 = fur_atan2_(y_5, x_16);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -466,7 +513,7 @@ float fur_weighted_linear_mass(float v0_2, float v1_2, float a_1, float b, float
 }
 
 float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, float len_3, float t_3) {
-    float x_6 = 0.5;
+    float x_7 = 0.5;
     bool local_14 = false;
     float lo = 0.0;
     float hi = 1.0;
@@ -493,7 +540,7 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
     bool _e39 = local_14;
     if (_e39) {
         float _e43 = fur_invert_linear(q0_, q1_, 1.0, (goal * (lin / total_1)));
-        x_6 = _e43;
+        x_7 = _e43;
     }
     bool loop_init_1 = true;
     while(true) {
@@ -508,49 +555,49 @@ float fur_invert_weighted_linear(float v0_3, float v1_3, float a_2, float b_1, f
             break;
         }
         {
-            float _e53 = x_6;
-            float _e54 = x_6;
-            float _e57 = x_6;
+            float _e53 = x_7;
+            float _e54 = x_7;
+            float _e57 = x_7;
             float fx = ((_e53 * (q0_ + (_e54 * ((0.5 * cb) + ((_e57 * 0.33333334) * cc))))) - goal);
             if ((fx > 0.0)) {
-                float _e68 = x_6;
+                float _e68 = x_7;
                 hi = _e68;
             } else {
-                float _e69 = x_6;
+                float _e69 = x_7;
                 lo = _e69;
             }
-            float _e70 = x_6;
-            float _e71 = x_6;
+            float _e70 = x_7;
+            float _e71 = x_7;
             float d_7 = (q0_ + (_e70 * (cb + (_e71 * cc))));
             float _e76 = lo;
             float _e77 = hi;
             next = (0.5 * (_e76 + _e77));
             if ((d_7 > 0.0)) {
-                float _e84 = x_6;
-                float n_1 = (_e84 - (fx / d_7));
+                float _e84 = x_7;
+                float n_2 = (_e84 - (fx / d_7));
                 float _e87 = lo;
-                if ((n_1 >= _e87)) {
+                if ((n_2 >= _e87)) {
                     float _e91 = hi;
-                    local_15 = (n_1 <= _e91);
+                    local_15 = (n_2 <= _e91);
                 } else {
                     local_15 = false;
                 }
                 bool _e94 = local_15;
                 if (_e94) {
-                    next = n_1;
+                    next = n_2;
                 }
             }
             float _e95 = next;
-            float _e96 = x_6;
+            float _e96 = x_7;
             bool done = (abs((_e95 - _e96)) <= 1.2e-7);
             float _e101 = next;
-            x_6 = _e101;
+            x_7 = _e101;
             if (done) {
                 break;
             }
         }
     }
-    float _e105 = x_6;
+    float _e105 = x_7;
     float s_1 = clamp((_e105 * len_3), 0.0, len_3);
     float inset_1 = (len_3 * 9.536743e-7);
     if ((q0_ <= 0.0)) {
@@ -611,8 +658,8 @@ float fur_unit(float u_2) {
 }
 
 float fur_pole_keep(float cos_theta_i) {
-    float c_1 = max(cos_theta_i, 1e-6);
-    return min(((c_1 * c_1) * 10000.0), 1.0);
+    float c_2 = max(cos_theta_i, 1e-6);
+    return min(((c_2 * c_2) * 10000.0), 1.0);
 }
 
 float fur_sliver_keep(float s_in) {
@@ -639,7 +686,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
     }
     float slope = ((v1_6 - v0_6) / len0_);
     float t_12[3] = float[3](0.11270166, 0.5, 0.8872983);
-    float w_3[3] = float[3](0.2777778, 0.44444445, 0.2777778);
+    float w_4[3] = float[3](0.2777778, 0.44444445, 0.2777778);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -658,7 +705,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
-            acc_3 = (_e36 + ((w_3[_e37] * (v0_6 + (slope * d_8))) * _e44));
+            acc_3 = (_e36 + ((w_4[_e37] * (v0_6 + (slope * d_8))) * _e44));
         }
     }
     float _e50 = acc_3;
@@ -704,8 +751,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_4 = (_e35 - t_6);
-            if ((f_4 > 0.0)) {
+            float f_6 = (_e35 - t_6);
+            if ((f_6 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -721,17 +768,17 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_2 = (_e57 - (f_4 / dens));
+                float n_3 = (_e57 - (f_6 / dens));
                 float _e60 = lo_2;
-                if ((n_2 >= _e60)) {
+                if ((n_3 >= _e60)) {
                     float _e64 = hi_1;
-                    local_20 = (n_2 <= _e64);
+                    local_20 = (n_3 <= _e64);
                 } else {
                     local_20 = false;
                 }
                 bool _e67 = local_20;
                 if (_e67) {
-                    next_1 = n_2;
+                    next_1 = n_3;
                 }
             }
             float _e68 = next_1;
@@ -768,16 +815,12 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
     if (!((w_2 > 0.0))) {
         return 0.0;
     }
-    float mean0_ = (((l_3.n[0] + l_3.n[1]) + l_3.n[2]) * 0.33333334);
-    float mean1_ = (((l_3.n[3] + l_3.n[4]) + l_3.n[5]) * 0.33333334);
-    float mean2_ = (((l_3.n[6] + l_3.n[7]) + l_3.n[8]) * 0.33333334);
-    float mean3_ = (((l_3.n[9] + l_3.n[10]) + l_3.n[11]) * 0.33333334);
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p_3 = ((((l_3.m[0] * mean0_) + (l_3.m[1] * mean1_)) + (l_3.m[2] * mean2_)) + (ms_1 * mean3_));
-    float _e70 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p_3 * _e70);
-    float _e76 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
-    return _e76;
+    float p_4 = ((((l_3.m[0] * l_3.n0_[0]) + (l_3.m[1] * l_3.n0_[1])) + (l_3.m[2] * l_3.n0_[2])) + (ms_1 * l_3.n0_[3]));
+    float _e38 = fur_pole_keep(cos_theta_i_1);
+    float pg = (p_4 * _e38);
+    float _e44 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
+    return _e44;
 }
 
 float fur_dual_half(uint h_1) {
@@ -786,19 +829,57 @@ float fur_dual_half(uint h_1) {
     return (((h_1 & 1u) == 1u) ? pair.y : pair.x);
 }
 
-vec3 fur_dual_rgb(uint h_2) {
-    float _e1 = fur_dual_half(h_2);
-    float _e4 = fur_dual_half((h_2 + 1u));
-    float _e7 = fur_dual_half((h_2 + 2u));
-    return vec3(_e1, _e4, _e7);
+vec3 fur_dual_rgb(uvec3 a_4, uint h_2) {
+    uvec3 n_4 = ((a_4 * FUR_DUAL_NODE_HALVES) + uvec3(h_2));
+    float _e7 = fur_dual_half(n_4.x);
+    float _e9 = fur_dual_half(n_4.y);
+    float _e11 = fur_dual_half(n_4.z);
+    return vec3(_e7, _e9, _e11);
 }
 
-bool fur_is_nan(float x_9) {
-    return ((floatBitsToUint(x_9) & 2147483647u) > 2139095040u);
+vec3 fur_dual_sigma_node(uvec3 k_9) {
+    vec3 v_3 = ((vec3(k_9) / vec3(15.0)) * 0.997009);
+    return mix(((FUR_DUAL_KNEE * v_3) / (vec3(1.0) - v_3)), vec3(1000.0), greaterThanEqual(k_9, uvec3(15u)));
 }
 
-bvec3 fur_is_nan3_(vec3 x_10) {
-    return greaterThan((floatBitsToUint(x_10) & uvec3(2147483647u)), uvec3(2139095040u));
+FurDualColour fur_dual_locate(vec3 sigma_in) {
+    uvec3 k_10 = uvec3(0u);
+    vec3 w_3 = vec3(0.0);
+    bvec3 _e9 = fur_is_nan3_(sigma_in);
+    vec3 s_3 = mix(min(max(sigma_in, vec3(0.0)), vec3(1000.0)), vec3(0.0), _e9);
+    vec3 coord = min(((s_3 / (s_3 + vec3(3.0))) / vec3(0.997009)), vec3(1.0));
+    vec3 u_8 = clamp((coord * 15.0), vec3(0.0), vec3(15.0));
+    k_10 = min(uvec3(u_8), uvec3(14u));
+    uvec3 _e32 = k_10;
+    vec3 _e33 = fur_dual_sigma_node(_e32);
+    vec3 lo_4 = sqrt(_e33);
+    uvec3 _e35 = k_10;
+    vec3 _e39 = fur_dual_sigma_node((_e35 + uvec3(1u)));
+    vec3 hi_3 = sqrt(_e39);
+    w_3 = clamp(((sqrt(s_3) - lo_4) / (hi_3 - lo_4)), vec3(0.0), vec3(1.0));
+    vec3 _e51 = w_3;
+    vec3 _e54 = w_3;
+    bvec3 _e55 = fur_is_nan3_(_e54);
+    vec3 _e56 = w_3;
+    w_3 = mix(_e51, vec3(0.0), bvec3(_e55.x || lessThan(_e56, vec3(0.0001)).x, _e55.y || lessThan(_e56, vec3(0.0001)).y, _e55.z || lessThan(_e56, vec3(0.0001)).z));
+    vec3 _e62 = w_3;
+    uvec3 _e66 = k_10;
+    bvec3 up = bvec3(greaterThan(_e62, vec3(0.9999)).x && lessThan((_e66 + uvec3(2u)), uvec3(16u)).x, greaterThan(_e62, vec3(0.9999)).y && lessThan((_e66 + uvec3(2u)), uvec3(16u)).y, greaterThan(_e62, vec3(0.9999)).z && lessThan((_e66 + uvec3(2u)), uvec3(16u)).z);
+    uvec3 _e74 = k_10;
+    uvec3 _e75 = k_10;
+    k_10 = mix(_e74, (_e75 + uvec3(1u)), up);
+    vec3 _e80 = w_3;
+    w_3 = mix(_e80, vec3(0.0), up);
+    vec3 _e84 = w_3;
+    vec3 _e87 = w_3;
+    w_3 = mix(_e84, vec3(1.0), greaterThan(_e87, vec3(0.9999)));
+    uvec3 _e92 = k_10;
+    vec3 _e93 = w_3;
+    return FurDualColour(_e92, _e93);
+}
+
+bool fur_is_nan(float x_10) {
+    return ((floatBitsToUint(x_10) & 2147483647u) > 2139095040u);
 }
 
 FurLoc fur_dual_theta(float theta) {
@@ -810,32 +891,47 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_14 = min(uint(_e17), 62u);
+    uint k_17 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_14, (_e21 - float(k_14)));
+    return FurLoc(k_17, (_e21 - float(k_17)));
 }
 
-vec3 fur_dual_node(uint k_9, uint f_1) {
-    vec3 _e7 = fur_dual_rgb((3u * ((k_9 * FUR_DUAL_FIELDS) + f_1)));
-    return _e7;
+vec3 fur_dual_node(uvec3 a_5, uint k_11, uint f_3) {
+    vec3 _e6 = fur_dual_rgb(a_5, ((k_11 * FUR_DUAL_FIELDS) + f_3));
+    return _e6;
 }
 
-vec3 fur_dual_field(FurLoc l_4, uint f_2) {
-    vec3 _e3 = fur_dual_node(l_4.i, f_2);
-    vec3 _e7 = fur_dual_node((l_4.i + 1u), f_2);
-    return (_e3 + ((_e7 - _e3) * l_4.w));
+vec3 fur_dual_field(FurLoc l_4, uint f_4) {
+    uvec3 lo_5 = fur_dual_at.node;
+    vec3 _e6 = fur_dual_node(lo_5, l_4.i, f_4);
+    vec3 _e10 = fur_dual_node(lo_5, (l_4.i + 1u), f_4);
+    vec3 _e15 = fur_dual_node((lo_5 + uvec3(1u)), l_4.i, f_4);
+    vec3 _e22 = fur_dual_node((lo_5 + uvec3(1u)), (l_4.i + 1u), f_4);
+    vec3 v0_8 = (_e6 + ((_e10 - _e6) * l_4.w));
+    vec3 v1_8 = (_e15 + ((_e22 - _e15) * l_4.w));
+    vec3 _e34 = fur_dual_at.w;
+    return (v0_8 + ((v1_8 - v0_8) * _e34));
 }
 
-vec3 fur_dual_ng(uint g_5, FurLoc l_5, FurLoc p) {
-    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i);
+vec3 fur_dual_ng_at(uvec3 a_6, uint g_5, FurLoc l_5, FurLoc p_1) {
+    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p_1.i);
     uint row1_ = (row0_ + FUR_DUAL_PHI_NODES);
-    vec3 _e17 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row0_)));
-    vec3 _e24 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row0_ + 1u))));
-    vec3 _e29 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * row1_)));
-    vec3 _e36 = fur_dual_rgb((FUR_DUAL_NG_START + (3u * (row1_ + 1u))));
-    float w_4 = l_5.w;
-    float v_3 = p.w;
-    return ((((((1.0 - w_4) * (1.0 - v_3)) * _e17) + (((1.0 - w_4) * v_3) * _e24)) + ((w_4 * (1.0 - v_3)) * _e29)) + ((w_4 * v_3) * _e36));
+    vec3 _e16 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row0_));
+    vec3 _e21 = fur_dual_rgb(a_6, ((FUR_DUAL_NG_START + row0_) + 1u));
+    vec3 _e24 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row1_));
+    vec3 _e29 = fur_dual_rgb(a_6, ((FUR_DUAL_NG_START + row1_) + 1u));
+    float w_5 = l_5.w;
+    float v_4 = p_1.w;
+    return ((((((1.0 - w_5) * (1.0 - v_4)) * _e16) + (((1.0 - w_5) * v_4) * _e21)) + ((w_5 * (1.0 - v_4)) * _e24)) + ((w_5 * v_4) * _e29));
+}
+
+vec3 fur_dual_ng(uint g_6, FurLoc l_6, FurLoc p_2) {
+    uvec3 _e5 = fur_dual_at.node;
+    vec3 _e6 = fur_dual_ng_at(_e5, g_6, l_6, p_2);
+    uvec3 _e9 = fur_dual_at.node;
+    vec3 _e13 = fur_dual_ng_at((_e9 + uvec3(1u)), g_6, l_6, p_2);
+    vec3 _e17 = fur_dual_at.w;
+    return (_e6 + ((_e13 - _e6) * _e17));
 }
 
 vec3 fur_rsqrt_newton(vec3 v_1) {
@@ -856,32 +952,11 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
     return (_e30 * (vec3(1.5) - ((h_3 * _e31) * _e33)));
 }
 
-vec3 fur_exp_neg(vec3 x_in) {
-    vec3 p_1 = vec3(0.00019875693);
-    vec3 x_16 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_15 = roundEven((x_16 * FUR_LOG2_E));
-    vec3 r_15 = (((k_15 * FUR_LN2_HI) - x_16) + (k_15 * FUR_LN2_LO));
-    vec3 z_1 = (r_15 * r_15);
-    vec3 _e20 = p_1;
-    p_1 = ((_e20 * r_15) + vec3(0.0013981999));
-    vec3 _e25 = p_1;
-    p_1 = ((_e25 * r_15) + vec3(0.008333452));
-    vec3 _e30 = p_1;
-    p_1 = ((_e30 * r_15) + vec3(0.041665796));
-    vec3 _e35 = p_1;
-    p_1 = ((_e35 * r_15) + vec3(0.16666666));
-    vec3 _e40 = p_1;
-    p_1 = ((_e40 * r_15) + vec3(0.5));
-    vec3 _e45 = p_1;
-    vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_15))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
-}
-
 vec3 fur_erf(vec3 x_11) {
     bvec3 _e7 = fur_is_nan3_(x_11);
-    vec3 a_7 = mix(min(abs(x_11), vec3(10.0)), vec3(0.0), _e7);
-    vec3 p_4 = ((((((((((((FUR_ERF_A6_ * a_7) + vec3(0.0002765672)) * a_7) + vec3(0.0001520143)) * a_7) + vec3(0.009270527)) * a_7) + vec3(0.04228201)) * a_7) + vec3(0.07052308)) * a_7) + vec3(1.0));
-    vec3 p2_ = (p_4 * p_4);
+    vec3 a_10 = mix(min(abs(x_11), vec3(10.0)), vec3(0.0), _e7);
+    vec3 p_5 = ((((((((((((FUR_ERF_A6_ * a_10) + vec3(0.0002765672)) * a_10) + vec3(0.0001520143)) * a_10) + vec3(0.009270527)) * a_10) + vec3(0.04228201)) * a_10) + vec3(0.07052308)) * a_10) + vec3(1.0));
+    vec3 p2_ = (p_5 * p_5);
     vec3 p4_ = (p2_ * p2_);
     vec3 p8_ = (p4_ * p4_);
     vec3 e_1 = (vec3(1.0) - (vec3(1.0) / (p8_ * p8_)));
@@ -895,21 +970,21 @@ vec3 fur_dual_between(vec3 x_12, vec3 top) {
 }
 
 vec3 fur_dual_gauss(vec3 d_6, vec3 v_in, float theta_i_5) {
-    vec3 v_4 = clamp(v_in, vec3(3e-6), vec3(1e30));
-    vec3 _e8 = fur_rsqrt_newton(v_4);
+    vec3 v_5 = clamp(v_in, vec3(3e-6), vec3(1e30));
+    vec3 _e8 = fur_rsqrt_newton(v_5);
     vec3 z_2 = (d_6 * _e8);
     vec3 _e13 = fur_exp_neg(((0.5 * z_2) * z_2));
-    vec3 g_7 = ((_e13 * _e8) * FUR_INV_SQRT_TAU);
+    vec3 g_8 = ((_e13 * _e8) * FUR_INV_SQRT_TAU);
     vec3 centre = (((d_6 - vec3(theta_i_5)) * _e8) * FUR_FRAC_1_SQRT_2_);
     vec3 half_range = ((FUR_HALF_PI * _e8) * FUR_FRAC_1_SQRT_2_);
     vec3 _e27 = fur_erf((centre + half_range));
     vec3 _e29 = fur_erf((centre - half_range));
     vec3 mass = (0.5 * (_e27 - _e29));
-    return (g_7 / max(mass, vec3(0.05)));
+    return (g_8 / max(mass, vec3(0.05)));
 }
 
-vec3 fur_dual_power(vec3 log2_mu, float k_10) {
-    vec3 _e6 = fur_exp_neg(((-(k_10) * FUR_LN2_) * log2_mu));
+vec3 fur_dual_power(vec3 log2_mu, float k_12) {
+    vec3 _e6 = fur_exp_neg(((-(k_12) * FUR_LN2_) * log2_mu));
     return _e6;
 }
 
@@ -935,28 +1010,36 @@ vec3 fur_reflection_product(vec3 mu_1, vec3 t_10) {
 vec3 fur_backscatter_factor(vec3 r_rho, vec3 rho2_1, vec3 mu_2m_1) {
     vec3 tiny = vec3(1e-6);
     vec3 g_den = (vec3(1.0) - (rho2_1 * mu_2m_1));
-    vec3 g_8 = ((vec3(1.0) - mu_2m_1) / max(g_den, tiny));
-    vec3 den_3 = (vec3(1.0) - (r_rho * g_8));
-    vec3 _e26 = fur_dual_between(((g_8 * (vec3(1.0) - r_rho)) / max(den_3, tiny)), vec3(1.0));
+    vec3 g_9 = ((vec3(1.0) - mu_2m_1) / max(g_den, tiny));
+    vec3 den_3 = (vec3(1.0) - (r_rho * g_9));
+    vec3 _e26 = fur_dual_between(((g_9 * (vec3(1.0) - r_rho)) / max(den_3, tiny)), vec3(1.0));
     return mix(vec3(1.0), _e26, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
 }
 
-FurCoat fur_dual_coat_node(uint k_11) {
-    vec3 _e2 = fur_dual_node(k_11, FUR_DUAL_LOG2_DECAY);
-    vec3 _e4 = fur_dual_node(k_11, FUR_DUAL_A_F2_);
-    vec3 a_8 = clamp(_e4, vec3(0.0), vec3(1.0));
-    vec3 _e11 = fur_dual_power(_e2, 1.0);
-    vec3 _e15 = fur_rsqrt_newton(max(a_8, vec3(1e-30)));
-    vec3 t_13 = (a_8 * _e15);
-    vec3 _e17 = fur_reflectance_squared(_e11, t_13);
-    vec3 _e18 = fur_reflection_product(_e11, t_13);
-    return FurCoat(_e17, _e18);
+FurCoat fur_dual_coat_node(uvec3 n_1, uint k_13) {
+    vec3 _e3 = fur_dual_node(n_1, k_13, FUR_DUAL_LOG2_DECAY);
+    vec3 _e5 = fur_dual_node(n_1, k_13, FUR_DUAL_A_F2_);
+    vec3 a_11 = clamp(_e5, vec3(0.0), vec3(1.0));
+    vec3 _e12 = fur_dual_power(_e3, 1.0);
+    vec3 _e16 = fur_rsqrt_newton(max(a_11, vec3(1e-30)));
+    vec3 t_13 = (a_11 * _e16);
+    vec3 _e18 = fur_reflectance_squared(_e12, t_13);
+    vec3 _e19 = fur_reflection_product(_e12, t_13);
+    return FurCoat(_e18, _e19);
 }
 
-FurCoat fur_dual_coat(FurLoc l_6) {
-    FurCoat _e2 = fur_dual_coat_node(l_6.i);
-    FurCoat _e6 = fur_dual_coat_node((l_6.i + 1u));
-    return FurCoat((_e2.rho2_ + ((_e6.rho2_ - _e2.rho2_) * l_6.w)), (_e2.r_rho + ((_e6.r_rho - _e2.r_rho) * l_6.w)));
+FurCoat fur_dual_coat(FurLoc l_7) {
+    uvec3 lo_6 = fur_dual_at.node;
+    FurCoat _e5 = fur_dual_coat_node(lo_6, l_7.i);
+    FurCoat _e9 = fur_dual_coat_node(lo_6, (l_7.i + 1u));
+    FurCoat _e14 = fur_dual_coat_node((lo_6 + uvec3(1u)), l_7.i);
+    FurCoat _e21 = fur_dual_coat_node((lo_6 + uvec3(1u)), (l_7.i + 1u));
+    vec3 w_6 = fur_dual_at.w;
+    vec3 rho0_ = (_e5.rho2_ + ((_e9.rho2_ - _e5.rho2_) * l_7.w));
+    vec3 rho1_ = (_e14.rho2_ + ((_e21.rho2_ - _e14.rho2_) * l_7.w));
+    vec3 rr0_ = (_e5.r_rho + ((_e9.r_rho - _e5.r_rho) * l_7.w));
+    vec3 rr1_ = (_e14.r_rho + ((_e21.r_rho - _e14.r_rho) * l_7.w));
+    return FurCoat((rho0_ + ((rho1_ - rho0_) * w_6)), (rr0_ + ((rr1_ - rr0_) * w_6)));
 }
 
 float fur_dual_clean(float x_13, float top_1) {
@@ -985,142 +1068,144 @@ float fur_dual_below(float x_14) {
     return (_e14 ? min(x_14, FUR_DUAL_MAX_FIBERS) : deep);
 }
 
-vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fibers, float fibers_below, float d_f_in, float d_b_in) {
+vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fibers, float fibers_below, float d_f_in, float d_b_in, vec3 sigma_ca_6) {
     vec3 out_4 = vec3(0.0);
-    float p_2 = 0.0;
+    float p_3 = 0.0;
     vec3 f_s = vec3(0.0);
-    uint g_6 = 0u;
+    uint g_7 = 0u;
+    FurDualColour _e9 = fur_dual_locate(sigma_ca_6);
+    fur_dual_at = _e9;
     vec3 zero = vec3(0.0);
-    bool _e9 = fur_valid(theta_i_6, theta_r_8, phi_in_1);
-    if (!(_e9)) {
+    bool _e12 = fur_valid(theta_i_6, theta_r_8, phi_in_1);
+    if (!(_e12)) {
         return zero;
     }
-    float _e12 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
-    float _e13 = fur_dual_below(fibers_below);
-    float _e15 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
-    float _e17 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
+    float _e15 = fur_dual_clean(fibers, FUR_DUAL_MAX_FIBERS);
+    float _e16 = fur_dual_below(fibers_below);
+    float _e18 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
+    float _e20 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
     float x_17 = (theta_i_6 + theta_r_8);
-    float _e19 = fur_cos_within_half_pi(theta_i_6);
-    float inv_cos2_ = (1.0 / max((_e19 * _e19), FUR_MIN_COS2_));
-    float direct = clamp((1.0 - _e12), 0.0, 1.0);
-    FurLoc _e30 = fur_dual_theta(theta_r_8);
-    float _e31 = fur_wrap_angle(phi_in_1);
-    float abs_phi = abs(_e31);
-    vec3 _e38 = fur_dual_field(_e30, ((abs_phi < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
-    vec3 _e40 = fur_dual_field(_e30, FUR_DUAL_LOG2_DECAY);
-    vec3 _e42 = fur_dual_field(_e30, FUR_DUAL_A_F2_);
-    FurCoat _e43 = fur_dual_coat(_e30);
-    vec3 _e46 = fur_dual_power(_e40, (2.0 * _e13));
-    vec3 _e49 = fur_backscatter_factor(_e43.r_rho, _e43.rho2_, _e46);
-    vec3 half_energy = (_e38 * _e49);
-    vec3 _e52 = fur_dual_field(_e30, FUR_DUAL_SIGMA_B0_);
-    vec3 _e54 = fur_dual_field(_e30, FUR_DUAL_DELTA_B);
-    vec3 d_back = (vec3(x_17) - _e54);
-    vec3 s_b = ((vec3(1.0) + (_e17 * _e42)) * _e52);
+    float _e22 = fur_cos_within_half_pi(theta_i_6);
+    float inv_cos2_ = (1.0 / max((_e22 * _e22), FUR_MIN_COS2_));
+    float direct = clamp((1.0 - _e15), 0.0, 1.0);
+    FurLoc _e33 = fur_dual_theta(theta_r_8);
+    float _e34 = fur_wrap_angle(phi_in_1);
+    float abs_phi = abs(_e34);
+    vec3 _e41 = fur_dual_field(_e33, ((abs_phi < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
+    vec3 _e43 = fur_dual_field(_e33, FUR_DUAL_LOG2_DECAY);
+    vec3 _e45 = fur_dual_field(_e33, FUR_DUAL_A_F2_);
+    FurCoat _e46 = fur_dual_coat(_e33);
+    vec3 _e49 = fur_dual_power(_e43, (2.0 * _e16));
+    vec3 _e52 = fur_backscatter_factor(_e46.r_rho, _e46.rho2_, _e49);
+    vec3 half_energy = (_e41 * _e52);
+    vec3 _e55 = fur_dual_field(_e33, FUR_DUAL_SIGMA_B0_);
+    vec3 _e57 = fur_dual_field(_e33, FUR_DUAL_DELTA_B);
+    vec3 d_back = (vec3(x_17) - _e57);
+    vec3 s_b = ((vec3(1.0) + (_e20 * _e45)) * _e55);
     vec3 v_back = (s_b * s_b);
-    float back_scale = ((_e17 * inv_cos2_) / FUR_PI);
+    float back_scale = ((_e20 * inv_cos2_) / FUR_PI);
     out_4 = zero;
     if ((direct > 0.0)) {
-        vec3 _e71 = fur_dual_gauss(d_back, v_back, theta_i_6);
-        out_4 = (((direct * back_scale) * half_energy) * _e71);
+        vec3 _e74 = fur_dual_gauss(d_back, v_back, theta_i_6);
+        out_4 = (((direct * back_scale) * half_energy) * _e74);
     }
-    if ((_e12 > 0.0)) {
-        FurLoc _e76 = fur_dual_theta(-(theta_i_6));
-        vec3 _e78 = fur_dual_field(_e76, FUR_DUAL_LOG2_DECAY);
-        vec3 _e80 = fur_dual_field(_e76, FUR_DUAL_BETA_F);
-        vec3 _e81 = fur_dual_power(_e78, _e12);
-        vec3 _e84 = fur_dual_power(_e78, (2.0 * _e13));
-        FurCoat _e85 = fur_dual_coat(_e76);
-        vec3 _e87 = fur_downward_flux(_e81, _e84, _e85.rho2_);
-        vec3 spread = (max((_e87 - vec3(direct)), zero) * _e15);
+    if ((_e15 > 0.0)) {
+        FurLoc _e79 = fur_dual_theta(-(theta_i_6));
+        vec3 _e81 = fur_dual_field(_e79, FUR_DUAL_LOG2_DECAY);
+        vec3 _e83 = fur_dual_field(_e79, FUR_DUAL_BETA_F);
+        vec3 _e84 = fur_dual_power(_e81, _e15);
+        vec3 _e87 = fur_dual_power(_e81, (2.0 * _e16));
+        FurCoat _e88 = fur_dual_coat(_e79);
+        vec3 _e90 = fur_downward_flux(_e84, _e87, _e88.rho2_);
+        vec3 spread = (max((_e90 - vec3(direct)), zero) * _e18);
         if (any(greaterThan(spread, zero))) {
-            vec3 s2f = ((_e12 * _e80) * _e80);
-            p_2 = (abs_phi * FUR_DUAL_PHI_SCALE);
-            float _e99 = p_2;
-            float _e102 = p_2;
-            p_2 = ((_e102 > 0.0) ? min(_e99, 31.0) : 0.0);
-            float _e107 = p_2;
-            uint j_7 = min(uint(_e107), 30u);
-            float _e111 = p_2;
-            FurLoc at_phi = FurLoc(j_7, (_e111 - float(j_7)));
+            vec3 s2f = ((_e15 * _e83) * _e83);
+            p_3 = (abs_phi * FUR_DUAL_PHI_SCALE);
+            float _e102 = p_3;
+            float _e105 = p_3;
+            p_3 = ((_e105 > 0.0) ? min(_e102, 31.0) : 0.0);
+            float _e110 = p_3;
+            uint j_7 = min(uint(_e110), 30u);
+            float _e114 = p_3;
+            FurLoc at_phi = FurLoc(j_7, (_e114 - float(j_7)));
             f_s = zero;
             bool loop_init_4 = true;
             while(true) {
                 if (!loop_init_4) {
-                    uint _e139 = g_6;
-                    g_6 = (_e139 + 1u);
+                    uint _e142 = g_7;
+                    g_7 = (_e142 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e118 = g_6;
-                if ((_e118 < 4u)) {
+                uint _e121 = g_7;
+                if ((_e121 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e122 = g_6;
-                    vec3 _e124 = fur_dual_field(_e30, (FUR_DUAL_MEAN + _e122));
-                    uint _e126 = g_6;
-                    vec3 _e128 = fur_dual_field(_e30, (FUR_DUAL_SD + _e126));
-                    uint _e129 = g_6;
-                    vec3 _e130 = fur_dual_ng(_e129, _e30, at_phi);
-                    vec3 v_5 = ((_e128 * _e128) + s2f);
-                    vec3 _e133 = f_s;
-                    vec3 _e136 = fur_dual_gauss((vec3(x_17) - _e124), v_5, theta_i_6);
-                    f_s = (_e133 + (_e130 * _e136));
+                    uint _e125 = g_7;
+                    vec3 _e127 = fur_dual_field(_e33, (FUR_DUAL_MEAN + _e125));
+                    uint _e129 = g_7;
+                    vec3 _e131 = fur_dual_field(_e33, (FUR_DUAL_SD + _e129));
+                    uint _e132 = g_7;
+                    vec3 _e133 = fur_dual_ng(_e132, _e33, at_phi);
+                    vec3 v_6 = ((_e131 * _e131) + s2f);
+                    vec3 _e136 = f_s;
+                    vec3 _e139 = fur_dual_gauss((vec3(x_17) - _e127), v_6, theta_i_6);
+                    f_s = (_e136 + (_e133 * _e139));
                 }
             }
-            vec3 _e143 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
-            vec3 _e144 = out_4;
-            vec3 _e145 = f_s;
-            out_4 = (_e144 + (spread * ((_e145 * inv_cos2_) + ((back_scale * half_energy) * _e143))));
+            vec3 _e146 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
+            vec3 _e147 = out_4;
+            vec3 _e148 = f_s;
+            out_4 = (_e147 + (spread * ((_e148 * inv_cos2_) + ((back_scale * half_energy) * _e146))));
         }
     }
-    float _e153 = out_4.x;
-    bool _e154 = fur_finite(_e153);
-    float _e156 = out_4.y;
+    float _e156 = out_4.x;
     bool _e157 = fur_finite(_e156);
-    float _e159 = out_4.z;
+    float _e159 = out_4.y;
     bool _e160 = fur_finite(_e159);
-    bvec3 finite = bvec3(_e154, _e157, _e160);
-    vec3 _e162 = out_4;
-    vec3 _e163 = out_4;
-    return mix(zero, _e162, bvec3(finite.x && greaterThan(_e163, zero).x, finite.y && greaterThan(_e163, zero).y, finite.z && greaterThan(_e163, zero).z));
+    float _e162 = out_4.z;
+    bool _e163 = fur_finite(_e162);
+    bvec3 finite = bvec3(_e157, _e160, _e163);
+    vec3 _e165 = out_4;
+    vec3 _e166 = out_4;
+    return mix(zero, _e165, bvec3(finite.x && greaterThan(_e166, zero).x, finite.y && greaterThan(_e166, zero).y, finite.z && greaterThan(_e166, zero).z));
 }
 
-vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fibers_below_1, float d_f, float d_b) {
-    FurDirAngles _e7 = fur_angles_from_dirs(wi_2, wr_2, u_6);
-    if (!(_e7.ok)) {
+vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fibers_below_1, float d_f, float d_b, vec3 sigma_ca_7) {
+    FurDirAngles _e8 = fur_angles_from_dirs(wi_2, wr_2, u_6);
+    if (!(_e8.ok)) {
         return vec3(0.0);
     }
-    vec3 _e15 = fur_eval_dual(_e7.theta_i, _e7.theta_r, _e7.phi, fibers_1, fibers_below_1, d_f, d_b);
-    return _e15;
+    vec3 _e16 = fur_eval_dual(_e8.theta_i, _e8.theta_r, _e8.phi, fibers_1, fibers_below_1, d_f, d_b, sigma_ca_7);
+    return _e16;
 }
 
-void fur_store(uint q, FurFamilies f_3) {
-    uint k_12 = 0u;
+void fur_store(uint q, FurFamilies f_5) {
+    uint k_14 = 0u;
     uint base = (16u * q);
-    vec3 parts[5] = vec3[5](f_3.r, f_3.tt, f_3.trt, f_3.scattered, f_3.total);
+    vec3 parts[5] = vec3[5](f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e46 = k_12;
-            k_12 = (_e46 + 1u);
+            uint _e46 = k_14;
+            k_14 = (_e46 + 1u);
         }
         loop_init_5 = false;
-        uint _e12 = k_12;
+        uint _e12 = k_14;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_12;
-            uint _e21 = k_12;
+            uint _e17 = k_14;
+            uint _e21 = k_14;
             _group_0_binding_2_cs[(base + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_12;
-            uint _e32 = k_12;
+            uint _e26 = k_14;
+            uint _e32 = k_14;
             _group_0_binding_2_cs[((base + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_12;
-            uint _e43 = k_12;
+            uint _e37 = k_14;
+            uint _e43 = k_14;
             _group_0_binding_2_cs[((base + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1129,7 +1214,7 @@ void fur_store(uint q, FurFamilies f_3) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_13 = 3u;
+    uint k_15 = 3u;
     uint base_1 = (16u * q_1);
     _group_0_binding_2_cs[base_1] = v_2.x;
     _group_0_binding_2_cs[(base_1 + 1u)] = v_2.y;
@@ -1137,17 +1222,17 @@ void fur_store_rgb(uint q_1, vec3 v_2) {
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e27 = k_13;
-            k_13 = (_e27 + 1u);
+            uint _e27 = k_15;
+            k_15 = (_e27 + 1u);
         }
         loop_init_6 = false;
-        uint _e19 = k_13;
+        uint _e19 = k_15;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_13;
+            uint _e23 = k_15;
             _group_0_binding_2_cs[(base_1 + _e23)] = 0.0;
         }
     }
@@ -1162,10 +1247,10 @@ void main() {
     }
     vec4 wi_3 = _group_0_binding_1_cs[(4u * q_2)];
     vec4 wr_3 = _group_0_binding_1_cs[((4u * q_2) + 1u)];
-    vec4 u_8 = _group_0_binding_1_cs[((4u * q_2) + 2u)];
+    vec4 u_9 = _group_0_binding_1_cs[((4u * q_2) + 2u)];
     vec4 below = _group_0_binding_1_cs[((4u * q_2) + 3u)];
-    vec3 _e42 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_8.xyz, wi_3.w, below.x, wr_3.w, u_8.w);
-    fur_store_rgb(q_2, _e42);
+    vec3 _e43 = fur_eval_dual_dirs(wi_3.xyz, wr_3.xyz, u_9.xyz, wi_3.w, below.x, wr_3.w, u_9.w, below.yzw);
+    fur_store_rgb(q_2, _e43);
     return;
 }
 

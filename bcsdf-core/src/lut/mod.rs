@@ -117,7 +117,7 @@ pub fn absorption_scale(kappa: f32) -> f32 {
 }
 
 /// The share of the absorption axis's nodes given to its square-root term.
-const ROOT_SHARE: f32 = 0.4;
+pub const ROOT_SHARE: f32 = 0.4;
 
 /// The position of σ_ca on an absorption axis of scale s₀ = `scale` ([`absorption_scale`]),
 /// in [0, 1]: x = 1 − ½(e^(−σ/s_h) + e^(−σ/s₀)), s_h = [`ABSORPTION_SCALE_HAIR`]

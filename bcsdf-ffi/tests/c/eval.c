@@ -5,6 +5,8 @@
  *
  * Opens LUT_FILE, evaluates a fixed set of directions through every evaluation entry point
  * and prints the float bits (hex) for the Rust test to compare with BakedBcsdf bit for bit;
+ * the same through every colour (_at) entry point at the LUT's own colour and at
+ * N_COLOURS pseudo-random ones (random_colour; the Rust test draws the same);
  * then checks bad input: NULL and zero-length arguments for every function, misaligned
  * pointers, zeroed and FUR_LUT_INIT-initialised fur_luts that were never opened, a fur_lut
  * used after close and after its bytes were freed, a fur_lut of another build, overlapping
@@ -54,6 +56,32 @@ static NOINLINE fur_status eval_fresh(float *rgb) {
  * below are deliberate, and gcc's -Wrestrict rightly flags the obvious ones. */
 static NOINLINE void *opaque(void *p) { return p; }
 
+/*
+ * The colours of the _at calls: sigma_ca per channel from a 64-bit LCG (the Rust test repeats
+ * it): kind (r >> 16) & 7 picks 0, [100, 1000), [1000, 5000) (clamped to 1000 by the
+ * library), or u times 0.01, 0.1, 1, 4 or 20, u = (r & 0xffff) / 65536.
+ */
+#define N_COLOURS 24
+static unsigned long long colour_state = 0x2545f4914f6cdd1dULL;
+static float colour_channel(void) {
+    static const float scale[5] = {0.01f, 0.1f, 1.0f, 4.0f, 20.0f};
+    unsigned r, kind;
+    float u;
+    colour_state = colour_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    r = (unsigned)(colour_state >> 33);
+    kind = (r >> 16) & 7u;
+    u = (float)(r & 0xffffu) * (1.0f / 65536.0f);
+    if (kind == 0u) return 0.0f;
+    if (kind == 1u) return 100.0f + 900.0f * u;
+    if (kind == 2u) return 1000.0f + 4000.0f * u;
+    return u * scale[kind - 3u];
+}
+
+static void print_sample(const char *name, const fur_sample *s) {
+    printf("%s %08x %08x %08x %08x %08x %08x %d", name, bits(s->theta_i), bits(s->phi), bits(s->pdf),
+           bits(s->weight[0]), bits(s->weight[1]), bits(s->weight[2]), (int)s->family);
+}
+
 static unsigned long long rng_state = 0x853c49e6748fea9bULL;
 static unsigned rng(void) {
     rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -69,7 +97,7 @@ int main(int argc, char **argv) {
     const float wi[3] = {0.3f, 0.8f, 0.2f}, wr[3] = {-0.6f, 0.7f, -0.1f}, t[3] = {0.0f, 0.2f, 1.0f};
     float buf[8];
     float *misaligned = (float *)((char *)buf + 1);
-    int k, refused = 0;
+    int k, k2, refused = 0;
 
     if (argc != 3) {
         fprintf(stderr, "usage: eval LUT_FILE SMALL_LUT_FILE\n");
@@ -120,6 +148,97 @@ int main(int argc, char **argv) {
                bits(p));
     }
 
+    /* Colours. The LUT's own: every _at function equals its sibling without _at. */
+    {
+        float own[3], a[12], b[12], pa, pb;
+        fur_sample sa, sb;
+        EXPECT(fur_lut_sigma_ca(&lut, own) == FUR_OK);
+        printf("own %08x %08x %08x\n", bits(own[0]), bits(own[1]), bits(own[2]));
+        for (i = 0; i < N_DIRS; i++) {
+            EXPECT(fur_eval_far_at(&lut, own, TI[i], TR[i], PH[i], a) == FUR_OK);
+            EXPECT(fur_eval_far(&lut, TI[i], TR[i], PH[i], b) == FUR_OK);
+            EXPECT(memcmp(a, b, 3 * sizeof(float)) == 0);
+            EXPECT(fur_eval_far_families_at(&lut, own, TI[i], TR[i], PH[i], a) == FUR_OK);
+            EXPECT(fur_eval_far_families(&lut, TI[i], TR[i], PH[i], b) == FUR_OK);
+            EXPECT(memcmp(a, b, sizeof a) == 0);
+            EXPECT(fur_sample_far_at(&lut, own, TR[i], 0.3f, 0.6f, 0.2f, &sa) == FUR_OK);
+            EXPECT(fur_sample_far(&lut, TR[i], 0.3f, 0.6f, 0.2f, &sb) == FUR_OK);
+            EXPECT(memcmp(&sa, &sb, sizeof sa) == 0);
+            pa = fur_pdf_far_at(&lut, own, TI[i], TR[i], PH[i]);
+            pb = fur_pdf_far(&lut, TI[i], TR[i], PH[i]);
+            EXPECT(bits(pa) == bits(pb));
+        }
+        EXPECT(fur_eval_far_dirs_at(&lut, own, wi, wr, t, a) == FUR_OK);
+        EXPECT(fur_eval_far_dirs(&lut, wi, wr, t, b) == FUR_OK);
+        EXPECT(memcmp(a, b, 3 * sizeof(float)) == 0);
+    }
+    /* N_COLOURS random colours, each with one of the fixed directions. */
+    {
+        float sigma[3 * N_COLOURS], bt[N_COLOURS], br[N_COLOURS], bp[N_COLOURS], out[3 * N_COLOURS];
+        for (k = 0; k < 3 * N_COLOURS; k++) sigma[k] = colour_channel();
+        for (k = 0; k < N_COLOURS; k++) {
+            const float *c = sigma + 3 * k;
+            float p = -1.0f;
+            i = (size_t)k % N_DIRS;
+            printf("colour %d %08x %08x %08x\n", k, bits(c[0]), bits(c[1]), bits(c[2]));
+            EXPECT(fur_eval_far_at(&lut, c, TI[i], TR[i], PH[i], rgb) == FUR_OK);
+            printf("evalat %08x %08x %08x\n", bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
+            EXPECT(fur_eval_far_families_at(&lut, c, TI[i], TR[i], PH[i], fam) == FUR_OK);
+            printf("familiesat");
+            for (k2 = 0; k2 < 12; k2++) printf(" %08x", bits(fam[k2]));
+            printf("\n");
+            printf("pdfat %08x\n", bits(fur_pdf_far_at(&lut, c, TI[i], TR[i], PH[i])));
+            EXPECT(fur_eval_far_dirs_at(&lut, c, wi, wr, t, rgb) == FUR_OK);
+            printf("dirsat %08x %08x %08x\n", bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
+            EXPECT(fur_sample_far_at(&lut, c, TR[i], 0.1f + 0.03f * (float)k, 0.8f, 0.37f, &s) == FUR_OK);
+            print_sample("sampleat", &s);
+            printf("\n");
+            EXPECT(fur_sample_pdf_far_at(&lut, c, TR[i], 0.1f + 0.03f * (float)k, 0.8f, 0.37f, TI[i], PH[i],
+                                         &s, &p) == FUR_OK);
+            print_sample("samplepdfat", &s);
+            printf(" %08x\n", bits(p));
+            bt[k] = TI[i];
+            br[k] = TR[i];
+            bp[k] = PH[i];
+        }
+        EXPECT(fur_eval_far_batch_at(&lut, N_COLOURS, sigma, bt, br, bp, out) == FUR_OK);
+        printf("batchat");
+        for (k = 0; k < 3 * N_COLOURS; k++) printf(" %08x", bits(out[k]));
+        printf("\n");
+        EXPECT(fur_sigma_from_melanin(0.4f, 1.5f, rgb) == FUR_OK);
+        printf("melanin %08x %08x %08x\n", bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
+
+        /* Refused colours: NaN, negative, -inf; 0 written, FUR_ERR_COLOUR. */
+        {
+            const float bad[3][3] = {{NAN, 0.5f, 0.5f}, {0.5f, -1e-9f, 0.5f}, {0.5f, 0.5f, -INFINITY}};
+            for (k = 0; k < 3; k++) {
+                float p = -1.0f;
+                rgb[0] = -1.0f;
+                EXPECT(fur_eval_far_at(&lut, bad[k], 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_COLOUR && rgb[0] == 0.0f);
+                fam[11] = -1.0f;
+                EXPECT(fur_eval_far_families_at(&lut, bad[k], 0.1f, 0.2f, 0.3f, fam) == FUR_ERR_COLOUR &&
+                       fam[11] == 0.0f);
+                EXPECT(fur_eval_far_dirs_at(&lut, bad[k], wi, wr, t, rgb) == FUR_ERR_COLOUR);
+                EXPECT(fur_pdf_far_at(&lut, bad[k], 0.1f, 0.2f, 0.3f) == 0.0f);
+                EXPECT(fur_sample_far_at(&lut, bad[k], 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_COLOUR);
+                EXPECT(fur_sample_pdf_far_at(&lut, bad[k], 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &s, &p) ==
+                       FUR_ERR_COLOUR && p == -1.0f);
+            }
+            /* One refused colour in a batch: its entry 0, the others as before. */
+            {
+                float again[3 * N_COLOURS];
+                sigma[3 * 5 + 2] = NAN;
+                EXPECT(fur_eval_far_batch_at(&lut, N_COLOURS, sigma, bt, br, bp, again) == FUR_ERR_COLOUR);
+                EXPECT(again[15] == 0.0f && again[16] == 0.0f && again[17] == 0.0f);
+                EXPECT(memcmp(again, out, 15 * sizeof(float)) == 0);
+                EXPECT(memcmp(again + 18, out + 18, (3 * N_COLOURS - 18) * sizeof(float)) == 0);
+            }
+            EXPECT(fur_sigma_from_melanin(NAN, 0.0f, rgb) == FUR_ERR_COLOUR);
+            EXPECT(fur_sigma_from_melanin(0.0f, -1.0f, rgb) == FUR_ERR_COLOUR);
+            EXPECT(strstr(fur_status_str(FUR_ERR_COLOUR), "colour") != NULL);
+        }
+    }
+
     /* NULL and zero-length arguments for every function. */
     EXPECT(fur_lut_open(NULL, len, &lut) == FUR_ERR_NULL);
     EXPECT(fur_lut_open(bytes, len, NULL) == FUR_ERR_NULL);
@@ -158,6 +277,45 @@ int main(int argc, char **argv) {
         EXPECT(p == -1.0f);
     }
     EXPECT(fur_lut_close(NULL) == FUR_ERR_NULL);
+    {
+        /* The colour entry points: NULL for each pointer. */
+        const float c[3] = {0.5f, 1.0f, 2.0f};
+        float p = -1.0f;
+        EXPECT(fur_eval_far_at(NULL, c, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_at(&lut, NULL, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_at(&lut, c, 0.1f, 0.2f, 0.3f, NULL) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_families_at(&lut, NULL, 0.1f, 0.2f, 0.3f, fam) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_families_at(&lut, c, 0.1f, 0.2f, 0.3f, NULL) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_dirs_at(&lut, NULL, wi, wr, t, rgb) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_dirs_at(&lut, c, wi, NULL, t, rgb) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_batch_at(&lut, 1, NULL, TI, TR, PH, batch) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_batch_at(&lut, 1, c, TI, TR, NULL, batch) == FUR_ERR_NULL);
+        EXPECT(fur_eval_far_batch_at(&lut, 0, NULL, NULL, NULL, NULL, NULL) == FUR_OK);
+        EXPECT(fur_eval_far_batch_at(&lut, (size_t)-1, c, TI, TR, PH, batch) == FUR_ERR_LENGTH);
+        EXPECT(fur_sample_far_at(&lut, NULL, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NULL);
+        EXPECT(fur_sample_far_at(&lut, c, 0.1f, 0.5f, 0.5f, 0.5f, NULL) == FUR_ERR_NULL);
+        EXPECT(fur_sample_pdf_far_at(&lut, NULL, 0.1f, 0.5f, 0.5f, 0.5f, 0.2f, 0.3f, &s, &p) == FUR_ERR_NULL);
+        EXPECT(fur_pdf_far_at(&lut, NULL, 0.1f, 0.2f, 0.3f) == 0.0f);
+        EXPECT(fur_pdf_far_at(NULL, c, 0.1f, 0.2f, 0.3f) == 0.0f);
+        EXPECT(fur_lut_sigma_ca(NULL, rgb) == FUR_ERR_NULL);
+        EXPECT(fur_lut_sigma_ca(&lut, NULL) == FUR_ERR_NULL);
+        EXPECT(fur_sigma_from_melanin(0.4f, 1.5f, NULL) == FUR_ERR_NULL);
+        /* Misaligned colour; the output over the colour, the fur_lut or the LUT bytes. */
+        EXPECT(fur_eval_far_at(&lut, misaligned, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_ALIGNMENT);
+        EXPECT(fur_eval_far_batch_at(&lut, 1, misaligned, TI, TR, PH, batch) == FUR_ERR_ALIGNMENT);
+        {
+            float ov[6] = {0.5f, 1.0f, 2.0f, 0.5f, 1.0f, 2.0f};
+            EXPECT(fur_eval_far_at(&lut, ov, 0.1f, 0.2f, 0.3f, (float *)opaque(ov + 2)) == FUR_ERR_OVERLAP);
+            EXPECT(fur_eval_far_dirs_at(&lut, ov, wi, wr, t, (float *)opaque(ov + 1)) == FUR_ERR_OVERLAP);
+            EXPECT(fur_eval_far_batch_at(&lut, 1, ov, TI, TR, PH, (float *)opaque(ov + 2)) == FUR_ERR_OVERLAP);
+            EXPECT(fur_sample_far_at(&lut, ov, 0.1f, 0.5f, 0.5f, 0.5f, (fur_sample *)opaque(ov)) ==
+                   FUR_ERR_OVERLAP);
+            EXPECT(ov[2] == 2.0f && ov[3] == 0.5f);
+            EXPECT(fur_eval_far_at(&lut, c, 0.1f, 0.2f, 0.3f, (float *)(void *)(bytes + 32)) ==
+                   FUR_ERR_OVERLAP);
+            EXPECT(fur_lut_sigma_ca(&lut, (float *)(void *)&lut._opaque[3]) == FUR_ERR_OVERLAP);
+        }
+    }
 
     /* Misaligned pointers. */
     EXPECT(fur_eval_far(&lut, 0.1f, 0.2f, 0.3f, misaligned) == FUR_ERR_ALIGNMENT);
@@ -229,6 +387,14 @@ int main(int argc, char **argv) {
         EXPECT(fur_eval_far_batch(&init, 1, TI, TR, PH, batch) == FUR_ERR_NOT_OPEN);
         EXPECT(fur_sample_far(&init, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NOT_OPEN);
         EXPECT(fur_pdf_far(&init, 0.1f, 0.2f, 0.3f) == 0.0f);
+        {
+            const float c[3] = {0.5f, 1.0f, 2.0f};
+            EXPECT(fur_eval_far_at(&init, c, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
+            EXPECT(fur_eval_far_batch_at(&init, 1, c, TI, TR, PH, batch) == FUR_ERR_NOT_OPEN);
+            EXPECT(fur_sample_far_at(&init, c, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_NOT_OPEN);
+            EXPECT(fur_pdf_far_at(&init, c, 0.1f, 0.2f, 0.3f) == 0.0f);
+            EXPECT(fur_lut_sigma_ca(&init, rgb) == FUR_ERR_NOT_OPEN);
+        }
     }
     memset(&never, 0xa5, sizeof never);
     EXPECT(fur_eval_far(&never, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_NOT_OPEN);
@@ -244,6 +410,11 @@ int main(int argc, char **argv) {
     EXPECT(fur_eval_far_batch(&foreign, 1, TI, TR, PH, batch) == FUR_ERR_OTHER_BUILD);
     EXPECT(fur_sample_far(&foreign, 0.1f, 0.5f, 0.5f, 0.5f, &s) == FUR_ERR_OTHER_BUILD);
     EXPECT(fur_pdf_far(&foreign, 0.1f, 0.2f, 0.3f) == 0.0f);
+    {
+        const float c[3] = {0.5f, 1.0f, 2.0f};
+        EXPECT(fur_eval_far_at(&foreign, c, 0.1f, 0.2f, 0.3f, rgb) == FUR_ERR_OTHER_BUILD);
+        EXPECT(fur_eval_far_batch_at(&foreign, 1, c, TI, TR, PH, batch) == FUR_ERR_OTHER_BUILD);
+    }
     EXPECT(fur_lut_close(&foreign) == FUR_OK);
     {
         const fur_lut zero = FUR_LUT_INIT;

@@ -1,7 +1,8 @@
 // C++17 client of fur_bcsdf.h, driven by bcsdf-ffi/tests/c_programs.rs:
 //   eval_cpp LUT_FILE
-// Opens the LUT from a std::vector, evaluates the same directions as eval.c and prints the
-// float bits for the Rust test to compare with BakedBcsdf bit for bit.
+// Opens the LUT from a std::vector, evaluates the same directions as eval.c, at the LUT's own
+// colour and through the colour (_at) entry points at four colours, and prints the float bits
+// for the Rust test to compare with BakedBcsdf bit for bit.
 #include "fur_bcsdf.h"
 
 #include <array>
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -70,5 +72,24 @@ int main(int argc, char **argv) {
     if (fur_sample_pdf_far(lut.get(), 0.3f, 0.2f, 0.4f, 0.6f, TI[0], PH[0], &s, &p) != FUR_OK) return 1;
     std::printf("samplepdf %08x %08x %08x %d %08x\n", bits(s.theta_i), bits(s.phi), bits(s.pdf),
                 static_cast<int>(s.family), bits(p));
+    // Colours: the LUT's own, lossless, a red-brown one, and melanin's.
+    std::array<std::array<float, 3>, 4> colours{};
+    if (fur_lut_sigma_ca(lut.get(), colours[0].data()) != FUR_OK) return 1;
+    colours[2] = {0.5f, 2.0f, 150.0f};
+    if (fur_sigma_from_melanin(0.4f, 1.5f, colours[3].data()) != FUR_OK) return 1;
+    for (std::size_t c = 0; c < colours.size(); ++c) {
+        for (std::size_t i = 0; i < TI.size(); ++i) {
+            std::array<float, 3> rgb{};
+            if (fur_eval_far_at(lut.get(), colours[c].data(), TI[i], TR[i], PH[i], rgb.data()) != FUR_OK) return 1;
+            std::printf("evalat %zu %08x %08x %08x\n", c, bits(rgb[0]), bits(rgb[1]), bits(rgb[2]));
+        }
+        if (fur_sample_far_at(lut.get(), colours[c].data(), 0.3f, 0.2f, 0.4f, 0.6f, &s) != FUR_OK) return 1;
+        std::printf("sampleat %zu %08x %08x %08x %08x %08x %08x\n", c, bits(s.theta_i), bits(s.phi),
+                    bits(s.pdf), bits(s.weight[0]), bits(s.weight[1]), bits(s.weight[2]));
+    }
+    const std::array<float, 3> nan_colour{0.5f, std::numeric_limits<float>::quiet_NaN(), 0.5f};
+    std::array<float, 3> rgb{};
+    if (fur_eval_far_at(lut.get(), nan_colour.data(), TI[0], TR[0], PH[0], rgb.data()) != FUR_ERR_COLOUR) return 1;
+    std::printf("refused: %s\n", fur_status_str(FUR_ERR_COLOUR));
     return 0;
 }

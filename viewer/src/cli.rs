@@ -159,14 +159,15 @@ pub struct RenderArgs {
     #[command(flatten)]
     pub presets: PresetsArgs,
 
-    /// Override one parameter of the preset (as in `viewer probe`); repeatable.
+    /// Override one parameter of the preset (as in `viewer probe`); repeatable. With
+    /// `--lut`, only the colour keys: the LUT (and its .furdual) is read at that sigma_ca.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
 
     /// Render with this baked LUT (.exr or .furlut) instead of a preset. `dual` reads the
     /// .furdual of the same name beside it (written by `bake`) if there is one, refused unless
     /// it was computed from this LUT; otherwise it computes the tables from the LUT.
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "presets", "set"])]
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "presets"])]
     pub lut: Option<PathBuf>,
 
     /// The evaluator: analytic (default with --preset) or baked (default with --lut; with

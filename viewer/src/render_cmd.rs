@@ -92,14 +92,21 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         let blob = read_lut(path)?;
         let baked = BakedBcsdf::from_bytes(&blob)
             .map_err(|e| Error::input(format!("{}: {e}", path.display())))?;
+        // The LUT at its preset's colour, or at `--set sigma_ca=…` (docs/lut.md "The
+        // absorption axis"); the stored dual tables are read at the same colour.
+        let colour = crate::source::lut_colour(path, &blob, &args.set)?;
         let stored = if methods(args).contains(&MethodArg::Dual) {
             stored_dual(path, &baked)?
         } else {
             None
         };
+        let stored = stored.map(|mut d: Box<DualLut>| {
+            d.set_absorption(&colour);
+            d
+        });
         (
             path.display().to_string(),
-            trace(&scene, &baked, stored, &settings, args)?,
+            trace(&scene, &baked.at(&colour), stored, &settings, args)?,
         )
     } else {
         // clap requires --preset without --lut.

@@ -546,6 +546,14 @@ impl DualLut {
         self.default
     }
 
+    /// Makes `absorption` the colour [`DualLut::eval`] evaluates (a renderer that shades a
+    /// whole coat at one colour other than the preset's; per query, use
+    /// [`DualLut::eval_at`]).
+    pub fn set_absorption(&mut self, absorption: &Absorption) {
+        self.default = *absorption;
+        self.default_at = self.locate(absorption);
+    }
+
     /// `absorption` located on the blob's absorption axis, for [`DualLut::eval_located`].
     #[must_use]
     pub fn locate(&self, absorption: &Absorption) -> DualColour {

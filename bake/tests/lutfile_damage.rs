@@ -49,15 +49,19 @@ fn a_damaged_header_attribute_is_refused_naming_the_file_and_the_problem() {
     let mut extended = header();
     extended.push(0);
     let model = (MODEL_VERSION + 1).to_le_bytes();
-    let eta_c = f32::from_le_bytes(air()[48..52].try_into().unwrap());
+    let eta_c = f32::from_le_bytes(air()[52..56].try_into().unwrap());
     let cases: Vec<(Option<x::AttributeValue>, String)> = vec![
         (
             Some(header_bytes_attribute(&air()[..lut::HEADER_LEN - 1])),
-            "attribute lut_header holds 159 bytes, expected the 160 bytes of a LUT header".into(),
+            format!(
+                "attribute lut_header holds {} bytes, expected the {} bytes of a LUT header",
+                lut::HEADER_LEN - 1,
+                lut::HEADER_LEN
+            ),
         ),
         (
             Some(header_bytes_attribute(&extended)),
-            "attribute lut_header holds 161 bytes".into(),
+            format!("attribute lut_header holds {} bytes", lut::HEADER_LEN + 1),
         ),
         (
             Some(header_bytes_attribute(&[])),
@@ -81,15 +85,15 @@ fn a_damaged_header_attribute_is_refused_naming_the_file_and_the_problem() {
             "axis n_phi has 1 nodes".into(),
         ),
         (
-            changed(48, &(eta_c + 0.25).to_le_bytes()),
+            changed(52, &(eta_c + 0.25).to_le_bytes()),
             "LUT is corrupt: checksum".into(),
         ),
         (
-            changed(48, &0.5f32.to_le_bytes()),
+            changed(52, &0.5f32.to_le_bytes()),
             "LUT parameters are invalid".into(),
         ),
         (
-            changed(104, &2u32.to_le_bytes()),
+            changed(108, &2u32.to_le_bytes()),
             "header field closure is invalid".into(),
         ),
     ];

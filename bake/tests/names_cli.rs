@@ -150,7 +150,7 @@ fn cheap_options(out: &Path) -> BakeOptions {
             n_phi: 8,
             n_ms_i: 4,
             n_ms_r: 4,
-            n_abs: 2,
+            n_abs: 3,
         },
         profiles: ProfileOptions {
             cache_dir: None,

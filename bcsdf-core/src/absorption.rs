@@ -5,13 +5,15 @@
 //! own σ_ca alone and every channel is the same function of it: a baked LUT holds table `N` at
 //! a set of σ_ca nodes and looks each channel up at its own σ_ca
 //! ([`crate::BakedBcsdf::at`]). The analytic model at another colour is the model of the
-//! parameters with that σ_ca ([`Absorption::apply`]).
+//! parameters with that σ_ca (`Absorption::apply`, beside the parameters in `params`).
 
-use crate::lut::SIGMA_CA_MAX;
-use crate::params::FurParamsInput;
 use crate::pigment::Pigment;
 use crate::spectrum::Rgb;
 use core::fmt;
+
+/// The largest cortex absorption σ_ca per fiber radius (the parameter's domain, docs/model.md
+/// §2): the last node of the absorption axis (re-exported as `lut::SIGMA_CA_MAX`).
+pub const SIGMA_CA_MAX: f32 = 1000.0;
 
 /// A validated per-channel cortex absorption σ_ca (per fiber radius, docs/model.md §2), each
 /// channel in [0, [`SIGMA_CA_MAX`]].
@@ -136,16 +138,6 @@ impl Absorption {
     pub fn sigma(&self) -> Rgb {
         self.sigma
     }
-
-    /// `input` with its colour replaced by this σ_ca: the parameters of the analytic model at
-    /// this colour (every other parameter unchanged).
-    #[must_use]
-    pub fn apply(&self, input: &FurParamsInput) -> FurParamsInput {
-        FurParamsInput {
-            pigment: Pigment::Absorption(self.sigma),
-            ..*input
-        }
-    }
 }
 
 #[cfg(test)]
@@ -185,10 +177,6 @@ mod tests {
             pheomelanin: 0.5,
         };
         assert_eq!(Absorption::from_pigment(&p).unwrap(), a);
-        let input = crate::presets::find("bobcat").unwrap().input;
-        let applied = a.apply(&input);
-        assert_eq!(applied.pigment, Pigment::Absorption(a.sigma()));
-        assert_eq!(applied.kappa, input.kappa);
     }
 
     extern crate std;

@@ -439,5 +439,19 @@ impl FurParams {
     }
 }
 
+/// The analytic model's parameters at a colour (here, with the parameters, so that
+/// `absorption` stays below `params` in the module order).
+impl crate::absorption::Absorption {
+    /// `input` with its colour replaced by this σ_ca: the parameters of the analytic model at
+    /// this colour (every other parameter unchanged).
+    #[must_use]
+    pub fn apply(&self, input: &FurParamsInput) -> FurParamsInput {
+        FurParamsInput {
+            pigment: Pigment::Absorption(self.sigma()),
+            ..*input
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests;

@@ -14,7 +14,7 @@ use bcsdf_core::lut::{
     TABLE_COUNT,
 };
 use bcsdf_core::medulla::{PhotonBudget, Resolution, GENERATOR_VERSION};
-use bcsdf_core::{presets, Angles, LobeFamily, Pigment, Rgb};
+use bcsdf_core::{presets, Absorption, Angles, LobeFamily, Pigment, Rgb};
 use half::f16;
 use proptest::prelude::*;
 use std::f32::consts::PI;
@@ -62,13 +62,15 @@ fn linear_tables() -> TableValues {
             [0, 1, 2].map(|g| m_fn(g, x))
         })
         .collect();
+    // Table N: plane k (absorption node k) holds n_fn(f, k, ..), so that a colour whose
+    // channel c sits on node c reads n_fn(f, c, ..) in channel c.
     let mut v = Vec::new();
-    for r in 0..RES.n_theta_r as usize {
-        for c in 0..RES.n_phi as usize {
-            let tr = node(0.0, PI / 2.0, r, RES.n_theta_r);
-            let phi = node(0.0, PI, c, RES.n_phi);
-            for f in 0..4 {
-                v.extend((0..3).map(|ch| n_fn(f, ch, tr, phi)));
+    for k in 0..RES.n_abs as usize {
+        for r in 0..RES.n_theta_r as usize {
+            for c in 0..RES.n_phi as usize {
+                let tr = node(0.0, PI / 2.0, r, RES.n_theta_r);
+                let phi = node(0.0, PI, c, RES.n_phi);
+                v.extend((0..4).map(|f| n_fn(f, k, tr, phi)));
             }
         }
     }
@@ -217,7 +219,7 @@ fn malformed_blobs_are_rejected_with_the_right_error() {
     ));
 
     let mut b = good.clone();
-    b[40..44].copy_from_slice(&3.0f32.to_le_bytes()); // scale of N, not a power of two
+    b[44..48].copy_from_slice(&3.0f32.to_le_bytes()); // scale of N, not a power of two
     assert!(matches!(
         err(&sealed(b)),
         LutError::Scale {
@@ -227,7 +229,7 @@ fn malformed_blobs_are_rejected_with_the_right_error() {
     ));
 
     let mut b = good.clone();
-    b[48..52].copy_from_slice(&0.5f32.to_le_bytes()); // eta_c < 1
+    b[52..56].copy_from_slice(&0.5f32.to_le_bytes()); // eta_c < 1
     assert!(matches!(err(&sealed(b)), LutError::Params(_)));
 
     // The first TT channel of table N.
@@ -252,7 +254,7 @@ fn malformed_blobs_are_rejected_with_the_right_error() {
 
     // Closure 2 names nothing (0 report, 1 energy: the word after g).
     let mut b = good.clone();
-    b[104..108].copy_from_slice(&2u32.to_le_bytes());
+    b[108..112].copy_from_slice(&2u32.to_le_bytes());
     assert_eq!(err(&sealed(b)), LutError::Field { field: "closure" });
 
     // Every message is one line.
@@ -275,6 +277,13 @@ fn evaluator_reproduces_tables_of_linear_functions() {
     let header: &LutHeader = lut.header();
     assert_eq!(header.res, RES);
     let mut worst = 0.0f32;
+    // Channel c on absorption node c.
+    let scale = header.absorption_scale();
+    let colour = Absorption::from_sigma(Rgb(
+        [0, 1, 2].map(|k| lut::absorption_node(k, RES.n_abs, scale))
+    ))
+    .unwrap();
+    let at = lut.at(&colour);
     for ti_deg in (-88..=88).step_by(8) {
         for tr_deg in (-89..=89).step_by(7) {
             for phi_deg in (-180..=180).step_by(15) {
@@ -283,7 +292,7 @@ fn evaluator_reproduces_tables_of_linear_functions() {
                 let inv_cos2 = 1.0 / (ti.cos() * ti.cos()).max(1e-4);
                 let w = phi.abs() / PI;
                 let ms = (1.0 - w) * ms_fn(false, ti, tr) + w * ms_fn(true, ti, tr);
-                let got = lut.eval_far(&a);
+                let got = at.eval_far(&a);
                 for f in LobeFamily::ALL {
                     let fi = f as usize;
                     let m = if fi < 3 { m_fn(fi, ti + tr) } else { ms };

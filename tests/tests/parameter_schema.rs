@@ -69,7 +69,7 @@ fn lut_header_carries_every_parameter() {
         n_phi: 2,
         n_ms_i: 2,
         n_ms_r: 2,
-        n_abs: 2,
+        n_abs: 3,
     };
     let mut tables: [Vec<f32>; TABLE_COUNT] = Default::default();
     for t in Table::ALL {

@@ -40,7 +40,13 @@ fn readme_sampling_example() {
     let strand = lut.at(&Absorption::from_melanin(0.4, 1.5).unwrap()); // implements Bcsdf too
     let next = scatter(&strand, view_dir, fiber_tangent, [u0, u1, u2]);
     let (wi_c, weight_c) = next.unwrap();
-    assert_eq!(wi_c, wi, "the sampled direction does not depend on the colour");
-    assert!(weight_c.0[2] < weight.0[2], "a redder strand keeps less blue");
+    assert_eq!(
+        wi_c, wi,
+        "the sampled direction does not depend on the colour"
+    );
+    assert!(
+        weight_c.0[2] < weight.0[2],
+        "a redder strand keeps less blue"
+    );
     assert_eq!(LUT.len(), 1_541_288, "the README's 1.5 MB");
 }

@@ -152,7 +152,7 @@ pub extern "C" fn fur_eval_baked_small(preset: usize, ti: f32, tr: f32, phi: f32
         n_phi: 2,
         n_ms_i: 2,
         n_ms_r: 2,
-        n_abs: 2,
+        n_abs: 3,
     };
     // Header, the three tables (f16), the sampling section (f32 prefix sums: M 3 × 2,
     // N 4 families × 2 rows × 2, M_s 2 halves × 2 rows × 2), the 1/Z_g table (f32: 2 nodes

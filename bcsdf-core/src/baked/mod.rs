@@ -95,7 +95,7 @@ impl Axis {
 /// use bcsdf_core::{presets, Angles, BakedBcsdf, Bcsdf, Closure, FurParamsInput};
 /// use bcsdf_core::{LutError, LutHeader, LutResolution};
 ///
-/// let res = LutResolution { n_sum: 2, n_theta_r: 2, n_phi: 2, n_ms_i: 2, n_ms_r: 2, n_abs: 2 };
+/// let res = LutResolution { n_sum: 2, n_theta_r: 2, n_phi: 2, n_ms_i: 2, n_ms_r: 2, n_abs: 3 };
 /// let header = LutHeader {
 ///     res,
 ///     scales: [1.0; TABLE_COUNT],

@@ -92,9 +92,7 @@ const RESERVED: usize = 156;
 /// Byte range of the checksum field.
 pub const CHECKSUM: Range<usize> = 160..168;
 
-/// The largest cortex absorption σ_ca per fiber radius (the parameter's domain, docs/model.md
-/// §2): the last node of the absorption axis.
-pub const SIGMA_CA_MAX: f32 = 1000.0;
+pub use crate::absorption::SIGMA_CA_MAX;
 
 /// The absorption axis's scale for a fiber without a medulla, s₀ at κ = 0 (per fiber
 /// radius; chosen by measurement, docs/lut.md "The absorption axis").

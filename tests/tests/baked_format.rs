@@ -312,8 +312,8 @@ fn evaluator_reproduces_tables_of_linear_functions() {
     }
     // f16 rounding of two factors (2^-11 each) and f32 interpolation.
     assert!(worst < 2e-3, "worst {worst}");
-    // Reading single stored values back.
-    let v = lut.value(Table::N, 0, 0, 3 * 3 + 2);
+    // Reading single stored values back: plane 2's first row (the planes are stacked), family 3.
+    let v = lut.value(Table::N, 0, 2 * RES.n_theta_r as usize, 3);
     assert!((v - n_fn(3, 2, 0.0, 0.0)).abs() < 1e-2, "{v}");
     assert_eq!(lut.value(Table::N, 99, 0, 0), 0.0);
 }

@@ -1,15 +1,13 @@
 //! A baked LUT at one colour ([`BakedBcsdf::at`], docs/lut.md "The absorption axis"): the
 //! colour is located on the absorption axis once, then every query reads table `N` at that
-//! colour. [`BakedAt`] implements [`Bcsdf`], so a renderer that colours each strand (or each
+//! colour. [`BakedAt`] implements [`crate::Bcsdf`] (in `sampling::baked::at`), so a renderer that colours each strand (or each
 //! shading point) makes one per query and calls the trait as for the LUT itself.
 
 use super::{BakedBcsdf, ColourAt, EvalAt, EvalDirs};
 use crate::absorption::Absorption;
-use crate::bcsdf::{Bcsdf, Sample, SampledDirection};
 use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::Families;
 use crate::math::Math;
-use crate::sampling::baked::BakedView;
 
 /// A [`BakedBcsdf`] evaluated, sampled and given a pdf at one colour ([`BakedBcsdf::at`]):
 /// a borrowed LUT and the colour's place on the absorption axis. Cheap to make (three
@@ -98,52 +96,5 @@ impl<'l, 'a, M: Math> BakedAt<'l, 'a, M> {
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
         self.lut.dispatch(EvalDirs(wi, wr, tangent, &self.colour))
-    }
-
-    /// The sampler at view direction θ_r for this colour ([`BakedBcsdf::view`]): the mixture
-    /// does not depend on the colour (it is built from the lossless plane), the values do.
-    #[inline]
-    #[must_use]
-    pub fn view(&self, theta_r: f32) -> Option<BakedView<'l, 'a, M>> {
-        self.lut.view_with(theta_r, self.colour)
-    }
-}
-
-impl<M: Math> Bcsdf for BakedAt<'_, '_, M> {
-    type Math = M;
-
-    #[inline]
-    fn eval(&self, angles: &Angles) -> Families {
-        self.eval_far(angles)
-    }
-
-    /// [`BakedBcsdf::angles_from_dirs`].
-    #[inline]
-    fn angles_from_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Result<Angles, AngleError> {
-        self.lut.angles_from_dirs(wi, wr, tangent)
-    }
-
-    /// [`BakedAt::eval_far_dirs`].
-    #[inline]
-    fn eval_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Families {
-        self.eval_far_dirs(wi, wr, tangent)
-    }
-
-    fn pdf(&self, angles: &Angles) -> f32 {
-        self.view(angles.theta_r())
-            .map_or(0.0, |v| v.pdf_at(angles))
-    }
-
-    fn eval_with_pdf(&self, angles: &Angles) -> (Families, f32) {
-        self.view(angles.theta_r())
-            .map_or((Families::ZERO, 0.0), |v| v.eval_with_pdf_at(angles))
-    }
-
-    fn sample_direction(&self, theta_r: f32, u: [f32; 3]) -> Option<SampledDirection> {
-        self.view(theta_r)?.sample_direction(u)
-    }
-
-    fn sample(&self, theta_r: f32, u: [f32; 3]) -> Option<Sample> {
-        self.view(theta_r)?.sample(u)
     }
 }

@@ -39,6 +39,7 @@ use crate::math::{Math, PI};
 use rows::{Range, Rows};
 pub use view::BakedView;
 
+mod at;
 mod rows;
 mod view;
 

@@ -19,6 +19,8 @@ use std::path::{Path, PathBuf};
 const EXR_MAGIC: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];
 
 /// The loaded BCSDF, owning its data; [`Source::target`] borrows the evaluator.
+// One per run, made once and passed by reference: its size does not matter.
+#[allow(clippy::large_enum_variant)]
 pub enum Source {
     /// The analytic model of a preset, with its medulla profiles.
     Analytic(OwnedModel),

@@ -70,9 +70,8 @@ pub fn axis_node(k: usize) -> f32 {
 pub const DUAL_MAGIC: [u8; 8] = *b"FURDUAL\0";
 /// The blob format this build reads and writes.
 pub const DUAL_FORMAT_VERSION: u32 = 2;
-/// Nodes of the absorption axis of a `.furdual` blob: σ_ca = [`absorption_node`]`(k,
-/// ABS_NODES)` (the LUT's default [`crate::lut::LutResolution::DEFAULT`] `n_abs`, so the
-/// same node positions as a default LUT's axis).
+/// Nodes of the absorption axis of a `.furdual` blob: σ_ca = [`axis_node`]`(k)`, the dual
+/// tables' own axis (independent of the LUT's).
 pub const ABS_NODES: usize = 16;
 /// Quantities stored per θ node and channel.
 pub const FIELDS: usize = 7 + 2 * FAMILY_COUNT;
@@ -356,7 +355,7 @@ fn seal(blob: &mut [u8; BLOB_LEN], attenuation: Attenuation, source: u64, defaul
 
 /// The `.furdual` blob of a BCSDF over the absorption axis (docs/model.md §13): for each node
 /// a, `tables_at(σ_a, tables)` fills `tables` (a scratch buffer) with the tables of the
-/// BCSDF at the grey colour σ_ca = σ_a ([`absorption_node`]`(a, ABS_NODES)`), of which
+/// BCSDF at the grey colour σ_ca = σ_a ([`axis_node`]`(a)`), of which
 /// channel 0 is stored (the node fields and N^G rounded to the nearest half, non-finite values
 /// as 0, magnitudes saturated at 65504). `source` is the checksum of the LUT the tables were
 /// computed from (0 for none), `default` the preset's own colour. No allocation.
@@ -377,13 +376,13 @@ pub fn encode_axis<F: FnMut(f32, &mut DualTables)>(
 
 /// The preset colour [`encode`] records: channel c at absorption node c.
 fn channel_nodes() -> Absorption {
-    let s = Rgb([0, 1, 2].map(|c| axis_node(c)));
+    let s = Rgb([0, 1, 2].map(axis_node));
     Absorption::from_sigma(s).unwrap_or(Absorption::LOSSLESS)
 }
 
 /// A blob of one colour's RGB `tables` (computed at one fixed σ_ca, e.g. a BCSDF without a
 /// LUT): channel c is stored at absorption node c (nodes 3 and up repeat channel 2), and the
-/// recorded preset colour is σ_ca = ([`absorption_node`] 0, 1, 2), so that [`DualLut::eval`]
+/// recorded preset colour is σ_ca = ([`axis_node`] 0, 1, 2), so that [`DualLut::eval`]
 /// evaluates exactly these tables per channel. Evaluating such a blob at another colour reads
 /// the other channels' tables: for per-colour evaluation use [`encode_axis`]. Otherwise as
 /// [`encode_axis`]. The blob is returned by value (no allocation).

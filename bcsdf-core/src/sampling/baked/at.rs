@@ -10,7 +10,7 @@ use crate::math::Math;
 use crate::sampling::baked::BakedView;
 
 impl<'l, 'a, M: Math> BakedAt<'l, 'a, M> {
-    /// The sampler at view direction θ_r for this colour ([`BakedBcsdf::view`]): the mixture
+    /// The sampler at view direction θ_r for this colour ([`crate::baked::BakedBcsdf::view`]): the mixture
     /// does not depend on the colour (it is built from the lossless plane), the values do.
     #[inline]
     #[must_use]
@@ -27,7 +27,7 @@ impl<M: Math> Bcsdf for BakedAt<'_, '_, M> {
         self.eval_far(angles)
     }
 
-    /// [`BakedBcsdf::angles_from_dirs`].
+    /// [`crate::baked::BakedBcsdf::angles_from_dirs`].
     #[inline]
     fn angles_from_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Result<Angles, AngleError> {
         self.lut().angles_from_dirs(wi, wr, tangent)

@@ -518,13 +518,13 @@ mod tests {
                 }
             }
             for bad in [[f32::NAN, 0.2, 0.4], [0.1, -1.0, 0.4]] {
-                rgb = [-1.0; 3];
+                out.cast::<[f32; 3]>().write([-1.0; 3]); // through `out`: a direct write to `rgb` would retire it
                 assert_eq!(
                     fur_eval_dual(p, 0.3, -0.2, 2.5, 2.0, 1.5, 1.0, 1.0, bad.as_ptr(), out),
                     fur_status::FUR_ERR_COLOUR
                 );
                 assert_eq!(rgb, [0.0; 3]);
-                rgb = [-1.0; 3];
+                out.cast::<[f32; 3]>().write([-1.0; 3]);
                 let (wi, wr, t) = ([0.3f32, 0.8, 0.2], [-0.6f32, 0.7, -0.1], [0.0f32, 0.2, 1.0]);
                 assert_eq!(
                     fur_eval_dual_dirs(

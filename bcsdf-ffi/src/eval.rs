@@ -2,6 +2,9 @@
 //! vectors and in batches, importance sampling and its pdf, and both at one view in one call
 //! (docs/model.md §8, §10).
 //!
+//! One file past 600 lines on purpose: each entry point sits beside its `_at` colour sibling,
+//! which validates the same arguments in the same order (the C contract is read side by side).
+//!
 //! Each has an `_at` sibling that takes the query's colour (LUT format 5, docs/lut.md "The
 //! absorption axis"): σ_ca per RGB channel as `const float sigma_ca[3]` right after the
 //! `fur_lut` (the batch: `3n` floats, one colour per query), validated by `colour.rs`

@@ -6,16 +6,17 @@
 //! with linear interpolation in every table axis. The data is validated once, in
 //! [`BakedBcsdf::from_bytes`]; evaluation then never fails, never panics and never returns NaN.
 //! Sampling and pdf ([`crate::Bcsdf`]) are in the crate's `sampling::baked` module.
+//!
+//! A few lines past 600 on purpose: loading, placing a query and gathering its reads are one
+//! hot path, kept in one file (the kernels, batch, colour view and sampler are split out).
 
 use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::{Families, FAMILY_COUNT};
 use crate::lut::cdf::{Density, DensityLayout, Nodes};
-use crate::lut::{
-    self, absorption_coordinate, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT,
-};
+use crate::lut::{self, f16_biased, LutError, LutHeader, Table, F16_UNBIAS, TABLE_COUNT};
 use dispatch::KernelOp;
 pub use texels::ColourAt;
-use texels::{corner_weights, m_linear, ms_bilinear, n_lossless, Baseline, NKernel};
+use texels::{corner_weights, locate_colour, m_linear, ms_bilinear, n_lossless, Baseline, NKernel};
 
 mod at;
 mod batch;
@@ -603,32 +604,6 @@ impl<M: Math> KernelOp<M> for EvalDirs<'_> {
         let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
         Ok(families_at(lut, kernel, ti, tr, phi.abs(), colour))
     }
-}
-
-/// [`BakedBcsdf::locate_colour`]: per channel, u = [`absorption_coordinate`]`(σ, s₀)·(n − 1)`,
-/// the first of three nodes k = min(⌊u⌋, n − 3) and the quadratic Lagrange weights of nodes
-/// k, k + 1, k + 2 at t = u − k: (t − 1)(t − 2)/2, t(2 − t), t(t − 1)/2 (docs/lut.md "The
-/// absorption axis"). The interpolant passes through every node, so it is continuous where
-/// k changes.
-#[inline(always)]
-fn locate_colour(sigma: Rgb, scale: f32, last: f32, nodes: usize, plane: usize) -> ColourAt {
-    let mut at = ColourAt {
-        stride: plane,
-        ..ColourAt::default()
-    };
-    for c in 0..3 {
-        // absorption_coordinate maps NaN and negatives to 0 and clamps to [0, 1].
-        let u = (absorption_coordinate(sigma.0[c], scale) * last).clamp(0.0, last);
-        let k = (u as usize).min(nodes.saturating_sub(3));
-        let t = u - k as f32;
-        at.plane[c] = k * plane;
-        at.w[c] = [
-            0.5 * (t - 1.0) * (t - 2.0),
-            t * (2.0 - t),
-            0.5 * t * (t - 1.0),
-        ];
-    }
-    at
 }
 
 #[cfg(test)]

@@ -14,6 +14,8 @@
 //! unreachable; it keeps the kernels free of panics and of out-of-bounds reads).
 
 use super::simd::F4;
+use crate::lut::absorption_coordinate;
+use crate::spectrum::Rgb;
 
 /// How an evaluation reads table `N` (`BakedBcsdf::kernel`). A kernel is a value: a kernel
 /// that needs CPU features is a token that only their detection constructs, so holding one
@@ -46,6 +48,38 @@ pub struct ColourAt {
     pub(crate) w: [[f32; 3]; 3],
     /// Texels per plane (the distance from plane k to plane k + 1).
     pub(crate) stride: usize,
+}
+
+/// [`BakedBcsdf::locate_colour`]: per channel, u = [`absorption_coordinate`]`(σ, s₀)·(n − 1)`,
+/// the first of three nodes k = min(⌊u⌋, n − 3) and the quadratic Lagrange weights of nodes
+/// k, k + 1, k + 2 at t = u − k: (t − 1)(t − 2)/2, t(2 − t), t(t − 1)/2 (docs/lut.md "The
+/// absorption axis"). The interpolant passes through every node, so it is continuous where
+/// k changes.
+#[inline(always)]
+pub(crate) fn locate_colour(
+    sigma: Rgb,
+    scale: f32,
+    last: f32,
+    nodes: usize,
+    plane: usize,
+) -> ColourAt {
+    let mut at = ColourAt {
+        stride: plane,
+        ..ColourAt::default()
+    };
+    for c in 0..3 {
+        // absorption_coordinate maps NaN and negatives to 0 and clamps to [0, 1].
+        let u = (absorption_coordinate(sigma.0[c], scale) * last).clamp(0.0, last);
+        let k = (u as usize).min(nodes.saturating_sub(3));
+        let t = u - k as f32;
+        at.plane[c] = k * plane;
+        at.w[c] = [
+            0.5 * (t - 1.0) * (t - 2.0),
+            t * (2.0 - t),
+            0.5 * t * (t - 1.0),
+        ];
+    }
+    at
 }
 
 /// [`n_bilinear`]: four lanes (SSE2 where the target has it, portable arrays elsewhere).

@@ -176,9 +176,9 @@ fn a_holder_killed_mid_generation_leaves_a_cache_the_next_bake_repairs() {
     let mut args = vec!["--presets", presets.to_str().unwrap(), "--all"];
     args.extend(["--out", out.to_str().unwrap()]);
     args.extend(["--cache-dir", cache.to_str().unwrap()]);
-    // CHEAP's table sizes with ten times its photons: generation lasts long enough to be
-    // interrupted.
-    args.extend(&CHEAP[..8]);
+    // CHEAP's table sizes and planes with ten times its photons: generation lasts long
+    // enough to be interrupted.
+    args.extend(&CHEAP[..10]);
     args.extend(["--photons-scale", "0.05", "--no-check", "--threads=1"]);
 
     // Start a bake and kill it once it holds the lock and is generating: its temporary

@@ -25,7 +25,7 @@ use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
 use bcsdf_core::{presets, Absorption, Angles, Bcsdf, Closure, Rgb};
 use bcsdf_gpu::{GpuFamilies, GpuLut, SampleQuery};
-use common::{or_skip, preset_lut};
+use common::{or_skip, preset_lut, TEST_RESOLUTION};
 use std::f32::consts::{FRAC_PI_2, PI};
 
 const RELATIVE: f32 = 1e-5;
@@ -179,7 +179,7 @@ fn gpu_matches_cpu_for_every_preset() {
         .flat_map(|p| Closure::ALL.map(|c| (p, c)))
     {
         println!("{} in the {closure:?} closure:", preset.name);
-        let bytes = preset_lut(preset.name, closure);
+        let bytes = preset_lut(preset.name, closure, TEST_RESOLUTION);
         let Some(g) = or_skip(GpuLut::with_shader(&bytes, FUR_BCSDF_WGSL)) else {
             return;
         };
@@ -345,7 +345,7 @@ fn gpu_matches_cpu_for_every_preset() {
 fn a_wrong_absorption_coordinate_is_caught() {
     // sigma * s0 instead of sigma / s0: right at sigma = 0 (the lossless plane) and at the
     // clamped end, wrong in between, where the random colours lie.
-    let bytes = preset_lut("human-hair", Closure::Report);
+    let bytes = preset_lut("human-hair", Closure::Report, TEST_RESOLUTION);
     let wrong = FUR_BCSDF_WGSL.replace("fur_exp_neg(s / scale)", "fur_exp_neg(s * scale)");
     assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation applies");
     let Some(g) = or_skip(GpuLut::with_shader(&bytes, &wrong)) else {
@@ -375,7 +375,7 @@ fn a_wrong_absorption_coordinate_is_caught() {
 
 #[test]
 fn an_off_by_one_table_index_is_caught() {
-    let bytes = preset_lut("human-hair", Closure::Report);
+    let bytes = preset_lut("human-hair", Closure::Report, TEST_RESOLUTION);
     let wrong = FUR_BCSDF_WGSL.replace(
         "let b = fur_half(m0 + 3u * (lm.i + 1u) + ch);",
         "let b = fur_half(m0 + 3u * (lm.i + 2u) + ch);",
@@ -403,7 +403,7 @@ fn gpu_pdf_and_samples_match_cpu() {
         .flat_map(|p| Closure::ALL.map(|c| (p, c)))
     {
         println!("{} in the {closure:?} closure:", preset.name);
-        let bytes = preset_lut(preset.name, closure);
+        let bytes = preset_lut(preset.name, closure, TEST_RESOLUTION);
         let Some(g) = or_skip(GpuLut::with_shader(&bytes, FUR_BCSDF_WGSL)) else {
             return;
         };

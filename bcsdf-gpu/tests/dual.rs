@@ -24,6 +24,7 @@ use bcsdf_core::dual::axis_node;
 use bcsdf_core::dual::{
     encode_axis, Attenuation, Density, DualLut, DualTables, Fibers, Quadrature, ABS_NODES, BLOB_LEN,
 };
+use bcsdf_core::lut::LutResolution;
 use bcsdf_core::rng::{cell_stream, Pcg32};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
 use bcsdf_core::{presets, Absorption, Angles, Rgb};
@@ -74,7 +75,11 @@ const DENSITIES: [Density; 5] = [
 /// and its `.furdual` blob (tables from the LUT at each grey node colour of the absorption
 /// axis, the pipeline's recipe, at a 32 × 16 quadrature, `Coat`).
 fn lut_and_blob(name: &str) -> (Vec<u8>, Vec<u8>) {
-    let bytes = preset_lut(name, presets::find(name).unwrap().input.closure);
+    let bytes = preset_lut(
+        name,
+        presets::find(name).unwrap().input.closure,
+        LutResolution::DEFAULT,
+    );
     let baked = BakedBcsdf::from_bytes(&bytes).unwrap();
     let mut tables = Box::new(DualTables::ZERO);
     let mut blob = vec![0u8; BLOB_LEN];

@@ -4,8 +4,9 @@
 //! layout of [`ResidualLayout`]. It sits above `model` (it calls the model), while the table's
 //! lookups ([`crate::residual::ResidualTable`]) sit below it.
 
+use crate::far_field::{segment_scale, segments, GL_NODES, GL_WEIGHTS};
 use crate::frame::Angles;
-use crate::geometry::Chord;
+use crate::geometry::{Chord, ViewSlice};
 use crate::longitudinal::inv_cos2_theta_i;
 use crate::math::{Libm, Math, PI, TAU};
 use crate::medulla::ProfileError;
@@ -16,7 +17,7 @@ use crate::residual::ResidualLayout;
 use crate::rng::{cell_stream, Pcg32};
 use crate::scattered::{azimuthal_on_row, exit_transmittance, scattered_paths};
 use crate::spectrum::Rgb;
-use crate::unscattered::attenuations;
+use crate::unscattered::{attenuations, Extinction};
 
 /// Table id of the residual cells for [`cell_stream`] (C^N is 1, C^M 2).
 const TABLE_RESIDUAL: u64 = 3;
@@ -27,18 +28,24 @@ const MS_SAMPLES: usize = 1024;
 /// φ midpoints per C^N bin of the ψ-integrals of the scattered lobes' energy.
 const PSI_SUBSAMPLES: usize = 4;
 
+/// 6-point Gauss–Legendre panels per smooth piece of h ∈ [0, 1] in the h-means of E_model
+/// that the row's ⟨A_res⟩_h is made to complete (`ModelEnergy::mean`).
+const MEAN_PANELS: usize = 16;
+
 /// What one θ_r row's simulation found, h-means (midpoint rule) per channel, for the
 /// numbers docs/model.md §12 reports.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RowStats {
     /// ⟨E_sim⟩_h: all energy leaving the fiber.
     pub exiting: [f64; 3],
-    /// ⟨E_model⟩_h: the energy the model's lobes carry.
+    /// ⟨E_model⟩_h: the energy the model's lobes carry (the far field's h-mean, integrated
+    /// piece by piece between the jumps of E_model(h), not the offsets' midpoint rule).
     pub model: [f64; 3],
     /// ⟨max(0, E_model − E_sim)⟩_h: what the scattered lobes carry beyond the simulation
     /// (removed by their scale factor).
     pub excess: [f64; 3],
-    /// ⟨A_res⟩_h = ⟨max(0, E_sim − E_model)⟩_h.
+    /// ⟨A_res⟩_h as stored: ⟨max(0, E_sim − E_model)⟩_h over the offsets, completed so that
+    /// the far field's lobes, scale and residual carry ⟨E_sim⟩_h (see [`generate_row`]).
     pub residual: [f64; 3],
     /// ⟨classified unmodelled energy⟩_h; its gap to E_sim − E_model is the scattered lobes'
     /// approximation (F_t's radial exit against the actual one).
@@ -114,6 +121,7 @@ fn simulate_row<M: Math>(
     let mut hist = [[0.0f64; 3]; 4096];
     let scale_at = layout.scale_offset();
     let (mut scattered_mean, mut excess_mean) = ([0.0f64; 3], [0.0f64; 3]);
+    let mut unscattered_mean = [0.0f64; 3];
     let hist = &mut hist[..layout.n_phi];
     let inv_n = 1.0 / n_h as f64;
     for j in 0..n_h {
@@ -139,9 +147,9 @@ fn simulate_row<M: Math>(
                 1.0
             };
             scattered_mean[c] += es * inv_n;
+            unscattered_mean[c] += eu * inv_n;
             excess_mean[c] += excess * inv_n;
             stats.exiting[c] += t.exiting[c] * inv_n;
-            stats.model[c] += (eu + es) * inv_n;
             stats.excess[c] += excess * inv_n;
             stats.residual[c] += res * inv_n;
             stats.unmodelled[c] += t.unmodelled[c] * inv_n;
@@ -152,13 +160,38 @@ fn simulate_row<M: Math>(
         stats.beams += t.beams;
         stats.photons += t.photons;
     }
+    // The far field carries the lobes' exact h-means, not the offsets' midpoint rule, which
+    // misses E_model's jumps (h = κη'_c, the medulla's total reflection; they move with θ_r)
+    // by up to half a jump times 1/n_h: ⟨A_res⟩_h takes the difference, so that the far
+    // field's lobes (the scattered ones at their scale s) and residual carry ⟨E_sim⟩_h, and
+    // the offsets' values are scaled to that mean (the near field's h-mean stays the far
+    // field's).
+    let (unscattered_exact, scattered_exact) = energies.mean();
     for c in 0..3 {
-        out[3 * n_h + c] = stats.residual[c] as f32;
-        out[scale_at + 3 * n_h + c] = if scattered_mean[c] > 0.0 {
-            (1.0 - excess_mean[c] / scattered_mean[c]).clamp(0.0, 1.0) as f32
+        let scale = if scattered_mean[c] > 0.0 {
+            (1.0 - excess_mean[c] / scattered_mean[c]).clamp(0.0, 1.0)
         } else {
             1.0
         };
+        let (eu, es) = (
+            f64::from(unscattered_exact.0[c]),
+            f64::from(scattered_exact.0[c]),
+        );
+        let midpoint = stats.residual[c];
+        let mean =
+            (midpoint + (unscattered_mean[c] - eu) + scale * (scattered_mean[c] - es)).max(0.0);
+        for j in 0..n_h {
+            let v = &mut out[3 * j + c];
+            *v = if midpoint > 0.0 {
+                (f64::from(*v) * (mean / midpoint)) as f32
+            } else {
+                mean as f32
+            };
+        }
+        stats.residual[c] = mean;
+        stats.model[c] = eu + es;
+        out[3 * n_h + c] = mean as f32;
+        out[scale_at + 3 * n_h + c] = scale as f32;
     }
     // D_res: the histogram over |φ| ∈ [0, π] as a density over φ ∈ (−π, π] (both signs).
     let width = PI / layout.n_phi as f32;
@@ -202,7 +235,8 @@ pub fn generate<M: Math>(
 /// functions.
 struct ModelEnergy<'m, 'a, M: Math> {
     model: &'m FurBcsdf<'a, M>,
-    theta_r: f32,
+    slice: ViewSlice,
+    ext: Extinction,
     /// ∫ M^s_back dθ_i and ∫ M^s_front dθ_i at θ_r (weighted like S's 1/cos²θ_i guard).
     exit_mass: [f32; 2],
 }
@@ -226,21 +260,54 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
                 exit_mass[x] = sum as f32;
             }
         }
+        let (slice, ext) = model.slice_and_extinction(theta_r);
         ModelEnergy {
             model,
-            theta_r,
+            slice,
+            ext,
             exit_mass,
         }
     }
 
     /// (Σ_p A_p(h), the scattered lobes' energy at h).
     fn at(&self, h: f32) -> (Rgb, Rgb) {
+        self.on_chord(&Chord::at_offset::<M>(&self.slice, h))
+    }
+
+    /// (⟨Σ_p A_p⟩_h, the scattered lobes' ⟨energy⟩_h) over h ∈ [0, 1] (both even in h):
+    /// Gauss–Legendre on the far field's smooth pieces of [0, 1] (`far_field::segments`,
+    /// h = K·sin t, which also takes the square-root ends smoothly), [`MEAN_PANELS`] panels
+    /// each.
+    fn mean(&self) -> (Rgb, Rgb) {
+        let (segs, n) = segments::<M>(&self.slice, self.model.index_matched());
+        let (mut eu, mut es) = ([0.0f64; 3], [0.0f64; 3]);
+        for seg in &segs[..n] {
+            let k = segment_scale(&self.slice, seg.var);
+            let width = (seg.t1 - seg.t0) / MEAN_PANELS as f32;
+            for panel in 0..MEAN_PANELS {
+                let mid = seg.t0 + (panel as f32 + 0.5) * width;
+                for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS.iter()) {
+                    let t = mid + 0.5 * width * x;
+                    let chord = Chord::at_variable::<M>(&self.slice, seg.var, t, seg.region);
+                    let dh = f64::from(k * chord.variable_cos(seg.var) * 0.5 * width * w);
+                    let (u, v) = self.on_chord(&chord);
+                    for c in 0..3 {
+                        eu[c] += f64::from(u.0[c]) * dh;
+                        es[c] += f64::from(v.0[c]) * dh;
+                    }
+                }
+            }
+        }
+        (Rgb(eu.map(|v| v as f32)), Rgb(es.map(|v| v as f32)))
+    }
+
+    /// (Σ_p A_p, the scattered lobes' energy) on `chord`.
+    fn on_chord(&self, chord: &Chord) -> (Rgb, Rgb) {
         let model = self.model;
-        let (slice, ext) = model.slice_and_extinction(self.theta_r);
-        let chord = Chord::at_offset::<M>(&slice, h);
+        let (slice, ext) = (&self.slice, &self.ext);
         let l = model.params().l();
         let mut e = Rgb::ZERO;
-        for a in attenuations::<M>(&slice, &chord, &ext, l) {
+        for a in attenuations::<M>(slice, chord, ext, l) {
             e += a;
         }
         let Some(profiles) = model.profiles() else {
@@ -249,12 +316,12 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
         if ext.medulla_scattering <= 0.0 {
             return (e, Rgb::ZERO);
         }
-        let exit = exit_transmittance::<M>(&slice, &ext);
-        let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, l, exit) else {
+        let exit = exit_transmittance::<M>(slice, ext);
+        let Some(sp) = scattered_paths::<M>(slice, chord, ext, l, exit) else {
             return (e, Rgb::ZERO);
         };
         let mut es = Rgb::ZERO;
-        let row = profiles.n_row(model.sigma_n(&slice), sp.h_m);
+        let row = profiles.n_row(model.sigma_n(slice), sp.h_m);
         let n = PSI_SUBSAMPLES * profiles.layout().res.n_psi;
         let step = TAU / n as f32;
         for k in 0..n {

@@ -13,7 +13,7 @@ use crate::medulla::ProfileError;
 use crate::model::FurBcsdf;
 use crate::params::FurParams;
 use crate::residual::sim::{simulate_cell, CellTally, Section};
-use crate::residual::ResidualLayout;
+use crate::residual::{ResidualLayout, MEAN_SUBDIVISION};
 use crate::rng::{cell_stream, Pcg32};
 use crate::scattered::{azimuthal_on_row, exit_transmittance, scattered_paths};
 use crate::spectrum::Rgb;
@@ -225,10 +225,80 @@ pub fn generate<M: Math>(
             found: out.len(),
         });
     }
-    for (row, chunk) in out.chunks_exact_mut(layout.row_len()).enumerate() {
+    let (rows, _) = out.split_at_mut(layout.means_offset());
+    for (row, chunk) in rows.chunks_exact_mut(layout.row_len()).enumerate() {
         generate_row(model, layout, row, seed, chunk);
     }
+    fill_means(layout, |i| mean_node_energy(model, layout, i), out);
     Ok(())
+}
+
+/// The lobes' exact h-means at mean node `i` ([`ResidualLayout::mean_node`]): (⟨Σ_p A_p⟩_h,
+/// the scattered lobes' unscaled ⟨energy⟩_h), for [`fill_means`]. Deterministic (no photons);
+/// the std tools run the nodes in parallel.
+pub fn mean_node_energy<M: Math>(
+    model: &FurBcsdf<'_, M>,
+    layout: &ResidualLayout,
+    i: usize,
+) -> (Rgb, Rgb) {
+    ModelEnergy::new(model, layout.mean_node(i)).mean()
+}
+
+/// Writes the far field's ⟨A_res⟩_h at every mean node into `data` (a whole table whose rows
+/// [`generate_row`] has written), `energy(i)` being [`mean_node_energy`] at mean node `i`
+/// (called in increasing `i`, each row's node once): ⟨E_sim⟩_h interpolated between the rows
+/// as the far field interpolates them (each row's ⟨E_sim⟩_h being what its lobes, scaled, and
+/// its residual carry), less the lobes' exact h-means at the node, the scattered ones at the
+/// rows' interpolated scale; floored at 0. At the rows this is the row's own mean; between them
+/// it follows E_model's kinks. Nothing is written when the sizes do not match.
+pub fn fill_means(
+    layout: &ResidualLayout,
+    mut energy: impl FnMut(usize) -> (Rgb, Rgb),
+    data: &mut [f32],
+) {
+    if layout.validate().is_err() || data.len() != layout.len() {
+        return;
+    }
+    let (n, len, n_h) = (layout.n_theta, layout.row_len(), layout.n_h);
+    let scale_at = layout.scale_offset() + 3 * n_h;
+    let (rows, means) = data.split_at_mut(layout.means_offset());
+    // ⟨E_sim⟩_h and the far-field scale of row k, channel c, from its lobes' energies.
+    let row = |k: usize, c: usize, (u, v): (Rgb, Rgb)| {
+        let r = &rows[k * len..(k + 1) * len];
+        let s = f64::from(r[scale_at + c]);
+        let e_sim = f64::from(r[3 * n_h + c]) + f64::from(u.0[c]) + s * f64::from(v.0[c]);
+        (e_sim, s)
+    };
+    // The lobes' energies at the current interval's two rows.
+    let mut ends: Option<(usize, (Rgb, Rgb), (Rgb, Rgb))> = None;
+    for i in 0..layout.n_mean() {
+        let x = layout.theta_position(layout.mean_node(i));
+        let k = (x as usize).min(n - 2);
+        let (lo, hi) = match ends {
+            Some((at, lo, hi)) if at == k => (lo, hi),
+            Some((at, _, hi)) if at + 1 == k => (hi, energy(MEAN_SUBDIVISION * (k + 1))),
+            _ => (
+                energy(MEAN_SUBDIVISION * k),
+                energy(MEAN_SUBDIVISION * (k + 1)),
+            ),
+        };
+        ends = Some((k, lo, hi));
+        let (u, v) = if i == MEAN_SUBDIVISION * k {
+            lo
+        } else if i == MEAN_SUBDIVISION * (k + 1) {
+            hi
+        } else {
+            energy(i)
+        };
+        let w = f64::from(x - k as f32);
+        for c in 0..3 {
+            let ((e0, s0), (e1, s1)) = (row(k, c, lo), row(k + 1, c, hi));
+            let e_sim = e0 * (1.0 - w) + e1 * w;
+            let s = s0 * (1.0 - w) + s1 * w;
+            let mean = e_sim - f64::from(u.0[c]) - s * f64::from(v.0[c]);
+            means[3 * i + c] = mean.max(0.0) as f32;
+        }
+    }
 }
 
 /// E_model(θ_r, h): the energy the model's lobes carry at one view angle, from the model's own

@@ -121,7 +121,7 @@ fn simulate_row<M: Math>(
     let mut hist = [[0.0f64; 3]; 4096];
     let scale_at = layout.scale_offset();
     let (mut scattered_mean, mut excess_mean) = ([0.0f64; 3], [0.0f64; 3]);
-    let mut unscattered_mean = [0.0f64; 3];
+    let (mut unscattered_mean, mut lossless_mean) = ([0.0f64; 3], [0.0f64; 3]);
     let hist = &mut hist[..layout.n_phi];
     let inv_n = 1.0 / n_h as f64;
     for j in 0..n_h {
@@ -130,6 +130,7 @@ fn simulate_row<M: Math>(
         let mut rng = Pcg32::new(stream, stream.rotate_left(17));
         let t: CellTally = simulate_cell(&sec, h, layout.photons, &mut rng, hist);
         let (e_unscattered, e_scattered) = energies.at(h);
+        let e_lossless = energies.lossless_at(h);
         let mut cell_drop = 0.0f64;
         for c in 0..3 {
             let (eu, es) = (f64::from(e_unscattered.0[c]), f64::from(e_scattered.0[c]));
@@ -148,6 +149,7 @@ fn simulate_row<M: Math>(
             };
             scattered_mean[c] += es * inv_n;
             unscattered_mean[c] += eu * inv_n;
+            lossless_mean[c] += f64::from(e_lossless.0[c]) * inv_n;
             excess_mean[c] += excess * inv_n;
             stats.exiting[c] += t.exiting[c] * inv_n;
             stats.excess[c] += excess * inv_n;
@@ -160,12 +162,18 @@ fn simulate_row<M: Math>(
         stats.beams += t.beams;
         stats.photons += t.photons;
     }
-    // The far field carries the lobes' exact h-means, not the offsets' midpoint rule, which
-    // misses E_model's jumps (h = κη'_c, the medulla's total reflection; they move with θ_r)
-    // by up to half a jump times 1/n_h: ⟨A_res⟩_h takes the difference, so that the far
-    // field's lobes (the scattered ones at their scale s) and residual carry ⟨E_sim⟩_h, and
-    // the offsets' values are scaled to that mean (the near field's h-mean stays the far
-    // field's).
+    // The far field carries the lobes' exact h-means; the offsets' midpoint rule misses them
+    // where E_model(h) jumps (h = κη'_c, the medulla's total reflection; the jumps move with
+    // θ_r) or turns steeply (the cuticle's Fresnel toward h = 1) by up to half a jump times
+    // 1/n_h. Lossless, E_sim ≡ 1 is smooth and those features are the residual's:
+    // ⟨A_res⟩_h = 1 − exact⟨E_model⟩ (the midpoint rule for E_sim, exact means for the lobes).
+    // Absorption makes E_sim itself jump with the paths (and leaves the series beyond TRT of a
+    // medulla-free fiber smooth, where midpoint⟨res⟩ was right): the correction
+    // (midpoint − exact)⟨E_u + s·E_s⟩ is weighted by τ = midpoint⟨E_sim − E_u⟩ /
+    // midpoint⟨1 − E_0⟩, the part of the energy off the eight unscattered paths that survives
+    // absorption (E_0: Σ_p A_p without absorption; τ = 1 lossless, → 0 for dark fibers). The
+    // offsets keep the simulation's values and their mean; the near field scales them to the
+    // far field's mean (`ResidualTable::magnitude`).
     let (unscattered_exact, scattered_exact) = energies.mean();
     for c in 0..3 {
         let scale = if scattered_mean[c] > 0.0 {
@@ -177,20 +185,20 @@ fn simulate_row<M: Math>(
             f64::from(unscattered_exact.0[c]),
             f64::from(scattered_exact.0[c]),
         );
+        let off_paths = stats.exiting[c] + stats.dropped[c] - unscattered_mean[c];
+        let lossless_off_paths = 1.0 - lossless_mean[c];
+        let tau = if lossless_off_paths > 1e-12 {
+            (off_paths / lossless_off_paths).clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
         let midpoint = stats.residual[c];
-        let mean =
-            (midpoint + (unscattered_mean[c] - eu) + scale * (scattered_mean[c] - es)).max(0.0);
-        for j in 0..n_h {
-            let v = &mut out[3 * j + c];
-            *v = if midpoint > 0.0 {
-                (f64::from(*v) * (mean / midpoint)) as f32
-            } else {
-                mean as f32
-            };
-        }
+        let correction = (unscattered_mean[c] - eu) + scale * (scattered_mean[c] - es);
+        let mean = (midpoint + tau * correction).max(0.0);
         stats.residual[c] = mean;
         stats.model[c] = eu + es;
-        out[3 * n_h + c] = mean as f32;
+        out[3 * n_h + c] = midpoint as f32;
+        out[layout.far_mean_offset() + c] = mean as f32;
         out[scale_at + 3 * n_h + c] = scale as f32;
     }
     // D_res: the histogram over |φ| ∈ [0, π] as a density over φ ∈ (−π, π] (both signs).
@@ -261,12 +269,13 @@ pub fn fill_means(
     }
     let (n, len, n_h) = (layout.n_theta, layout.row_len(), layout.n_h);
     let scale_at = layout.scale_offset() + 3 * n_h;
+    let far_at = layout.far_mean_offset();
     let (rows, means) = data.split_at_mut(layout.means_offset());
     // ⟨E_sim⟩_h and the far-field scale of row k, channel c, from its lobes' energies.
     let row = |k: usize, c: usize, (u, v): (Rgb, Rgb)| {
         let r = &rows[k * len..(k + 1) * len];
         let s = f64::from(r[scale_at + c]);
-        let e_sim = f64::from(r[3 * n_h + c]) + f64::from(u.0[c]) + s * f64::from(v.0[c]);
+        let e_sim = f64::from(r[far_at + c]) + f64::from(u.0[c]) + s * f64::from(v.0[c]);
         (e_sim, s)
     };
     // The lobes' energies at the current interval's two rows.
@@ -307,6 +316,8 @@ struct ModelEnergy<'m, 'a, M: Math> {
     model: &'m FurBcsdf<'a, M>,
     slice: ViewSlice,
     ext: Extinction,
+    /// `ext` without absorption (σ_ca = σ_ma = 0; the medulla's scattering kept).
+    lossless: Extinction,
     /// ∫ M^s_back dθ_i and ∫ M^s_front dθ_i at θ_r (weighted like S's 1/cos²θ_i guard).
     exit_mass: [f32; 2],
 }
@@ -331,10 +342,16 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
             }
         }
         let (slice, ext) = model.slice_and_extinction(theta_r);
+        let lossless = Extinction {
+            cortex: Rgb::ZERO,
+            medulla: ext.medulla_scattering,
+            medulla_scattering: ext.medulla_scattering,
+        };
         ModelEnergy {
             model,
             slice,
             ext,
+            lossless,
             exit_mass,
         }
     }
@@ -342,6 +359,17 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
     /// (Σ_p A_p(h), the scattered lobes' energy at h).
     fn at(&self, h: f32) -> (Rgb, Rgb) {
         self.on_chord(&Chord::at_offset::<M>(&self.slice, h))
+    }
+
+    /// Σ_p A_p(h) without absorption.
+    fn lossless_at(&self, h: f32) -> Rgb {
+        let chord = Chord::at_offset::<M>(&self.slice, h);
+        let l = self.model.params().l();
+        let mut e = Rgb::ZERO;
+        for a in attenuations::<M>(&self.slice, &chord, &self.lossless, l) {
+            e += a;
+        }
+        e
     }
 
     /// (⟨Σ_p A_p⟩_h, the scattered lobes' ⟨energy⟩_h) over h ∈ [0, 1] (both even in h):
@@ -368,7 +396,8 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
                 }
             }
         }
-        (Rgb(eu.map(|v| v as f32)), Rgb(es.map(|v| v as f32)))
+        let rgb = |v: [f64; 3]| Rgb(v.map(|x| x as f32));
+        (rgb(eu), rgb(es))
     }
 
     /// (Σ_p A_p, the scattered lobes' energy) on `chord`.

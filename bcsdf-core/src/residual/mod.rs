@@ -22,7 +22,8 @@
 //! interleaved), then the row's ⟨A_res⟩_h (RGB, the mean of those offsets' values, which is
 //! exactly the h-mean of the near field's piecewise-linear interpolant), then D_res in `n_phi`
 //! bins of |φ| ∈ [0, π] (RGB), then the scattered lobes' scale at the offsets and its far-field
-//! value (RGB). After the rows, the far field's ⟨A_res⟩_h at [`ResidualLayout::n_mean`] finer
+//! value (RGB), then the far field's ⟨A_res⟩_h at the row (RGB: the offsets' mean completed to
+//! the lobes' exact h-means, `residual_gen::generate_row`). After the rows, the far field's ⟨A_res⟩_h at [`ResidualLayout::n_mean`] finer
 //! θ_r nodes (RGB; [`MEAN_SUBDIVISION`] per row interval, the same grading, so every row is
 //! one of them): E_model(θ_r) has kinks between the rows (where h = κη'_c or the medulla's
 //! total reflection reaches h = 1) that a mean interpolated between rows misses by up to
@@ -68,10 +69,16 @@ impl ResidualLayout {
         photons: 500,
     };
 
-    /// Values per θ_r row: 3·(2·(n_h + 1) + n_phi).
+    /// Values per θ_r row: 3·(2·(n_h + 1) + n_phi + 1).
     #[must_use]
     pub fn row_len(&self) -> usize {
-        3 * (2 * (self.n_h + 1) + self.n_phi)
+        3 * (2 * (self.n_h + 1) + self.n_phi + 1)
+    }
+
+    /// Where the far field's ⟨A_res⟩_h at the row is in a row (its last three values).
+    #[must_use]
+    pub fn far_mean_offset(&self) -> usize {
+        self.row_len() - 3
     }
 
     /// Where the scattered lobes' scale factors start in a row: 3·(n_h + 1 + n_phi).

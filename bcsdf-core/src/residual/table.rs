@@ -110,10 +110,12 @@ impl<'a> ResidualTable<'a> {
         Self::rgb(a, n_h) * (1.0 - w) + Self::rgb(b, n_h) * w
     }
 
-    /// A_res(θ_r, h): linear in θ_r and in |h| between the offsets (constant beyond the first
-    /// and last), scaled per channel by [`ResidualTable::mean`] over the rows' h-mean at θ_r
-    /// (1 at the rows), so that its h-mean is the far field's ⟨A_res⟩_h at every θ_r
-    /// (uniform in h where the rows' mean is 0).
+    /// A_res(θ_r, h): the simulation's values at the offsets, linear in θ_r and in |h| between
+    /// them (constant beyond the first and last), scaled per channel by
+    /// [`ResidualTable::mean`] over their h-mean at θ_r, so that the near field's h-mean is
+    /// the far field's ⟨A_res⟩_h at every θ_r (uniform in h where the offsets' mean is 0). The
+    /// scale completes the offsets' midpoint rule to the lobes' exact h-means (docs/model.md
+    /// §12); it is 1 where E_model(h) has no jumps or steep ends.
     #[must_use]
     pub fn magnitude(&self, theta_r: f32, h: f32) -> Rgb {
         let (mean, rows) = (self.mean(theta_r), self.row_mean(theta_r));

@@ -168,12 +168,12 @@ fn the_far_field_means_hold_the_rows_means_at_the_rows() {
         }
     }
     // At the rows (but the last, θ_r = 90°, where every lobe's energy is R's) the far field's
-    // mean is the row's own: ⟨E_sim⟩_h less the lobes' exact h-means there.
+    // mean is the row's own, stored after its scattered scale.
     let len = SMALL.row_len();
     for k in 0..SMALL.n_theta - 1 {
         let mean = table.mean(SMALL.theta_node(k));
         for c in 0..3 {
-            let row = data[k * len + 3 * SMALL.n_h + c];
+            let row = data[k * len + SMALL.far_mean_offset() + c];
             assert!(
                 (mean.0[c] - row).abs() <= 1e-5 * row.max(1e-2),
                 "row {k}: {} vs {row}",

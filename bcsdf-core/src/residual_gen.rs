@@ -252,6 +252,9 @@ pub fn mean_node_energy<M: Math>(
     ModelEnergy::new(model, layout.mean_node(i)).mean()
 }
 
+/// (⟨Σ_p A_p⟩_h, the scattered lobes' unscaled ⟨energy⟩_h) at one θ_r.
+type Energies = (Rgb, Rgb);
+
 /// Writes the far field's ⟨A_res⟩_h at every mean node into `data` (a whole table whose rows
 /// [`generate_row`] has written), `energy(i)` being [`mean_node_energy`] at mean node `i`
 /// (called in increasing `i`, each row's node once): ⟨E_sim⟩_h interpolated between the rows
@@ -279,7 +282,7 @@ pub fn fill_means(
         (e_sim, s)
     };
     // The lobes' energies at the current interval's two rows.
-    let mut ends: Option<(usize, (Rgb, Rgb), (Rgb, Rgb))> = None;
+    let mut ends: Option<(usize, Energies, Energies)> = None;
     for i in 0..layout.n_mean() {
         let x = layout.theta_position(layout.mean_node(i));
         let k = (x as usize).min(n - 2);

@@ -66,7 +66,7 @@ pub const END_DENSITY: f32 = 0.5;
 pub const END_PANELS: usize = 3;
 
 /// 6-point Gauss–Legendre nodes and weights on [−1, 1].
-const GL_NODES: [f32; 6] = [
+pub(crate) const GL_NODES: [f32; 6] = [
     -0.932_469_5,
     -0.661_209_4,
     -0.238_619_2,
@@ -74,7 +74,7 @@ const GL_NODES: [f32; 6] = [
     0.661_209_4,
     0.932_469_5,
 ];
-const GL_WEIGHTS: [f32; 6] = [
+pub(crate) const GL_WEIGHTS: [f32; 6] = [
     0.171_324_49,
     0.360_761_57,
     0.467_913_93,

@@ -4,19 +4,20 @@
 //! layout of [`ResidualLayout`]. It sits above `model` (it calls the model), while the table's
 //! lookups ([`crate::residual::ResidualTable`]) sit below it.
 
+use crate::far_field::{segment_scale, segments, GL_NODES, GL_WEIGHTS};
 use crate::frame::Angles;
-use crate::geometry::Chord;
+use crate::geometry::{Chord, ViewSlice};
 use crate::longitudinal::inv_cos2_theta_i;
 use crate::math::{Libm, Math, PI, TAU};
 use crate::medulla::ProfileError;
 use crate::model::FurBcsdf;
 use crate::params::FurParams;
 use crate::residual::sim::{simulate_cell, CellTally, Section};
-use crate::residual::ResidualLayout;
+use crate::residual::{ResidualLayout, MEAN_SUBDIVISION};
 use crate::rng::{cell_stream, Pcg32};
 use crate::scattered::{azimuthal_on_row, exit_transmittance, scattered_paths};
 use crate::spectrum::Rgb;
-use crate::unscattered::attenuations;
+use crate::unscattered::{attenuations, Extinction};
 
 /// Table id of the residual cells for [`cell_stream`] (C^N is 1, C^M 2).
 const TABLE_RESIDUAL: u64 = 3;
@@ -27,18 +28,24 @@ const MS_SAMPLES: usize = 1024;
 /// φ midpoints per C^N bin of the ψ-integrals of the scattered lobes' energy.
 const PSI_SUBSAMPLES: usize = 4;
 
+/// 6-point Gauss–Legendre panels per smooth piece of h ∈ [0, 1] in the h-means of E_model
+/// that the row's ⟨A_res⟩_h is made to complete (`ModelEnergy::mean`).
+const MEAN_PANELS: usize = 16;
+
 /// What one θ_r row's simulation found, h-means (midpoint rule) per channel, for the
 /// numbers docs/model.md §12 reports.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RowStats {
     /// ⟨E_sim⟩_h: all energy leaving the fiber.
     pub exiting: [f64; 3],
-    /// ⟨E_model⟩_h: the energy the model's lobes carry.
+    /// ⟨E_model⟩_h: the energy the model's lobes carry (the far field's h-mean, integrated
+    /// piece by piece between the jumps of E_model(h), not the offsets' midpoint rule).
     pub model: [f64; 3],
     /// ⟨max(0, E_model − E_sim)⟩_h: what the scattered lobes carry beyond the simulation
     /// (removed by their scale factor).
     pub excess: [f64; 3],
-    /// ⟨A_res⟩_h = ⟨max(0, E_sim − E_model)⟩_h.
+    /// ⟨A_res⟩_h as stored: ⟨max(0, E_sim − E_model)⟩_h over the offsets, completed so that
+    /// the far field's lobes, scale and residual carry ⟨E_sim⟩_h (see [`generate_row`]).
     pub residual: [f64; 3],
     /// ⟨classified unmodelled energy⟩_h; its gap to E_sim − E_model is the scattered lobes'
     /// approximation (F_t's radial exit against the actual one).
@@ -114,6 +121,7 @@ fn simulate_row<M: Math>(
     let mut hist = [[0.0f64; 3]; 4096];
     let scale_at = layout.scale_offset();
     let (mut scattered_mean, mut excess_mean) = ([0.0f64; 3], [0.0f64; 3]);
+    let (mut unscattered_mean, mut lossless_mean) = ([0.0f64; 3], [0.0f64; 3]);
     let hist = &mut hist[..layout.n_phi];
     let inv_n = 1.0 / n_h as f64;
     for j in 0..n_h {
@@ -122,6 +130,7 @@ fn simulate_row<M: Math>(
         let mut rng = Pcg32::new(stream, stream.rotate_left(17));
         let t: CellTally = simulate_cell(&sec, h, layout.photons, &mut rng, hist);
         let (e_unscattered, e_scattered) = energies.at(h);
+        let e_lossless = energies.lossless_at(h);
         let mut cell_drop = 0.0f64;
         for c in 0..3 {
             let (eu, es) = (f64::from(e_unscattered.0[c]), f64::from(e_scattered.0[c]));
@@ -139,9 +148,10 @@ fn simulate_row<M: Math>(
                 1.0
             };
             scattered_mean[c] += es * inv_n;
+            unscattered_mean[c] += eu * inv_n;
+            lossless_mean[c] += f64::from(e_lossless.0[c]) * inv_n;
             excess_mean[c] += excess * inv_n;
             stats.exiting[c] += t.exiting[c] * inv_n;
-            stats.model[c] += (eu + es) * inv_n;
             stats.excess[c] += excess * inv_n;
             stats.residual[c] += res * inv_n;
             stats.unmodelled[c] += t.unmodelled[c] * inv_n;
@@ -152,13 +162,44 @@ fn simulate_row<M: Math>(
         stats.beams += t.beams;
         stats.photons += t.photons;
     }
+    // The far field carries the lobes' exact h-means; the offsets' midpoint rule misses them
+    // where E_model(h) jumps (h = κη'_c, the medulla's total reflection; the jumps move with
+    // θ_r) or turns steeply (the cuticle's Fresnel toward h = 1) by up to half a jump times
+    // 1/n_h. Lossless, E_sim ≡ 1 is smooth and those features are the residual's:
+    // ⟨A_res⟩_h = 1 − exact⟨E_model⟩ (the midpoint rule for E_sim, exact means for the lobes).
+    // Absorption makes E_sim itself jump with the paths (and leaves the series beyond TRT of a
+    // medulla-free fiber smooth, where midpoint⟨res⟩ was right): the correction
+    // (midpoint − exact)⟨E_u + s·E_s⟩ is weighted by τ = midpoint⟨E_sim − E_u⟩ /
+    // midpoint⟨1 − E_0⟩, the part of the energy off the eight unscattered paths that survives
+    // absorption (E_0: Σ_p A_p without absorption; τ = 1 lossless, → 0 for dark fibers). The
+    // offsets keep the simulation's values and their mean; the near field scales them to the
+    // far field's mean (`ResidualTable::magnitude`).
+    let (unscattered_exact, scattered_exact) = energies.mean();
     for c in 0..3 {
-        out[3 * n_h + c] = stats.residual[c] as f32;
-        out[scale_at + 3 * n_h + c] = if scattered_mean[c] > 0.0 {
-            (1.0 - excess_mean[c] / scattered_mean[c]).clamp(0.0, 1.0) as f32
+        let scale = if scattered_mean[c] > 0.0 {
+            (1.0 - excess_mean[c] / scattered_mean[c]).clamp(0.0, 1.0)
         } else {
             1.0
         };
+        let (eu, es) = (
+            f64::from(unscattered_exact.0[c]),
+            f64::from(scattered_exact.0[c]),
+        );
+        let off_paths = stats.exiting[c] + stats.dropped[c] - unscattered_mean[c];
+        let lossless_off_paths = 1.0 - lossless_mean[c];
+        let tau = if lossless_off_paths > 1e-12 {
+            (off_paths / lossless_off_paths).clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
+        let midpoint = stats.residual[c];
+        let correction = (unscattered_mean[c] - eu) + scale * (scattered_mean[c] - es);
+        let mean = (midpoint + tau * correction).max(0.0);
+        stats.residual[c] = mean;
+        stats.model[c] = eu + es;
+        out[3 * n_h + c] = midpoint as f32;
+        out[layout.far_mean_offset() + c] = mean as f32;
+        out[scale_at + 3 * n_h + c] = scale as f32;
     }
     // D_res: the histogram over |φ| ∈ [0, π] as a density over φ ∈ (−π, π] (both signs).
     let width = PI / layout.n_phi as f32;
@@ -192,17 +233,94 @@ pub fn generate<M: Math>(
             found: out.len(),
         });
     }
-    for (row, chunk) in out.chunks_exact_mut(layout.row_len()).enumerate() {
+    let (rows, _) = out.split_at_mut(layout.means_offset());
+    for (row, chunk) in rows.chunks_exact_mut(layout.row_len()).enumerate() {
         generate_row(model, layout, row, seed, chunk);
     }
+    fill_means(layout, |i| mean_node_energy(model, layout, i), out);
     Ok(())
+}
+
+/// The lobes' exact h-means at mean node `i` ([`ResidualLayout::mean_node`]): (⟨Σ_p A_p⟩_h,
+/// the scattered lobes' unscaled ⟨energy⟩_h), for [`fill_means`]. Deterministic (no photons);
+/// the std tools run the nodes in parallel.
+pub fn mean_node_energy<M: Math>(
+    model: &FurBcsdf<'_, M>,
+    layout: &ResidualLayout,
+    i: usize,
+) -> (Rgb, Rgb) {
+    ModelEnergy::new(model, layout.mean_node(i)).mean()
+}
+
+/// (⟨Σ_p A_p⟩_h, the scattered lobes' unscaled ⟨energy⟩_h) at one θ_r.
+type Energies = (Rgb, Rgb);
+
+/// Writes the far field's ⟨A_res⟩_h at every mean node into `data` (a whole table whose rows
+/// [`generate_row`] has written), `energy(i)` being [`mean_node_energy`] at mean node `i`
+/// (called in increasing `i`, each row's node once): ⟨E_sim⟩_h interpolated between the rows
+/// as the far field interpolates them (each row's ⟨E_sim⟩_h being what its lobes, scaled, and
+/// its residual carry), less the lobes' exact h-means at the node, the scattered ones at the
+/// rows' interpolated scale; floored at 0. At the rows this is the row's own mean; between them
+/// it follows E_model's kinks. Nothing is written when the sizes do not match.
+pub fn fill_means(
+    layout: &ResidualLayout,
+    mut energy: impl FnMut(usize) -> (Rgb, Rgb),
+    data: &mut [f32],
+) {
+    if layout.validate().is_err() || data.len() != layout.len() {
+        return;
+    }
+    let (n, len, n_h) = (layout.n_theta, layout.row_len(), layout.n_h);
+    let scale_at = layout.scale_offset() + 3 * n_h;
+    let far_at = layout.far_mean_offset();
+    let (rows, means) = data.split_at_mut(layout.means_offset());
+    // ⟨E_sim⟩_h and the far-field scale of row k, channel c, from its lobes' energies.
+    let row = |k: usize, c: usize, (u, v): (Rgb, Rgb)| {
+        let r = &rows[k * len..(k + 1) * len];
+        let s = f64::from(r[scale_at + c]);
+        let e_sim = f64::from(r[far_at + c]) + f64::from(u.0[c]) + s * f64::from(v.0[c]);
+        (e_sim, s)
+    };
+    // The lobes' energies at the current interval's two rows.
+    let mut ends: Option<(usize, Energies, Energies)> = None;
+    for i in 0..layout.n_mean() {
+        let x = layout.theta_position(layout.mean_node(i));
+        let k = (x as usize).min(n - 2);
+        let (lo, hi) = match ends {
+            Some((at, lo, hi)) if at == k => (lo, hi),
+            Some((at, _, hi)) if at + 1 == k => (hi, energy(MEAN_SUBDIVISION * (k + 1))),
+            _ => (
+                energy(MEAN_SUBDIVISION * k),
+                energy(MEAN_SUBDIVISION * (k + 1)),
+            ),
+        };
+        ends = Some((k, lo, hi));
+        let (u, v) = if i == MEAN_SUBDIVISION * k {
+            lo
+        } else if i == MEAN_SUBDIVISION * (k + 1) {
+            hi
+        } else {
+            energy(i)
+        };
+        let w = f64::from(x - k as f32);
+        for c in 0..3 {
+            let ((e0, s0), (e1, s1)) = (row(k, c, lo), row(k + 1, c, hi));
+            let e_sim = e0 * (1.0 - w) + e1 * w;
+            let s = s0 * (1.0 - w) + s1 * w;
+            let mean = e_sim - f64::from(u.0[c]) - s * f64::from(v.0[c]);
+            means[3 * i + c] = mean.max(0.0) as f32;
+        }
+    }
 }
 
 /// E_model(θ_r, h): the energy the model's lobes carry at one view angle, from the model's own
 /// functions.
 struct ModelEnergy<'m, 'a, M: Math> {
     model: &'m FurBcsdf<'a, M>,
-    theta_r: f32,
+    slice: ViewSlice,
+    ext: Extinction,
+    /// `ext` without absorption (σ_ca = σ_ma = 0; the medulla's scattering kept).
+    lossless: Extinction,
     /// ∫ M^s_back dθ_i and ∫ M^s_front dθ_i at θ_r (weighted like S's 1/cos²θ_i guard).
     exit_mass: [f32; 2],
 }
@@ -226,21 +344,72 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
                 exit_mass[x] = sum as f32;
             }
         }
+        let (slice, ext) = model.slice_and_extinction(theta_r);
+        let lossless = Extinction {
+            cortex: Rgb::ZERO,
+            medulla: ext.medulla_scattering,
+            medulla_scattering: ext.medulla_scattering,
+        };
         ModelEnergy {
             model,
-            theta_r,
+            slice,
+            ext,
+            lossless,
             exit_mass,
         }
     }
 
     /// (Σ_p A_p(h), the scattered lobes' energy at h).
     fn at(&self, h: f32) -> (Rgb, Rgb) {
+        self.on_chord(&Chord::at_offset::<M>(&self.slice, h))
+    }
+
+    /// Σ_p A_p(h) without absorption.
+    fn lossless_at(&self, h: f32) -> Rgb {
+        let chord = Chord::at_offset::<M>(&self.slice, h);
+        let l = self.model.params().l();
+        let mut e = Rgb::ZERO;
+        for a in attenuations::<M>(&self.slice, &chord, &self.lossless, l) {
+            e += a;
+        }
+        e
+    }
+
+    /// (⟨Σ_p A_p⟩_h, the scattered lobes' ⟨energy⟩_h) over h ∈ [0, 1] (both even in h):
+    /// Gauss–Legendre on the far field's smooth pieces of [0, 1] (`far_field::segments`,
+    /// h = K·sin t, which also takes the square-root ends smoothly), [`MEAN_PANELS`] panels
+    /// each.
+    fn mean(&self) -> (Rgb, Rgb) {
+        let (segs, n) = segments::<M>(&self.slice, self.model.index_matched());
+        let (mut eu, mut es) = ([0.0f64; 3], [0.0f64; 3]);
+        for seg in &segs[..n] {
+            let k = segment_scale(&self.slice, seg.var);
+            let width = (seg.t1 - seg.t0) / MEAN_PANELS as f32;
+            for panel in 0..MEAN_PANELS {
+                let mid = seg.t0 + (panel as f32 + 0.5) * width;
+                for (x, w) in GL_NODES.iter().zip(GL_WEIGHTS.iter()) {
+                    let t = mid + 0.5 * width * x;
+                    let chord = Chord::at_variable::<M>(&self.slice, seg.var, t, seg.region);
+                    let dh = f64::from(k * chord.variable_cos(seg.var) * 0.5 * width * w);
+                    let (u, v) = self.on_chord(&chord);
+                    for c in 0..3 {
+                        eu[c] += f64::from(u.0[c]) * dh;
+                        es[c] += f64::from(v.0[c]) * dh;
+                    }
+                }
+            }
+        }
+        let rgb = |v: [f64; 3]| Rgb(v.map(|x| x as f32));
+        (rgb(eu), rgb(es))
+    }
+
+    /// (Σ_p A_p, the scattered lobes' energy) on `chord`.
+    fn on_chord(&self, chord: &Chord) -> (Rgb, Rgb) {
         let model = self.model;
-        let (slice, ext) = model.slice_and_extinction(self.theta_r);
-        let chord = Chord::at_offset::<M>(&slice, h);
+        let (slice, ext) = (&self.slice, &self.ext);
         let l = model.params().l();
         let mut e = Rgb::ZERO;
-        for a in attenuations::<M>(&slice, &chord, &ext, l) {
+        for a in attenuations::<M>(slice, chord, ext, l) {
             e += a;
         }
         let Some(profiles) = model.profiles() else {
@@ -249,12 +418,12 @@ impl<'m, 'a, M: Math> ModelEnergy<'m, 'a, M> {
         if ext.medulla_scattering <= 0.0 {
             return (e, Rgb::ZERO);
         }
-        let exit = exit_transmittance::<M>(&slice, &ext);
-        let Some(sp) = scattered_paths::<M>(&slice, &chord, &ext, l, exit) else {
+        let exit = exit_transmittance::<M>(slice, ext);
+        let Some(sp) = scattered_paths::<M>(slice, chord, ext, l, exit) else {
             return (e, Rgb::ZERO);
         };
         let mut es = Rgb::ZERO;
-        let row = profiles.n_row(model.sigma_n(&slice), sp.h_m);
+        let row = profiles.n_row(model.sigma_n(slice), sp.h_m);
         let n = PSI_SUBSAMPLES * profiles.layout().res.n_psi;
         let step = TAU / n as f32;
         for k in 0..n {

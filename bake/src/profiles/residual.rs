@@ -7,7 +7,7 @@
 //! and seed, through the same locked, atomic protocol as the profile cache
 //! ([`super::cache`], "Concurrent bakes").
 //!
-//! # Cache file format (`RESIDUAL_FORMAT_VERSION` 1)
+//! # Cache file format (`RESIDUAL_FORMAT_VERSION` 2)
 //!
 //! One file per key, `residual-<16 hex digits>.furres`, the FNV-1a 64 hash of the key bytes
 //! (8..120 below). The table depends on every parameter (unlike the profiles, whose key is
@@ -24,7 +24,7 @@
 //! | 48 | 14 × u32 | the parameters' IEEE bits: η_c, σ_ca (R, G, B), α, β_m, β_n, l, κ, η_m, σ_ms, σ_ma, g (radians and resolved values, as [`FurParams`] holds them), the closure's index |
 //! | 104 | 16 bytes | zero (reserved) |
 //! | 120 | u64 | number of f32 entries |
-//! | 128 | f32 × … | the table, in [`ResidualLayout`]'s order |
+//! | 128 | f32 × … | the table, in [`ResidualLayout`]'s order (version 2: the rows, then the far field's means at the finer nodes; version 1 had the rows only) |
 //! | end − 8 | u64 | FNV-1a 64 checksum of every byte before it |
 //!
 //! Loading checks the magic, the format version, the length, the checksum, then the key
@@ -38,13 +38,13 @@ use super::{Error, OwnedModel, ProfileKey};
 use crate::fsutil::output_path;
 use bcsdf_core::params::HEADER_FIELDS;
 use bcsdf_core::residual::{ResidualLayout, ResidualTable};
-use bcsdf_core::residual_gen::{generate_row, RowStats};
+use bcsdf_core::residual_gen::{fill_means, generate_row, mean_node_energy, RowStats};
 use bcsdf_core::{FurBcsdf, FurParams, Libm, MODEL_VERSION};
 use rayon::prelude::*;
 use std::path::Path;
 
 /// Version of the residual cache format in the module documentation.
-pub const RESIDUAL_FORMAT_VERSION: u32 = 1;
+pub const RESIDUAL_FORMAT_VERSION: u32 = 2;
 
 /// Extension of a residual cache file.
 pub const RESIDUAL_EXTENSION: &str = "furres";
@@ -62,7 +62,7 @@ const KEY_END: usize = 120;
 const HEADER_LEN: usize = KEY_END + 8;
 
 /// Generates the residual table of `model` (a model without a residual: its lobes give
-/// E_model) at `layout` with rayon, one θ_r row per task. `threads` as for
+/// E_model) at `layout` with rayon, one θ_r row per task, then one mean node per task. `threads` as for
 /// [`super::generate_parallel`]. Returns the table and each row's statistics.
 pub fn generate_residual(
     model: &FurBcsdf<'_>,
@@ -74,12 +74,18 @@ pub fn generate_residual(
     let mut data = vec![0.0f32; layout.len()];
     let mut stats = vec![RowStats::default(); layout.n_theta];
     let mut work = || {
-        data.par_chunks_mut(layout.row_len())
+        data[..layout.means_offset()]
+            .par_chunks_mut(layout.row_len())
             .zip(stats.par_iter_mut())
             .enumerate()
             .for_each(|(row, (chunk, s))| {
                 *s = generate_row(model, layout, row, seed, chunk);
             });
+        let energies: Vec<_> = (0..layout.n_mean())
+            .into_par_iter()
+            .map(|i| mean_node_energy(model, layout, i))
+            .collect();
+        fill_means(layout, |i| energies[i], &mut data);
     };
     match threads {
         None => work(),

@@ -196,7 +196,7 @@ pub struct LutResolution {
 impl LutResolution {
     /// The default resolution (docs/lut.md gives the error it was chosen by).
     pub const DEFAULT: LutResolution = LutResolution {
-        n_sum: 1024,
+        n_sum: 2048,
         n_theta_r: 64,
         n_phi: 128,
         n_ms_i: 96,

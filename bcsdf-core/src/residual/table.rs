@@ -86,18 +86,52 @@ impl<'a> ResidualTable<'a> {
         Rgb([row[3 * i], row[3 * i + 1], row[3 * i + 2]])
     }
 
-    /// ⟨A_res⟩_h at θ_r (linear in θ_r between nodes).
+    /// The far field's ⟨A_res⟩_h at θ_r: linear in θ_r between the mean nodes
+    /// ([`ResidualLayout::mean_node`], finer than the rows).
     #[must_use]
     pub fn mean(&self, theta_r: f32) -> Rgb {
+        let n = self.layout.n_mean();
+        let u = self.layout.mean_position(theta_r);
+        let (k, w) = if u.is_finite() {
+            let k = (u as usize).min(n - 2);
+            (k, u - k as f32)
+        } else {
+            (0, 0.0)
+        };
+        let means = &self.data[self.layout.means_offset()..];
+        Self::rgb(means, k) * (1.0 - w) + Self::rgb(means, k + 1) * w
+    }
+
+    /// The rows' own ⟨A_res⟩_h at θ_r (linear in θ_r between the rows): the h-mean of the
+    /// offsets' values there.
+    fn row_mean(&self, theta_r: f32) -> Rgb {
         let (a, b, w) = self.rows(theta_r);
         let n_h = self.layout.n_h;
         Self::rgb(a, n_h) * (1.0 - w) + Self::rgb(b, n_h) * w
     }
 
-    /// A_res(θ_r, h): linear in θ_r and in |h| between the offsets (constant beyond the first
-    /// and last).
+    /// A_res(θ_r, h): the simulation's values at the offsets, linear in θ_r and in |h| between
+    /// them (constant beyond the first and last), scaled per channel by
+    /// [`ResidualTable::mean`] over their h-mean at θ_r, so that the near field's h-mean is
+    /// the far field's ⟨A_res⟩_h at every θ_r (uniform in h where the offsets' mean is 0). The
+    /// scale completes the offsets' midpoint rule to the lobes' exact h-means (docs/model.md
+    /// §12); it is 1 where E_model(h) has no jumps or steep ends.
     #[must_use]
     pub fn magnitude(&self, theta_r: f32, h: f32) -> Rgb {
+        let (mean, rows) = (self.mean(theta_r), self.row_mean(theta_r));
+        let mut a = self.row_magnitude(theta_r, h);
+        for c in 0..3 {
+            a.0[c] = if rows.0[c] > 0.0 {
+                a.0[c] * (mean.0[c] / rows.0[c])
+            } else {
+                mean.0[c]
+            };
+        }
+        a
+    }
+
+    /// A_res(θ_r, h) of the rows alone (see [`ResidualTable::magnitude`]).
+    fn row_magnitude(&self, theta_r: f32, h: f32) -> Rgb {
         let (a, b, w) = self.rows(theta_r);
         let n_h = self.layout.n_h;
         let u = (h.abs() * n_h as f32 - 0.5).clamp(0.0, (n_h - 1) as f32);

@@ -144,3 +144,41 @@ fn the_table_normalises_its_shape_and_its_near_field_averages_to_its_far_field()
     let energy = model.with_residual(table).unwrap();
     assert!(energy.eval_residual(&a, None).max_channel() > 0.0);
 }
+
+#[test]
+fn the_far_field_means_hold_the_rows_means_at_the_rows() {
+    let p = lossless("bobcat");
+    let (layout, cn, cm) = small_profiles(&p);
+    let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
+    let model: FurBcsdf = FurBcsdf::new(p, profiles).unwrap();
+    let mut data = vec![0.0; SMALL.len()];
+    generate(&model, &SMALL, 1, &mut data).unwrap();
+    let table = ResidualTable::new(p, SMALL, &data).unwrap();
+    assert_eq!(SMALL.n_mean(), MEAN_SUBDIVISION * (SMALL.n_theta - 1) + 1);
+    for l in [SMALL, ResidualLayout::DEFAULT] {
+        for k in 0..l.n_theta {
+            // Row k is mean node MEAN_SUBDIVISION·k, at the same bits.
+            let i = MEAN_SUBDIVISION * k;
+            assert_eq!(l.mean_node(i).to_bits(), l.theta_node(k).to_bits());
+        }
+        for i in 0..l.n_mean() {
+            // f32's sqrt(1 − t) near grazing view: a few thousandths of a node.
+            let at = l.mean_position(l.mean_node(i));
+            assert!((at - i as f32).abs() < 1e-2, "mean node {i}: {at}");
+        }
+    }
+    // At the rows (but the last, θ_r = 90°, where every lobe's energy is R's) the far field's
+    // mean is the row's own, stored after its scattered scale.
+    let len = SMALL.row_len();
+    for k in 0..SMALL.n_theta - 1 {
+        let mean = table.mean(SMALL.theta_node(k));
+        for c in 0..3 {
+            let row = data[k * len + SMALL.far_mean_offset() + c];
+            assert!(
+                (mean.0[c] - row).abs() <= 1e-5 * row.max(1e-2),
+                "row {k}: {} vs {row}",
+                mean.0[c]
+            );
+        }
+    }
+}

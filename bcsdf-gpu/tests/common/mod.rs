@@ -8,16 +8,6 @@ use bcsdf_core::{presets, Closure, FurParams, FurParamsInput};
 use bcsdf_gpu::GpuError;
 use std::path::PathBuf;
 
-/// The default LUT resolution with six absorption planes instead of 22 (the quadratic
-/// cells still start at four different planes): two residual simulations per energy-closure
-/// bake instead of eight. GPU = CPU on one LUT does not depend on the axis's node count;
-/// colour_budget measures the axis's accuracy at the default. (The dual test keeps the
-/// default: its tables are computed from the LUT, and its GPU margin was measured on those.)
-pub const TEST_RESOLUTION: LutResolution = LutResolution {
-    n_abs: 6,
-    ..LutResolution::DEFAULT
-};
-
 /// The preset's LUT in `closure` at resolution `res`, from medulla profiles at 2 % of
 /// the default photon budget (cached in the target folder across test runs).
 pub fn preset_lut(name: &str, closure: Closure, res: LutResolution) -> Vec<u8> {

@@ -41,7 +41,8 @@ pub fn absorption_coordinate(sigma: f32, scale: f32) -> f32 {
     // `max` first maps NaN to 0 (`clamp` would keep it).
     #[allow(clippy::manual_clamp)]
     let s = sigma.max(0.0).min(SIGMA_CA_MAX);
-    let e = ROOT_SHARE * crate::math::exp_neg_saturating(libm::sqrtf(s / ABSORPTION_SCALE_ROOT))
+    let e = ROOT_SHARE
+        * crate::math::exp_neg_saturating(crate::math::sqrt(s / ABSORPTION_SCALE_ROOT))
         + (1.0 - ROOT_SHARE) * crate::math::exp_neg_saturating(s / scale);
     (1.0 - e).min(1.0)
 }

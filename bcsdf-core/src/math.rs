@@ -57,19 +57,20 @@ pub trait Math: Copy + Default + core::fmt::Debug + 'static {
 /// evaluator's AVX2 functions. `libm::sqrtf` there is inline assembly with the legacy SSE
 /// encoding, which after 256-bit instructions costs an SSE/AVX state transition on Intel
 /// CPUs: with three of them per query (the absorption coordinate), a batch with a colour per
-/// query measured 23× slower than the batch at the LUT's own colour (docs/benchmarks.md,
-/// "A colour per query"). Other targets call `libm::sqrtf`.
+/// query measured 12–23× slower than the batch at the LUT's own colour (docs/benchmarks.md,
+/// "A colour per query"). Other targets, and Miri (which runs `libm`'s portable square
+/// root, bcsdf-core/Cargo.toml), call `libm::sqrtf`.
 #[inline(always)]
 #[must_use]
 pub fn sqrt(x: f32) -> f32 {
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse"))]
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse", not(miri)))]
     {
         use core::arch::x86_64::{_mm_cvtss_f32, _mm_set_ss, _mm_sqrt_ss};
         // SAFETY: the target enables SSE (the `cfg`), the intrinsics' only requirement; they
         // touch no memory.
         unsafe { _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))) }
     }
-    #[cfg(not(all(target_arch = "x86_64", target_feature = "sse")))]
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "sse", not(miri))))]
     {
         libm::sqrtf(x)
     }

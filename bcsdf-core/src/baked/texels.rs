@@ -50,11 +50,11 @@ pub struct ColourAt {
     pub(crate) stride: usize,
 }
 
-/// [`BakedBcsdf::locate_colour`]: per channel, the coordinate x = [`absorption_coordinate`]`(σ, s₀)`,
-/// then [`ColourAt::set_channels`]. The three coordinates are computed in one lane loop over
-/// four lanes (the third channel twice), which the compiler turns into 4-wide SIMD: the two
-/// exponentials, the square root and the division of each channel cost about what one
-/// channel's did.
+/// [`BakedBcsdf::locate_colour`]: per channel, the coordinate
+/// x = [`absorption_coordinate`]`(σ, s₀)`, then [`ColourAt::from_coordinates`]. The three
+/// coordinates are computed in one lane loop over four lanes (the third channel twice), which
+/// the compiler turns into 4-wide SIMD: the two exponentials, the square root and the
+/// division of each channel cost about what one channel's did.
 #[inline(always)]
 pub(crate) fn locate_colour(
     sigma: Rgb,

@@ -43,10 +43,35 @@ pub trait Math: Copy + Default + core::fmt::Debug + 'static {
     fn exp_neg(x: f32) -> f32 {
         Self::exp(-x)
     }
-    /// Square root (exact in every backend).
+    /// Square root (exact in every backend: [`sqrt`]).
     #[inline]
     #[must_use]
     fn sqrt(x: f32) -> f32 {
+        sqrt(x)
+    }
+}
+
+/// The correctly rounded square root, the same bits as `libm::sqrtf` (IEEE 754 requires
+/// exact rounding of both). On x86-64 it is the SSE intrinsic, which the compiler encodes for
+/// the instruction set of the function it is inlined into: `vsqrtss` inside the baked
+/// evaluator's AVX2 functions. `libm::sqrtf` there is inline assembly with the legacy SSE
+/// encoding, which after 256-bit instructions costs an SSE/AVX state transition on Intel
+/// CPUs: with three of them per query (the absorption coordinate), a batch with a colour per
+/// query measured 12–23× slower than the batch at the LUT's own colour (docs/benchmarks.md,
+/// "A colour per query"). Other targets, and Miri (which runs `libm`'s portable square
+/// root, bcsdf-core/Cargo.toml), call `libm::sqrtf`.
+#[inline(always)]
+#[must_use]
+pub fn sqrt(x: f32) -> f32 {
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse", not(miri)))]
+    {
+        use core::arch::x86_64::{_mm_cvtss_f32, _mm_set_ss, _mm_sqrt_ss};
+        // SAFETY: the target enables SSE (the `cfg`), the intrinsics' only requirement; they
+        // touch no memory.
+        unsafe { _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))) }
+    }
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "sse", not(miri))))]
+    {
         libm::sqrtf(x)
     }
 }
@@ -143,7 +168,7 @@ pub fn asin_polynomial(x: f32) -> f32 {
     let ax = x.abs().min(1.0);
     // Estrin's scheme: the polynomial runs beside the square root instead of after it.
     let poly = estrin8(&[A[7], A[6], A[5], A[4], A[3], A[2], A[1], A[0]], ax);
-    let r = PI / 2.0 - libm::sqrtf(1.0 - ax) * poly;
+    let r = PI / 2.0 - sqrt(1.0 - ax) * poly;
     // copysign rather than `if`: branch-free (−0 gives −0).
     r.copysign(x)
 }

@@ -326,7 +326,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
     }
 
     /// Where colour `sigma` (σ_ca per channel, validated: [`crate::Absorption`]) reads table
-    /// `N`: each channel's two planes and weight on the absorption axis
+    /// `N`: each channel's three planes and their weights on the absorption axis
     /// ([`lut::absorption_coordinate`], docs/lut.md "The absorption axis").
     #[inline(always)]
     #[must_use]
@@ -338,6 +338,14 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             self.abs_nodes,
             self.plane,
         )
+    }
+
+    /// The colour whose channels sit at absorption coordinates `x[0..3]`
+    /// ([`lut::absorption_coordinate`]; lane 3 is ignored), located as
+    /// [`BakedBcsdf::locate_colour`] does.
+    #[inline(always)]
+    pub(crate) fn colour_at_coordinates(&self, x: [f32; 4]) -> ColourAt {
+        ColourAt::from_coordinates(x, self.abs_last, self.abs_nodes, self.plane)
     }
 
     /// The preset's own colour (the σ_ca the LUT's parameters give), located: what

@@ -50,11 +50,11 @@ pub struct ColourAt {
     pub(crate) stride: usize,
 }
 
-/// [`BakedBcsdf::locate_colour`]: per channel, u = [`absorption_coordinate`]`(σ, s₀)·(n − 1)`,
-/// the first of three nodes k = min(⌊u⌋, n − 3) and the quadratic Lagrange weights of nodes
-/// k, k + 1, k + 2 at t = u − k: (t − 1)(t − 2)/2, t(2 − t), t(t − 1)/2 (docs/lut.md "The
-/// absorption axis"). The interpolant passes through every node, so it is continuous where
-/// k changes.
+/// [`BakedBcsdf::locate_colour`]: per channel, the coordinate
+/// x = [`absorption_coordinate`]`(σ, s₀)`, then [`ColourAt::from_coordinates`]. The three
+/// coordinates are computed in one lane loop over four lanes (the third channel twice), which
+/// the compiler turns into 4-wide SIMD: the two exponentials, the square root and the
+/// division of each channel cost about what one channel's did.
 #[inline(always)]
 pub(crate) fn locate_colour(
     sigma: Rgb,
@@ -63,23 +63,53 @@ pub(crate) fn locate_colour(
     nodes: usize,
     plane: usize,
 ) -> ColourAt {
-    let mut at = ColourAt {
-        stride: plane,
-        ..ColourAt::default()
-    };
-    for c in 0..3 {
-        // absorption_coordinate maps NaN and negatives to 0 and clamps to [0, 1].
-        let u = (absorption_coordinate(sigma.0[c], scale) * last).clamp(0.0, last);
-        let k = (u as usize).min(nodes.saturating_sub(3));
-        let t = u - k as f32;
-        at.plane[c] = k * plane;
-        at.w[c] = [
-            0.5 * (t - 1.0) * (t - 2.0),
-            t * (2.0 - t),
-            0.5 * t * (t - 1.0),
-        ];
+    let [r, g, b] = sigma.0;
+    let lanes = [r, g, b, b];
+    let mut x = [0.0f32; 4];
+    for c in 0..4 {
+        x[c] = absorption_coordinate(lanes[c], scale);
     }
-    at
+    ColourAt::from_coordinates(x, last, nodes, plane)
+}
+
+impl ColourAt {
+    /// The colour whose channels 0, 1, 2 sit at absorption coordinates `x[0..3]`
+    /// ([`absorption_coordinate`], in [0, 1]; lane 3 is ignored) on an axis of `nodes` nodes
+    /// (3 ..= 8192, `last` = n − 1) whose planes are `plane` texels apart: per channel
+    /// u = x·(n − 1), the first of three nodes k = min(⌊u⌋, n − 3) and the quadratic
+    /// Lagrange weights of nodes k, k + 1, k + 2 at t = u − k: (t − 1)(t − 2)/2, t(2 − t),
+    /// t(t − 1)/2 (docs/lut.md "The absorption axis"). The interpolant passes through every
+    /// node, so it is continuous where k changes. Lane loops, without branches: 4-wide SIMD.
+    #[inline(always)]
+    pub(crate) fn from_coordinates(x: [f32; 4], last: f32, nodes: usize, plane: usize) -> ColourAt {
+        // nodes ∈ [3, 8192] (`lut::validate`), so this is ≥ 0 and the conversions are exact.
+        let first_of_last = nodes.saturating_sub(3) as i32;
+        let mut k = [0i32; 4];
+        let mut t = [0.0f32; 4];
+        for c in 0..4 {
+            // `max` first: NaN becomes 0 (absorption_coordinate never gives NaN anyway).
+            #[allow(clippy::manual_clamp)]
+            let u = (x[c] * last).max(0.0).min(last);
+            // SAFETY: u ∈ [0, n − 1] and never NaN (`max` maps NaN to 0), and the axis has at
+            // most MAX_NODES = 8192 nodes, so the truncation to i32 is in range; unchecked,
+            // it is one instruction instead of a saturating sequence (as `Axis::locate`).
+            let ki = unsafe { u.to_int_unchecked::<i32>() }.min(first_of_last);
+            k[c] = ki;
+            t[c] = u - ki as f32;
+        }
+        let mut w = [[0.0f32; 4]; 3];
+        for c in 0..4 {
+            w[0][c] = 0.5 * (t[c] - 1.0) * (t[c] - 2.0);
+            w[1][c] = t[c] * (2.0 - t[c]);
+            w[2][c] = 0.5 * t[c] * (t[c] - 1.0);
+        }
+        ColourAt {
+            // k ∈ [0, n − 3]: non-negative.
+            plane: core::array::from_fn(|c| k[c] as u32 as usize * plane),
+            w: core::array::from_fn(|c| [w[0][c], w[1][c], w[2][c]]),
+            stride: plane,
+        }
+    }
 }
 
 /// [`n_bilinear`]: four lanes (SSE2 where the target has it, portable arrays elsewhere).

@@ -27,21 +27,24 @@ pub fn absorption_scale(kappa: f32) -> f32 {
 pub const ROOT_SHARE: f32 = 0.4;
 
 /// The position of σ_ca on an absorption axis of scale s₀ = `scale` ([`absorption_scale`]),
-/// in [0, 1]: x = 1 − ½(e^(−σ/s_h) + e^(−σ/s₀)), s_h = [`ABSORPTION_SCALE_HAIR`]
-/// (docs/lut.md "The absorption axis"): half the nodes follow the fast fall-off of light
-/// that crosses the whole cortex, half the slow one of light that reaches the medulla; for a
-/// fiber without a medulla both are s_h. Node k of n lies at x = k/(n − 1)
+/// in [0, 1]: x = 1 − r·e^(−√(σ/s_q)) − (1 − r)·e^(−σ/s₀), r = [`ROOT_SHARE`] (0.4),
+/// s_q = [`ABSORPTION_SCALE_ROOT`] (docs/lut.md "The absorption axis"): the square-root term
+/// follows the diffusive fall-off near σ = 0 of light that scatters in a medulla, the
+/// exponential term the fall-off over the cortex path, which stretches with 1/(1 − κ).
+/// Node k of n lies at x = k/(n − 1)
 /// ([`absorption_node`]); the last node, x = 1, is σ = [`SIGMA_CA_MAX`] (the fully
 /// absorbing limit: every σ above about 110 s₀ maps to 1 in f32). NaN and negative σ give 0
 /// (the callers pass validated [`crate::Absorption`]s). Branch-free
-/// ([`crate::math::exp_neg_saturating`]), so a lane loop over channels vectorises.
+/// ([`crate::math::exp_neg_saturating`], [`crate::math::sqrt`]), so a lane loop over
+/// channels or queries vectorises (`baked::texels::locate_colour`, the batch).
 #[inline(always)]
 #[must_use]
 pub fn absorption_coordinate(sigma: f32, scale: f32) -> f32 {
     // `max` first maps NaN to 0 (`clamp` would keep it).
     #[allow(clippy::manual_clamp)]
     let s = sigma.max(0.0).min(SIGMA_CA_MAX);
-    let e = ROOT_SHARE * crate::math::exp_neg_saturating(libm::sqrtf(s / ABSORPTION_SCALE_ROOT))
+    let e = ROOT_SHARE
+        * crate::math::exp_neg_saturating(crate::math::sqrt(s / ABSORPTION_SCALE_ROOT))
         + (1.0 - ROOT_SHARE) * crate::math::exp_neg_saturating(s / scale);
     (1.0 - e).min(1.0)
 }

@@ -275,6 +275,24 @@ fn fast_math_backend_is_within_its_documented_error() {
 }
 
 #[test]
+fn sqrt_is_libm_sqrtf_bit_for_bit() {
+    // Every 997th bit pattern (under Miri, where `sqrt` is `libm::sqrtf` itself, every
+    // 997 · 4099th): positives, negatives, subnormals, infinities and NaNs.
+    let step = if cfg!(miri) { 997 * 4099 } else { 997 };
+    for bits in (0..=u32::MAX)
+        .step_by(step)
+        .chain([0x7f80_0000, 0xff80_0000, 0x8000_0000])
+    {
+        let x = f32::from_bits(bits);
+        let (a, b) = (sqrt(x), libm::sqrtf(x));
+        assert!(
+            a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()),
+            "x = {x:e}"
+        );
+    }
+}
+
+#[test]
 fn rsqrt_newton_is_within_four_ulp() {
     // Every 1021st float from 1e-7 to 1e7 (the variances and widths the dual term feeds it).
     let mut worst = 0.0f64;

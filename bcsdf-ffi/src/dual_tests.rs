@@ -213,19 +213,43 @@ fn opens_evaluates_like_the_core_refuses_and_closes() {
             fur_status::FUR_ERR_OVERLAP
         );
 
-        // Refused blobs leave it closed.
-        let mut bad = bytes.clone();
-        bad[1000] ^= 1;
+        // Another build's tag is refused. (The handle stays open for the refusals below, so
+        // the blob is decoded once: under Miri a decode of it takes minutes.)
+        (*p)._opaque[1] ^= 1;
         assert_eq!(
-            fur_dual_open(bad.as_ptr(), bad.len(), p),
-            fur_status::FUR_ERR_DUAL_CHECKSUM
+            fur_eval_dual(
+                p,
+                0.1,
+                0.2,
+                0.3,
+                1.0,
+                f32::INFINITY,
+                1.0,
+                1.0,
+                core::ptr::null(),
+                out
+            ),
+            fur_status::FUR_ERR_OTHER_BUILD
         );
-        assert!(d._opaque.iter().all(|&w| w == 0));
+        (*p)._opaque[1] ^= 1;
+
+        // A refused blob closes the open handle (zeroes it); later refusals leave it so.
         assert_eq!(
             fur_dual_open(bytes.as_ptr(), BLOB_LEN - 1, p),
             fur_status::FUR_ERR_DUAL_LENGTH
         );
-        bad.copy_from_slice(&bytes);
+        assert!(d._opaque.iter().all(|&w| w == 0));
+        let mut bad = bytes.clone();
+        // A damaged byte: the checksum (a pass over the whole blob, which the interpreter
+        // is spared: the refusal path's unsafe code is the length refusal's above).
+        if !cfg!(miri) {
+            bad[1000] ^= 1;
+            assert_eq!(
+                fur_dual_open(bad.as_ptr(), bad.len(), p),
+                fur_status::FUR_ERR_DUAL_CHECKSUM
+            );
+            bad.copy_from_slice(&bytes);
+        }
         bad[0] = b'X';
         assert_eq!(
             fur_dual_open(bad.as_ptr(), bad.len(), p),
@@ -246,45 +270,8 @@ fn opens_evaluates_like_the_core_refuses_and_closes() {
             ),
             fur_status::FUR_ERR_NOT_OPEN
         );
-
-        // Another build's tag; then close.
-        assert_eq!(
-            fur_dual_open(bytes.as_ptr(), bytes.len(), p),
-            fur_status::FUR_OK
-        );
-        (*p)._opaque[1] ^= 1;
-        assert_eq!(
-            fur_eval_dual(
-                p,
-                0.1,
-                0.2,
-                0.3,
-                1.0,
-                f32::INFINITY,
-                1.0,
-                1.0,
-                core::ptr::null(),
-                out
-            ),
-            fur_status::FUR_ERR_OTHER_BUILD
-        );
-        (*p)._opaque[1] ^= 1;
+        // Closing a closed handle is allowed and keeps it zeroed.
         assert_eq!(fur_dual_close(p), fur_status::FUR_OK);
-        assert_eq!(
-            fur_eval_dual(
-                p,
-                0.1,
-                0.2,
-                0.3,
-                1.0,
-                f32::INFINITY,
-                1.0,
-                1.0,
-                core::ptr::null(),
-                out
-            ),
-            fur_status::FUR_ERR_NOT_OPEN
-        );
     }
     assert!(d._opaque.iter().all(|&w| w == 0));
 }

@@ -26,15 +26,6 @@ use std::f32::consts::{FRAC_PI_2, PI};
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
-/// The default LUT resolution with six absorption planes instead of 22 (the quadratic
-/// cells still start at four different planes): two residual simulations per energy-closure
-/// bake instead of eight. What this file checks does not depend on the axis's node count;
-/// colour_budget measures the axis's accuracy at the default.
-const TEST_RESOLUTION: LutResolution = LutResolution {
-    n_abs: 6,
-    ..LutResolution::DEFAULT
-};
-
 const PRESETS: [&str; 5] = ["bobcat", "red-fox", "raccoon", "human-hair", "air-medulla"];
 
 fn model_for(input: &FurParamsInput) -> OwnedModel {
@@ -64,7 +55,7 @@ fn pairs() -> &'static [Pair] {
             .iter()
             .map(|n| {
                 let model = model_for(&input(n));
-                let blob = tables::bake(&model, &input(n), TEST_RESOLUTION);
+                let blob = tables::bake(&model, &input(n), LutResolution::DEFAULT);
                 Pair { model, blob }
             })
             .collect()
@@ -308,7 +299,7 @@ fn furnace_with_importance_sampling() {
         p.kappa = 0.0;
         let owned = model_for(&p);
         let model = owned.model();
-        let blob = tables::bake(&owned, &p, TEST_RESOLUTION);
+        let blob = tables::bake(&owned, &p, LutResolution::DEFAULT);
         let lut = BakedBcsdf::from_bytes(&blob).unwrap();
         for tr_deg in [-50.0f32, 0.0, 35.0] {
             let tr = tr_deg.to_radians();

@@ -261,7 +261,9 @@ fn half_bits(v: f32) -> u16 {
     } else {
         0.0
     };
-    half::f16::from_f32(v).to_bits()
+    // The portable conversion (same bits as `from_f32`): no per-value CPU-feature check,
+    // which costs an interpreter such as Miri more than the conversion itself.
+    half::f16::from_f32_const(v).to_bits()
 }
 
 /// Finite and ≥ 0, else 0.
@@ -487,7 +489,8 @@ impl DualLut {
         };
         let half = |i: usize| {
             let at = HEADER_LEN + 2 * i;
-            half::f16::from_bits(u16::from_le_bytes([bytes[at], bytes[at + 1]])).to_f32()
+            // Portable, as in `half_bits`: a blob is decoded once, not per query.
+            half::f16::from_bits(u16::from_le_bytes([bytes[at], bytes[at + 1]])).to_f32_const()
         };
         // Check every value before writing any.
         for i in 0..ABS_NODES * NODE_HALVES {

@@ -477,57 +477,6 @@ enum fur_status fur_eval_far_batch(const struct fur_lut *FUR_RESTRICT lut,
                                    float *FUR_RESTRICT out_rgb);
 
 /**
- * Importance-samples omega_i given theta_r from three uniform numbers in [0, 1) (values
- * outside are clamped) into `*out` (docs/model.md section 10). `out` must not overlap
- * `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
- *
- * # Safety
- * `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to a
- * writable `fur_sample`.
- */
-enum fur_status fur_sample_far(const struct fur_lut *FUR_RESTRICT lut,
-                               float theta_r,
-                               float u0,
-                               float u1,
-                               float u2,
-                               struct fur_sample *FUR_RESTRICT out);
-
-/**
- * One bounce of a path tracer with multiple importance sampling in one call (docs/model.md
- * section 10): importance-samples omega_i given theta_r into `*out` (as `fur_sample_far`)
- * and writes into `*out_pdf` the density of another direction at the same view, (theta_i,
- * theta_r, phi) (a light's, as `fur_pdf_far`). The work that depends on theta_r alone is
- * done once for both. Bit for bit the results of `fur_sample_far` and `fur_pdf_far`.
- *
- * Returns `FUR_ERR_ANGLE` (nothing written) for an invalid theta_r, theta_i or phi, and
- * `FUR_ERR_NO_SAMPLE` when nothing can be sampled (`*out_pdf` is still written; `*out` is
- * not). `out` and `out_pdf` must not overlap each other, `*lut` or the LUT bytes
- * (`FUR_ERR_OVERLAP`).
- *
- * # Safety
- * `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to a
- * writable `fur_sample`; `out_pdf` is NULL or points to a writable float.
- */
-enum fur_status fur_sample_pdf_far(const struct fur_lut *FUR_RESTRICT lut,
-                                   float theta_r,
-                                   float u0,
-                                   float u1,
-                                   float u2,
-                                   float theta_i,
-                                   float phi,
-                                   struct fur_sample *FUR_RESTRICT out,
-                                   float *FUR_RESTRICT out_pdf);
-
-/**
- * Density per unit solid angle with which `fur_sample_far` draws omega_i given omega_r; 0
- * for invalid arguments (NULL, unopened or other-build `lut`, invalid angles).
- *
- * # Safety
- * `lut` is NULL or points to an initialised `fur_lut`.
- */
-float fur_pdf_far(const struct fur_lut *FUR_RESTRICT lut, float theta_i, float theta_r, float phi);
-
-/**
  * `fur_eval_far` at colour `sigma_ca[3]` (σ_ca per RGB channel, per fiber radius, in
  * [0, 1000]; larger values are clamped to 1000): far-field S(omega_i, omega_r), RGB, into
  * `out_rgb[3]`. A NaN or negative channel writes 0 and returns `FUR_ERR_COLOUR`; invalid
@@ -609,6 +558,107 @@ enum fur_status fur_eval_far_batch_at(const struct fur_lut *FUR_RESTRICT lut,
                                       float *FUR_RESTRICT out_rgb);
 
 /**
+ * Validates `len` bytes at `bytes` as a baked LUT (header, versions, lengths, checksum,
+ * every value, the sampling data: one pass over the bytes) and opens `*out` on them
+ * (docs/model.md §8). The bytes are borrowed: keep them alive and unchanged until
+ * `fur_lut_close(out)`. `*out` may be uninitialised; on failure it is left closed (equal to
+ * `FUR_LUT_INIT`), except for `FUR_ERR_NULL`/`FUR_ERR_ALIGNMENT` on `out` itself and
+ * `FUR_ERR_OVERLAP` (`*out` lies inside the bytes), which leave it untouched.
+ *
+ * # Safety
+ * `bytes` is NULL or points to `len` readable bytes; `out` is NULL or points to a writable
+ * `fur_lut` no other thread is using.
+ */
+enum fur_status fur_lut_open(const uint8_t *FUR_RESTRICT bytes,
+                             size_t len,
+                             struct fur_lut *FUR_RESTRICT out);
+
+/**
+ * Closes `*lut`: zeroes it (it becomes equal to `FUR_LUT_INIT`), so that every later call
+ * with it returns `FUR_ERR_NOT_OPEN` and reads nothing else. Close every `fur_lut` (and every
+ * copy of one) before freeing or changing its LUT bytes. It holds no other resources.
+ *
+ * # Safety
+ * `lut` is NULL or points to a writable `fur_lut` no other thread is using.
+ */
+enum fur_status fur_lut_close(struct fur_lut *FUR_RESTRICT lut);
+
+/**
+ * A static, NUL-terminated English description of a status (any value: unknown ones get
+ * "unknown status"). Takes the status as an integer so that any value is safe to pass.
+ * Never NULL (a reference on the Rust side, so the header's pointer carries no
+ * `FUR_RESTRICT`).
+ */
+const char *fur_status_str(int32_t status);
+
+/**
+ * This library's version as a static NUL-terminated string, e.g. "0.1.0". Never NULL.
+ */
+const char *fur_version(void);
+
+/**
+ * The LUT format version this library reads (a LUT of another version is refused with
+ * `FUR_ERR_LUT_VERSION`).
+ */
+uint32_t fur_lut_format_version(void);
+
+/**
+ * The model version this library's LUTs must be baked with.
+ */
+uint32_t fur_model_version(void);
+
+/**
+ * Importance-samples omega_i given theta_r from three uniform numbers in [0, 1) (values
+ * outside are clamped) into `*out` (docs/model.md section 10). `out` must not overlap
+ * `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to a
+ * writable `fur_sample`.
+ */
+enum fur_status fur_sample_far(const struct fur_lut *FUR_RESTRICT lut,
+                               float theta_r,
+                               float u0,
+                               float u1,
+                               float u2,
+                               struct fur_sample *FUR_RESTRICT out);
+
+/**
+ * One bounce of a path tracer with multiple importance sampling in one call (docs/model.md
+ * section 10): importance-samples omega_i given theta_r into `*out` (as `fur_sample_far`)
+ * and writes into `*out_pdf` the density of another direction at the same view, (theta_i,
+ * theta_r, phi) (a light's, as `fur_pdf_far`). The work that depends on theta_r alone is
+ * done once for both. Bit for bit the results of `fur_sample_far` and `fur_pdf_far`.
+ *
+ * Returns `FUR_ERR_ANGLE` (nothing written) for an invalid theta_r, theta_i or phi, and
+ * `FUR_ERR_NO_SAMPLE` when nothing can be sampled (`*out_pdf` is still written; `*out` is
+ * not). `out` and `out_pdf` must not overlap each other, `*lut` or the LUT bytes
+ * (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to a
+ * writable `fur_sample`; `out_pdf` is NULL or points to a writable float.
+ */
+enum fur_status fur_sample_pdf_far(const struct fur_lut *FUR_RESTRICT lut,
+                                   float theta_r,
+                                   float u0,
+                                   float u1,
+                                   float u2,
+                                   float theta_i,
+                                   float phi,
+                                   struct fur_sample *FUR_RESTRICT out,
+                                   float *FUR_RESTRICT out_pdf);
+
+/**
+ * Density per unit solid angle with which `fur_sample_far` draws omega_i given omega_r; 0
+ * for invalid arguments (NULL, unopened or other-build `lut`, invalid angles).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`.
+ */
+float fur_pdf_far(const struct fur_lut *FUR_RESTRICT lut, float theta_i, float theta_r, float phi);
+
+/**
  * `fur_sample_far` at colour `sigma_ca[3]` (as `fur_eval_far_at`): importance-samples
  * omega_i given theta_r into `*out`. The sampled direction and its pdf do not depend on the
  * colour (the sampler draws from the LUT's lossless plane, docs/model.md section 10); the
@@ -669,56 +719,6 @@ float fur_pdf_far_at(const struct fur_lut *FUR_RESTRICT lut,
                      float theta_i,
                      float theta_r,
                      float phi);
-
-/**
- * Validates `len` bytes at `bytes` as a baked LUT (header, versions, lengths, checksum,
- * every value, the sampling data: one pass over the bytes) and opens `*out` on them
- * (docs/model.md §8). The bytes are borrowed: keep them alive and unchanged until
- * `fur_lut_close(out)`. `*out` may be uninitialised; on failure it is left closed (equal to
- * `FUR_LUT_INIT`), except for `FUR_ERR_NULL`/`FUR_ERR_ALIGNMENT` on `out` itself and
- * `FUR_ERR_OVERLAP` (`*out` lies inside the bytes), which leave it untouched.
- *
- * # Safety
- * `bytes` is NULL or points to `len` readable bytes; `out` is NULL or points to a writable
- * `fur_lut` no other thread is using.
- */
-enum fur_status fur_lut_open(const uint8_t *FUR_RESTRICT bytes,
-                             size_t len,
-                             struct fur_lut *FUR_RESTRICT out);
-
-/**
- * Closes `*lut`: zeroes it (it becomes equal to `FUR_LUT_INIT`), so that every later call
- * with it returns `FUR_ERR_NOT_OPEN` and reads nothing else. Close every `fur_lut` (and every
- * copy of one) before freeing or changing its LUT bytes. It holds no other resources.
- *
- * # Safety
- * `lut` is NULL or points to a writable `fur_lut` no other thread is using.
- */
-enum fur_status fur_lut_close(struct fur_lut *FUR_RESTRICT lut);
-
-/**
- * A static, NUL-terminated English description of a status (any value: unknown ones get
- * "unknown status"). Takes the status as an integer so that any value is safe to pass.
- * Never NULL (a reference on the Rust side, so the header's pointer carries no
- * `FUR_RESTRICT`).
- */
-const char *fur_status_str(int32_t status);
-
-/**
- * This library's version as a static NUL-terminated string, e.g. "0.1.0". Never NULL.
- */
-const char *fur_version(void);
-
-/**
- * The LUT format version this library reads (a LUT of another version is refused with
- * `FUR_ERR_LUT_VERSION`).
- */
-uint32_t fur_lut_format_version(void);
-
-/**
- * The model version this library's LUTs must be baked with.
- */
-uint32_t fur_model_version(void);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -80,6 +80,7 @@ mod tests {
     //! `BakedBcsdf::at` bit for bit, and their refusals (also run under Miri:
     //! `cargo +nightly miri test -p bcsdf-ffi --lib colour`).
     use crate::eval::*;
+    use crate::sample::*;
     use crate::{fur_lut, fur_sample, fur_status, FUR_LUT_INIT};
     use bcsdf_core::lut::{self, LutHeader, LutResolution, HEADER_LEN, TABLE_COUNT};
     use bcsdf_core::rng::Pcg32;

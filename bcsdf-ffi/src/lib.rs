@@ -53,16 +53,20 @@ mod eval;
 mod handle;
 mod info;
 mod nostd;
+mod sample;
 
 pub use colour::{fur_lut_sigma_ca, fur_sigma_from_melanin};
 pub use dual::{fur_dual_close, fur_dual_open, fur_eval_dual, fur_eval_dual_dirs};
 pub use eval::{
     fur_eval_far, fur_eval_far_at, fur_eval_far_batch, fur_eval_far_batch_at, fur_eval_far_dirs,
-    fur_eval_far_dirs_at, fur_eval_far_families, fur_eval_far_families_at, fur_pdf_far,
-    fur_pdf_far_at, fur_sample_far, fur_sample_far_at, fur_sample_pdf_far, fur_sample_pdf_far_at,
+    fur_eval_far_dirs_at, fur_eval_far_families, fur_eval_far_families_at,
 };
 pub use handle::{fur_lut_close, fur_lut_open};
 pub use info::{fur_lut_format_version, fur_model_version, fur_status_str, fur_version};
+pub use sample::{
+    fur_pdf_far, fur_pdf_far_at, fur_sample_far, fur_sample_far_at, fur_sample_pdf_far,
+    fur_sample_pdf_far_at,
+};
 
 /// Status of a call; `FUR_OK` (0) is success. `fur_status_str` describes each.
 #[repr(C)]

@@ -143,8 +143,18 @@ fn lookups_interpolate_every_table_linearly() {
     let b = affine();
     let lut = BakedBcsdf::from_bytes(&b).unwrap();
     let r = RES;
-    let thetas = [-PI / 2.0, -1.3, -0.4, 0.0, 0.05, 0.9, PI / 2.0];
-    let phis = [-PI, -2.0, -0.1, 0.0, 0.7, 3.0, PI];
+    // Under Miri (CI's unsafe-code check, ~10⁴ times slower): both ends and two inside.
+    let (thetas, phis) = if cfg!(miri) {
+        (
+            vec![-PI / 2.0, -0.4, 0.05, PI / 2.0],
+            vec![-PI, -0.1, 0.7, PI],
+        )
+    } else {
+        (
+            vec![-PI / 2.0, -1.3, -0.4, 0.0, 0.05, 0.9, PI / 2.0],
+            vec![-PI, -2.0, -0.1, 0.0, 0.7, 3.0, PI],
+        )
+    };
     // Colours: the preset's, lossless, fully absorbing, and one channel per plane interval.
     let colours = [
         lut.absorption().sigma(),
@@ -158,9 +168,9 @@ fn lookups_interpolate_every_table_linearly() {
         let plane_u = sigma
             .0
             .map(|s| lut::absorption_coordinate(s, scale) * (r.n_abs - 1) as f32);
-        for ti in thetas {
-            for tr in thetas {
-                for phi in phis {
+        for &ti in &thetas {
+            for &tr in &thetas {
+                for &phi in &phis {
                     let l = lut.lookups(&Angles::new(ti, tr, phi).unwrap(), &colour);
                     // The node coordinates of the query on each axis.
                     let sum = (ti + tr + PI) * (r.n_sum - 1) as f32 / (2.0 * PI);
@@ -310,8 +320,10 @@ fn directions_agree_with_angles_and_reject_like_angles() {
     let lut = BakedBcsdf::from_bytes(&b).unwrap();
     let (wr, tangent) = ([0.3, -1.0, 0.4], [0.0, 0.2, 1.0]);
     let frame = crate::Frame::from_view::<Libm>(wr, tangent).unwrap();
-    for k in 0..200 {
-        let ti = -1.4 + 2.8 * (k as f32 / 199.0);
+    // Under Miri (CI's unsafe-code check) a fifth of the queries.
+    let n = if cfg!(miri) { 40 } else { 200 };
+    for k in 0..n {
+        let ti = -1.4 + 2.8 * (k as f32 / (n - 1) as f32);
         let phi = wrap_angle(0.37 * k as f32);
         let a = Angles::new(ti, frame.theta_r(), phi).unwrap();
         let wi = frame.to_world(&a);
@@ -372,14 +384,17 @@ fn batch_equals_the_scalar_path_bit_for_bit() {
 fn batch_equals_the_scalar_path_in(closure: Closure) {
     let b = random_with(closure);
     let lut = BakedBcsdf::from_bytes(&b).unwrap();
-    let n = 100; // more than three chunks, the last one partial
-    let mut ti: Vec<f32> = (0..n).map(|k| -1.5 + 0.03 * k as f32).collect();
-    let tr: Vec<f32> = (0..n).map(|k| 1.2 - 0.024 * k as f32).collect();
-    let mut phi: Vec<f32> = (0..n).map(|k| -7.0 + 0.14 * k as f32).collect();
+    // More than three chunks, the last one partial; under Miri (CI's unsafe-code check, ~10⁴
+    // times slower) one full chunk and a partial one.
+    let n = if cfg!(miri) { 40 } else { 100 };
+    let step = 100.0 / n as f32;
+    let mut ti: Vec<f32> = (0..n).map(|k| -1.5 + 0.03 * step * k as f32).collect();
+    let tr: Vec<f32> = (0..n).map(|k| 1.2 - 0.024 * step * k as f32).collect();
+    let mut phi: Vec<f32> = (0..n).map(|k| -7.0 + 0.14 * step * k as f32).collect();
     ti[5] = f32::NAN;
-    ti[40] = 2.0;
-    phi[77] = f32::INFINITY;
-    phi[78] = 1e30;
+    ti[n * 2 / 5] = 2.0;
+    phi[n - 3] = f32::INFINITY;
+    phi[n - 2] = 1e30;
     let mut out = vec![Rgb([9.0; 3]); n];
     let rejected = lut.eval_far_batch(&ti, &tr, &phi, &mut out).unwrap();
     assert_eq!(rejected, 3);

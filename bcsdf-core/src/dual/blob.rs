@@ -391,8 +391,13 @@ fn channel_nodes() -> Absorption {
 #[must_use]
 pub fn encode(tables: &DualTables, attenuation: Attenuation, source: u64) -> [u8; BLOB_LEN] {
     let mut blob = [0u8; BLOB_LEN];
-    for a in 0..ABS_NODES {
-        put_node(&mut blob, a, tables, attenuation, a.min(2));
+    for a in 0..3 {
+        put_node(&mut blob, a, tables, attenuation, a);
+    }
+    // Nodes 3 and up repeat node 2's bytes: converted once, copied.
+    let node = |a: usize| HEADER_LEN + 2 * a * NODE_HALVES;
+    for a in 3..ABS_NODES {
+        blob.copy_within(node(2)..node(3), node(a));
     }
     seal(&mut blob, attenuation, source, channel_nodes());
     blob

@@ -6,11 +6,26 @@ use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::{presets, Closure, FurParams, FurParamsInput};
 use bcsdf_gpu::GpuError;
+use std::collections::BTreeMap;
 use std::path::PathBuf;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// The preset's LUT in `closure` at resolution `res`, from medulla profiles at 2 % of
-/// the default photon budget (cached in the target folder across test runs).
+/// the default photon budget (cached in the target folder across test runs), baked once per
+/// test process: the tests of a file that ask for the same LUT share it.
 pub fn preset_lut(name: &str, closure: Closure, res: LutResolution) -> Vec<u8> {
+    type Baked = Arc<OnceLock<Vec<u8>>>;
+    static LUTS: Mutex<BTreeMap<String, Baked>> = Mutex::new(BTreeMap::new());
+    let key = format!("{name} {closure:?} {res:?}");
+    // The map's lock only finds the entry; the bake runs under the entry's own OnceLock, so
+    // different LUTs bake in parallel and a second asker of the same one waits for it.
+    let entry = Arc::clone(LUTS.lock().unwrap().entry(key).or_default());
+    entry
+        .get_or_init(|| bake_preset(name, closure, res))
+        .clone()
+}
+
+fn bake_preset(name: &str, closure: Closure, res: LutResolution) -> Vec<u8> {
     let preset = presets::find(name).unwrap();
     let input = FurParamsInput {
         closure,

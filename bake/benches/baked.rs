@@ -29,6 +29,7 @@
 //! query index is masked (256 queries), not taken modulo: a division would cost as much as a
 //! third of a baked evaluation.
 //! `cargo bench -p bake --bench baked`; the speed-up is the ratio of the two medians.
+//! `BAKED_BENCH_PRESETS=bobcat,human-hair` bakes and times only those presets.
 
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
@@ -60,7 +61,13 @@ fn bench(c: &mut Criterion) {
         budget: scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
         ..ProfileOptions::default()
     };
-    for preset in presets::PRESETS.iter() {
+    // BAKED_BENCH_PRESETS=a,b: only those presets (each preset's setup bakes its LUT).
+    let only = std::env::var("BAKED_BENCH_PRESETS").ok();
+    let wanted = |name: &str| {
+        only.as_deref()
+            .is_none_or(|l| l.split(',').any(|n| n == name))
+    };
+    for preset in presets::PRESETS.iter().filter(|p| wanted(p.name)) {
         let name = preset.name;
         let params = FurParams::new(&preset.input).unwrap();
         let (model, _) = build_model(params, &opts).unwrap();

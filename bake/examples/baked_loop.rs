@@ -52,6 +52,17 @@ fn main() {
             Absorption::from_sigma(Rgb([0, 1, 2].map(|j| 10f32.powf(-2.0 + 5.0 * u(j))))).unwrap()
         })
         .collect();
+    // `own`: every colour the LUT's own (the colour path, the same planes for every
+    // query); `grey`: the random colours' red channel in all three (one plane triple per
+    // query, different across queries).
+    let colours: Vec<Absorption> = match arg(5).as_deref() {
+        Some("own") => vec![lut.absorption(); 256],
+        Some("grey") => colours
+            .iter()
+            .map(|c| Absorption::from_sigma(Rgb([c.sigma().0[0]; 3])).unwrap())
+            .collect(),
+        _ => colours,
+    };
     let colour = arg(4).as_deref() == Some("colour");
     // `located`: the same colours located once beforehand (`at_located`), `locate`: only
     // the locating.

@@ -121,21 +121,39 @@ struct FurColour {
     w2: vec3<f32>,
 }
 
-// Per channel: x = 1 - 0.4 e^(-sqrt(sigma/s_q)) - 0.6 e^(-sigma/s0) (lut::absorption_coordinate,
-// with fur_exp_neg the CPU's exp_neg_saturating; s_q = lut::ABSORPTION_SCALE_ROOT; sigma kept
-// in [0, 1000], NaN 0), u = x (n_abs - 1), k = min(floor u,
+// Per channel: x = 1 - 0.4 e^(-sqrt(sigma/s_q)) - 0.6 e^(-sigma/s0) (lut::absorption_coordinate)
+// as 1 - 0.4 2^(-sqrt(sigma FUR_ROOT_RATE)) - 0.6 2^(-(sigma/s0) log2 e), with fur_pow2_neg the
+// CPU's math::pow2_neg (sigma kept in [0, 1000], NaN 0), u = x (n_abs - 1), k = min(floor u,
 // n_abs - 3), t = u - k, weights (t - 1)(t - 2)/2, t(2 - t), t(t - 1)/2.
-// lut::ABSORPTION_SCALE_ROOT and the root term's share of the axis (lut::ROOT_SHARE).
-const FUR_ABS_SCALE_ROOT: f32 = 0.25;
+// lut::ROOT_RATE (log2(e)^2 / s_q) and the root term's share of the axis (lut::ROOT_SHARE).
+const FUR_ROOT_RATE: f32 = 8.325475692749023;
 const FUR_ROOT_SHARE: f32 = 0.4;
+
+// 2^-y per channel, the operations of math::pow2_neg: y kept in [0, 125] (NaN 0), k = round(y)
+// (ties to even), f = k - y (exact), 2^f by its Taylor polynomial of degree 7 in Estrin's
+// scheme (math::estrin8, the coefficients math::POW2_TAYLOR from the highest degree), times
+// 2^-k.
+fn fur_pow2_neg(y_in: vec3<f32>) -> vec3<f32> {
+    let y = select(min(max(y_in, vec3<f32>(0.0)), vec3<f32>(125.0)), vec3<f32>(0.0), fur_is_nan3(y_in));
+    let k = round(y);
+    let f = k - y;
+    let f2 = f * f;
+    let f4 = f2 * f2;
+    let p01 = 1.5252734e-5 * f + 1.540353e-4;
+    let p23 = 1.3333558e-3 * f + 9.618129e-3;
+    let p45 = 5.550411e-2 * f + 0.2402265;
+    let p67 = 0.6931472 * f + 1.0;
+    let p = (p01 * f2 + p23) * f4 + (p45 * f2 + p67);
+    return ldexp(p, -vec3<i32>(k));
+}
 
 fn fur_locate_colour(sigma_ca: vec3<f32>) -> FurColour {
     let n_abs = fur_word(FUR_N_ABS_WORD);
     let last = f32(n_abs - 1u);
     let scale = bitcast<f32>(fur_word(FUR_ABS_SCALE_WORD));
     let s = select(min(max(sigma_ca, vec3<f32>(0.0)), vec3<f32>(FUR_SIGMA_CA_MAX)), vec3<f32>(0.0), fur_is_nan3(sigma_ca));
-    let e = FUR_ROOT_SHARE * fur_exp_neg(sqrt(s / FUR_ABS_SCALE_ROOT))
-        + (1.0 - FUR_ROOT_SHARE) * fur_exp_neg(s / scale);
+    let e = FUR_ROOT_SHARE * fur_pow2_neg(sqrt(s * FUR_ROOT_RATE))
+        + (1.0 - FUR_ROOT_SHARE) * fur_pow2_neg(s / scale * FUR_LOG2_E);
     let x = min(1.0 - e, vec3<f32>(1.0));
     let u = clamp(x * last, vec3<f32>(0.0), vec3<f32>(last));
     let k = min(vec3<u32>(u), vec3<u32>(n_abs - 3u));

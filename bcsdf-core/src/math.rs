@@ -317,6 +317,44 @@ pub fn erf_polynomial(x: f32) -> f32 {
     f32::from_bits(e.to_bits() | (x.to_bits() & 0x8000_0000))
 }
 
+/// The Taylor coefficients of 2^f = e^(f·ln 2), (ln 2)ⁿ/n! for n = 7, 6, …, 0 (highest degree
+/// first, [`estrin8`]'s order); the literals of the shader's `fur_pow2_neg`, in this order.
+pub(crate) const POW2_TAYLOR: [f32; 8] = [
+    1.525_273_4e-5,
+    1.540_353e-4,
+    1.333_355_8e-3,
+    9.618_129e-3,
+    5.550_411e-2,
+    0.240_226_5,
+    core::f32::consts::LN_2,
+    1.0,
+];
+
+/// 2^−y for y ≥ 0 without a branch, for the absorption axis's coordinate
+/// ([`crate::lut::absorption_coordinate`]): y kept in [0, 125] (NaN gives 0), k = y rounded to
+/// the nearest integer (ties to even, as WGSL's `round`), f = k − y ∈ [−½, ½] (exact), 2^f by
+/// its Taylor polynomial of degree 7 ([`POW2_TAYLOR`], truncation error ≤ 5.2e-9 relative)
+/// in Estrin's scheme (three multiply-add levels: a short dependency chain), and 2^−k put into
+/// the exponent bits. Within 2 ulp of 2^−y (measured by the crate's unit test); above 125 the
+/// result stays 2^−125·2^f, not 0 (the axis's coordinate is 1 there either way).
+#[inline(always)]
+#[must_use]
+pub fn pow2_neg(y: f32) -> f32 {
+    // 1.5·2²³: adding it rounds y ∈ [0, 125] to an integer, which then sits in the low
+    // mantissa bits.
+    const ROUND: f32 = 12_582_912.0;
+    #[allow(clippy::manual_clamp)]
+    let y = y.max(0.0).min(125.0);
+    let shifted = y + ROUND;
+    let k = shifted - ROUND;
+    // Exact (Sterbenz: k and y within a factor 2, or k = 0).
+    let f = k - y;
+    let p = estrin8(&POW2_TAYLOR, f);
+    // p ∈ [0.70, 1.42] has biased exponent 126 or 127 and k ≤ 125: the result stays normal.
+    let k_bits = shifted.to_bits().wrapping_sub(ROUND.to_bits());
+    f32::from_bits(p.to_bits().wrapping_sub(k_bits << 23))
+}
+
 /// The polynomial of [`exp_neg_polynomial`] for x ∈ [0, 87].
 #[inline(always)]
 fn exp_neg_reduced(x: f32) -> f32 {

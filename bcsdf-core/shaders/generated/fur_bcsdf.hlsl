@@ -130,11 +130,9 @@ static const uint FUR_N_ABS_WORD = 9u;
 static const uint FUR_SCALE_WORD = 10u;
 static const uint FUR_ABS_SCALE_WORD = 39u;
 static const float FUR_SIGMA_CA_MAX = 1000.0;
-static const float FUR_ABS_SCALE_ROOT = 0.25;
+static const float FUR_ROOT_RATE = 8.325476;
 static const float FUR_ROOT_SHARE = 0.4;
 static const float FUR_LOG2_E = 1.442695;
-static const float FUR_LN2_HI = 0.6933594;
-static const float FUR_LN2_LO = -0.00021219444;
 static const uint FUR_CLOSURE_WORD = 27u;
 static const uint FUR_DUAL_HEADER_WORDS = 20u;
 static const uint FUR_DUAL_ABS_NODES = 16u;
@@ -162,6 +160,8 @@ static const float FUR_DUAL_MIN_VARIANCE = 3e-6;
 static const float FUR_DUAL_MIN_MASS = 0.05;
 static const float FUR_DUAL_TINY = 1e-6;
 static const float FUR_LN2_ = 0.6931472;
+static const float FUR_LN2_HI = 0.6933594;
+static const float FUR_LN2_LO = -0.00021219444;
 static const float FUR_INV_SQRT_TAU = 0.3989423;
 static const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
 static const float FUR_ERF_A1_ = 0.07052308;
@@ -251,27 +251,20 @@ int3 naga_f2i32(float3 value) {
     return int3(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-float3 fur_exp_neg(float3 x_in)
+float3 fur_pow2_neg(float3 y_in)
 {
-    float3 p = (0.00019875693).xxx;
-
-    float3 x_15 = min(max(x_in, (0.0).xxx), (87.0).xxx);
-    float3 k_16 = round((x_15 * FUR_LOG2_E));
-    float3 r_13 = (((k_16 * FUR_LN2_HI) - x_15) + (k_16 * FUR_LN2_LO));
-    float3 z = (r_13 * r_13);
-    float3 _e20 = p;
-    p = ((_e20 * r_13) + (0.0013981999).xxx);
-    float3 _e25 = p;
-    p = ((_e25 * r_13) + (0.008333452).xxx);
-    float3 _e30 = p;
-    p = ((_e30 * r_13) + (0.041665796).xxx);
-    float3 _e35 = p;
-    p = ((_e35 * r_13) + (0.16666666).xxx);
-    float3 _e40 = p;
-    p = ((_e40 * r_13) + (0.5).xxx);
-    float3 _e45 = p;
-    float3 e = (((_e45 * z) + r_13) + (1.0).xxx);
-    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e, naga_neg(naga_f2i32(k_16))));
+    const bool3 _e9 = fur_is_nan3_(y_in);
+    float3 y_3 = (_e9 ? (0.0).xxx : min(max(y_in, (0.0).xxx), (125.0).xxx));
+    float3 k_16 = round(y_3);
+    float3 f_6 = (k_16 - y_3);
+    float3 f2_ = (f_6 * f_6);
+    float3 f4_ = (f2_ * f2_);
+    float3 p01_ = ((1.5252734e-5 * f_6) + (0.0001540353).xxx);
+    float3 p23_ = ((0.0013333558 * f_6) + (0.009618129).xxx);
+    float3 p45_ = ((0.05550411 * f_6) + (0.2402265).xxx);
+    float3 p67_ = ((0.6931472 * f_6) + (1.0).xxx);
+    float3 p_4 = ((((p01_ * f2_) + p23_) * f4_) + ((p45_ * f2_) + p67_));
+    return ldexp(p_4, naga_neg(naga_f2i32(k_16)));
 }
 
 FurColour ConstructFurColour(uint3 arg0, float3 arg1, float3 arg2, float3 arg3) {
@@ -295,19 +288,19 @@ FurColour fur_locate_colour(float3 sigma_ca)
     float scale = asfloat(_e7);
     const bool3 _e17 = fur_is_nan3_(sigma_ca);
     float3 s_1 = (_e17 ? (0.0).xxx : min(max(sigma_ca, (0.0).xxx), (1000.0).xxx));
-    const float3 _e24 = fur_exp_neg(sqrt((s_1 / (0.25).xxx)));
-    const float3 _e29 = fur_exp_neg((s_1 / (scale).xxx));
-    float3 e_1 = ((FUR_ROOT_SHARE * _e24) + (0.6 * _e29));
-    float3 x_16 = min(((1.0).xxx - e_1), (1.0).xxx);
-    float3 u_8 = clamp((x_16 * last_2), (0.0).xxx, (last_2).xxx);
+    const float3 _e23 = fur_pow2_neg(sqrt((s_1 * FUR_ROOT_RATE)));
+    const float3 _e30 = fur_pow2_neg(((s_1 / (scale).xxx) * FUR_LOG2_E));
+    float3 e = ((FUR_ROOT_SHARE * _e23) + (0.6 * _e30));
+    float3 x_15 = min(((1.0).xxx - e), (1.0).xxx);
+    float3 u_8 = clamp((x_15 * last_2), (0.0).xxx, (last_2).xxx);
     uint3 k_17 = min(naga_f2u32(u_8), ((_e2 - 3u)).xxx);
     float3 t_11 = (u_8 - float3(k_17));
     float3 w0_ = ((0.5 * (t_11 - (1.0).xxx)) * (t_11 - (2.0).xxx));
     float3 w1_ = (t_11 * ((2.0).xxx - t_11));
     float3 w2_ = ((0.5 * t_11) * (t_11 - (1.0).xxx));
-    const uint _e70 = fur_word(6u);
-    const uint _e72 = fur_word(5u);
-    const FurColour furcolour = ConstructFurColour((k_17 * (_e70 * _e72)), w0_, w1_, w2_);
+    const uint _e71 = fur_word(6u);
+    const uint _e73 = fur_word(5u);
+    const FurColour furcolour = ConstructFurColour((k_17 * (_e71 * _e73)), w0_, w1_, w2_);
     return furcolour;
 }
 
@@ -318,28 +311,28 @@ float fur_cos_within_half_pi(float x_2)
 
     float a_7 = abs(x_2);
     if ((a_7 <= 0.7853982)) {
-        float y_3 = (a_7 * a_7);
+        float y_4 = (a_7 * a_7);
         float _e7 = acc;
-        acc = ((_e7 * y_3) + 2.4801588e-5);
+        acc = ((_e7 * y_4) + 2.4801588e-5);
         float _e11 = acc;
-        acc = ((_e11 * y_3) - 0.0013888889);
+        acc = ((_e11 * y_4) - 0.0013888889);
         float _e15 = acc;
-        acc = ((_e15 * y_3) + 0.041666668);
+        acc = ((_e15 * y_4) + 0.041666668);
         float _e19 = acc;
-        acc = ((_e19 * y_3) - 0.5);
+        acc = ((_e19 * y_4) - 0.5);
         float _e23 = acc;
-        return ((_e23 * y_3) + 1.0);
+        return ((_e23 * y_4) + 1.0);
     }
-    float r_14 = ((1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -4.371139e-8));
-    float y_4 = (r_14 * r_14);
+    float r_13 = ((1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -4.371139e-8));
+    float y_5 = (r_13 * r_13);
     float _e38 = acc_1;
-    acc_1 = ((_e38 * y_4) - 0.0001984127);
+    acc_1 = ((_e38 * y_5) - 0.0001984127);
     float _e42 = acc_1;
-    acc_1 = ((_e42 * y_4) + 0.008333334);
+    acc_1 = ((_e42 * y_5) + 0.008333334);
     float _e46 = acc_1;
-    acc_1 = ((_e46 * y_4) - 0.16666667);
+    acc_1 = ((_e46 * y_5) - 0.16666667);
     float _e50 = acc_1;
-    return (((_e50 * y_4) * r_14) + r_14);
+    return (((_e50 * y_5) * r_13) + r_13);
 }
 
 float fur_wrap_angle(float x_3)
@@ -415,8 +408,8 @@ FurFamilies ConstructFurFamilies(float3 arg0, float3 arg1, float3 arg2, float3 a
 
 FurFamilies fur_zero()
 {
-    float3 z_1 = (0.0).xxx;
-    const FurFamilies furfamilies = ConstructFurFamilies(z_1, z_1, z_1, z_1, z_1);
+    float3 z = (0.0).xxx;
+    const FurFamilies furfamilies = ConstructFurFamilies(z, z, z, z, z);
     return furfamilies;
 }
 
@@ -508,17 +501,17 @@ FurDensity fur_density(uint d)
     uint _e49 = at;
     at = (_e49 + (12u * _e28));
     if ((d < 7u)) {
-        uint f_6 = (d - 3u);
+        uint f_7 = (d - 3u);
         uint _e57 = at;
-        const FurDensity furdensity_1 = ConstructFurDensity((_e57 + (((4u * f_6) * _e4) * _e30)), _e30, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, f_6);
+        const FurDensity furdensity_1 = ConstructFurDensity((_e57 + (((4u * f_7) * _e4) * _e30)), _e30, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, f_7);
         return furdensity_1;
     }
     uint _e71 = at;
     at = (_e71 + ((16u * _e4) * _e30));
     if ((d < 9u)) {
-        uint x_17 = (d - 7u);
+        uint x_16 = (d - 7u);
         uint _e80 = at;
-        const FurDensity furdensity_2 = ConstructFurDensity((_e80 + (((4u * x_17) * _e10) * _e32)), _e32, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_17);
+        const FurDensity furdensity_2 = ConstructFurDensity((_e80 + (((4u * x_16) * _e10) * _e32)), _e32, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_16);
         return furdensity_2;
     }
     uint _e94 = at;
@@ -771,7 +764,7 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in, float3 si
             uint _e223 = c;
             float3 tw = float3(_e208.w0_[min(uint(_e217), 2u)], _e208.w1_[min(uint(_e220), 2u)], _e208.w2_[min(uint(_e223), 2u)]);
             float l_8[6] = Constructarray6_float_((tw.x * v0_8), (tw.x * v2_), (tw.y * v0_8), (tw.y * v2_), (tw.z * v0_8), (tw.z * v2_));
-            float r_15[6] = Constructarray6_float_((tw.x * v1_8), (tw.x * v3_), (tw.y * v1_8), (tw.y * v3_), (tw.z * v1_8), (tw.z * v3_));
+            float r_14[6] = Constructarray6_float_((tw.x * v1_8), (tw.x * v3_), (tw.y * v1_8), (tw.y * v3_), (tw.z * v1_8), (tw.z * v3_));
             uint _e254 = c;
             uint h_3 = (n0_ + (4u * (_e208.plane[min(uint(_e254), 2u)] + j0_)));
             uint rows[6] = Constructarray6_uint_(h_3, (h_3 + (4u * _e10)), (h_3 + _e209), ((h_3 + _e209) + (4u * _e10)), (h_3 + (2u * _e209)), ((h_3 + (2u * _e209)) + (4u * _e10)));
@@ -797,7 +790,7 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in, float3 si
                     left = (_e285 * l_8[0]);
                     uint _e292 = f;
                     const float _e294 = fur_half(((rows[0] + 4u) + _e292));
-                    right = (_e294 * r_15[0]);
+                    right = (_e294 * r_14[0]);
                     i = 1u;
                     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                     bool loop_init_6 = true;
@@ -826,7 +819,7 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in, float3 si
                             uint _e318 = f;
                             const float _e320 = fur_half(((rows[min(uint(_e314), 5u)] + 4u) + _e318));
                             uint _e321 = i;
-                            right = (_e313 + (_e320 * r_15[min(uint(_e321), 5u)]));
+                            right = (_e313 + (_e320 * r_14[min(uint(_e321), 5u)]));
                         }
                     }
                     uint _e329 = f;
@@ -943,24 +936,24 @@ float fur_asin(float x_5)
     float ax_3 = min(abs(x_5), 1.0);
     float x2_ = (ax_3 * ax_3);
     float x4_ = (x2_ * x2_);
-    float p01_ = ((-0.001262491 * ax_3) + 0.00667009);
-    float p23_ = ((-0.017088126 * ax_3) + 0.03089188);
-    float p45_ = ((-0.050174303 * ax_3) + 0.08897899);
-    float p67_ = ((-0.2145988 * ax_3) + FUR_HALF_PI);
-    float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
-    float r_16 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
-    return (((asuint(x_5) & 2147483648u) != 0u) ? -(abs(r_16)) : abs(r_16));
+    float p01_1 = ((-0.001262491 * ax_3) + 0.00667009);
+    float p23_1 = ((-0.017088126 * ax_3) + 0.03089188);
+    float p45_1 = ((-0.050174303 * ax_3) + 0.08897899);
+    float p67_1 = ((-0.2145988 * ax_3) + FUR_HALF_PI);
+    float poly = ((((p01_1 * x2_) + p23_1) * x4_) + ((p45_1 * x2_) + p67_1));
+    float r_15 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
+    return (((asuint(x_5) & 2147483648u) != 0u) ? -(abs(r_15)) : abs(r_15));
 }
 
 float fur_atan_poly(float t_1)
 {
     float t2_ = (t_1 * t_1);
     float t4_ = (t2_ * t2_);
-    float p01_1 = ((0.0029202348 * t_1) + -0.016366187);
-    float p23_1 = ((0.043209206 * t_1) + -0.07552008);
-    float p45_1 = ((0.10665919 * t_1) + -0.14211038);
-    float p67_1 = ((0.19993772 * t_1) + -0.33333153);
-    return ((((p01_1 * t2_) + p23_1) * t4_) + ((p45_1 * t2_) + p67_1));
+    float p01_2 = ((0.0029202348 * t_1) + -0.016366187);
+    float p23_2 = ((0.043209206 * t_1) + -0.07552008);
+    float p45_2 = ((0.10665919 * t_1) + -0.14211038);
+    float p67_2 = ((0.19993772 * t_1) + -0.33333153);
+    return ((((p01_2 * t2_) + p23_2) * t4_) + ((p45_2 * t2_) + p67_2));
 }
 
 float fur_atan2_(float y_1, float x_6)
@@ -1047,9 +1040,9 @@ FurDirAngles fur_angles_from_dirs(float3 wi, float3 wr, float3 u)
     float b_3 = dot(wr, un);
     const float _e51 = fur_asin(clamp((a_9 * (1.0 / ni)), -1.0, 1.0));
     const float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
-    float y_5 = dot(un, cross(wi, wr));
-    float x_18 = (dot(wi, wr) - (a_9 * b_3));
-    const float _e64 = fur_atan2_(y_5, x_18);
+    float y_6 = dot(un, cross(wi, wr));
+    float x_17 = (dot(wi, wr) - (a_9 * b_3));
+    const float _e64 = fur_atan2_(y_6, x_17);
     const FurDirAngles furdirangles_2 = ConstructFurDirAngles(_e51, _e58, abs(_e64), true);
     return furdirangles_2;
 }
@@ -1578,8 +1571,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             const float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_7 = (_e35 - t_6);
-            if ((f_7 > 0.0)) {
+            float f_8 = (_e35 - t_6);
+            if ((f_8 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1595,7 +1588,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_3 = (_e57 - (f_7 / dens));
+                float n_3 = (_e57 - (f_8 / dens));
                 float _e60 = lo_2;
                 if ((n_3 >= _e60)) {
                     float _e64 = hi_1;
@@ -1974,9 +1967,9 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1)
         return 0.0;
     }
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p_4 = ((((l_3.m[0] * l_3.n0_[0]) + (l_3.m[1] * l_3.n0_[1])) + (l_3.m[2] * l_3.n0_[2])) + (ms_1 * l_3.n0_[3]));
+    float p_5 = ((((l_3.m[0] * l_3.n0_[0]) + (l_3.m[1] * l_3.n0_[1])) + (l_3.m[2] * l_3.n0_[2])) + (ms_1 * l_3.n0_[3]));
     const float _e38 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p_4 * _e38);
+    float pg = (p_5 * _e38);
     const float _e44 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
     return _e44;
 }
@@ -2286,25 +2279,25 @@ float3 fur_dual_field(FurLoc l_4, uint f_4)
     return (v0_10 + ((v1_10 - v0_10) * _e34));
 }
 
-float3 fur_dual_ng_at(uint3 a_6, uint g_5, FurLoc l_5, FurLoc p_1)
+float3 fur_dual_ng_at(uint3 a_6, uint g_5, FurLoc l_5, FurLoc p)
 {
-    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p_1.i);
+    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i);
     uint row1_ = (row0_ + FUR_DUAL_PHI_NODES);
     const float3 _e16 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row0_));
     const float3 _e21 = fur_dual_rgb(a_6, ((FUR_DUAL_NG_START + row0_) + 1u));
     const float3 _e24 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row1_));
     const float3 _e29 = fur_dual_rgb(a_6, ((FUR_DUAL_NG_START + row1_) + 1u));
     float w_7 = l_5.w;
-    float v_4 = p_1.w;
+    float v_4 = p.w;
     return ((((((1.0 - w_7) * (1.0 - v_4)) * _e16) + (((1.0 - w_7) * v_4) * _e21)) + ((w_7 * (1.0 - v_4)) * _e24)) + ((w_7 * v_4) * _e29));
 }
 
-float3 fur_dual_ng(uint g_6, FurLoc l_6, FurLoc p_2)
+float3 fur_dual_ng(uint g_6, FurLoc l_6, FurLoc p_1)
 {
     uint3 _e5 = fur_dual_at.node;
-    const float3 _e6 = fur_dual_ng_at(_e5, g_6, l_6, p_2);
+    const float3 _e6 = fur_dual_ng_at(_e5, g_6, l_6, p_1);
     uint3 _e9 = fur_dual_at.node;
-    const float3 _e13 = fur_dual_ng_at((_e9 + (1u).xxx), g_6, l_6, p_2);
+    const float3 _e13 = fur_dual_ng_at((_e9 + (1u).xxx), g_6, l_6, p_1);
     float3 _e17 = fur_dual_at.w;
     return (_e6 + ((_e13 - _e6) * _e17));
 }
@@ -2329,12 +2322,35 @@ float3 fur_rsqrt_newton(float3 v_1)
     return (_e30 * ((1.5).xxx - ((h_4 * _e31) * _e33)));
 }
 
+float3 fur_exp_neg(float3 x_in)
+{
+    float3 p_2 = (0.00019875693).xxx;
+
+    float3 x_18 = min(max(x_in, (0.0).xxx), (87.0).xxx);
+    float3 k_20 = round((x_18 * FUR_LOG2_E));
+    float3 r_16 = (((k_20 * FUR_LN2_HI) - x_18) + (k_20 * FUR_LN2_LO));
+    float3 z_1 = (r_16 * r_16);
+    float3 _e20 = p_2;
+    p_2 = ((_e20 * r_16) + (0.0013981999).xxx);
+    float3 _e25 = p_2;
+    p_2 = ((_e25 * r_16) + (0.008333452).xxx);
+    float3 _e30 = p_2;
+    p_2 = ((_e30 * r_16) + (0.041665796).xxx);
+    float3 _e35 = p_2;
+    p_2 = ((_e35 * r_16) + (0.16666666).xxx);
+    float3 _e40 = p_2;
+    p_2 = ((_e40 * r_16) + (0.5).xxx);
+    float3 _e45 = p_2;
+    float3 e_1 = (((_e45 * z_1) + r_16) + (1.0).xxx);
+    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e_1, naga_neg(naga_f2i32(k_20))));
+}
+
 float3 fur_erf(float3 x_11)
 {
     const bool3 _e7 = fur_is_nan3_(x_11);
     float3 a_11 = (_e7 ? (0.0).xxx : min(abs(x_11), (10.0).xxx));
-    float3 p_5 = ((((((((((((FUR_ERF_A6_ * a_11) + (0.0002765672).xxx) * a_11) + (0.0001520143).xxx) * a_11) + (0.009270527).xxx) * a_11) + (0.04228201).xxx) * a_11) + (0.07052308).xxx) * a_11) + (1.0).xxx);
-    float3 p2_ = (p_5 * p_5);
+    float3 p_6 = ((((((((((((FUR_ERF_A6_ * a_11) + (0.0002765672).xxx) * a_11) + (0.0001520143).xxx) * a_11) + (0.009270527).xxx) * a_11) + (0.04228201).xxx) * a_11) + (0.07052308).xxx) * a_11) + (1.0).xxx);
+    float3 p2_ = (p_6 * p_6);
     float3 p4_ = (p2_ * p2_);
     float3 p8_ = (p4_ * p4_);
     float3 e_2 = ((1.0).xxx - ((1.0).xxx / (p8_ * p8_)));

@@ -147,11 +147,9 @@ constant uint FUR_N_ABS_WORD = 9u;
 constant uint FUR_SCALE_WORD = 10u;
 constant uint FUR_ABS_SCALE_WORD = 39u;
 constant float FUR_SIGMA_CA_MAX = 1000.0;
-constant float FUR_ABS_SCALE_ROOT = 0.25;
+constant float FUR_ROOT_RATE = 8.325476;
 constant float FUR_ROOT_SHARE = 0.4;
 constant float FUR_LOG2_E = 1.442695;
-constant float FUR_LN2_HI = 0.6933594;
-constant float FUR_LN2_LO = -0.00021219444;
 constant uint FUR_CLOSURE_WORD = 27u;
 constant uint FUR_DUAL_HEADER_WORDS = 20u;
 constant uint FUR_DUAL_ABS_NODES = 16u;
@@ -179,6 +177,8 @@ constant float FUR_DUAL_MIN_VARIANCE = 0.000003;
 constant float FUR_DUAL_MIN_MASS = 0.05;
 constant float FUR_DUAL_TINY = 0.000001;
 constant float FUR_LN2_ = 0.6931472;
+constant float FUR_LN2_HI = 0.6933594;
+constant float FUR_LN2_LO = -0.00021219444;
 constant float FUR_INV_SQRT_TAU = 0.3989423;
 constant float FUR_FRAC_1_SQRT_2_ = 0.70710677;
 constant float FUR_ERF_A1_ = 0.07052308;
@@ -261,27 +261,21 @@ metal::int3 naga_neg(metal::int3 val) {
     return as_type<metal::int3>(-as_type<metal::uint3>(val));
 }
 
-metal::float3 fur_exp_neg(
-    metal::float3 x_in
+metal::float3 fur_pow2_neg(
+    metal::float3 y_in
 ) {
-    metal::float3 p = metal::float3(0.00019875693);
-    metal::float3 x_15 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
-    metal::float3 k_16 = metal::rint(x_15 * FUR_LOG2_E);
-    metal::float3 r_13 = ((k_16 * FUR_LN2_HI) - x_15) + (k_16 * FUR_LN2_LO);
-    metal::float3 z = r_13 * r_13;
-    metal::float3 _e20 = p;
-    p = (_e20 * r_13) + metal::float3(0.0013981999);
-    metal::float3 _e25 = p;
-    p = (_e25 * r_13) + metal::float3(0.008333452);
-    metal::float3 _e30 = p;
-    p = (_e30 * r_13) + metal::float3(0.041665796);
-    metal::float3 _e35 = p;
-    p = (_e35 * r_13) + metal::float3(0.16666666);
-    metal::float3 _e40 = p;
-    p = (_e40 * r_13) + metal::float3(0.5);
-    metal::float3 _e45 = p;
-    metal::float3 e = ((_e45 * z) + r_13) + metal::float3(1.0);
-    return metal::select(metal::ldexp(e, naga_neg(naga_f2i32(k_16))), metal::float3(0.0), x_in > metal::float3(87.0));
+    metal::bool3 _e9 = fur_is_nan3_(y_in);
+    metal::float3 y_3 = metal::select(metal::min(metal::max(y_in, metal::float3(0.0)), metal::float3(125.0)), metal::float3(0.0), _e9);
+    metal::float3 k_16 = metal::rint(y_3);
+    metal::float3 f_6 = k_16 - y_3;
+    metal::float3 f2_ = f_6 * f_6;
+    metal::float3 f4_ = f2_ * f2_;
+    metal::float3 p01_ = (0.000015252734 * f_6) + metal::float3(0.0001540353);
+    metal::float3 p23_ = (0.0013333558 * f_6) + metal::float3(0.009618129);
+    metal::float3 p45_ = (0.05550411 * f_6) + metal::float3(0.2402265);
+    metal::float3 p67_ = (0.6931472 * f_6) + metal::float3(1.0);
+    metal::float3 p_4 = (((p01_ * f2_) + p23_) * f4_) + ((p45_ * f2_) + p67_);
+    return metal::ldexp(p_4, naga_neg(naga_f2i32(k_16)));
 }
 
 metal::uint3 naga_f2u32(metal::float3 value) {
@@ -299,19 +293,19 @@ FurColour fur_locate_colour(
     float scale = as_type<float>(_e7);
     metal::bool3 _e17 = fur_is_nan3_(sigma_ca);
     metal::float3 s_1 = metal::select(metal::min(metal::max(sigma_ca, metal::float3(0.0)), metal::float3(1000.0)), metal::float3(0.0), _e17);
-    metal::float3 _e24 = fur_exp_neg(metal::sqrt(s_1 / metal::float3(0.25)));
-    metal::float3 _e29 = fur_exp_neg(s_1 / metal::float3(scale));
-    metal::float3 e_1 = (FUR_ROOT_SHARE * _e24) + (0.6 * _e29);
-    metal::float3 x_16 = metal::min(metal::float3(1.0) - e_1, metal::float3(1.0));
-    metal::float3 u_8 = metal::clamp(x_16 * last_2, metal::float3(0.0), metal::float3(last_2));
+    metal::float3 _e23 = fur_pow2_neg(metal::sqrt(s_1 * FUR_ROOT_RATE));
+    metal::float3 _e30 = fur_pow2_neg((s_1 / metal::float3(scale)) * FUR_LOG2_E);
+    metal::float3 e = (FUR_ROOT_SHARE * _e23) + (0.6 * _e30);
+    metal::float3 x_15 = metal::min(metal::float3(1.0) - e, metal::float3(1.0));
+    metal::float3 u_8 = metal::clamp(x_15 * last_2, metal::float3(0.0), metal::float3(last_2));
     metal::uint3 k_17 = metal::min(naga_f2u32(u_8), metal::uint3(_e2 - 3u));
     metal::float3 t_11 = u_8 - static_cast<metal::float3>(k_17);
     metal::float3 w0_ = (0.5 * (t_11 - metal::float3(1.0))) * (t_11 - metal::float3(2.0));
     metal::float3 w1_ = t_11 * (metal::float3(2.0) - t_11);
     metal::float3 w2_ = (0.5 * t_11) * (t_11 - metal::float3(1.0));
-    uint _e70 = fur_word(6u, fur_lut, _buffer_sizes);
-    uint _e72 = fur_word(5u, fur_lut, _buffer_sizes);
-    return FurColour {k_17 * (_e70 * _e72), w0_, w1_, w2_};
+    uint _e71 = fur_word(6u, fur_lut, _buffer_sizes);
+    uint _e73 = fur_word(5u, fur_lut, _buffer_sizes);
+    return FurColour {k_17 * (_e71 * _e73), w0_, w1_, w2_};
 }
 
 float fur_cos_within_half_pi(
@@ -321,28 +315,28 @@ float fur_cos_within_half_pi(
     float acc_1 = 0.0000027557319;
     float a_7 = metal::abs(x_2);
     if (a_7 <= 0.7853982) {
-        float y_3 = a_7 * a_7;
+        float y_4 = a_7 * a_7;
         float _e7 = acc;
-        acc = (_e7 * y_3) + 0.000024801588;
+        acc = (_e7 * y_4) + 0.000024801588;
         float _e11 = acc;
-        acc = (_e11 * y_3) - 0.0013888889;
+        acc = (_e11 * y_4) - 0.0013888889;
         float _e15 = acc;
-        acc = (_e15 * y_3) + 0.041666668;
+        acc = (_e15 * y_4) + 0.041666668;
         float _e19 = acc;
-        acc = (_e19 * y_3) - 0.5;
+        acc = (_e19 * y_4) - 0.5;
         float _e23 = acc;
-        return (_e23 * y_3) + 1.0;
+        return (_e23 * y_4) + 1.0;
     }
-    float r_14 = (1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -0.00000004371139);
-    float y_4 = r_14 * r_14;
+    float r_13 = (1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -0.00000004371139);
+    float y_5 = r_13 * r_13;
     float _e38 = acc_1;
-    acc_1 = (_e38 * y_4) - 0.0001984127;
+    acc_1 = (_e38 * y_5) - 0.0001984127;
     float _e42 = acc_1;
-    acc_1 = (_e42 * y_4) + 0.008333334;
+    acc_1 = (_e42 * y_5) + 0.008333334;
     float _e46 = acc_1;
-    acc_1 = (_e46 * y_4) - 0.16666667;
+    acc_1 = (_e46 * y_5) - 0.16666667;
     float _e50 = acc_1;
-    return ((_e50 * y_4) * r_14) + r_14;
+    return ((_e50 * y_5) * r_13) + r_13;
 }
 
 float fur_wrap_angle(
@@ -408,8 +402,8 @@ float fur_wrap_angle(
 
 FurFamilies fur_zero(
 ) {
-    metal::float3 z_1 = metal::float3(0.0);
-    return FurFamilies {z_1, z_1, z_1, z_1, z_1};
+    metal::float3 z = metal::float3(0.0);
+    return FurFamilies {z, z, z, z, z};
 }
 
 bool fur_finite(
@@ -493,16 +487,16 @@ FurDensity fur_density(
     uint _e49 = at;
     at = _e49 + (12u * _e28);
     if (d < 7u) {
-        uint f_6 = d - 3u;
+        uint f_7 = d - 3u;
         uint _e57 = at;
-        return FurDensity {_e57 + (((4u * f_6) * _e4) * _e30), _e30, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, f_6};
+        return FurDensity {_e57 + (((4u * f_7) * _e4) * _e30), _e30, _e6, _e4, FUR_PI / static_cast<float>(_e6 - 1u), 8u, 1u, f_7};
     }
     uint _e71 = at;
     at = _e71 + ((16u * _e4) * _e30);
     if (d < 9u) {
-        uint x_17 = d - 7u;
+        uint x_16 = d - 7u;
         uint _e80 = at;
-        return FurDensity {_e80 + (((4u * x_17) * _e10) * _e32), _e32, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_17};
+        return FurDensity {_e80 + (((4u * x_16) * _e10) * _e32), _e32, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_16};
     }
     uint _e94 = at;
     at = _e94 + ((8u * _e10) * _e32);
@@ -742,7 +736,7 @@ FurLookups fur_lookups(
             uint _e223 = c;
             metal::float3 tw = metal::float3(_e208.w0_[_e217], _e208.w1_[_e220], _e208.w2_[_e223]);
             type_11 l_8 = type_11 {{tw.x * v0_8, tw.x * v2_, tw.y * v0_8, tw.y * v2_, tw.z * v0_8, tw.z * v2_}};
-            type_11 r_15 = type_11 {{tw.x * v1_8, tw.x * v3_, tw.y * v1_8, tw.y * v3_, tw.z * v1_8, tw.z * v3_}};
+            type_11 r_14 = type_11 {{tw.x * v1_8, tw.x * v3_, tw.y * v1_8, tw.y * v3_, tw.z * v1_8, tw.z * v3_}};
             uint _e254 = c;
             uint h_3 = n0_ + (4u * (_e208.plane[_e254] + j0_));
             type_12 rows = type_12 {{h_3, h_3 + (4u * _e10), h_3 + _e209, (h_3 + _e209) + (4u * _e10), h_3 + (2u * _e209), (h_3 + (2u * _e209)) + (4u * _e10)}};
@@ -768,7 +762,7 @@ FurLookups fur_lookups(
                     left = _e285 * l_8.inner[0];
                     uint _e292 = f;
                     float _e294 = fur_half((rows.inner[0] + 4u) + _e292, fur_lut, _buffer_sizes);
-                    right = _e294 * r_15.inner[0];
+                    right = _e294 * r_14.inner[0];
                     i = 1u;
                     uint2 loop_bound_6 = uint2(4294967295u);
                     bool loop_init_6 = true;
@@ -797,7 +791,7 @@ FurLookups fur_lookups(
                             uint _e318 = f;
                             float _e320 = fur_half((rows.inner[_e314] + 4u) + _e318, fur_lut, _buffer_sizes);
                             uint _e321 = i;
-                            right = _e313 + (_e320 * r_15.inner[_e321]);
+                            right = _e313 + (_e320 * r_14.inner[_e321]);
                         }
                     }
                     uint _e329 = f;
@@ -911,13 +905,13 @@ float fur_asin(
     float ax_3 = metal::min(metal::abs(x_5), 1.0);
     float x2_ = ax_3 * ax_3;
     float x4_ = x2_ * x2_;
-    float p01_ = (-0.001262491 * ax_3) + 0.00667009;
-    float p23_ = (-0.017088126 * ax_3) + 0.03089188;
-    float p45_ = (-0.050174303 * ax_3) + 0.08897899;
-    float p67_ = (-0.2145988 * ax_3) + FUR_HALF_PI;
-    float poly = (((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_);
-    float r_16 = FUR_HALF_PI - (metal::sqrt(1.0 - ax_3) * poly);
-    return ((as_type<uint>(x_5) & 2147483648u) != 0u) ? -(metal::abs(r_16)) : metal::abs(r_16);
+    float p01_1 = (-0.001262491 * ax_3) + 0.00667009;
+    float p23_1 = (-0.017088126 * ax_3) + 0.03089188;
+    float p45_1 = (-0.050174303 * ax_3) + 0.08897899;
+    float p67_1 = (-0.2145988 * ax_3) + FUR_HALF_PI;
+    float poly = (((p01_1 * x2_) + p23_1) * x4_) + ((p45_1 * x2_) + p67_1);
+    float r_15 = FUR_HALF_PI - (metal::sqrt(1.0 - ax_3) * poly);
+    return ((as_type<uint>(x_5) & 2147483648u) != 0u) ? -(metal::abs(r_15)) : metal::abs(r_15);
 }
 
 float fur_atan_poly(
@@ -925,11 +919,11 @@ float fur_atan_poly(
 ) {
     float t2_ = t_1 * t_1;
     float t4_ = t2_ * t2_;
-    float p01_1 = (0.0029202348 * t_1) + -0.016366187;
-    float p23_1 = (0.043209206 * t_1) + -0.07552008;
-    float p45_1 = (0.10665919 * t_1) + -0.14211038;
-    float p67_1 = (0.19993772 * t_1) + -0.33333153;
-    return (((p01_1 * t2_) + p23_1) * t4_) + ((p45_1 * t2_) + p67_1);
+    float p01_2 = (0.0029202348 * t_1) + -0.016366187;
+    float p23_2 = (0.043209206 * t_1) + -0.07552008;
+    float p45_2 = (0.10665919 * t_1) + -0.14211038;
+    float p67_2 = (0.19993772 * t_1) + -0.33333153;
+    return (((p01_2 * t2_) + p23_2) * t4_) + ((p45_2 * t2_) + p67_2);
 }
 
 float fur_atan2_(
@@ -1008,9 +1002,9 @@ FurDirAngles fur_angles_from_dirs(
     float b_3 = metal::dot(wr, un);
     float _e51 = fur_asin(metal::clamp(a_9 * (1.0 / ni), -1.0, 1.0));
     float _e58 = fur_asin(metal::clamp(b_3 * (1.0 / nr), -1.0, 1.0));
-    float y_5 = metal::dot(un, metal::cross(wi, wr));
-    float x_18 = metal::dot(wi, wr) - (a_9 * b_3);
-    float _e64 = fur_atan2_(y_5, x_18);
+    float y_6 = metal::dot(un, metal::cross(wi, wr));
+    float x_17 = metal::dot(wi, wr) - (a_9 * b_3);
+    float _e64 = fur_atan2_(y_6, x_17);
     return FurDirAngles {_e51, _e58, metal::abs(_e64), true};
 }
 
@@ -1596,8 +1590,8 @@ float fur_invert_sliver_piece(
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_7 = _e35 - t_6;
-            if (f_7 > 0.0) {
+            float f_8 = _e35 - t_6;
+            if (f_8 > 0.0) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1613,7 +1607,7 @@ float fur_invert_sliver_piece(
             next_1 = 0.5 * (_e49 + _e50);
             if (dens > 0.0) {
                 float _e57 = d_4;
-                float n_3 = _e57 - (f_7 / dens);
+                float n_3 = _e57 - (f_8 / dens);
                 float _e60 = lo_2;
                 if (n_3 >= _e60) {
                     float _e64 = hi_1;
@@ -1999,9 +1993,9 @@ float fur_density_of(
         return 0.0;
     }
     float ms_1 = l_3.ms.inner[0] + (l_3.front * (l_3.ms.inner[1] - l_3.ms.inner[0]));
-    float p_4 = (((l_3.m.inner[0] * l_3.n0_.inner[0]) + (l_3.m.inner[1] * l_3.n0_.inner[1])) + (l_3.m.inner[2] * l_3.n0_.inner[2])) + (ms_1 * l_3.n0_.inner[3]);
+    float p_5 = (((l_3.m.inner[0] * l_3.n0_.inner[0]) + (l_3.m.inner[1] * l_3.n0_.inner[1])) + (l_3.m.inner[2] * l_3.n0_.inner[2])) + (ms_1 * l_3.n0_.inner[3]);
     float _e38 = fur_pole_keep(cos_theta_i_1);
-    float pg = p_4 * _e38;
+    float pg = p_5 * _e38;
     float _e44 = fur_positive((pg / w_2) / metal::max(cos_theta_i_1, 0.000001));
     return _e44;
 }
@@ -2320,33 +2314,33 @@ metal::float3 fur_dual_ng_at(
     metal::uint3 a_6,
     uint g_5,
     FurLoc l_5,
-    FurLoc p_1,
+    FurLoc p,
     device type_1 const& fur_dual,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint row0_ = (((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p_1.i;
+    uint row0_ = (((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i;
     uint row1_ = row0_ + FUR_DUAL_PHI_NODES;
     metal::float3 _e16 = fur_dual_rgb(a_6, FUR_DUAL_NG_START + row0_, fur_dual, _buffer_sizes);
     metal::float3 _e21 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row0_) + 1u, fur_dual, _buffer_sizes);
     metal::float3 _e24 = fur_dual_rgb(a_6, FUR_DUAL_NG_START + row1_, fur_dual, _buffer_sizes);
     metal::float3 _e29 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row1_) + 1u, fur_dual, _buffer_sizes);
     float w_7 = l_5.w;
-    float v_4 = p_1.w;
+    float v_4 = p.w;
     return (((((1.0 - w_7) * (1.0 - v_4)) * _e16) + (((1.0 - w_7) * v_4) * _e21)) + ((w_7 * (1.0 - v_4)) * _e24)) + ((w_7 * v_4) * _e29);
 }
 
 metal::float3 fur_dual_ng(
     uint g_6,
     FurLoc l_6,
-    FurLoc p_2,
+    FurLoc p_1,
     device type_1 const& fur_dual,
     thread FurDualColour& fur_dual_at,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::uint3 _e5 = fur_dual_at.node;
-    metal::float3 _e6 = fur_dual_ng_at(_e5, g_6, l_6, p_2, fur_dual, _buffer_sizes);
+    metal::float3 _e6 = fur_dual_ng_at(_e5, g_6, l_6, p_1, fur_dual, _buffer_sizes);
     metal::uint3 _e9 = fur_dual_at.node;
-    metal::float3 _e13 = fur_dual_ng_at(_e9 + metal::uint3(1u), g_6, l_6, p_2, fur_dual, _buffer_sizes);
+    metal::float3 _e13 = fur_dual_ng_at(_e9 + metal::uint3(1u), g_6, l_6, p_1, fur_dual, _buffer_sizes);
     metal::float3 _e17 = fur_dual_at.w;
     return _e6 + ((_e13 - _e6) * _e17);
 }
@@ -2371,13 +2365,36 @@ metal::float3 fur_rsqrt_newton(
     return _e30 * (metal::float3(1.5) - ((h_4 * _e31) * _e33));
 }
 
+metal::float3 fur_exp_neg(
+    metal::float3 x_in
+) {
+    metal::float3 p_2 = metal::float3(0.00019875693);
+    metal::float3 x_18 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
+    metal::float3 k_20 = metal::rint(x_18 * FUR_LOG2_E);
+    metal::float3 r_16 = ((k_20 * FUR_LN2_HI) - x_18) + (k_20 * FUR_LN2_LO);
+    metal::float3 z_1 = r_16 * r_16;
+    metal::float3 _e20 = p_2;
+    p_2 = (_e20 * r_16) + metal::float3(0.0013981999);
+    metal::float3 _e25 = p_2;
+    p_2 = (_e25 * r_16) + metal::float3(0.008333452);
+    metal::float3 _e30 = p_2;
+    p_2 = (_e30 * r_16) + metal::float3(0.041665796);
+    metal::float3 _e35 = p_2;
+    p_2 = (_e35 * r_16) + metal::float3(0.16666666);
+    metal::float3 _e40 = p_2;
+    p_2 = (_e40 * r_16) + metal::float3(0.5);
+    metal::float3 _e45 = p_2;
+    metal::float3 e_1 = ((_e45 * z_1) + r_16) + metal::float3(1.0);
+    return metal::select(metal::ldexp(e_1, naga_neg(naga_f2i32(k_20))), metal::float3(0.0), x_in > metal::float3(87.0));
+}
+
 metal::float3 fur_erf(
     metal::float3 x_11
 ) {
     metal::bool3 _e7 = fur_is_nan3_(x_11);
     metal::float3 a_11 = metal::select(metal::min(metal::abs(x_11), metal::float3(10.0)), metal::float3(0.0), _e7);
-    metal::float3 p_5 = (((((((((((FUR_ERF_A6_ * a_11) + metal::float3(0.0002765672)) * a_11) + metal::float3(0.0001520143)) * a_11) + metal::float3(0.009270527)) * a_11) + metal::float3(0.04228201)) * a_11) + metal::float3(0.07052308)) * a_11) + metal::float3(1.0);
-    metal::float3 p2_ = p_5 * p_5;
+    metal::float3 p_6 = (((((((((((FUR_ERF_A6_ * a_11) + metal::float3(0.0002765672)) * a_11) + metal::float3(0.0001520143)) * a_11) + metal::float3(0.009270527)) * a_11) + metal::float3(0.04228201)) * a_11) + metal::float3(0.07052308)) * a_11) + metal::float3(1.0);
+    metal::float3 p2_ = p_6 * p_6;
     metal::float3 p4_ = p2_ * p2_;
     metal::float3 p8_ = p4_ * p4_;
     metal::float3 e_2 = metal::float3(1.0) - (metal::float3(1.0) / (p8_ * p8_));

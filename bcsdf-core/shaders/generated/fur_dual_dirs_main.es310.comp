@@ -101,11 +101,9 @@ const uint FUR_N_ABS_WORD = 9u;
 const uint FUR_SCALE_WORD = 10u;
 const uint FUR_ABS_SCALE_WORD = 39u;
 const float FUR_SIGMA_CA_MAX = 1000.0;
-const float FUR_ABS_SCALE_ROOT = 0.25;
+const float FUR_ROOT_RATE = 8.325476;
 const float FUR_ROOT_SHARE = 0.4;
 const float FUR_LOG2_E = 1.442695;
-const float FUR_LN2_HI = 0.6933594;
-const float FUR_LN2_LO = -0.00021219444;
 const uint FUR_CLOSURE_WORD = 27u;
 const uint FUR_DUAL_HEADER_WORDS = 20u;
 const uint FUR_DUAL_ABS_NODES = 16u;
@@ -133,6 +131,8 @@ const float FUR_DUAL_MIN_VARIANCE = 3e-6;
 const float FUR_DUAL_MIN_MASS = 0.05;
 const float FUR_DUAL_TINY = 1e-6;
 const float FUR_LN2_ = 0.6931472;
+const float FUR_LN2_HI = 0.6933594;
+const float FUR_LN2_LO = -0.00021219444;
 const float FUR_INV_SQRT_TAU = 0.3989423;
 const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
 const float FUR_ERF_A1_ = 0.07052308;
@@ -166,25 +166,19 @@ bvec3 fur_is_nan3_(vec3 x_1) {
     return greaterThan((floatBitsToUint(x_1) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 fur_exp_neg(vec3 x_in) {
-    vec3 p = vec3(0.00019875693);
-    vec3 x_15 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_16 = roundEven((x_15 * FUR_LOG2_E));
-    vec3 r_13 = (((k_16 * FUR_LN2_HI) - x_15) + (k_16 * FUR_LN2_LO));
-    vec3 z = (r_13 * r_13);
-    vec3 _e20 = p;
-    p = ((_e20 * r_13) + vec3(0.0013981999));
-    vec3 _e25 = p;
-    p = ((_e25 * r_13) + vec3(0.008333452));
-    vec3 _e30 = p;
-    p = ((_e30 * r_13) + vec3(0.041665796));
-    vec3 _e35 = p;
-    p = ((_e35 * r_13) + vec3(0.16666666));
-    vec3 _e40 = p;
-    p = ((_e40 * r_13) + vec3(0.5));
-    vec3 _e45 = p;
-    vec3 e = (((_e45 * z) + r_13) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_16))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+vec3 fur_pow2_neg(vec3 y_in) {
+    bvec3 _e9 = fur_is_nan3_(y_in);
+    vec3 y_3 = mix(min(max(y_in, vec3(0.0)), vec3(125.0)), vec3(0.0), _e9);
+    vec3 k_16 = roundEven(y_3);
+    vec3 f_6 = (k_16 - y_3);
+    vec3 f2_ = (f_6 * f_6);
+    vec3 f4_ = (f2_ * f2_);
+    vec3 p01_ = ((1.5252734e-5 * f_6) + vec3(0.0001540353));
+    vec3 p23_ = ((0.0013333558 * f_6) + vec3(0.009618129));
+    vec3 p45_ = ((0.05550411 * f_6) + vec3(0.2402265));
+    vec3 p67_ = ((0.6931472 * f_6) + vec3(1.0));
+    vec3 p_4 = ((((p01_ * f2_) + p23_) * f4_) + ((p45_ * f2_) + p67_));
+    return ldexp(p_4, -(ivec3(k_16)));
 }
 
 float fur_cos_within_half_pi(float x_2) {
@@ -192,28 +186,28 @@ float fur_cos_within_half_pi(float x_2) {
     float acc_1 = 2.7557319e-6;
     float a_7 = abs(x_2);
     if ((a_7 <= 0.7853982)) {
-        float y_3 = (a_7 * a_7);
+        float y_4 = (a_7 * a_7);
         float _e7 = acc;
-        acc = ((_e7 * y_3) + 2.4801588e-5);
+        acc = ((_e7 * y_4) + 2.4801588e-5);
         float _e11 = acc;
-        acc = ((_e11 * y_3) - 0.0013888889);
+        acc = ((_e11 * y_4) - 0.0013888889);
         float _e15 = acc;
-        acc = ((_e15 * y_3) + 0.041666668);
+        acc = ((_e15 * y_4) + 0.041666668);
         float _e19 = acc;
-        acc = ((_e19 * y_3) - 0.5);
+        acc = ((_e19 * y_4) - 0.5);
         float _e23 = acc;
-        return ((_e23 * y_3) + 1.0);
+        return ((_e23 * y_4) + 1.0);
     }
-    float r_14 = ((1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -4.371139e-8));
-    float y_4 = (r_14 * r_14);
+    float r_13 = ((1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -4.371139e-8));
+    float y_5 = (r_13 * r_13);
     float _e38 = acc_1;
-    acc_1 = ((_e38 * y_4) - 0.0001984127);
+    acc_1 = ((_e38 * y_5) - 0.0001984127);
     float _e42 = acc_1;
-    acc_1 = ((_e42 * y_4) + 0.008333334);
+    acc_1 = ((_e42 * y_5) + 0.008333334);
     float _e46 = acc_1;
-    acc_1 = ((_e46 * y_4) - 0.16666667);
+    acc_1 = ((_e46 * y_5) - 0.16666667);
     float _e50 = acc_1;
-    return (((_e50 * y_4) * r_14) + r_14);
+    return (((_e50 * y_5) * r_13) + r_13);
 }
 
 float fur_wrap_angle(float x_3) {
@@ -276,8 +270,8 @@ float fur_wrap_angle(float x_3) {
 }
 
 FurFamilies fur_zero() {
-    vec3 z_1 = vec3(0.0);
-    return FurFamilies(z_1, z_1, z_1, z_1, z_1);
+    vec3 z = vec3(0.0);
+    return FurFamilies(z, z, z, z, z);
 }
 
 bool fur_finite(float x_4) {
@@ -365,23 +359,23 @@ float fur_asin(float x_5) {
     float ax_3 = min(abs(x_5), 1.0);
     float x2_ = (ax_3 * ax_3);
     float x4_ = (x2_ * x2_);
-    float p01_ = ((-0.001262491 * ax_3) + 0.00667009);
-    float p23_ = ((-0.017088126 * ax_3) + 0.03089188);
-    float p45_ = ((-0.050174303 * ax_3) + 0.08897899);
-    float p67_ = ((-0.2145988 * ax_3) + FUR_HALF_PI);
-    float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
-    float r_15 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
-    return (((floatBitsToUint(x_5) & 2147483648u) != 0u) ? -(abs(r_15)) : abs(r_15));
+    float p01_1 = ((-0.001262491 * ax_3) + 0.00667009);
+    float p23_1 = ((-0.017088126 * ax_3) + 0.03089188);
+    float p45_1 = ((-0.050174303 * ax_3) + 0.08897899);
+    float p67_1 = ((-0.2145988 * ax_3) + FUR_HALF_PI);
+    float poly = ((((p01_1 * x2_) + p23_1) * x4_) + ((p45_1 * x2_) + p67_1));
+    float r_14 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
+    return (((floatBitsToUint(x_5) & 2147483648u) != 0u) ? -(abs(r_14)) : abs(r_14));
 }
 
 float fur_atan_poly(float t_1) {
     float t2_ = (t_1 * t_1);
     float t4_ = (t2_ * t2_);
-    float p01_1 = ((0.0029202348 * t_1) + -0.016366187);
-    float p23_1 = ((0.043209206 * t_1) + -0.07552008);
-    float p45_1 = ((0.10665919 * t_1) + -0.14211038);
-    float p67_1 = ((0.19993772 * t_1) + -0.33333153);
-    return ((((p01_1 * t2_) + p23_1) * t4_) + ((p45_1 * t2_) + p67_1));
+    float p01_2 = ((0.0029202348 * t_1) + -0.016366187);
+    float p23_2 = ((0.043209206 * t_1) + -0.07552008);
+    float p45_2 = ((0.10665919 * t_1) + -0.14211038);
+    float p67_2 = ((0.19993772 * t_1) + -0.33333153);
+    return ((((p01_2 * t2_) + p23_2) * t4_) + ((p45_2 * t2_) + p67_2));
 }
 
 float fur_atan2_(float y_1, float x_6) {
@@ -453,9 +447,9 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float b_3 = dot(wr, un);
     float _e51 = fur_asin(clamp((a_9 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
-    float y_5 = dot(un, cross(wi, wr));
-    float x_16 = (dot(wi, wr) - (a_9 * b_3));
-    float _e64 = fur_atan2_(y_5, x_16);
+    float y_6 = dot(un, cross(wi, wr));
+    float x_15 = (dot(wi, wr) - (a_9 * b_3));
+    float _e64 = fur_atan2_(y_6, x_15);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -751,8 +745,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_6 = (_e35 - t_6);
-            if ((f_6 > 0.0)) {
+            float f_7 = (_e35 - t_6);
+            if ((f_7 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -768,7 +762,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_3 = (_e57 - (f_6 / dens));
+                float n_3 = (_e57 - (f_7 / dens));
                 float _e60 = lo_2;
                 if ((n_3 >= _e60)) {
                     float _e64 = hi_1;
@@ -816,9 +810,9 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
         return 0.0;
     }
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p_4 = ((((l_3.m[0] * l_3.n0_[0]) + (l_3.m[1] * l_3.n0_[1])) + (l_3.m[2] * l_3.n0_[2])) + (ms_1 * l_3.n0_[3]));
+    float p_5 = ((((l_3.m[0] * l_3.n0_[0]) + (l_3.m[1] * l_3.n0_[1])) + (l_3.m[2] * l_3.n0_[2])) + (ms_1 * l_3.n0_[3]));
     float _e38 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p_4 * _e38);
+    float pg = (p_5 * _e38);
     float _e44 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
     return _e44;
 }
@@ -913,23 +907,23 @@ vec3 fur_dual_field(FurLoc l_4, uint f_4) {
     return (v0_8 + ((v1_8 - v0_8) * _e34));
 }
 
-vec3 fur_dual_ng_at(uvec3 a_6, uint g_5, FurLoc l_5, FurLoc p_1) {
-    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p_1.i);
+vec3 fur_dual_ng_at(uvec3 a_6, uint g_5, FurLoc l_5, FurLoc p) {
+    uint row0_ = ((((g_5 * FUR_DUAL_THETA_NODES) + l_5.i) * FUR_DUAL_PHI_NODES) + p.i);
     uint row1_ = (row0_ + FUR_DUAL_PHI_NODES);
     vec3 _e16 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row0_));
     vec3 _e21 = fur_dual_rgb(a_6, ((FUR_DUAL_NG_START + row0_) + 1u));
     vec3 _e24 = fur_dual_rgb(a_6, (FUR_DUAL_NG_START + row1_));
     vec3 _e29 = fur_dual_rgb(a_6, ((FUR_DUAL_NG_START + row1_) + 1u));
     float w_5 = l_5.w;
-    float v_4 = p_1.w;
+    float v_4 = p.w;
     return ((((((1.0 - w_5) * (1.0 - v_4)) * _e16) + (((1.0 - w_5) * v_4) * _e21)) + ((w_5 * (1.0 - v_4)) * _e24)) + ((w_5 * v_4) * _e29));
 }
 
-vec3 fur_dual_ng(uint g_6, FurLoc l_6, FurLoc p_2) {
+vec3 fur_dual_ng(uint g_6, FurLoc l_6, FurLoc p_1) {
     uvec3 _e5 = fur_dual_at.node;
-    vec3 _e6 = fur_dual_ng_at(_e5, g_6, l_6, p_2);
+    vec3 _e6 = fur_dual_ng_at(_e5, g_6, l_6, p_1);
     uvec3 _e9 = fur_dual_at.node;
-    vec3 _e13 = fur_dual_ng_at((_e9 + uvec3(1u)), g_6, l_6, p_2);
+    vec3 _e13 = fur_dual_ng_at((_e9 + uvec3(1u)), g_6, l_6, p_1);
     vec3 _e17 = fur_dual_at.w;
     return (_e6 + ((_e13 - _e6) * _e17));
 }
@@ -952,11 +946,32 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
     return (_e30 * (vec3(1.5) - ((h_3 * _e31) * _e33)));
 }
 
+vec3 fur_exp_neg(vec3 x_in) {
+    vec3 p_2 = vec3(0.00019875693);
+    vec3 x_16 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_18 = roundEven((x_16 * FUR_LOG2_E));
+    vec3 r_15 = (((k_18 * FUR_LN2_HI) - x_16) + (k_18 * FUR_LN2_LO));
+    vec3 z_1 = (r_15 * r_15);
+    vec3 _e20 = p_2;
+    p_2 = ((_e20 * r_15) + vec3(0.0013981999));
+    vec3 _e25 = p_2;
+    p_2 = ((_e25 * r_15) + vec3(0.008333452));
+    vec3 _e30 = p_2;
+    p_2 = ((_e30 * r_15) + vec3(0.041665796));
+    vec3 _e35 = p_2;
+    p_2 = ((_e35 * r_15) + vec3(0.16666666));
+    vec3 _e40 = p_2;
+    p_2 = ((_e40 * r_15) + vec3(0.5));
+    vec3 _e45 = p_2;
+    vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
+    return mix(ldexp(e, -(ivec3(k_18))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+}
+
 vec3 fur_erf(vec3 x_11) {
     bvec3 _e7 = fur_is_nan3_(x_11);
     vec3 a_10 = mix(min(abs(x_11), vec3(10.0)), vec3(0.0), _e7);
-    vec3 p_5 = ((((((((((((FUR_ERF_A6_ * a_10) + vec3(0.0002765672)) * a_10) + vec3(0.0001520143)) * a_10) + vec3(0.009270527)) * a_10) + vec3(0.04228201)) * a_10) + vec3(0.07052308)) * a_10) + vec3(1.0));
-    vec3 p2_ = (p_5 * p_5);
+    vec3 p_6 = ((((((((((((FUR_ERF_A6_ * a_10) + vec3(0.0002765672)) * a_10) + vec3(0.0001520143)) * a_10) + vec3(0.009270527)) * a_10) + vec3(0.04228201)) * a_10) + vec3(0.07052308)) * a_10) + vec3(1.0));
+    vec3 p2_ = (p_6 * p_6);
     vec3 p4_ = (p2_ * p2_);
     vec3 p8_ = (p4_ * p4_);
     vec3 e_1 = (vec3(1.0) - (vec3(1.0) / (p8_ * p8_)));

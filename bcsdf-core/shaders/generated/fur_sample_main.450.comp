@@ -99,11 +99,9 @@ const uint FUR_N_ABS_WORD = 9u;
 const uint FUR_SCALE_WORD = 10u;
 const uint FUR_ABS_SCALE_WORD = 39u;
 const float FUR_SIGMA_CA_MAX = 1000.0;
-const float FUR_ABS_SCALE_ROOT = 0.25;
+const float FUR_ROOT_RATE = 8.325476;
 const float FUR_ROOT_SHARE = 0.4;
 const float FUR_LOG2_E = 1.442695;
-const float FUR_LN2_HI = 0.6933594;
-const float FUR_LN2_LO = -0.00021219444;
 const uint FUR_CLOSURE_WORD = 27u;
 const uint FUR_DUAL_HEADER_WORDS = 20u;
 const uint FUR_DUAL_ABS_NODES = 16u;
@@ -131,6 +129,8 @@ const float FUR_DUAL_MIN_VARIANCE = 3e-6;
 const float FUR_DUAL_MIN_MASS = 0.05;
 const float FUR_DUAL_TINY = 1e-6;
 const float FUR_LN2_ = 0.6931472;
+const float FUR_LN2_HI = 0.6933594;
+const float FUR_LN2_LO = -0.00021219444;
 const float FUR_INV_SQRT_TAU = 0.3989423;
 const float FUR_FRAC_1_SQRT_2_ = 0.70710677;
 const float FUR_ERF_A1_ = 0.07052308;
@@ -184,25 +184,19 @@ bvec3 fur_is_nan3_(vec3 x_1) {
     return greaterThan((floatBitsToUint(x_1) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 fur_exp_neg(vec3 x_in) {
-    vec3 p = vec3(0.00019875693);
-    vec3 x_15 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_16 = roundEven((x_15 * FUR_LOG2_E));
-    vec3 r_13 = (((k_16 * FUR_LN2_HI) - x_15) + (k_16 * FUR_LN2_LO));
-    vec3 z = (r_13 * r_13);
-    vec3 _e20 = p;
-    p = ((_e20 * r_13) + vec3(0.0013981999));
-    vec3 _e25 = p;
-    p = ((_e25 * r_13) + vec3(0.008333452));
-    vec3 _e30 = p;
-    p = ((_e30 * r_13) + vec3(0.041665796));
-    vec3 _e35 = p;
-    p = ((_e35 * r_13) + vec3(0.16666666));
-    vec3 _e40 = p;
-    p = ((_e40 * r_13) + vec3(0.5));
-    vec3 _e45 = p;
-    vec3 e = (((_e45 * z) + r_13) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_16))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+vec3 fur_pow2_neg(vec3 y_in) {
+    bvec3 _e9 = fur_is_nan3_(y_in);
+    vec3 y_3 = mix(min(max(y_in, vec3(0.0)), vec3(125.0)), vec3(0.0), _e9);
+    vec3 k_16 = roundEven(y_3);
+    vec3 f_6 = (k_16 - y_3);
+    vec3 f2_ = (f_6 * f_6);
+    vec3 f4_ = (f2_ * f2_);
+    vec3 p01_ = ((1.5252734e-5 * f_6) + vec3(0.0001540353));
+    vec3 p23_ = ((0.0013333558 * f_6) + vec3(0.009618129));
+    vec3 p45_ = ((0.05550411 * f_6) + vec3(0.2402265));
+    vec3 p67_ = ((0.6931472 * f_6) + vec3(1.0));
+    vec3 p_4 = ((((p01_ * f2_) + p23_) * f4_) + ((p45_ * f2_) + p67_));
+    return ldexp(p_4, -(ivec3(k_16)));
 }
 
 FurColour fur_locate_colour(vec3 sigma_ca) {
@@ -212,19 +206,19 @@ FurColour fur_locate_colour(vec3 sigma_ca) {
     float scale = uintBitsToFloat(_e7);
     bvec3 _e17 = fur_is_nan3_(sigma_ca);
     vec3 s_1 = mix(min(max(sigma_ca, vec3(0.0)), vec3(1000.0)), vec3(0.0), _e17);
-    vec3 _e24 = fur_exp_neg(sqrt((s_1 / vec3(0.25))));
-    vec3 _e29 = fur_exp_neg((s_1 / vec3(scale)));
-    vec3 e_1 = ((FUR_ROOT_SHARE * _e24) + (0.6 * _e29));
-    vec3 x_16 = min((vec3(1.0) - e_1), vec3(1.0));
-    vec3 u_8 = clamp((x_16 * last_2), vec3(0.0), vec3(last_2));
+    vec3 _e23 = fur_pow2_neg(sqrt((s_1 * FUR_ROOT_RATE)));
+    vec3 _e30 = fur_pow2_neg(((s_1 / vec3(scale)) * FUR_LOG2_E));
+    vec3 e = ((FUR_ROOT_SHARE * _e23) + (0.6 * _e30));
+    vec3 x_15 = min((vec3(1.0) - e), vec3(1.0));
+    vec3 u_8 = clamp((x_15 * last_2), vec3(0.0), vec3(last_2));
     uvec3 k_17 = min(uvec3(u_8), uvec3((_e2 - 3u)));
     vec3 t_11 = (u_8 - vec3(k_17));
     vec3 w0_ = ((0.5 * (t_11 - vec3(1.0))) * (t_11 - vec3(2.0)));
     vec3 w1_ = (t_11 * (vec3(2.0) - t_11));
     vec3 w2_ = ((0.5 * t_11) * (t_11 - vec3(1.0)));
-    uint _e70 = fur_word(6u);
-    uint _e72 = fur_word(5u);
-    return FurColour((k_17 * (_e70 * _e72)), w0_, w1_, w2_);
+    uint _e71 = fur_word(6u);
+    uint _e73 = fur_word(5u);
+    return FurColour((k_17 * (_e71 * _e73)), w0_, w1_, w2_);
 }
 
 float fur_cos_within_half_pi(float x_2) {
@@ -232,28 +226,28 @@ float fur_cos_within_half_pi(float x_2) {
     float acc_1 = 2.7557319e-6;
     float a_7 = abs(x_2);
     if ((a_7 <= 0.7853982)) {
-        float y_3 = (a_7 * a_7);
+        float y_4 = (a_7 * a_7);
         float _e7 = acc;
-        acc = ((_e7 * y_3) + 2.4801588e-5);
+        acc = ((_e7 * y_4) + 2.4801588e-5);
         float _e11 = acc;
-        acc = ((_e11 * y_3) - 0.0013888889);
+        acc = ((_e11 * y_4) - 0.0013888889);
         float _e15 = acc;
-        acc = ((_e15 * y_3) + 0.041666668);
+        acc = ((_e15 * y_4) + 0.041666668);
         float _e19 = acc;
-        acc = ((_e19 * y_3) - 0.5);
+        acc = ((_e19 * y_4) - 0.5);
         float _e23 = acc;
-        return ((_e23 * y_3) + 1.0);
+        return ((_e23 * y_4) + 1.0);
     }
-    float r_14 = ((1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -4.371139e-8));
-    float y_4 = (r_14 * r_14);
+    float r_13 = ((1.5707964 - a_7) + ((a_7 > 4.0) ? 0.0 : -4.371139e-8));
+    float y_5 = (r_13 * r_13);
     float _e38 = acc_1;
-    acc_1 = ((_e38 * y_4) - 0.0001984127);
+    acc_1 = ((_e38 * y_5) - 0.0001984127);
     float _e42 = acc_1;
-    acc_1 = ((_e42 * y_4) + 0.008333334);
+    acc_1 = ((_e42 * y_5) + 0.008333334);
     float _e46 = acc_1;
-    acc_1 = ((_e46 * y_4) - 0.16666667);
+    acc_1 = ((_e46 * y_5) - 0.16666667);
     float _e50 = acc_1;
-    return (((_e50 * y_4) * r_14) + r_14);
+    return (((_e50 * y_5) * r_13) + r_13);
 }
 
 float fur_wrap_angle(float x_3) {
@@ -316,8 +310,8 @@ float fur_wrap_angle(float x_3) {
 }
 
 FurFamilies fur_zero() {
-    vec3 z_1 = vec3(0.0);
-    return FurFamilies(z_1, z_1, z_1, z_1, z_1);
+    vec3 z = vec3(0.0);
+    return FurFamilies(z, z, z, z, z);
 }
 
 bool fur_finite(float x_4) {
@@ -384,16 +378,16 @@ FurDensity fur_density(uint d) {
     uint _e49 = at;
     at = (_e49 + (12u * _e28));
     if ((d < 7u)) {
-        uint f_6 = (d - 3u);
+        uint f_7 = (d - 3u);
         uint _e57 = at;
-        return FurDensity((_e57 + (((4u * f_6) * _e4) * _e30)), _e30, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, f_6);
+        return FurDensity((_e57 + (((4u * f_7) * _e4) * _e30)), _e30, _e6, _e4, (FUR_PI / float((_e6 - 1u))), 8u, 1u, f_7);
     }
     uint _e71 = at;
     at = (_e71 + ((16u * _e4) * _e30));
     if ((d < 9u)) {
-        uint x_17 = (d - 7u);
+        uint x_16 = (d - 7u);
         uint _e80 = at;
-        return FurDensity((_e80 + (((4u * x_17) * _e10) * _e32)), _e32, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_17);
+        return FurDensity((_e80 + (((4u * x_16) * _e10) * _e32)), _e32, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_16);
     }
     uint _e94 = at;
     at = (_e94 + ((8u * _e10) * _e32));
@@ -600,7 +594,7 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in, vec3 sigm
             uint _e223 = c;
             vec3 tw = vec3(_e208.w0_[_e217], _e208.w1_[_e220], _e208.w2_[_e223]);
             float l_8[6] = float[6]((tw.x * v0_8), (tw.x * v2_), (tw.y * v0_8), (tw.y * v2_), (tw.z * v0_8), (tw.z * v2_));
-            float r_15[6] = float[6]((tw.x * v1_8), (tw.x * v3_), (tw.y * v1_8), (tw.y * v3_), (tw.z * v1_8), (tw.z * v3_));
+            float r_14[6] = float[6]((tw.x * v1_8), (tw.x * v3_), (tw.y * v1_8), (tw.y * v3_), (tw.z * v1_8), (tw.z * v3_));
             uint _e254 = c;
             uint h_3 = (n0_ + (4u * (_e208.plane[_e254] + j0_)));
             uint rows[6] = uint[6](h_3, (h_3 + (4u * _e10)), (h_3 + _e209), ((h_3 + _e209) + (4u * _e10)), (h_3 + (2u * _e209)), ((h_3 + (2u * _e209)) + (4u * _e10)));
@@ -623,7 +617,7 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in, vec3 sigm
                     left = (_e285 * l_8[0]);
                     uint _e292 = f;
                     float _e294 = fur_half(((rows[0] + 4u) + _e292));
-                    right = (_e294 * r_15[0]);
+                    right = (_e294 * r_14[0]);
                     i = 1u;
                     bool loop_init_6 = true;
                     while(true) {
@@ -649,7 +643,7 @@ FurLookups fur_lookups(float theta_i_1, float theta_r_2, float phi_in, vec3 sigm
                             uint _e318 = f;
                             float _e320 = fur_half(((rows[_e314] + 4u) + _e318));
                             uint _e321 = i;
-                            right = (_e313 + (_e320 * r_15[_e321]));
+                            right = (_e313 + (_e320 * r_14[_e321]));
                         }
                     }
                     uint _e329 = f;
@@ -746,23 +740,23 @@ float fur_asin(float x_5) {
     float ax_3 = min(abs(x_5), 1.0);
     float x2_ = (ax_3 * ax_3);
     float x4_ = (x2_ * x2_);
-    float p01_ = ((-0.001262491 * ax_3) + 0.00667009);
-    float p23_ = ((-0.017088126 * ax_3) + 0.03089188);
-    float p45_ = ((-0.050174303 * ax_3) + 0.08897899);
-    float p67_ = ((-0.2145988 * ax_3) + FUR_HALF_PI);
-    float poly = ((((p01_ * x2_) + p23_) * x4_) + ((p45_ * x2_) + p67_));
-    float r_16 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
-    return (((floatBitsToUint(x_5) & 2147483648u) != 0u) ? -(abs(r_16)) : abs(r_16));
+    float p01_1 = ((-0.001262491 * ax_3) + 0.00667009);
+    float p23_1 = ((-0.017088126 * ax_3) + 0.03089188);
+    float p45_1 = ((-0.050174303 * ax_3) + 0.08897899);
+    float p67_1 = ((-0.2145988 * ax_3) + FUR_HALF_PI);
+    float poly = ((((p01_1 * x2_) + p23_1) * x4_) + ((p45_1 * x2_) + p67_1));
+    float r_15 = (FUR_HALF_PI - (sqrt((1.0 - ax_3)) * poly));
+    return (((floatBitsToUint(x_5) & 2147483648u) != 0u) ? -(abs(r_15)) : abs(r_15));
 }
 
 float fur_atan_poly(float t_1) {
     float t2_ = (t_1 * t_1);
     float t4_ = (t2_ * t2_);
-    float p01_1 = ((0.0029202348 * t_1) + -0.016366187);
-    float p23_1 = ((0.043209206 * t_1) + -0.07552008);
-    float p45_1 = ((0.10665919 * t_1) + -0.14211038);
-    float p67_1 = ((0.19993772 * t_1) + -0.33333153);
-    return ((((p01_1 * t2_) + p23_1) * t4_) + ((p45_1 * t2_) + p67_1));
+    float p01_2 = ((0.0029202348 * t_1) + -0.016366187);
+    float p23_2 = ((0.043209206 * t_1) + -0.07552008);
+    float p45_2 = ((0.10665919 * t_1) + -0.14211038);
+    float p67_2 = ((0.19993772 * t_1) + -0.33333153);
+    return ((((p01_2 * t2_) + p23_2) * t4_) + ((p45_2 * t2_) + p67_2));
 }
 
 float fur_atan2_(float y_1, float x_6) {
@@ -834,9 +828,9 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float b_3 = dot(wr, un);
     float _e51 = fur_asin(clamp((a_9 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
-    float y_5 = dot(un, cross(wi, wr));
-    float x_18 = (dot(wi, wr) - (a_9 * b_3));
-    float _e64 = fur_atan2_(y_5, x_18);
+    float y_6 = dot(un, cross(wi, wr));
+    float x_17 = (dot(wi, wr) - (a_9 * b_3));
+    float _e64 = fur_atan2_(y_6, x_17);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -1295,8 +1289,8 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
         {
             float _e34 = d_4;
             float _e35 = fur_sliver_piece_mass(v0_7, v1_7, len_6, x0_1, pole_1, _e34);
-            float f_7 = (_e35 - t_6);
-            if ((f_7 > 0.0)) {
+            float f_8 = (_e35 - t_6);
+            if ((f_8 > 0.0)) {
                 float _e39 = d_4;
                 hi_1 = _e39;
             } else {
@@ -1312,7 +1306,7 @@ float fur_invert_sliver_piece(float v0_7, float v1_7, float len_6, float x0_1, f
             next_1 = (0.5 * (_e49 + _e50));
             if ((dens > 0.0)) {
                 float _e57 = d_4;
-                float n_3 = (_e57 - (f_7 / dens));
+                float n_3 = (_e57 - (f_8 / dens));
                 float _e60 = lo_2;
                 if ((n_3 >= _e60)) {
                     float _e64 = hi_1;
@@ -1625,9 +1619,9 @@ float fur_density_of(FurLookups l_3, float w_2, float cos_theta_i_1) {
         return 0.0;
     }
     float ms_1 = (l_3.ms[0] + (l_3.front * (l_3.ms[1] - l_3.ms[0])));
-    float p_4 = ((((l_3.m[0] * l_3.n0_[0]) + (l_3.m[1] * l_3.n0_[1])) + (l_3.m[2] * l_3.n0_[2])) + (ms_1 * l_3.n0_[3]));
+    float p_5 = ((((l_3.m[0] * l_3.n0_[0]) + (l_3.m[1] * l_3.n0_[1])) + (l_3.m[2] * l_3.n0_[2])) + (ms_1 * l_3.n0_[3]));
     float _e38 = fur_pole_keep(cos_theta_i_1);
-    float pg = (p_4 * _e38);
+    float pg = (p_5 * _e38);
     float _e44 = fur_positive(((pg / w_2) / max(cos_theta_i_1, 1e-6)));
     return _e44;
 }
@@ -1877,11 +1871,32 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
     return (_e30 * (vec3(1.5) - ((h_4 * _e31) * _e33)));
 }
 
+vec3 fur_exp_neg(vec3 x_in) {
+    vec3 p_2 = vec3(0.00019875693);
+    vec3 x_18 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_20 = roundEven((x_18 * FUR_LOG2_E));
+    vec3 r_16 = (((k_20 * FUR_LN2_HI) - x_18) + (k_20 * FUR_LN2_LO));
+    vec3 z_1 = (r_16 * r_16);
+    vec3 _e20 = p_2;
+    p_2 = ((_e20 * r_16) + vec3(0.0013981999));
+    vec3 _e25 = p_2;
+    p_2 = ((_e25 * r_16) + vec3(0.008333452));
+    vec3 _e30 = p_2;
+    p_2 = ((_e30 * r_16) + vec3(0.041665796));
+    vec3 _e35 = p_2;
+    p_2 = ((_e35 * r_16) + vec3(0.16666666));
+    vec3 _e40 = p_2;
+    p_2 = ((_e40 * r_16) + vec3(0.5));
+    vec3 _e45 = p_2;
+    vec3 e_1 = (((_e45 * z_1) + r_16) + vec3(1.0));
+    return mix(ldexp(e_1, -(ivec3(k_20))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+}
+
 vec3 fur_erf(vec3 x_11) {
     bvec3 _e7 = fur_is_nan3_(x_11);
     vec3 a_11 = mix(min(abs(x_11), vec3(10.0)), vec3(0.0), _e7);
-    vec3 p_5 = ((((((((((((FUR_ERF_A6_ * a_11) + vec3(0.0002765672)) * a_11) + vec3(0.0001520143)) * a_11) + vec3(0.009270527)) * a_11) + vec3(0.04228201)) * a_11) + vec3(0.07052308)) * a_11) + vec3(1.0));
-    vec3 p2_ = (p_5 * p_5);
+    vec3 p_6 = ((((((((((((FUR_ERF_A6_ * a_11) + vec3(0.0002765672)) * a_11) + vec3(0.0001520143)) * a_11) + vec3(0.009270527)) * a_11) + vec3(0.04228201)) * a_11) + vec3(0.07052308)) * a_11) + vec3(1.0));
+    vec3 p2_ = (p_6 * p_6);
     vec3 p4_ = (p2_ * p2_);
     vec3 p8_ = (p4_ * p4_);
     vec3 e_2 = (vec3(1.0) - (vec3(1.0) / (p8_ * p8_)));

@@ -19,7 +19,7 @@
 use super::dispatch::KernelOp;
 #[cfg(target_arch = "x86_64")]
 use super::texels::Avx2F16c;
-use super::texels::NKernel;
+use super::texels::{axis_place, ColourAt, NKernel};
 use super::{BakedBcsdf, Place};
 use crate::absorption::Absorption;
 use crate::lut::absorption_coordinate;
@@ -294,25 +294,36 @@ impl<M: Math> BakedBcsdf<'_, M> {
         for (k, ((&a, &b), &c)) in a.iter().zip(b).zip(c).enumerate() {
             places.set(k, self.place(kernel, a, b, c));
         }
-        // The colours' coordinates on the absorption axis, channel by channel over the
-        // chunk (the lane loop of `locate_colour`, 8 queries per AVX2 instruction).
-        let mut coord = [[0.0f32; CHUNK]; 3];
+        // The colours' places on the absorption axis (`locate_colour`'s lane loops), channel
+        // by channel over the chunk, 8 queries per AVX2 instruction: the coordinate, then
+        // the first node and the three weights.
+        let mut node = [[0u32; CHUNK]; 3];
+        let mut weight = [[[0.0f32; CHUNK]; 3]; 3];
         if let Some(colours) = colours {
             let mut sigma = [[0.0f32; CHUNK]; 3];
             for (k, a) in colours.iter().take(CHUNK).enumerate() {
                 let [r, g, b] = a.sigma().0;
                 (sigma[0][k], sigma[1][k], sigma[2][k]) = (r, g, b);
             }
-            for (x, s) in coord.iter_mut().zip(&sigma) {
-                for (x, &s) in x.iter_mut().zip(s) {
-                    *x = absorption_coordinate(s, self.abs_scale);
+            for c in 0..3 {
+                for k in 0..CHUNK {
+                    let x = absorption_coordinate(sigma[c][k], self.abs_scale);
+                    let (n, w) = axis_place(x, self.abs_last, self.abs_first_of_last);
+                    node[c][k] = n;
+                    for j in 0..3 {
+                        weight[c][j][k] = w[j];
+                    }
                 }
             }
         }
         // Pass 3: the colour's planes and weights, texel reads and the family sum.
         for (k, (o, ok)) in out.iter_mut().zip(valid).enumerate() {
             let colour = match colours {
-                Some(_) => self.colour_at_coordinates([coord[0][k], coord[1][k], coord[2][k], 0.0]),
+                Some(_) => ColourAt::from_nodes(
+                    [node[0][k], node[1][k], node[2][k]],
+                    |c, j| weight[c][j][k],
+                    self.plane,
+                ),
                 None => self.default_colour(),
             };
             *o = if ok {

@@ -122,7 +122,8 @@ pub struct BakedBcsdf<'a, M: Math = Libm> {
     pub(crate) energy: bool,
     /// The absorption axis: n_abs − 1 (as f32) and the texels of one plane of table `N`.
     abs_last: f32,
-    abs_nodes: usize,
+    /// n_abs − 3 (as f32): the last first node of a channel's three.
+    abs_first_of_last: f32,
     abs_scale: f32,
     plane: usize,
     /// The colour the LUT's own parameters give (the preset's σ_ca), located on the
@@ -245,7 +246,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let res = header.res;
         let plane = res.n_plane();
         let abs_last = (res.n_abs - 1) as f32;
-        let abs_nodes = res.n_abs as usize;
+        let abs_first_of_last = texels::first_of_last(res.n_abs as usize);
         let abs_scale = header.absorption_scale();
         let mut tables: [&'a [u8]; TABLE_COUNT] = [&[]; TABLE_COUNT];
         let mut unbias = [0.0; TABLE_COUNT];
@@ -275,10 +276,16 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             norm: Axis::new(-PI / 2.0, 1.0 / PI, res.n_norm() as u32),
             energy: params.closure() == Closure::Energy,
             abs_last,
-            abs_nodes,
+            abs_first_of_last,
             abs_scale,
             plane,
-            colour: locate_colour(params.sigma_ca(), abs_scale, abs_last, abs_nodes, plane),
+            colour: locate_colour(
+                params.sigma_ca(),
+                abs_scale,
+                abs_last,
+                abs_first_of_last,
+                plane,
+            ),
             _math: PhantomData,
         })
     }
@@ -293,17 +300,9 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             sigma,
             self.abs_scale,
             self.abs_last,
-            self.abs_nodes,
+            self.abs_first_of_last,
             self.plane,
         )
-    }
-
-    /// The colour whose channels sit at absorption coordinates `x[0..3]`
-    /// ([`lut::absorption_coordinate`]; lane 3 is ignored), located as
-    /// [`BakedBcsdf::locate_colour`] does.
-    #[inline(always)]
-    pub(crate) fn colour_at_coordinates(&self, x: [f32; 4]) -> ColourAt {
-        ColourAt::from_coordinates(x, self.abs_last, self.abs_nodes, self.plane)
     }
 
     /// The preset's own colour (the σ_ca the LUT's parameters give), located: what

@@ -60,7 +60,7 @@ pub(crate) fn locate_colour(
     sigma: Rgb,
     scale: f32,
     last: f32,
-    nodes: usize,
+    first_of_last: f32,
     plane: usize,
 ) -> ColourAt {
     let [r, g, b] = sigma.0;
@@ -69,47 +69,87 @@ pub(crate) fn locate_colour(
     for c in 0..4 {
         x[c] = absorption_coordinate(lanes[c], scale);
     }
-    ColourAt::from_coordinates(x, last, nodes, plane)
+    ColourAt::from_coordinates(x, last, first_of_last, plane)
 }
 
 impl ColourAt {
     /// The colour whose channels 0, 1, 2 sit at absorption coordinates `x[0..3]`
-    /// ([`absorption_coordinate`], in [0, 1]; lane 3 is ignored) on an axis of `nodes` nodes
-    /// (3 ..= 8192, `last` = n − 1) whose planes are `plane` texels apart: per channel
-    /// u = x·(n − 1), the first of three nodes k = min(⌊u⌋, n − 3) and the quadratic
-    /// Lagrange weights of nodes k, k + 1, k + 2 at t = u − k: (t − 1)(t − 2)/2, t(2 − t),
-    /// t(t − 1)/2 (docs/lut.md "The absorption axis"). The interpolant passes through every
-    /// node, so it is continuous where k changes. Lane loops, without branches: 4-wide SIMD.
+    /// ([`absorption_coordinate`], in [0, 1]; lane 3 is ignored) on an axis of n nodes
+    /// (`last` = n − 1, `first_of_last` = n − 3, [`first_of_last`]) whose planes are `plane`
+    /// texels apart: each channel placed by [`axis_place`]. A lane loop without branches: 4-wide SIMD.
     #[inline(always)]
-    pub(crate) fn from_coordinates(x: [f32; 4], last: f32, nodes: usize, plane: usize) -> ColourAt {
-        // nodes ∈ [3, 8192] (`lut::validate`), so this is ≥ 0 and the conversions are exact.
-        let first_of_last = nodes.saturating_sub(3) as i32;
-        let mut k = [0i32; 4];
-        let mut t = [0.0f32; 4];
-        for c in 0..4 {
-            // `max` first: NaN becomes 0 (absorption_coordinate never gives NaN anyway).
-            #[allow(clippy::manual_clamp)]
-            let u = (x[c] * last).max(0.0).min(last);
-            // SAFETY: u ∈ [0, n − 1] and never NaN (`max` maps NaN to 0), and the axis has at
-            // most MAX_NODES = 8192 nodes, so the truncation to i32 is in range; unchecked,
-            // it is one instruction instead of a saturating sequence (as `Axis::locate`).
-            let ki = unsafe { u.to_int_unchecked::<i32>() }.min(first_of_last);
-            k[c] = ki;
-            t[c] = u - ki as f32;
-        }
+    pub(crate) fn from_coordinates(
+        x: [f32; 4],
+        last: f32,
+        first_of_last: f32,
+        plane: usize,
+    ) -> ColourAt {
+        let mut k = [0u32; 4];
         let mut w = [[0.0f32; 4]; 3];
         for c in 0..4 {
-            w[0][c] = 0.5 * (t[c] - 1.0) * (t[c] - 2.0);
-            w[1][c] = t[c] * (2.0 - t[c]);
-            w[2][c] = 0.5 * t[c] * (t[c] - 1.0);
+            let (kc, wc) = axis_place(x[c], last, first_of_last);
+            k[c] = kc;
+            for j in 0..3 {
+                w[j][c] = wc[j];
+            }
         }
+        ColourAt::from_nodes([k[0], k[1], k[2]], |c, j| w[j][c], plane)
+    }
+
+    /// The colour whose channel c reads planes `k[c]`, `k[c]` + 1, `k[c]` + 2 with weights
+    /// `w(c, 0..3)` ([`axis_place`]), planes `plane` texels apart.
+    #[inline(always)]
+    pub(crate) fn from_nodes(
+        k: [u32; 3],
+        w: impl Fn(usize, usize) -> f32,
+        plane: usize,
+    ) -> ColourAt {
         ColourAt {
-            // k ∈ [0, n − 3]: non-negative.
-            plane: core::array::from_fn(|c| k[c] as u32 as usize * plane),
-            w: core::array::from_fn(|c| [w[0][c], w[1][c], w[2][c]]),
+            plane: core::array::from_fn(|c| k[c] as usize * plane),
+            w: core::array::from_fn(|c| [w(c, 0), w(c, 1), w(c, 2)]),
             stride: plane,
         }
     }
+}
+
+/// n − 3 of an absorption axis of `nodes` nodes, the last first node of a channel's three
+/// (as f32, exact: `nodes` ∈ [3, 8192], `lut::validate`).
+#[inline(always)]
+pub(crate) fn first_of_last(nodes: usize) -> f32 {
+    nodes.saturating_sub(3) as f32
+}
+
+/// One channel's place on the absorption axis (docs/lut.md "The absorption axis"): at
+/// coordinate `x` ([`absorption_coordinate`], in [0, 1]) on an axis with `last` = n − 1 and
+/// `first_of_last` = n − 3 ([`first_of_last`]), u = x·(n − 1), the first of three nodes
+/// k = min(⌊u⌋, n − 3) and the quadratic Lagrange weights of nodes k, k + 1, k + 2 at
+/// t = u − k: (t − 1)(t − 2)/2, t(2 − t), t(t − 1)/2. The interpolant passes through every
+/// node, so it is continuous where k changes. Branch-free, so that a lane loop over channels
+/// or queries vectorises ([`ColourAt::from_coordinates`], the batch).
+#[inline(always)]
+pub(crate) fn axis_place(x: f32, last: f32, first_of_last: f32) -> (u32, [f32; 3]) {
+    // The clamps as compare-and-select (`minps`/`maxps` per lane; `f32::min` would add a
+    // NaN test per clamp): NaN fails `u > 0` and becomes 0.
+    let u = x * last;
+    let u = if u > 0.0 { u } else { 0.0 };
+    let u = if u < last { u } else { last };
+    // min(⌊u⌋, n − 3) = ⌊min(u, n − 3)⌋: the clamp in f32, so that a lane loop's
+    // truncations are one SSE2 instruction (an i32 `min` is SSE4.1).
+    let lower = if u < first_of_last { u } else { first_of_last };
+    // SAFETY: `lower` ∈ [0, n − 3] and never NaN (the first select maps NaN to 0), and the
+    // axis has at most MAX_NODES = 8192 nodes, so the truncation to i32 is in range;
+    // unchecked, it is one instruction instead of a saturating sequence (as `Axis::locate`).
+    let k = unsafe { lower.to_int_unchecked::<i32>() };
+    let t = u - k as f32;
+    // k ∈ [0, n − 3]: non-negative.
+    (
+        k as u32,
+        [
+            0.5 * (t - 1.0) * (t - 2.0),
+            t * (2.0 - t),
+            0.5 * t * (t - 1.0),
+        ],
+    )
 }
 
 /// [`n_bilinear`]: four lanes (SSE2 where the target has it, portable arrays elsewhere).

@@ -26,6 +26,11 @@ pub fn absorption_scale(kappa: f32) -> f32 {
 /// The share of the absorption axis's nodes given to its square-root term.
 pub const ROOT_SHARE: f32 = 0.4;
 
+/// log₂(e)²/s_q: e^(−√(σ/s_q)) = 2^(−√(σ·ROOT_RATE)) ([`ABSORPTION_SCALE_ROOT`]); the
+/// shader's `FUR_ROOT_RATE`.
+pub const ROOT_RATE: f32 =
+    core::f32::consts::LOG2_E * core::f32::consts::LOG2_E / ABSORPTION_SCALE_ROOT;
+
 /// The position of σ_ca on an absorption axis of scale s₀ = `scale` ([`absorption_scale`]),
 /// in [0, 1]: x = 1 − r·e^(−√(σ/s_q)) − (1 − r)·e^(−σ/s₀), r = [`ROOT_SHARE`] (0.4),
 /// s_q = [`ABSORPTION_SCALE_ROOT`] (docs/lut.md "The absorption axis"): the square-root term
@@ -34,18 +39,19 @@ pub const ROOT_SHARE: f32 = 0.4;
 /// Node k of n lies at x = k/(n − 1)
 /// ([`absorption_node`]); the last node, x = 1, is σ = [`SIGMA_CA_MAX`] (the fully
 /// absorbing limit: every σ above about 110 s₀ maps to 1 in f32). NaN and negative σ give 0
-/// (the callers pass validated [`crate::Absorption`]s). Branch-free
-/// ([`crate::math::exp_neg_saturating`], [`crate::math::sqrt`]), so a lane loop over
-/// channels or queries vectorises (`baked::texels::locate_colour`, the batch).
+/// (the callers pass validated [`crate::Absorption`]s). The exponentials are powers of two,
+/// e^(−√(σ/s_q)) = 2^(−√(σ·[`ROOT_RATE`])) and e^(−σ/s₀) = 2^(−(σ/s₀)·log₂e), by
+/// [`crate::math::pow2_neg`] (a short dependency chain: the coordinate lies on the path from
+/// a query's colour to its texel reads). Branch-free, so a lane loop over channels or queries
+/// vectorises (`baked::texels::locate_colour`, the batch).
 #[inline(always)]
 #[must_use]
 pub fn absorption_coordinate(sigma: f32, scale: f32) -> f32 {
     // `max` first maps NaN to 0 (`clamp` would keep it).
     #[allow(clippy::manual_clamp)]
     let s = sigma.max(0.0).min(SIGMA_CA_MAX);
-    let e = ROOT_SHARE
-        * crate::math::exp_neg_saturating(crate::math::sqrt(s / ABSORPTION_SCALE_ROOT))
-        + (1.0 - ROOT_SHARE) * crate::math::exp_neg_saturating(s / scale);
+    let e = ROOT_SHARE * crate::math::pow2_neg(crate::math::sqrt(s * ROOT_RATE))
+        + (1.0 - ROOT_SHARE) * crate::math::pow2_neg(s / scale * core::f32::consts::LOG2_E);
     (1.0 - e).min(1.0)
 }
 

@@ -97,7 +97,7 @@ pub use crate::absorption::SIGMA_CA_MAX;
 mod axis;
 pub use axis::{
     absorption_coordinate, absorption_node, absorption_scale, ABSORPTION_SCALE_HAIR,
-    ABSORPTION_SCALE_ROOT, MIN_ABSORPTION_NODES, ROOT_SHARE,
+    ABSORPTION_SCALE_ROOT, MIN_ABSORPTION_NODES, ROOT_RATE, ROOT_SHARE,
 };
 
 /// Largest node count accepted on any axis.

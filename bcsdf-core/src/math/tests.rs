@@ -11,6 +11,28 @@ fn ulps(got: f32, want: f64) -> f64 {
 }
 
 #[test]
+fn pow2_neg_is_within_two_ulp_and_safe_outside() {
+    // Every 64th float in [0, 125] plus the ends: within 2 ulp of 2^−y.
+    let mut worst = 0.0f64;
+    let (lo, hi) = (0.0f32.to_bits(), 125.0f32.to_bits());
+    for bits in (lo..=hi).step_by(64).chain([hi]) {
+        let y = f32::from_bits(bits);
+        worst = worst.max(ulps(pow2_neg(y), libm::exp2(-(y as f64))));
+    }
+    std::eprintln!("pow2_neg: worst {worst:.2} ulp");
+    assert!(worst <= 2.0, "worst {worst} ulp");
+    // Exact at the integers (f = 0, p = 1).
+    for k in 0..=125 {
+        assert_eq!(pow2_neg(k as f32), libm::exp2f(-(k as f32)), "y = {k}");
+    }
+    // Clamped: above 125 the value at 125, NaN and negatives the value at 0.
+    assert_eq!(pow2_neg(1e30), pow2_neg(125.0));
+    assert_eq!(pow2_neg(f32::INFINITY), pow2_neg(125.0));
+    assert_eq!(pow2_neg(f32::NAN), 1.0);
+    assert_eq!(pow2_neg(-3.0), 1.0);
+}
+
+#[test]
 fn exp_neg_polynomial_is_within_one_ulp() {
     // Every 256th float in [0, 87] plus the ends; the result is normal there.
     let mut worst = 0.0f64;
@@ -390,6 +412,17 @@ fn the_shader_twins_use_the_same_coefficients() {
         .filter(|v| *v > 0.0 && *v < 1.0)
         .collect();
     assert_eq!(poly, EXP_NEG_POLY, "fur_exp_neg's literals {exp:?}");
+    // fur_pow2_neg's literals: the clamp bounds 0.0 and 125.0, then the Taylor
+    // coefficients from the highest degree (the constant 1.0 last).
+    let pow2 = wgsl_literals("fur_pow2_neg");
+    assert_eq!(
+        pow2[..3],
+        [0.0, 125.0, 0.0],
+        "fur_pow2_neg's literals {pow2:?}"
+    );
+    assert_eq!(pow2[3..], POW2_TAYLOR, "fur_pow2_neg's literals {pow2:?}");
+    assert_eq!(wgsl_const("FUR_ROOT_RATE"), crate::lut::ROOT_RATE);
+    assert_eq!(wgsl_const("FUR_ROOT_SHARE"), crate::lut::ROOT_SHARE);
     for (k, a) in ERF_A.iter().enumerate() {
         assert_eq!(
             wgsl_const(&std::format!("FUR_ERF_A{}", k + 1)),

@@ -1,7 +1,8 @@
 //! The baked sampler is perfect importance sampling for grey fibers (docs/model.md §10,
 //! "The pole slivers"): every preset made lossless (σ_ca = σ_ma = 0, so the three channels are
-//! equal), baked (profiles at 2 % of the default budget, cached), in both closures, at fixed
-//! θ_r ∈ {−70°, −30°, 0°, 45°, 80°, 85°, 89°}, 4 000 samples each:
+//! equal), baked (profiles at 2 % of the default budget, cached;
+//! `fur_tests::LOSSLESS_RESOLUTION`), in both closures, at fixed θ_r ∈ {−70°, −30°, 0°, 45°,
+//! 80°, 85°, 89°}, 4 000 samples each:
 //!
 //! - the weights S·cos θ_i/pdf are one constant to 1e-3, samples in the pole slivers (within
 //!   `POLE_SLIVER` of θ_i = ±90°, where S's 1/max(cos²θ_i, 10⁻⁴) holds S·cos²θ_i below M·N)
@@ -16,7 +17,6 @@
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bake::tables;
 use bcsdf_core::baked::BakedBcsdf;
-use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::model::POLE_SLIVER;
 use bcsdf_core::rng::{cell_stream, Pcg32};
@@ -46,7 +46,7 @@ fn bake(input: &FurParamsInput) -> Vec<u8> {
         ..ProfileOptions::default()
     };
     let model = build_model(params, &opts).unwrap().0;
-    tables::bake(&model, input, LutResolution::DEFAULT)
+    tables::bake(&model, input, fur_tests::LOSSLESS_RESOLUTION)
 }
 
 /// ρ(θ_r) = ∫ S·cos²θ_i dθ_i dφ of the LUT, first channel: midpoint rule, 1 024 φ cells and

@@ -715,7 +715,10 @@ fn frame_uniform(s: &Strands, settings: &Settings) -> [f32; FRAME_BYTES / 4] {
             settings.density[0],
             settings.density[1],
             settings.shadow_bias,
-            0.0,
+            match settings.output {
+                crate::Output::Radiance => 0.0,
+                crate::Output::Counts => 1.0,
+            },
         ],
     ];
     for (k, r) in rows.iter().enumerate() {

@@ -91,6 +91,18 @@ pub struct Settings {
     pub shadow_bias: f32,
     /// The dual-scattering density factors d_f, d_b (docs/model.md §13).
     pub density: [f32; 2],
+    /// What the fur fragments write.
+    pub output: Output,
+}
+
+/// What the fur fragments write into the image's RGB.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Output {
+    /// Radiance (the image).
+    Radiance,
+    /// The deep opacity map's fiber counts at the fragment: between it and the key light (R),
+    /// below it (G), along the whole light ray (B); the tests read them.
+    Counts,
 }
 
 /// The largest image side and light-map side accepted (the adapter may allow less).
@@ -109,6 +121,7 @@ impl Settings {
             bias_radii: 1.0,
             shadow_bias: 0.01,
             density: [1.0, 1.0],
+            output: Output::Radiance,
         }
     }
 

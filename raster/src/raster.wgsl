@@ -34,7 +34,8 @@ struct RasFrame {
     // xyz: the ends of deep opacity layers 0, 1, 2 behind the first fiber (world units; the
     // last layer is open); w: the depth bias of a fur fragment, in fiber radii.
     dom: vec4<f32>,
-    // x, y: the density factors d_f, d_b; z: the surfaces' shadow bias (world units).
+    // x, y: the density factors d_f, d_b; z: the surfaces' shadow bias (world units); w: 1 to
+    // write the fiber counts (n, m, total) instead of the fur's radiance.
     dual: vec4<f32>,
 }
 
@@ -138,22 +139,27 @@ struct RasLight {
     above: f32,
     // Every fiber the map holds along the light ray (in front of the first surface).
     total: f32,
+    // Where the point lies within its layer (0 at the front, 1 at the back).
+    within: f32,
 }
 
 // Fibers in front of a point `behind` world units past the texel's first fiber: whole layers
 // in front of it plus the layer it lies in, linearly over the layer's depth (Yuksel and
 // Keyser 2008); the open last layer is taken as deep as the one before it.
-fn ras_layered(counts: vec4<f32>, behind: f32) -> f32 {
+fn ras_layered(counts: vec4<f32>, behind: f32) -> vec2<f32> {
     let e = ras.dom.xyz;
     let starts = vec4<f32>(0.0, e.x, e.y, e.z);
     let depths = vec4<f32>(e.x, e.y - e.x, e.z - e.y, e.z - e.y);
     let f = clamp((vec4<f32>(behind) - starts) / depths, vec4<f32>(0.0), vec4<f32>(1.0));
-    return dot(counts, f);
+    // The fraction within the point's own layer: the last one below 1 (1 past the last).
+    let partial = select(vec4<f32>(0.0), f, f < vec4<f32>(1.0));
+    let within = select(max(max(partial.x, partial.y), max(partial.z, partial.w)), 1.0, f.w >= 1.0);
+    return vec2<f32>(dot(counts, f), within);
 }
 
 // The key light at world point `p`, `bias` world units toward the light for the fiber count.
 fn ras_light_at(p: vec3<f32>, bias: f32) -> RasLight {
-    var out = RasLight(1.0, 0.0, 0.0);
+    var out = RasLight(1.0, 0.0, 0.0, 0.0);
     let c = ras.light_proj * vec4<f32>(p, 1.0);
     let uv = vec2<f32>(0.5 * c.x + 0.5, 0.5 - 0.5 * c.y);
     if (any(uv < vec2<f32>(0.0)) || any(uv >= vec2<f32>(1.0)) || c.z < 0.0) {
@@ -168,7 +174,9 @@ fn ras_light_at(p: vec3<f32>, bias: f32) -> RasLight {
     let counts = textureLoad(ras_layers, texel, 0);
     out.total = dot(counts, vec4<f32>(1.0));
     let behind = (c.z - textureLoad(ras_first, texel, 0)) * ras.light_axis.w - bias;
-    out.above = ras_layered(counts, behind);
+    let layered = ras_layered(counts, behind);
+    out.above = layered.x;
+    out.within = layered.y;
     return out;
 }
 
@@ -254,11 +262,19 @@ fn ras_fiber_shade(in: RasFiberOut) -> @location(0) vec4<f32> {
     let t = normalize(in.tangent);
     let wr = normalize(ras.eye.xyz - in.world);
     let wi = ras.light_axis.xyz;
-    let bias = ras.dom.w * in.radius;
-    let l = ras_light_at(in.world, bias);
+    var l = ras_light_at(in.world, ras.dom.w * in.radius);
+    // The fragment's own fiber is in the map too, as the share of a texel it covers
+    // (min(1, 2r/texel)), spread over its layer: the layered count holds `within` of it,
+    // which belongs to neither n nor m.
+    let own = min(1.0, 2.0 * in.radius / ras.sky.w);
+    let counted = l.above;
+    l.above = max(counted - own * l.within, 0.0);
+    let below = max(l.total - counted - own * (1.0 - l.within), 0.0);
     var rgb = vec3<f32>(0.0);
+    if (ras.dual.w > 0.5) {
+        return vec4<f32>(l.above, below, l.total, 1.0);
+    }
     if (l.lit > 0.0) {
-        let below = max(l.total - ras_light_at(in.world, -bias).above, 0.0);
         let s = fur_eval_far_dirs(wi, wr, t, in.colour);
         let d = fur_eval_dual_dirs(wi, wr, t, l.above, below, ras.dual.x, ras.dual.y, in.colour);
         let ct = dot(wi, t);

@@ -21,11 +21,11 @@ use render::scene::{HitKind, Scene};
 use render::{scenes, SceneKind, SceneOptions};
 
 /// Largest relative difference of the mean counts (raster against exact).
-const MEAN_COUNT: f64 = 0.2;
+const MEAN_COUNT: f64 = 0.05;
 
 /// Smallest correlation of the mean counts per block of [`BLOCK`] × [`BLOCK`] pixels (a
 /// pixel's count is one ray's integer against a texel's mean; blocks average both).
-const CORRELATION: f64 = 0.8;
+const CORRELATION: f64 = 0.7;
 
 /// The side of the blocks of the correlation, in pixels.
 const BLOCK: u32 = 8;

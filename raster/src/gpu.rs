@@ -327,7 +327,9 @@ impl Raster {
             .decode(dual)
             .map_err(|e| RasterError::Input(format!("the dual-scattering tables: {e}")))?;
         if albedo.len() < 2 {
-            return Err(RasterError::Input("the albedo table needs two nodes".into()));
+            return Err(RasterError::Input(
+                "the albedo table needs two nodes".into(),
+            ));
         }
         let limit = self.device.limits().max_texture_dimension_2d;
         for (what, v) in [
@@ -362,7 +364,11 @@ impl Raster {
         if tri.is_empty() {
             tri.push([[0.0; 3]; 3]);
         }
-        let triangles = buffer("surfaces", bytemuck::cast_slice(&tri), wgpu::BufferUsages::VERTEX);
+        let triangles = buffer(
+            "surfaces",
+            bytemuck::cast_slice(&tri),
+            wgpu::BufferUsages::VERTEX,
+        );
         let uniform = buffer(
             "frame",
             bytemuck::cast_slice(&frame_uniform(strands, settings)),

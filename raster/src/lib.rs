@@ -275,7 +275,9 @@ impl Strands {
         let mut floor = None;
         for s in &scene.surfaces {
             match s.shape {
-                Shape::Sphere { center, radius } => sphere(center, radius, s.albedo, &mut triangles),
+                Shape::Sphere { center, radius } => {
+                    sphere(center, radius, s.albedo, &mut triangles)
+                }
                 Shape::Square { center, half } => {
                     let h = half.min(ENDLESS);
                     let c = |dx: f32, dz: f32| {
@@ -439,8 +441,8 @@ pub fn albedo_table<B: Bcsdf>(bcsdf: &B) -> Vec<[f32; 4]> {
                 for j in 0..STRATA {
                     for l in 0..STRATA {
                         if let Some(s) = bcsdf.sample(theta_r, [u(i), u(j), u(l)]) {
-                            for c in 0..3 {
-                                sum[c] += f64::from(s.weight[c]);
+                            for (acc, w) in sum.iter_mut().zip(s.weight.0) {
+                                *acc += f64::from(w);
                             }
                         }
                     }

@@ -185,13 +185,17 @@ fn load(args: &Args) -> Result<(String, Vec<u8>, Vec<u8>), Failure> {
             bake::tables::bake(&model, &params, LutResolution::DEFAULT),
         )
     };
-    let baked = BakedBcsdf::from_bytes(&blob).map_err(|e| other(format!("the LUT baked in memory: {e}")))?;
+    let baked = BakedBcsdf::from_bytes(&blob)
+        .map_err(|e| other(format!("the LUT baked in memory: {e}")))?;
     let dual = bake::pipeline::dual_blob(&blob, &baked).to_vec();
     Ok((name, blob, dual))
 }
 
 fn run(args: &Args) -> Result<(), Failure> {
-    let kind: SceneKind = args.scene.parse().map_err(|e| input(format!("--scene: {e}")))?;
+    let kind: SceneKind = args
+        .scene
+        .parse()
+        .map_err(|e| input(format!("--scene: {e}")))?;
     if kind == SceneKind::Furnace {
         return Err(input(
             "--scene furnace has no key light to cast the deep opacity map (expected ball or patch)",
@@ -229,14 +233,17 @@ fn run(args: &Args) -> Result<(), Failure> {
         seed: args.seed,
         aspect: args.width as f32 / args.height as f32,
     });
-    let strands = Strands::from_scene(&scene, colour.sigma().0, args.width, args.height)
-        .map_err(input)?;
+    let strands =
+        Strands::from_scene(&scene, colour.sigma().0, args.width, args.height).map_err(input)?;
     let albedo = albedo_table(&baked);
     let gpu = Raster::new().map_err(other)?;
     let frames = args.bench.unwrap_or(1);
     let mut all: Vec<Frame> = Vec::new();
     for _ in 0..frames {
-        all.push(gpu.draw(&strands, &lut, &dual, &albedo, &settings).map_err(input)?);
+        all.push(
+            gpu.draw(&strands, &lut, &dual, &albedo, &settings)
+                .map_err(input)?,
+        );
     }
     let frame = all.pop().ok_or_else(|| other("no frame drawn"))?;
     all.push(frame.clone());
@@ -270,9 +277,9 @@ fn run(args: &Args) -> Result<(), Failure> {
         "sigma_ca": colour.sigma().0,
         "settings": {
             "map_size": settings.map_size,
-            "layer_ends": settings.layer_ends,
+            "layer_ends": settings.layer_ends.map(|v| (f64::from(v) * 1e6).round() / 1e6),
             "bias_radii": settings.bias_radii,
-            "shadow_bias": settings.shadow_bias,
+            "shadow_bias": (f64::from(settings.shadow_bias) * 1e6).round() / 1e6,
             "d_f": settings.density[0],
             "d_b": settings.density[1],
             "msaa": 4,
@@ -344,12 +351,19 @@ fn judge(
         progress: false,
         ..render::Settings::new(args.width, args.height, spp)
     };
-    settings.validate().map_err(|e| input(format!("--compare: {e}")))?;
+    settings
+        .validate()
+        .map_err(|e| input(format!("--compare: {e}")))?;
     let mut lut = Box::new(DualLut::EMPTY);
     lut.decode(dual).map_err(other)?;
     let t = Instant::now();
-    let path = integrator::render_method(scene, &render::scatter::One(baked), &settings, &Method::Path)
-        .map_err(other)?;
+    let path = integrator::render_method(
+        scene,
+        &render::scatter::One(baked),
+        &settings,
+        &Method::Path,
+    )
+    .map_err(other)?;
     let path_s = t.elapsed().as_secs_f64();
     let t = Instant::now();
     let dual_r = integrator::render_method(

@@ -145,7 +145,11 @@ fn deep_opacity_counts_follow_the_fibers_along_the_light() {
             }
         }
     }
-    assert!(pairs.len() > 1000, "{} fur pixels lit by the key", pairs.len());
+    assert!(
+        pairs.len() > 1000,
+        "{} fur pixels lit by the key",
+        pairs.len()
+    );
     let n = pairs.len() as f64;
     let ma = pairs.iter().map(|p| p.2).sum::<f64>() / n;
     let me = pairs.iter().map(|p| p.3).sum::<f64>() / n;
@@ -166,8 +170,16 @@ fn deep_opacity_counts_follow_the_fibers_along_the_light() {
         blocks.iter().map(|b| b.1).sum::<f64>() / k,
     );
     let cov = blocks.iter().map(|b| (b.0 - ba) * (b.1 - be)).sum::<f64>();
-    let sa = blocks.iter().map(|b| (b.0 - ba).powi(2)).sum::<f64>().sqrt();
-    let se = blocks.iter().map(|b| (b.1 - be).powi(2)).sum::<f64>().sqrt();
+    let sa = blocks
+        .iter()
+        .map(|b| (b.0 - ba).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let se = blocks
+        .iter()
+        .map(|b| (b.1 - be).powi(2))
+        .sum::<f64>()
+        .sqrt();
     let r = cov / (sa * se);
     println!(
         "{} pixels ({skipped} skipped): mean count raster {ma:.3}, exact {me:.3} ({:+.1} %); \

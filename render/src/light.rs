@@ -220,6 +220,12 @@ mod tests {
         let e = d.radiance[0] * PI * 5f32.to_radians().sin().powi(2);
         assert!((e - 2.0).abs() < 1e-4);
         assert_eq!(d.pdf(&Vector3::new(0.0, 0.0, 1.0)), 0.0);
+        // The shape a raster pipeline reads gives the irradiance back.
+        let LightShape::Distant { axis, irradiance } = d.shape() else {
+            panic!("a disc is a distant light")
+        };
+        assert!((axis - Vector3::new(1.0, 1.0, 0.0).normalize()).norm() < 1e-6);
+        assert!(irradiance.iter().all(|e| (e - 2.0).abs() < 1e-4), "{irradiance:?}");
     }
 
     #[test]

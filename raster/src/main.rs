@@ -80,7 +80,7 @@ struct Args {
     map_size: u32,
 
     /// Where deep opacity layers 0, 1, 2 end behind the first fiber (world units).
-    #[arg(long, value_name = "A,B,C", value_delimiter = ',', num_args = 3)]
+    #[arg(long, value_name = "A,B,C", value_delimiter = ',')]
     layers: Option<Vec<f32>>,
 
     /// Dual scattering's forward density factor d_f.
@@ -204,10 +204,17 @@ fn run(args: &Args) -> Result<(), Failure> {
     let mut settings = Settings::new(args.width, args.height);
     settings.map_size = args.map_size;
     if let Some(l) = &args.layers {
-        settings.layer_ends = [l[0], l[1], l[2]];
+        settings.layer_ends = <[f32; 3]>::try_from(l.as_slice()).map_err(|_| {
+            input(format!(
+                "--layers takes three values A,B,C, not {}",
+                l.len()
+            ))
+        })?;
     }
     settings.density = [args.d_f, args.d_b];
-    settings.validate().map_err(|e| input(format!("--{e}")))?;
+    settings
+        .validate()
+        .map_err(|e| input(format!("--{}", flag_of(&e.to_string()))))?;
     if args.fibers == Some(0) {
         return Err(input("--fibers 0: a scene needs at least one fiber"));
     }
@@ -420,6 +427,21 @@ fn judge(
         );
     }
     Ok(out)
+}
+
+/// A settings message with the option that sets it named first (`width 0 …` → `width 0 …`,
+/// `light map size 9 …` → `map-size 9 …`, `layer ends …` → `layers …`).
+fn flag_of(message: &str) -> String {
+    for (text, flag) in [
+        ("light map size", "map-size"),
+        ("layer ends", "layers"),
+        ("density factor", "d-f/--d-b"),
+    ] {
+        if let Some(rest) = message.strip_prefix(text) {
+            return format!("{flag}{rest}");
+        }
+    }
+    message.to_owned()
 }
 
 /// The median of some times (0 for none).

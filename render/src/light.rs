@@ -225,7 +225,10 @@ mod tests {
             panic!("a disc is a distant light")
         };
         assert!((axis - Vector3::new(1.0, 1.0, 0.0).normalize()).norm() < 1e-6);
-        assert!(irradiance.iter().all(|e| (e - 2.0).abs() < 1e-4), "{irradiance:?}");
+        assert!(
+            irradiance.iter().all(|e| (e - 2.0).abs() < 1e-4),
+            "{irradiance:?}"
+        );
     }
 
     #[test]

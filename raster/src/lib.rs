@@ -100,8 +100,9 @@ pub struct Settings {
 pub enum Output {
     /// Radiance (the image).
     Radiance,
-    /// The deep opacity map's fiber counts at the fragment: between it and the key light (R),
-    /// below it (G), along the whole light ray (B); the tests read them.
+    /// The deep opacity map's fiber counts at the fragment: between it and the key light (R;
+    /// −1 where a surface shadows the fragment), below it (G), along the whole light ray
+    /// (B); the tests and `raster --compare`'s breakdown read them.
     Counts,
 }
 

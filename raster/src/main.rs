@@ -301,7 +301,14 @@ fn run(args: &Args) -> Result<(), Failure> {
         "load_average": load_average(),
     });
     if let Some(spp) = args.compare {
-        let judged = judge(&scene, &baked, &dual, &image, spp, args)?;
+        let judged = judge(
+            &scene,
+            (&baked, &lut),
+            &dual,
+            &image,
+            (spp, &settings),
+            args,
+        )?;
         report["against_path"] = judged;
     }
     let text = serde_json::to_string_pretty(&report).map_err(other)? + "\n";
@@ -347,10 +354,10 @@ fn run(args: &Args) -> Result<(), Failure> {
 /// compare.png and returns the numbers.
 fn judge(
     scene: &render::scene::Scene,
-    baked: &BakedBcsdf<'_>,
+    (baked, lut_bytes): (&BakedBcsdf<'_>, &[u8]),
     dual: &[u8],
     raster: &render::Image,
-    spp: u32,
+    (spp, raster_settings): (u32, &Settings),
     args: &Args,
 ) -> Result<serde_json::Value, Failure> {
     let settings = render::Settings {
@@ -400,7 +407,16 @@ fn judge(
             "fur_tile_rmse_from_noise": fur.noise,
         })
     };
+    let regions = regions(
+        scene,
+        (baked, lut_bytes),
+        dual,
+        [raster, &path.image, &dual_r.image],
+        &mask,
+        raster_settings,
+    )?;
     let out = json!({
+        "fur_regions": regions,
         "spp": spp,
         "tile_grid": compare::TILE_GRID,
         "raster": numbers(raster),
@@ -414,6 +430,16 @@ fn judge(
     fsutil::write_atomic(&args.out.join("compare.png"), &png).map_err(other)?;
     let text = serde_json::to_string_pretty(&out).map_err(other)? + "\n";
     fsutil::write_atomic(&args.out.join("compare.json"), text.as_bytes()).map_err(other)?;
+    for (name, r) in out["fur_regions"].as_object().into_iter().flatten() {
+        let pc = |k: &str| 100.0 * r[k].as_f64().unwrap_or(f64::NAN);
+        println!(
+            "  fur {name:8}: {:4.1} % of the fur's pixels, {:4.1} % of its light in path; mean raster {:+6.1} %, dual {:+6.1} %",
+            pc("pixels"),
+            pc("path_light"),
+            pc("raster_mean_error"),
+            pc("dual_mean_error")
+        );
+    }
     for m in ["raster", "dual"] {
         let v = &out[m];
         let pc = |k: &str| 100.0 * v[k].as_f64().unwrap_or(f64::NAN);
@@ -442,6 +468,73 @@ fn flag_of(message: &str) -> String {
         }
     }
     message.to_owned()
+}
+
+/// The fur's pixels split by what the deep opacity map says of their key light — shadowed by
+/// a surface, in front (n < 0.5 fibers toward the light) or inside the coat (n ≥ 0.5) — with
+/// each region's share of the fur's pixels and its mean luminance error against path, for
+/// the raster image and for `dual` (where in the coat the light is missing).
+fn regions(
+    scene: &render::scene::Scene,
+    (baked, lut_bytes): (&BakedBcsdf<'_>, &[u8]),
+    dual: &[u8],
+    [raster, path, dual_image]: [&render::Image; 3],
+    mask: &[bool],
+    settings: &Settings,
+) -> Result<serde_json::Value, Failure> {
+    let strands = Strands::from_scene(
+        scene,
+        baked.absorption().sigma().0,
+        settings.width,
+        settings.height,
+    )
+    .map_err(input)?;
+    let settings = Settings {
+        output: raster::Output::Counts,
+        ..*settings
+    };
+    let gpu = Raster::new().map_err(other)?;
+    let counts = gpu
+        .draw(&strands, lut_bytes, dual, &albedo_table(baked), &settings)
+        .map_err(input)?;
+    let names = ["shadowed", "front", "inside"];
+    let mut sums = [[0.0f64; 4]; 3];
+    for (i, px) in counts.rgba.iter().enumerate() {
+        if !mask[i] || px[3] <= 0.0 {
+            continue;
+        }
+        let r = if px[0] < 0.0 {
+            0
+        } else if px[0] < 0.5 {
+            1
+        } else {
+            2
+        };
+        sums[r][0] += compare::luminance(&path.mean[i]);
+        sums[r][1] += compare::luminance(&raster.mean[i]);
+        sums[r][2] += compare::luminance(&dual_image.mean[i]);
+        sums[r][3] += 1.0;
+    }
+    let total: f64 = sums.iter().map(|s| s[3]).sum();
+    let fur_path: f64 = sums.iter().map(|s| s[0]).sum();
+    Ok(serde_json::Value::Object(
+        names
+            .iter()
+            .zip(sums)
+            .map(|(name, s)| {
+                let err = |k: usize| if s[0] > 0.0 { s[k] / s[0] - 1.0 } else { 0.0 };
+                (
+                    (*name).to_string(),
+                    json!({
+                        "pixels": s[3] / total.max(1.0),
+                        "path_light": s[0] / fur_path.max(1e-30),
+                        "raster_mean_error": err(1),
+                        "dual_mean_error": err(2),
+                    }),
+                )
+            })
+            .collect(),
+    ))
 }
 
 /// The median of some times (0 for none).

@@ -272,7 +272,8 @@ fn ras_fiber_shade(in: RasFiberOut) -> @location(0) vec4<f32> {
     let below = max(l.total - counted - own * (1.0 - l.within), 0.0);
     var rgb = vec3<f32>(0.0);
     if (ras.dual.w > 0.5) {
-        return vec4<f32>(l.above, below, l.total, 1.0);
+        // n, or -1 where a surface shadows the fragment from the key light.
+        return vec4<f32>(select(-1.0, l.above, l.lit > 0.0), below, l.total, 1.0);
     }
     if (l.lit > 0.0) {
         let s = fur_eval_far_dirs(wi, wr, t, in.colour);

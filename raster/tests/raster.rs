@@ -126,7 +126,7 @@ fn deep_opacity_counts_follow_the_fibers_along_the_light() {
     for y in 0..HEIGHT {
         for x in 0..WIDTH {
             let px = frame.rgba[(y * WIDTH + x) as usize];
-            if px[3] < 1.0 {
+            if px[3] < 1.0 || px[0] < 0.0 {
                 continue;
             }
             let (o, d) = scene

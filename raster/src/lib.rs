@@ -15,6 +15,8 @@
 //!   radiance and the fur's coverage, per-pass times);
 //! - [`fragment_instructions`]: the fur fragment shader's SPIR-V instruction count.
 
+#![deny(missing_docs)]
+
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
 use bcsdf_core::Bcsdf;
 use nalgebra::{Matrix4, Vector3};
@@ -26,7 +28,7 @@ use std::time::Instant;
 
 mod gpu;
 
-pub use gpu::Raster;
+pub use gpu::{Raster, PASS_NAMES};
 
 /// The raster shader (ribbons, the deep opacity map, shading), appended to
 /// [`FUR_BCSDF_WGSL`] by [`shader_source`].

@@ -35,6 +35,25 @@ impl Camera {
         }
     }
 
+    /// The eye (the centre of projection).
+    #[must_use]
+    pub fn eye(&self) -> Vector3<f32> {
+        self.eye
+    }
+
+    /// The unit viewing direction, and the unit right and up vectors of the film (a raster
+    /// pipeline builds its view matrix from them).
+    #[must_use]
+    pub fn basis(&self) -> [Vector3<f32>; 3] {
+        [self.forward, self.right, self.up]
+    }
+
+    /// tan of half the vertical field of view.
+    #[must_use]
+    pub fn tan_half_fov(&self) -> f32 {
+        self.tan_half
+    }
+
     /// The ray through film position (x, y) in pixels (y down) of a `width` × `height`
     /// image: origin and unit direction.
     #[must_use]

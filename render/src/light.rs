@@ -19,6 +19,25 @@ pub trait Light: Send + Sync {
     fn pdf(&self, dir: &Vector3<f32>) -> f32;
     /// A direction toward the light from two uniform numbers, and its density.
     fn sample(&self, u: [f32; 2]) -> (Vector3<f32>, f32);
+    /// What the light is, for a renderer that does not sample it (a raster pipeline).
+    fn shape(&self) -> LightShape;
+}
+
+/// A light's description, for renderers that shade with it directly instead of sampling it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightShape {
+    /// A [`DistantDisc`]: its unit axis and the irradiance (RGB) it gives a surface facing it.
+    Distant {
+        /// Unit vector toward the light.
+        axis: Vector3<f32>,
+        /// Irradiance normal to the axis, RGB.
+        irradiance: [f32; 3],
+    },
+    /// A [`UniformEnvironment`]: its radiance (RGB).
+    Uniform {
+        /// The radiance, RGB.
+        radiance: [f32; 3],
+    },
 }
 
 /// A distant light of radiance `radiance` inside the cone of half-angle `half_angle` around
@@ -77,6 +96,14 @@ impl Light for DistantDisc {
         // Rounding can put a sample a hair outside the cone; it still carries the density.
         (dir, 1.0 / self.solid_angle())
     }
+
+    fn shape(&self) -> LightShape {
+        let sin2 = 1.0 - self.cos_max * self.cos_max;
+        LightShape::Distant {
+            axis: self.axis,
+            irradiance: self.radiance.map(|l| l * PI * sin2),
+        }
+    }
 }
 
 /// Radiance `radiance` from every direction.
@@ -105,6 +132,12 @@ impl Light for UniformEnvironment {
             1.0 / (4.0 * PI),
         )
     }
+
+    fn shape(&self) -> LightShape {
+        LightShape::Uniform {
+            radiance: self.radiance,
+        }
+    }
 }
 
 /// The scene's lights and the probability of picking each for light sampling.
@@ -129,6 +162,11 @@ impl Lights {
     #[must_use]
     pub fn is_empty(&self) -> bool {
         self.lights.is_empty()
+    }
+
+    /// Each light's description ([`LightShape`]), in the order given to [`Lights::new`].
+    pub fn shapes(&self) -> impl Iterator<Item = LightShape> + '_ {
+        self.lights.iter().map(|(l, _)| l.shape())
     }
 
     /// Radiance of all lights arriving from `dir`.
@@ -182,6 +220,15 @@ mod tests {
         let e = d.radiance[0] * PI * 5f32.to_radians().sin().powi(2);
         assert!((e - 2.0).abs() < 1e-4);
         assert_eq!(d.pdf(&Vector3::new(0.0, 0.0, 1.0)), 0.0);
+        // The shape a raster pipeline reads gives the irradiance back.
+        let LightShape::Distant { axis, irradiance } = d.shape() else {
+            panic!("a disc is a distant light")
+        };
+        assert!((axis - Vector3::new(1.0, 1.0, 0.0).normalize()).norm() < 1e-6);
+        assert!(
+            irradiance.iter().all(|e| (e - 2.0).abs() < 1e-4),
+            "{irradiance:?}"
+        );
     }
 
     #[test]

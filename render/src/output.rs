@@ -42,6 +42,37 @@ pub fn exr_bytes(image: &Image) -> Result<Vec<u8>, EncodeError> {
     Ok(bytes)
 }
 
+/// The image's mean radiance with a fourth channel `alpha` (one value per pixel, e.g. a
+/// coverage) as an OpenEXR file: channels R, G, B, A as 32-bit floats, otherwise as
+/// [`exr_bytes`].
+///
+/// # Panics
+/// When `alpha` does not hold one value per pixel.
+pub fn exr_rgba_bytes(image: &Image, alpha: &[f32]) -> Result<Vec<u8>, EncodeError> {
+    use exr::prelude::{
+        Encoding, Image as ExrImage, Layer, LayerAttributes, SpecificChannels, Vec2, WritableImage,
+    };
+    let (w, h) = (image.width as usize, image.height as usize);
+    assert_eq!(alpha.len(), w * h, "one alpha value per pixel");
+    let channels = SpecificChannels::rgba(|Vec2(x, y): Vec2<usize>| {
+        let p = image.mean[y * w + x];
+        (p[0], p[1], p[2], alpha[y * w + x])
+    });
+    let layer = Layer::new(
+        (w, h),
+        LayerAttributes::named("render"),
+        Encoding::FAST_LOSSLESS,
+        channels,
+    );
+    let mut bytes = Vec::new();
+    ExrImage::from_layer(layer)
+        .write()
+        .non_parallel()
+        .to_buffered(Cursor::new(&mut bytes))
+        .map_err(|e| EncodeError(format!("encoding the EXR image: {e}")))?;
+    Ok(bytes)
+}
+
 /// Tone mapping of linear radiance `x` at `exposure`: 1 − e^(−exposure·x), which is linear
 /// for dark values and rolls highlights off smoothly toward 1.
 #[inline]

@@ -333,7 +333,7 @@ pub(crate) const POW2_TAYLOR: [f32; 8] = [
 /// 2^−y for y ≥ 0 without a branch, for the absorption axis's coordinate
 /// ([`crate::lut::absorption_coordinate`]): y kept in [0, 125] (NaN gives 0), k = y rounded to
 /// the nearest integer (ties to even, as WGSL's `round`), f = k − y ∈ [−½, ½] (exact), 2^f by
-/// its Taylor polynomial of degree 7 ([`POW2_TAYLOR`], truncation error ≤ 5.2e-9 relative)
+/// its Taylor polynomial of degree 7 (`POW2_TAYLOR`, truncation error ≤ 5.2e-9 relative)
 /// in Estrin's scheme (three multiply-add levels: a short dependency chain), and 2^−k put into
 /// the exponent bits. Within 2 ulp of 2^−y (measured by the crate's unit test); above 125 the
 /// result stays 2^−125·2^f, not 0 (the axis's coordinate is 1 there either way).

@@ -394,7 +394,6 @@ pub fn encode(tables: &DualTables, attenuation: Attenuation, source: u64) -> [u8
     for a in 0..3 {
         put_node(&mut blob, a, tables, attenuation, a);
     }
-    // Nodes 3 and up repeat node 2's bytes: converted once, copied.
     let node = |a: usize| HEADER_LEN + 2 * a * NODE_HALVES;
     for a in 3..ABS_NODES {
         blob.copy_within(node(2)..node(3), node(a));

@@ -123,6 +123,33 @@ pub fn duration(seconds: f64) -> String {
     }
 }
 
+/// The largest `--res-dual` node count along θ_i: the dual-scattering tables' cost grows with
+/// the product of the two counts (the default, 128 × 96, takes seconds per preset).
+pub const MAX_DUAL_THETA_STEPS: usize = 1024;
+
+/// A checked `bake --res-dual THETA,PHI`: θ_i nodes in [8, [`MAX_DUAL_THETA_STEPS`]], |φ|
+/// nodes in [8, [`bcsdf_core::dual::MAX_PHI_STEPS`]] and even (the front/back split falls on a
+/// cell edge); anything else is refused with the reason.
+pub fn dual_quadrature(value: &str) -> Result<bcsdf_core::dual::Quadrature, String> {
+    let max_phi = bcsdf_core::dual::MAX_PHI_STEPS;
+    let bad = || {
+        format!(
+            "--res-dual {value:?}: expected THETA,PHI (θ_i nodes 8 to {MAX_DUAL_THETA_STEPS}, \
+             |φ| nodes 8 to {max_phi} and even)"
+        )
+    };
+    let (t, p) = value.split_once(',').ok_or_else(bad)?;
+    let t: usize = t.trim().parse().map_err(|_| bad())?;
+    let p: usize = p.trim().parse().map_err(|_| bad())?;
+    if !(8..=MAX_DUAL_THETA_STEPS).contains(&t) || !(8..=max_phi).contains(&p) || p % 2 != 0 {
+        return Err(bad());
+    }
+    Ok(bcsdf_core::dual::Quadrature {
+        theta_steps: t,
+        phi_steps: p,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -156,6 +183,19 @@ mod tests {
         assert_eq!(b.per_cn_cell, 2 * d.per_cn_cell);
         assert!(note.unwrap().contains("takes about"));
         assert_eq!(photon_budget(d, 1e-9).unwrap().0.per_cn_cell, 1);
+    }
+
+    #[test]
+    fn dual_quadratures_are_bounded() {
+        let q = dual_quadrature("128,96").unwrap();
+        assert_eq!((q.theta_steps, q.phi_steps), (128, 96));
+        assert_eq!(dual_quadrature(" 8, 256").unwrap().phi_steps, 256);
+        for bad in [
+            "", "128", "7,96", "1025,96", "128,6", "128,258", "128,95", "a,b", "-8,8", "8,8,8",
+        ] {
+            let e = dual_quadrature(bad).unwrap_err();
+            assert!(e.contains("--res-dual") && e.contains("1024"), "{bad}: {e}");
+        }
     }
 
     #[test]

@@ -101,6 +101,12 @@ struct Cli {
     #[arg(long, value_name = "N", default_value_t = LutResolution::DEFAULT.n_abs)]
     res_abs: u32,
 
+    /// Quadrature of the dual-scattering tables (.furdual): THETA,PHI midpoint nodes in theta_i
+    /// (8 to 1024) and |phi| (8 to 256, even). Coarser is faster and less accurate; the
+    /// default is what the shipped tables use (docs/model.md §13).
+    #[arg(long, value_name = "THETA,PHI", default_value = "128,96")]
+    res_dual: String,
+
     /// Threads (default and 0: one per core; at most 8 per core, above 4096 refused). The
     /// LUTs are the same bits for any count.
     #[arg(long, value_name = "N")]
@@ -233,6 +239,7 @@ fn options(cli: &Cli) -> Result<BakeOptions, Failure> {
         },
         out_dir: cli.out.clone(),
         metrics: (!cli.no_check).then_some(MetricSet::DEFAULT),
+        dual: bake::limits::dual_quadrature(&cli.res_dual).map_err(input)?,
     })
 }
 

@@ -37,6 +37,9 @@ pub struct BakeOptions {
     pub out_dir: PathBuf,
     /// The set the error metrics are measured on (`None`: skip the measurement).
     pub metrics: Option<MetricSet>,
+    /// The quadrature of the dual-scattering tables ([`Quadrature::DEFAULT`] unless a coarser
+    /// one is asked for, `bake --res-dual`; checked by [`crate::limits::dual_quadrature`]).
+    pub dual: Quadrature,
 }
 
 /// The steps of a bake, reported as they start.
@@ -189,10 +192,15 @@ pub fn output_paths(out_dir: &Path, name: &str) -> Result<OutputPaths, BakeError
 
 /// The `.furdual` blob of a baked LUT (docs/model.md §13): [`DualTables::compute`] over the
 /// baked evaluator at each node of the blob's absorption axis, at the grey colour of the node
-/// (`baked.at(σ_k, σ_k, σ_k)`, [`dual::encode_axis`]), at [`Quadrature::DEFAULT`], encoded
+/// (`baked.at(σ_k, σ_k, σ_k)`, [`dual::encode_axis`]), at quadrature `q` (the shipped LUTs:
+/// [`Quadrature::DEFAULT`]), encoded
 /// for the shipped [`Attenuation::Coat`], tagged with the LUT's checksum and the preset's own
 /// colour.
-pub fn dual_blob(lut_blob: &[u8], baked: &BakedBcsdf<'_>) -> Box<[u8; dual::BLOB_LEN]> {
+pub fn dual_blob(
+    lut_blob: &[u8],
+    baked: &BakedBcsdf<'_>,
+    q: Quadrature,
+) -> Box<[u8; dual::BLOB_LEN]> {
     let mut tables = Box::new(DualTables::ZERO);
     let mut blob: Box<[u8; dual::BLOB_LEN]> = vec![0u8; dual::BLOB_LEN]
         .into_boxed_slice()
@@ -203,7 +211,7 @@ pub fn dual_blob(lut_blob: &[u8], baked: &BakedBcsdf<'_>) -> Box<[u8; dual::BLOB
         &mut tables,
         |sigma, t| {
             let grey = Absorption::from_sigma(Rgb::splat(sigma)).unwrap_or(Absorption::LOSSLESS);
-            t.compute(&baked.at(&grey), Quadrature::DEFAULT);
+            t.compute(&baked.at(&grey), q);
         },
         Attenuation::Coat,
         core_lut::checksum(lut_blob),
@@ -212,21 +220,62 @@ pub fn dual_blob(lut_blob: &[u8], baked: &BakedBcsdf<'_>) -> Box<[u8; dual::BLOB
     blob
 }
 
-/// Bakes one preset into `opts.out_dir`; `on_step` hears each step as it starts.
+/// A preset's tables, dual-scattering tables and measured error, computed and not yet
+/// written ([`compute`], then [`write_bake`]).
+pub struct Computed {
+    file: LutFile,
+    dual_bytes: Box<[u8; dual::BLOB_LEN]>,
+    table_bytes: usize,
+    dual_seconds: f64,
+    profile_seconds: f64,
+    table_seconds: f64,
+    metric_seconds: f64,
+    cache: Option<CacheOutcome>,
+    residual_note: Option<String>,
+}
+
+/// Bakes one preset into `opts.out_dir`; `on_step` hears each step as it starts. The name is
+/// checked ([`output_paths`]) before any work, so a bad name costs nothing.
 pub fn bake_preset(
     preset: &NamedPreset,
     opts: &BakeOptions,
     on_step: &dyn Fn(Step),
 ) -> Result<BakeReport, BakeError> {
+    output_paths(&opts.out_dir, &preset.name)?;
+    let c = compute(preset, opts, on_step)?;
+    on_step(Step::Writing);
+    let OutputPaths { exr, blob, dual } = write_bake(&opts.out_dir, &preset.name, &c)?;
+    let exr_bytes = std::fs::metadata(&exr).map(|m| m.len()).unwrap_or(0);
+    Ok(BakeReport {
+        preset: preset.name.clone(),
+        exr,
+        blob,
+        table_bytes: c.table_bytes,
+        blob_bytes: c.file.blob.len(),
+        exr_bytes,
+        dual,
+        dual_bytes: c.dual_bytes.len(),
+        dual_seconds: c.dual_seconds,
+        profile_seconds: c.profile_seconds,
+        table_seconds: c.table_seconds,
+        metric_seconds: c.metric_seconds,
+        errors: c.file.meta.errors,
+        cache: c.cache,
+        residual_note: c.residual_note,
+    })
+}
+
+/// Everything [`bake_preset`] does before writing: profiles, tables, dual-scattering tables and
+/// (when `opts.metrics` asks) the measured error. `opts.out_dir` is not touched.
+pub fn compute(
+    preset: &NamedPreset,
+    opts: &BakeOptions,
+    on_step: &dyn Fn(Step),
+) -> Result<Computed, BakeError> {
     let params = FurParams::new(&preset.input).map_err(|error| BakeError::Params {
         preset: preset.name.clone(),
         error,
     })?;
-    let OutputPaths {
-        exr,
-        blob: blob_path,
-        dual: dual_path,
-    } = output_paths(&opts.out_dir, &preset.name)?;
 
     on_step(Step::Profiles);
     let t = Instant::now();
@@ -241,7 +290,7 @@ pub fn bake_preset(
 
     on_step(Step::Dual);
     let t = Instant::now();
-    let dual_bytes = dual_blob(&blob, &baked);
+    let dual_bytes = dual_blob(&blob, &baked, opts.dual);
     let dual_seconds = t.elapsed().as_secs_f64();
 
     let t = Instant::now();
@@ -251,34 +300,39 @@ pub fn bake_preset(
     });
     let metric_seconds = t.elapsed().as_secs_f64();
 
-    on_step(Step::Writing);
-    let file = LutFile {
-        blob,
-        meta: LutMeta {
-            preset: preset.name.clone(),
-            errors,
+    Ok(Computed {
+        file: LutFile {
+            blob,
+            meta: LutMeta {
+                preset: preset.name.clone(),
+                errors,
+            },
         },
-    };
-    lutfile::write_exr(&exr, &file).map_err(BakeError::Write)?;
-    lutfile::write_blob(&blob_path, &file.blob).map_err(BakeError::Write)?;
-    lutfile::write_dual(&dual_path, &dual_bytes[..]).map_err(BakeError::Write)?;
-    let exr_bytes = std::fs::metadata(&exr).map(|m| m.len()).unwrap_or(0);
-
-    Ok(BakeReport {
-        preset: preset.name.clone(),
-        exr,
-        blob: blob_path,
+        dual_bytes,
         table_bytes: 2 * opts.res.total_values(),
-        blob_bytes: file.blob.len(),
-        exr_bytes,
-        dual: dual_path,
-        dual_bytes: dual_bytes.len(),
         dual_seconds,
         profile_seconds,
         table_seconds,
         metric_seconds,
-        errors,
         cache,
         residual_note: model.residual_cache_note().map(str::to_owned),
     })
+}
+
+/// Writes a [`Computed`] bake as preset `name` into `out_dir`: the three files of
+/// [`output_paths`] (a name that would leave `out_dir` is refused and nothing is written),
+/// each atomically; the EXR's metadata carries `name`. Returns the files written.
+pub fn write_bake(out_dir: &Path, name: &str, c: &Computed) -> Result<OutputPaths, BakeError> {
+    let paths = output_paths(out_dir, name)?;
+    let file = LutFile {
+        blob: c.file.blob.clone(),
+        meta: LutMeta {
+            preset: name.to_owned(),
+            errors: c.file.meta.errors,
+        },
+    };
+    lutfile::write_exr(&paths.exr, &file).map_err(BakeError::Write)?;
+    lutfile::write_blob(&paths.blob, &file.blob).map_err(BakeError::Write)?;
+    lutfile::write_dual(&paths.dual, &c.dual_bytes[..]).map_err(BakeError::Write)?;
+    Ok(paths)
 }

@@ -179,7 +179,14 @@ fn a_holder_killed_mid_generation_leaves_a_cache_the_next_bake_repairs() {
     // CHEAP's table sizes and planes with ten times its photons: generation lasts long
     // enough to be interrupted.
     args.extend(&CHEAP[..10]);
-    args.extend(["--photons-scale", "0.05", "--no-check", "--threads=1"]);
+    args.extend([
+        "--photons-scale",
+        "0.05",
+        "--res-dual",
+        "16,16",
+        "--no-check",
+        "--threads=1",
+    ]);
 
     // Start a bake and kill it once it holds the lock and is generating: its temporary
     // cache file exists from the moment it takes the lock until it renames it.

@@ -3,9 +3,12 @@
 //! - through the binary, every form of bad name (in a preset file, or given to `--preset`)
 //!   exits 2 with one `error:` line naming the file, the line and the field, and writes
 //!   nothing anywhere: not `--out`, not beside it, not the profile cache;
-//! - a property test over random names: baking a preset under any name (the library's
-//!   `bake_preset`, which does not go through the preset-file check) either refuses the
-//!   name and writes nothing, or writes exactly `<out>/<name>.exr`, `.furlut` and `.furdual`.
+//! - a property test over random names: writing a bake under any name (the library's
+//!   `write_bake`, the step of `bake_preset` that names files, which does not go through the
+//!   preset-file check) either refuses the name and writes nothing, or writes exactly
+//!   `<out>/<name>.exr`, `.furlut` and `.furdual`; the bake itself is computed once (its
+//!   tables do not depend on the name), and `bake_preset` is checked to refuse a bad name
+//!   before any work.
 
 mod cli_support;
 
@@ -17,6 +20,7 @@ use cli_support::{bake, text, tree};
 use proptest::prelude::*;
 use std::fs;
 use std::path::Path;
+use std::sync::OnceLock;
 
 /// A valid preset without medulla profiles (κ = 0), then a second one whose name line
 /// (line 16) the tests replace.
@@ -158,6 +162,10 @@ fn cheap_options(out: &Path) -> BakeOptions {
         },
         out_dir: out.to_path_buf(),
         metrics: None,
+        dual: bcsdf_core::dual::Quadrature {
+            theta_steps: 16,
+            phi_steps: 16,
+        },
     }
 }
 
@@ -174,6 +182,47 @@ fn names() -> impl Strategy<Value = String> {
     ]
 }
 
+/// human-hair at [`cheap_options`]' resolution, computed once for every name.
+fn computed() -> &'static pipeline::Computed {
+    static C: OnceLock<pipeline::Computed> = OnceLock::new();
+    C.get_or_init(|| {
+        let dir = tempfile::tempdir().unwrap();
+        pipeline::compute(
+            &human_hair("human-hair"),
+            &cheap_options(dir.path()),
+            &|_| {},
+        )
+        .unwrap()
+    })
+}
+
+fn human_hair(name: &str) -> NamedPreset {
+    let input = bake::presets::find(&bake::presets::builtin().unwrap(), "human-hair")
+        .unwrap()
+        .input;
+    NamedPreset {
+        name: name.to_owned(),
+        source: "test".into(),
+        input,
+    }
+}
+
+/// `bake_preset` checks the name before it computes anything: a bad name is refused at once
+/// (no step reported) and nothing is written.
+#[test]
+fn bake_preset_refuses_a_bad_name_before_any_step() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    fs::create_dir_all(&out).unwrap();
+    let steps = std::cell::Cell::new(0);
+    let r = pipeline::bake_preset(&human_hair("../x"), &cheap_options(&out), &|_| {
+        steps.set(steps.get() + 1)
+    });
+    assert!(matches!(r, Err(BakeError::Name(_))), "{r:?}");
+    assert_eq!(steps.get(), 0);
+    assert_eq!(tree(dir.path()), ["out/"]);
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
 
@@ -183,15 +232,11 @@ proptest! {
         let root = dir.path();
         let out = root.join("a").join("b").join("out");
         fs::create_dir_all(&out).unwrap();
-        let input = bake::presets::find(&bake::presets::builtin().unwrap(), "human-hair")
-            .unwrap()
-            .input;
-        let preset = NamedPreset { name: name.clone(), source: "proptest".into(), input };
         let valid = bcsdf_core::params::check_name(&name).is_ok();
-        match pipeline::bake_preset(&preset, &cheap_options(&out), &|_| {}) {
-            Ok(report) => {
-                prop_assert!(valid, "{name:?} was baked");
-                prop_assert_eq!(report.exr, out.join(format!("{name}.exr")));
+        match pipeline::write_bake(&out, &name, computed()) {
+            Ok(paths) => {
+                prop_assert!(valid, "{name:?} was written");
+                prop_assert_eq!(paths.exr, out.join(format!("{name}.exr")));
                 let mut want = vec![
                     "a/".to_string(),
                     "a/b/".to_string(),

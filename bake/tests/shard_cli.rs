@@ -19,11 +19,14 @@ use std::fs;
 use std::path::PathBuf;
 
 /// Four presets: three with medulla profiles (σ_ms > 0, κ > 0, different g; one an air
-/// medulla, η_m ≠ η_c), one without.
+/// medulla, η_m ≠ η_c), in the report closure, and one without a medulla in the energy
+/// closure, whose residual table is simulated too (a medullated preset's residual
+/// simulation costs seconds even in a cheap bake; one preset's shows that it shards).
 const PRESETS: &str = r#"
 [[preset]]
 name = "p0-medulla"
 source = "test"
+closure = "report"
 eta_c = 1.55
 sigma_ca = 0.64
 alpha_deg = 5.48
@@ -51,6 +54,7 @@ g = 0.0
 [[preset]]
 name = "p2-medulla"
 source = "test"
+closure = "report"
 eta_c = 1.49
 sigma_ca = [0.2, 0.3, 0.6]
 alpha_deg = 2.64
@@ -65,6 +69,7 @@ g = 0.79
 [[preset]]
 name = "p3-air-medulla"
 source = "test"
+closure = "report"
 eta_c = 1.55
 eta_m = 1.2
 eumelanin = 0.5

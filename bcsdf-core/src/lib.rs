@@ -150,5 +150,6 @@ pub use params::{
 };
 pub use pigment::{Pigment, EUMELANIN_SIGMA_A, PHEOMELANIN_SIGMA_A};
 pub use presets::Preset;
+pub use sampling::analytic::AnalyticView;
 pub use sampling::baked::BakedView;
 pub use spectrum::Rgb;

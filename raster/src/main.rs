@@ -157,7 +157,7 @@ fn load(args: &Args) -> Result<(String, Vec<u8>, Vec<u8>), Failure> {
             bytes
         } else {
             let baked = BakedBcsdf::from_bytes(&blob).map_err(input)?;
-            bake::pipeline::dual_blob(&blob, &baked).to_vec()
+            bake::pipeline::dual_blob(&blob, &baked, bcsdf_core::dual::Quadrature::DEFAULT).to_vec()
         };
         return Ok((path.display().to_string(), blob, dual));
     }
@@ -187,7 +187,8 @@ fn load(args: &Args) -> Result<(String, Vec<u8>, Vec<u8>), Failure> {
     };
     let baked = BakedBcsdf::from_bytes(&blob)
         .map_err(|e| other(format!("the LUT baked in memory: {e}")))?;
-    let dual = bake::pipeline::dual_blob(&blob, &baked).to_vec();
+    let dual =
+        bake::pipeline::dual_blob(&blob, &baked, bcsdf_core::dual::Quadrature::DEFAULT).to_vec();
     Ok((name, blob, dual))
 }
 

@@ -208,6 +208,37 @@ fn sample_pdf_and_weight_agree_with_pdf_and_eval() {
     }
 }
 
+/// [`FurBcsdf::view`](bcsdf_core::FurBcsdf::view) (the analytic sampler's per-view set-up
+/// done once) gives the bits of the [`Bcsdf`] methods, which build a view per call: the same
+/// draws, densities and values, at views from pole to pole.
+#[test]
+fn analytic_views_give_the_trait_bits() {
+    for (name, pair) in PRESETS.iter().zip(pairs()) {
+        let model = pair.model.model();
+        for tr in [-1.5f32, -0.6, 0.0, 0.3, 1.2, FRAC_PI_2] {
+            let view = model.view(tr).unwrap();
+            assert_eq!(view.theta_r(), tr);
+            for i in 0..64 {
+                let u = uniforms(0xa11, i);
+                let d = view.sample_direction(u);
+                assert_eq!(d, model.sample_direction(tr, u), "{name} θ_r {tr}");
+                let Some(d) = d else { continue };
+                let a = d.angles;
+                let (ti, phi) = (a.theta_i(), a.phi());
+                assert_eq!(
+                    view.pdf(ti, phi).to_bits(),
+                    model.pdf(&a).to_bits(),
+                    "{name}"
+                );
+                let (v, p) = view.eval_with_pdf(ti, -phi);
+                let (w, q) = model.eval_with_pdf(&Angles::new(ti, tr, -phi).unwrap());
+                assert_eq!((v, p.to_bits()), (w, q.to_bits()), "{name}");
+            }
+        }
+        assert!(model.view(f32::NAN).is_none() && model.view(1.6).is_none());
+    }
+}
+
 /// Sampling at colours the sampling data was not built for (docs/model.md §10, "Sampling at
 /// any colour"): the density is the lossless plane's whatever the colour, so `sample`, `pdf`
 /// and `eval` stay consistent (the same checks as at the preset's colour), pdf > 0 wherever

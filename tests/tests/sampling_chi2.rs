@@ -18,7 +18,7 @@ use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut::LutResolution;
 use bcsdf_core::medulla::PhotonBudget;
 use bcsdf_core::rng::{cell_stream, Pcg32};
-use bcsdf_core::{presets, Angles, Bcsdf, Closure, FurParams, FurParamsInput};
+use bcsdf_core::{presets, Bcsdf, Closure, FurBcsdf, FurParams, FurParamsInput, SampledDirection};
 use fur_tests::chi2::{chi2_test, sidak, Chi2Outcome, Chi2Setup};
 use std::path::PathBuf;
 
@@ -60,25 +60,82 @@ fn uniforms(seed: u64, i: usize) -> [f32; 3] {
     [rng.uniform(), rng.uniform(), rng.uniform()]
 }
 
-/// The χ² test of `model`'s sampler at θ_r.
-fn run<B: Bcsdf + Sync>(model: &B, theta_r_deg: f32, setup: Chi2Setup) -> Chi2Outcome {
-    let tr = theta_r_deg.to_radians();
-    chi2_test(
-        setup,
-        |i| {
-            model
-                .sample_direction(tr, uniforms(0x5eed ^ theta_r_deg.to_bits() as u64, i))
-                .map(|d| (d.angles.theta_i(), d.angles.phi()))
-        },
-        |ti, phi| {
-            Angles::new(ti, tr, phi)
-                .map(|a| f64::from(model.pdf(&a)))
-                .unwrap_or(0.0)
-        },
-    )
+/// The two samplers' views (`FurBcsdf::view`, `BakedBcsdf::view`): the per-view set-up done
+/// once per θ_r, the same bits as the `Bcsdf` methods (tests/tests/sampling.rs checks both).
+trait Viewed: Bcsdf + Sync {
+    /// `sample_direction` at θ_r = `tr` from uniforms `u`, and the density of (θ_i, φ), both
+    /// from one view, handed to `f`.
+    fn with_view<R>(
+        &self,
+        tr: f32,
+        f: impl FnOnce(
+            &(dyn Fn([f32; 3]) -> Option<SampledDirection> + Sync),
+            &(dyn Fn(f32, f32) -> f32 + Sync),
+        ) -> R,
+    ) -> R;
 }
 
-fn check<B: Bcsdf + Sync>(name: &str, kind: &str, model: &B) {
+impl<M: bcsdf_core::math::Math> Viewed for FurBcsdf<'_, M>
+where
+    Self: Sync,
+{
+    fn with_view<R>(
+        &self,
+        tr: f32,
+        f: impl FnOnce(
+            &(dyn Fn([f32; 3]) -> Option<SampledDirection> + Sync),
+            &(dyn Fn(f32, f32) -> f32 + Sync),
+        ) -> R,
+    ) -> R {
+        let v = self.view(tr).unwrap();
+        f(&|u| v.sample_direction(u), &|ti, phi| v.pdf(ti, phi))
+    }
+}
+
+impl<M: bcsdf_core::math::Math> Viewed for BakedBcsdf<'_, M>
+where
+    Self: Sync,
+{
+    fn with_view<R>(
+        &self,
+        tr: f32,
+        f: impl FnOnce(
+            &(dyn Fn([f32; 3]) -> Option<SampledDirection> + Sync),
+            &(dyn Fn(f32, f32) -> f32 + Sync),
+        ) -> R,
+    ) -> R {
+        let v = self.view(tr).unwrap();
+        f(&|u| v.sample_direction(u), &|ti, phi| v.pdf(ti, phi))
+    }
+}
+
+/// The χ² test of `model`'s sampler at θ_r, its density times `tilt(φ)` (1 for the test
+/// itself).
+fn run_tilted<B: Viewed>(
+    model: &B,
+    theta_r_deg: f32,
+    setup: Chi2Setup,
+    tilt: impl Fn(f32) -> f64 + Sync,
+) -> Chi2Outcome {
+    let tr = theta_r_deg.to_radians();
+    model.with_view(tr, |sample, pdf| {
+        chi2_test(
+            setup,
+            |i| {
+                sample(uniforms(0x5eed ^ theta_r_deg.to_bits() as u64, i))
+                    .map(|d| (d.angles.theta_i(), d.angles.phi()))
+            },
+            |ti, phi| f64::from(pdf(ti, phi)) * tilt(phi),
+        )
+    })
+}
+
+/// The χ² test of `model`'s sampler at θ_r.
+fn run<B: Viewed>(model: &B, theta_r_deg: f32, setup: Chi2Setup) -> Chi2Outcome {
+    run_tilted(model, theta_r_deg, setup, |_| 1.0)
+}
+
+fn check<B: Viewed>(name: &str, kind: &str, model: &B) {
     let alpha = sidak(0.01, TESTS);
     for tr in THETA_R_DEG {
         let out = run(model, tr, Chi2Setup::DEFAULT);
@@ -213,23 +270,11 @@ fn chi2_baked_air_medulla() {
 
 /// The control: the same samples judged against a density tilted by ±2 % across φ,
 /// p·(1 + 0.02·φ/π) (still normalised: the far field is even in φ), must be rejected.
-fn tilt_is_rejected<B: Bcsdf + Sync>(model: &B, theta_r_deg: f32) {
+fn tilt_is_rejected<B: Viewed>(model: &B, theta_r_deg: f32) {
     let alpha = sidak(0.01, TESTS);
-    let tr = theta_r_deg.to_radians();
-    let out = chi2_test(
-        Chi2Setup::DEFAULT,
-        |i| {
-            model
-                .sample_direction(tr, uniforms(0x5eed ^ theta_r_deg.to_bits() as u64, i))
-                .map(|d| (d.angles.theta_i(), d.angles.phi()))
-        },
-        |ti, phi| {
-            let tilt = 1.0 + 0.02 * f64::from(phi) / std::f64::consts::PI;
-            Angles::new(ti, tr, phi)
-                .map(|a| f64::from(model.pdf(&a)) * tilt)
-                .unwrap_or(0.0)
-        },
-    );
+    let out = run_tilted(model, theta_r_deg, Chi2Setup::DEFAULT, |phi| {
+        1.0 + 0.02 * f64::from(phi) / std::f64::consts::PI
+    });
     println!("tilted: {out:?}");
     assert!(
         (out.integral - 1.0).abs() < 2e-3,

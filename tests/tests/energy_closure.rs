@@ -276,23 +276,33 @@ fn check_residual_furnace(name: &str) {
     let input = lossless_input(&presets::find(name).unwrap().input, Closure::Energy);
     let blob = bake::tables::bake(&owned, &input, fur_tests::LOSSLESS_RESOLUTION);
     let baked = BakedBcsdf::from_bytes(&blob).unwrap();
+    // Each view's three furnaces side by side (rayon), then checked in order.
+    use rayon::prelude::*;
+    let rhos: Vec<[f64; 3]> = THETAS
+        .par_iter()
+        .map(|&t| {
+            let tr = t.to_radians();
+            let far = furnace_full(&model, tr, |a| model.eval_far(a).total().0[0]);
+            // Near field: S at h (eleven lobes and the residual's own h-profile), h by the
+            // midpoint rule; at the non-negative θ_r only, which halves the test's cost (the
+            // far field and the LUT are checked at both signs; the near field's every-path
+            // agreement with the far field at random angles is viewer/tests/every_path.rs's).
+            // Summed in h order, whatever the threads.
+            let near_h: Vec<f64> = (0..if t >= 0.0 { NEAR_H } else { 0 })
+                .into_par_iter()
+                .map(|k| {
+                    let h = -1.0 + (k as f32 + 0.5) * 2.0 / NEAR_H as f32;
+                    furnace_full(&model, tr, |a| model.eval_near(a, h).total().0[0])
+                })
+                .collect();
+            let near = near_h.iter().sum::<f64>() / NEAR_H as f64;
+            let lut = furnace_full(&model, tr, |a| baked.eval(a).total().0[0]);
+            [far, near, lut]
+        })
+        .collect();
     let mut worst = [0.0f64; 3];
-    for t in THETAS {
-        let tr = t.to_radians();
-        let far = furnace_full(&model, tr, |a| model.eval_far(a).total().0[0]);
-        // Near field: S at h (eleven lobes and the residual's own h-profile), h by the
-        // midpoint rule; at the non-negative θ_r only, which halves the test's cost (the far
-        // field and the LUT are checked at both signs; the near field's every-path agreement
-        // with the far field at random angles is viewer/tests/every_path.rs's).
-        let near = (0..if t >= 0.0 { NEAR_H } else { 0 })
-            .map(|k| {
-                let h = -1.0 + (k as f32 + 0.5) * 2.0 / NEAR_H as f32;
-                furnace_full(&model, tr, |a| model.eval_near(a, h).total().0[0])
-            })
-            .sum::<f64>()
-            / NEAR_H as f64;
-        let lut = furnace_full(&model, tr, |a| baked.eval(a).total().0[0]);
-        for (k, rho) in [far, near, lut].into_iter().enumerate() {
+    for (t, rho3) in THETAS.into_iter().zip(rhos) {
+        for (k, rho) in rho3.into_iter().enumerate() {
             if k == 1 && t < 0.0 {
                 continue;
             }

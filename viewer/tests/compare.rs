@@ -264,6 +264,19 @@ fn a_good_lut_passes_with_every_image_and_renders_within_budget() {
         assert_eq!(row.matches('%').count(), 4, "R, G, B and the budget: {row}");
     }
     assert!(!out.contains("FAIL"), "{out}");
+    // The default three random colours, each against the analytic model at that colour.
+    // (The other tests pass `--colours 0`: each colour costs a residual simulation.)
+    for k in 0..3 {
+        let line = out
+            .lines()
+            .find(|l| {
+                l.trim_start()
+                    .starts_with(&format!("at random {k} (sigma_ca"))
+            })
+            .unwrap_or_else(|| panic!("no line for random colour {k} in\n{out}"));
+        assert!(line.ends_with(" ok"), "{line}");
+    }
+    assert!(!out.contains("at random 3"), "{out}");
 
     // Default output folder: `<stem>-compare/` beside the LUT.
     let dir = tmp.path().join("human-hair-compare");
@@ -341,6 +354,8 @@ fn perturbed_tables_fail_naming_the_metrics() {
             "--budget",
             "10%,10%,10%",
             "--no-images",
+            "--colours",
+            "0",
             "--out",
             quiet.to_str().unwrap(),
         ],
@@ -361,7 +376,17 @@ fn all_compares_a_folder_with_one_summary() {
     // Not a LUT: ignored.
     std::fs::write(luts.join("notes.txt"), "not a LUT").unwrap();
 
-    let (out, err) = compare(&["--all", luts.to_str().unwrap(), "--threads", "2"], 0);
+    let (out, err) = compare(
+        &[
+            "--all",
+            luts.to_str().unwrap(),
+            "--threads",
+            "2",
+            "--colours",
+            "0",
+        ],
+        0,
+    );
     assert!(err.is_empty(), "{err}");
     assert_eq!(out.matches("summary of 2 LUTs").count(), 1, "{out}");
     let summary = &out[out.find("summary of").unwrap()..];
@@ -425,7 +450,16 @@ fn all_reports_every_lut_before_failing() {
         &perturbed(human_hair(), 1.06),
     );
 
-    let (out, err) = compare(&["--all", luts.to_str().unwrap(), "--no-images"], 2);
+    let (out, err) = compare(
+        &[
+            "--all",
+            luts.to_str().unwrap(),
+            "--no-images",
+            "--colours",
+            "0",
+        ],
+        2,
+    );
     let lines: Vec<&str> = err.lines().collect();
     assert_eq!(lines.len(), 3, "{err}");
     assert!(lines.iter().all(|l| l.starts_with("error: ")), "{err}");
@@ -452,7 +486,16 @@ fn all_reports_every_lut_before_failing() {
 
     // Without the broken file, the budget failure decides: exit 3.
     std::fs::remove_file(&broken).unwrap();
-    let (_, err) = compare(&["--all", luts.to_str().unwrap(), "--no-images"], 3);
+    let (_, err) = compare(
+        &[
+            "--all",
+            luts.to_str().unwrap(),
+            "--no-images",
+            "--colours",
+            "0",
+        ],
+        3,
+    );
     assert!(err.lines().last().unwrap().contains("1 of 1 LUTs"), "{err}");
 }
 

@@ -2,7 +2,7 @@
 //! with a small photon budget), the presets the tests use, and the statistics.
 #![allow(dead_code)]
 
-use bcsdf_core::medulla::generate;
+use bcsdf_core::medulla::{generate_cm_row, generate_cn_cell};
 use bcsdf_core::presets::{Preset, PRESETS};
 use bcsdf_core::residual::{ResidualLayout, ResidualTable};
 use bcsdf_core::residual_gen as residual;
@@ -10,6 +10,7 @@ use bcsdf_core::{
     presets, Closure, FurBcsdf, FurParams, FurParamsInput, MedullaProfiles, PhotonBudget,
     ProfileLayout, Resolution,
 };
+use rayon::prelude::*;
 use render::Estimate;
 
 /// Pigment-free hair (κ = 0: no medulla).
@@ -38,12 +39,35 @@ pub fn with_model<R>(input: &FurParamsInput, f: impl FnOnce(&FurBcsdf<'_>) -> R)
             per_cn_cell: 400,
             per_cm_row: 400,
         };
-        generate(&layout, &budget, 1, &mut cn, &mut cm).expect("profiles");
+        generate_parallel(&layout, &budget, &mut cn, &mut cm);
         let profiles = MedullaProfiles::new(layout, &cn, &cm).expect("profiles");
         with_residual(FurBcsdf::new(params, profiles).expect("model"), f)
     } else {
         with_residual(FurBcsdf::unscattered(params), f)
     }
+}
+
+/// `bcsdf_core::medulla::generate` (seed 1) with its cells and rows as rayon tasks: the same
+/// bits, each cell and row having its own random stream.
+fn generate_parallel(
+    layout: &ProfileLayout,
+    budget: &PhotonBudget,
+    cn: &mut [f32],
+    cm: &mut [f32],
+) {
+    cn.par_chunks_exact_mut(layout.res.n_psi)
+        .enumerate()
+        .for_each(|(cell, c)| {
+            generate_cn_cell(layout, cell, budget, 1, c);
+        });
+    let n_out = layout.res.n_out;
+    let (back, front) = cm.split_at_mut(layout.res.n_in * n_out);
+    back.par_chunks_exact_mut(n_out)
+        .zip(front.par_chunks_exact_mut(n_out))
+        .enumerate()
+        .for_each(|(row, (b, f))| {
+            generate_cm_row(layout, row, budget, 1, b, f);
+        });
 }
 
 /// `f` of `model`, with its residual table in the energy closure.
@@ -53,7 +77,19 @@ fn with_residual<R>(model: FurBcsdf<'_>, f: impl FnOnce(&FurBcsdf<'_>) -> R) -> 
     }
     let layout = ResidualLayout::DEFAULT;
     let mut data = vec![0.0; layout.len()];
-    residual::generate(&model, &layout, 1, &mut data).expect("residual table");
+    // `residual::generate`'s rows and mean nodes, each a task (the same bits: every row has
+    // its own random stream).
+    data[..layout.means_offset()]
+        .par_chunks_mut(layout.row_len())
+        .enumerate()
+        .for_each(|(row, chunk)| {
+            residual::generate_row(&model, &layout, row, 1, chunk);
+        });
+    let energies: Vec<_> = (0..layout.n_mean())
+        .into_par_iter()
+        .map(|i| residual::mean_node_energy(&model, &layout, i))
+        .collect();
+    residual::fill_means(&layout, |i| energies[i], &mut data);
     let table = ResidualTable::new(*model.params(), layout, &data).expect("residual table");
     f(&model
         .with_residual(table)

@@ -24,7 +24,7 @@ pub use crate::longitudinal::{inv_cos2_theta_i, MIN_COS2_THETA_I, POLE_SLIVER};
 
 /// Version of the model's formulas: any change to what S evaluates to bumps it, so baked
 /// tables made by an older model are recognised (`lut` header).
-pub const MODEL_VERSION: u32 = 5;
+pub const MODEL_VERSION: u32 = 6;
 
 /// The medulla-scattering part of a model: borrowed profiles and the precomputed M^s.
 #[derive(Clone, Copy, Debug)]

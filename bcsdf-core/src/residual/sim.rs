@@ -16,6 +16,14 @@
 //!   at every boundary, both absorptions, re-entry into the medulla allowed — until they leave
 //!   the fiber. The rest continues as a beam.
 //!
+//! **Common random numbers.** The cutoff and the photon count go by the weight a beam would
+//! carry at σ_ca = 0 (the cortex's absorption is the only colour in the walk; every other
+//! factor is grey), and a photon's random choices never depend on its weight. So a cell draws
+//! the same random numbers at every σ_ca: the simulation is one smooth function of the colour
+//! per seed, and the tables of two colours differ by that function, not by independent noise
+//! (what the absorption axis of a baked LUT interpolates between, docs/lut.md "The
+//! absorption axis"). At σ_ca = 0 this is the plain weight.
+//!
 //! Tallies: the total exiting energy and the energy on paths the model does not model, by
 //! exit azimuth |Φ| (docs/model.md §12 lists which paths those are).
 
@@ -27,8 +35,8 @@ use crate::rng::Pcg32;
 use crate::spectrum::Rgb;
 use crate::unscattered::{cortex_leg, transmittance, Extinction};
 
-/// A beam carrying less than this (largest channel) is dropped; its weight is tallied as
-/// [`CellTally::dropped`].
+/// A beam that would carry less than this without cortex absorption is dropped; its weight
+/// is tallied as [`CellTally::dropped`].
 pub const BEAM_CUTOFF: f32 = 1e-7;
 
 /// Beams waiting in the depth-first walk of the tree; a beam that does not fit is dropped
@@ -165,6 +173,11 @@ enum Place {
 #[derive(Clone, Copy, Debug)]
 struct Beam {
     weight: Rgb,
+    /// The weight the beam would carry without cortex absorption (σ_ca = 0; every other
+    /// factor is grey): what the cutoff and the photon count go by, so that the tree's shape,
+    /// the photons launched and therefore the random numbers drawn are the same at every
+    /// colour ("Common random numbers" in the module documentation).
+    clear: f32,
     events: Events,
     /// Sum of the event rule's rotations so far (docs/model.md §3); the travel direction
     /// angle is π − turn, the exit azimuth π + turn.
@@ -195,8 +208,8 @@ fn add(acc: &mut [f64; 3], w: Rgb) {
 }
 
 /// Simulates the cell (θ_r of `section`, offset `h`): the beam tree, and `photons` photons
-/// per unit of scattered weight (at least one per medulla chord that scatters), drawn from
-/// `rng`. Unmodelled energy is binned by |Φ| into `hist` (`n_phi` bins of [0, π], RGB
+/// per unit of scattered weight without cortex absorption (at least one per medulla chord
+/// that scatters; the same random numbers at every colour), drawn from `rng`. Unmodelled energy is binned by |Φ| into `hist` (`n_phi` bins of [0, π], RGB
 /// interleaved, accumulated). Allocation-free; the same bits for the same inputs.
 pub fn simulate_cell(
     section: &Section,
@@ -240,6 +253,7 @@ pub fn simulate_cell(
     tally.beams += 1;
     let mut stack = [Beam {
         weight: Rgb::ZERO,
+        clear: 0.0,
         events: Events::EMPTY,
         turn: 0.0,
         place: Place::CortexIn,
@@ -251,6 +265,7 @@ pub fn simulate_cell(
         &mut tally,
         Beam {
             weight: Rgb::splat(1.0 - f),
+            clear: 1.0 - f,
             events: Events::EMPTY.push(Event::T),
             turn: c - a,
             place: Place::CortexIn,
@@ -268,6 +283,7 @@ pub fn simulate_cell(
                 exit_beam(
                     &Beam {
                         weight: w * (1.0 - legs.f),
+                        clear: beam.clear * (1.0 - legs.f),
                         events: beam.events.push(Event::T),
                         turn: beam.turn + (c - a),
                         ..beam
@@ -281,6 +297,7 @@ pub fn simulate_cell(
                     &mut tally,
                     Beam {
                         weight: w * legs.f,
+                        clear: beam.clear * legs.f,
                         events: beam.events.push(Event::R),
                         turn: beam.turn + PI + 2.0 * c,
                         place: Place::CortexIn,
@@ -297,6 +314,7 @@ pub fn simulate_cell(
                     &mut tally,
                     Beam {
                         weight: w * legs.fm,
+                        clear: beam.clear * legs.fm,
                         events: beam.events.push(Event::Rm),
                         turn: beam.turn + PI - 2.0 * m,
                         place: Place::CortexOut,
@@ -309,6 +327,7 @@ pub fn simulate_cell(
                         &mut tally,
                         Beam {
                             weight: w * (1.0 - legs.fm),
+                            clear: beam.clear * (1.0 - legs.fm),
                             events: beam.events.push(Event::Tm),
                             turn: beam.turn + (mu - m),
                             place: Place::Medulla,
@@ -322,15 +341,18 @@ pub fn simulate_cell(
                 let ell = legs.ell_m;
                 let p = 1.0 - libm::expf(-section.ext.medulla_scattering * ell);
                 if p > 0.0 {
-                    scatter(section, &beam, h, w * p, photons, rng, &mut tally, hist);
+                    let count = photon_count(photons, beam.clear * p);
+                    scatter(section, &beam, h, w * p, count, rng, &mut tally, hist);
                 }
-                let w = w * libm::expf(-section.ext.medulla * ell);
+                let through = libm::expf(-section.ext.medulla * ell);
+                let (w, clear) = (w * through, beam.clear * through);
                 push(
                     &mut stack,
                     &mut top,
                     &mut tally,
                     Beam {
                         weight: w * legs.fm,
+                        clear: clear * legs.fm,
                         events: beam.events.push(Event::Rm),
                         turn: beam.turn + PI + 2.0 * mu,
                         place: Place::Medulla,
@@ -342,6 +364,7 @@ pub fn simulate_cell(
                     &mut tally,
                     Beam {
                         weight: w * (1.0 - legs.fm),
+                        clear: clear * (1.0 - legs.fm),
                         events: beam.events.push(Event::Tm),
                         turn: beam.turn + (mu - m),
                         place: Place::CortexOut,
@@ -355,10 +378,10 @@ pub fn simulate_cell(
     tally
 }
 
-/// Pushes `beam` onto the walk's stack, or tallies it as dropped when it is below the cutoff
-/// or the stack is full.
+/// Pushes `beam` onto the walk's stack, or tallies it as dropped when its weight without
+/// cortex absorption is below the cutoff or the stack is full.
 fn push(stack: &mut [Beam; BEAM_STACK], top: &mut usize, tally: &mut CellTally, beam: Beam) {
-    if beam.weight.max_channel() < BEAM_CUTOFF || *top == BEAM_STACK {
+    if beam.clear < BEAM_CUTOFF || *top == BEAM_STACK {
         add(&mut tally.dropped, beam.weight);
     } else {
         stack[*top] = beam;
@@ -452,7 +475,13 @@ enum Region {
     Cortex,
 }
 
-/// Launches the photons carrying `w_s`, the weight of `beam` that scatters on its medulla
+/// Photons carrying a scattering chord's weight: `photons` per unit of `clear`, the chord's
+/// scattered weight without cortex absorption (the same at every colour), at least one.
+fn photon_count(photons: u32, clear: f32) -> u32 {
+    (libm::ceilf(photons as f32 * clear) as u32).max(1)
+}
+
+/// Launches `k` photons carrying `w_s`, the weight of `beam` that scatters on its medulla
 /// chord, and walks them out of the fiber (docs/model.md §12, "Residual").
 #[allow(clippy::too_many_arguments)]
 fn scatter(
@@ -460,7 +489,7 @@ fn scatter(
     beam: &Beam,
     h: f32,
     w_s: Rgb,
-    photons: u32,
+    k: u32,
     rng: &mut Pcg32,
     tally: &mut CellTally,
     hist: &mut [[f64; 3]],
@@ -478,7 +507,6 @@ fn scatter(
     let ell = 2.0 * half;
     let p_scatter = 1.0 - libm::expf(-sigma_s * ell);
     let modelled_before = MODELLED_BEFORE_SCATTERING.contains(&beam.events);
-    let k = (libm::ceilf(photons as f32 * w_s.max_channel()) as u32).max(1);
     let w0 = w_s * (1.0 / k as f32);
     for _ in 0..k {
         tally.photons += 1;

@@ -82,6 +82,47 @@ fn a_lossless_fiber_returns_every_photon_and_beam() {
 }
 
 #[test]
+fn a_cell_draws_the_same_random_numbers_at_every_colour() {
+    // Common random numbers (the `sim` module's documentation): the beam tree, the photon
+    // count and the draws go by the weight without cortex absorption, so a cell ends on the
+    // same generator state with the same beams and photons at any σ_ca, and its tallies
+    // fall off smoothly with σ_ca instead of changing noise.
+    let base = presets::find("bobcat").unwrap().input;
+    let at = |sigma: [f32; 3]| {
+        let input = FurParamsInput {
+            pigment: Pigment::Absorption(Rgb(sigma)),
+            ..base
+        };
+        FurParams::new(&input).unwrap()
+    };
+    for theta_r in [0.0f32, 0.7, 1.3] {
+        for h in [0.05f32, 0.4, 0.8] {
+            let run = |sigma: [f32; 3]| {
+                let sec = section(&at(sigma), theta_r);
+                let mut rng = Pcg32::new(3, 4);
+                let mut hist = [[0.0; 3]; 12];
+                let t = simulate_cell(&sec, h, 500, &mut rng, &mut hist);
+                (t, rng.next_u32())
+            };
+            let (clear, next) = run([0.0, 0.0, 0.0]);
+            for sigma in [[0.3, 3.0, 30.0], [5.3, 59.1, 651.5]] {
+                let (t, n) = run(sigma);
+                assert_eq!((t.beams, t.photons, n), (clear.beams, clear.photons, next));
+                for c in 0..3 {
+                    assert!(t.exiting[c] <= clear.exiting[c], "{sigma:?} {t:?}");
+                }
+            }
+            // The same draws: a lighter channel keeps more than a darker one, cell by cell.
+            let (t, _) = run([0.3, 3.0, 30.0]);
+            assert!(
+                t.exiting[0] >= t.exiting[1] && t.exiting[1] >= t.exiting[2],
+                "{t:?}"
+            );
+        }
+    }
+}
+
+#[test]
 fn rows_are_the_same_bits_alone_or_in_a_table() {
     let p = lossless("bobcat");
     let (layout, cn, cm) = small_profiles(&p);

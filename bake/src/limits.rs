@@ -141,7 +141,10 @@ pub fn dual_quadrature(value: &str) -> Result<bcsdf_core::dual::Quadrature, Stri
     let (t, p) = value.split_once(',').ok_or_else(bad)?;
     let t: usize = t.trim().parse().map_err(|_| bad())?;
     let p: usize = p.trim().parse().map_err(|_| bad())?;
-    if !(8..=MAX_DUAL_THETA_STEPS).contains(&t) || !(8..=max_phi).contains(&p) || p % 2 != 0 {
+    if !(8..=MAX_DUAL_THETA_STEPS).contains(&t)
+        || !(8..=max_phi).contains(&p)
+        || !p.is_multiple_of(2)
+    {
         return Err(bad());
     }
     Ok(bcsdf_core::dual::Quadrature {

@@ -57,13 +57,14 @@ fn cache() -> &'static Path {
 }
 
 /// The blob of a preset baked at the default resolution, with profiles made with 1 % of the
-/// default photon budget (no cache).
+/// default photon budget (profiles and residual tables cached in the target folder; the
+/// viewer runs use their own, [`cache`]).
 fn baked_blob(preset: &str) -> Vec<u8> {
     let presets = bake::presets::builtin().unwrap();
     let p = bake::presets::find(&presets, preset).unwrap();
     let opts = ProfileOptions {
         budget: profiles::scale_budget(PhotonBudget::DEFAULT, 0.01).unwrap(),
-        cache_dir: None,
+        cache_dir: Some(PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fur-profile-cache")),
         ..ProfileOptions::default()
     };
     let (model, _) = profiles::build_model(FurParams::new(&p.input).unwrap(), &opts).unwrap();

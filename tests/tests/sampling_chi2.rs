@@ -75,39 +75,30 @@ trait Viewed: Bcsdf + Sync {
     ) -> R;
 }
 
-impl<M: bcsdf_core::math::Math> Viewed for FurBcsdf<'_, M>
-where
-    Self: Sync,
-{
-    fn with_view<R>(
-        &self,
-        tr: f32,
-        f: impl FnOnce(
-            &(dyn Fn([f32; 3]) -> Option<SampledDirection> + Sync),
-            &(dyn Fn(f32, f32) -> f32 + Sync),
-        ) -> R,
-    ) -> R {
-        let v = self.view(tr).unwrap();
-        f(&|u| v.sample_direction(u), &|ti, phi| v.pdf(ti, phi))
-    }
+/// [`Viewed`] for an evaluator whose `view(θ_r)` has `sample_direction` and `pdf` (both
+/// samplers' views have the same shape).
+macro_rules! viewed {
+    ($t:ident) => {
+        impl<M: bcsdf_core::math::Math> Viewed for $t<'_, M>
+        where
+            Self: Sync,
+        {
+            fn with_view<R>(
+                &self,
+                tr: f32,
+                f: impl FnOnce(
+                    &(dyn Fn([f32; 3]) -> Option<SampledDirection> + Sync),
+                    &(dyn Fn(f32, f32) -> f32 + Sync),
+                ) -> R,
+            ) -> R {
+                let v = self.view(tr).unwrap();
+                f(&|u| v.sample_direction(u), &|ti, phi| v.pdf(ti, phi))
+            }
+        }
+    };
 }
-
-impl<M: bcsdf_core::math::Math> Viewed for BakedBcsdf<'_, M>
-where
-    Self: Sync,
-{
-    fn with_view<R>(
-        &self,
-        tr: f32,
-        f: impl FnOnce(
-            &(dyn Fn([f32; 3]) -> Option<SampledDirection> + Sync),
-            &(dyn Fn(f32, f32) -> f32 + Sync),
-        ) -> R,
-    ) -> R {
-        let v = self.view(tr).unwrap();
-        f(&|u| v.sample_direction(u), &|ti, phi| v.pdf(ti, phi))
-    }
-}
+viewed!(FurBcsdf);
+viewed!(BakedBcsdf);
 
 /// The χ² test of `model`'s sampler at θ_r, its density times `tilt(φ)` (1 for the test
 /// itself).

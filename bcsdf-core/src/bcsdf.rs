@@ -302,7 +302,7 @@ mod tests {
     #[test]
     fn dirs_methods_share_one_conversion_baked() {
         let b = crate::baked::tests::random();
-        let lut = BakedBcsdf::from_bytes(&b).unwrap();
+        let lut = BakedBcsdf::from_bytes(b).unwrap();
         check_one_conversion(&lut, 2000);
     }
 

@@ -33,7 +33,7 @@
 //! ([`cuticle_grazing_knee`]) there; when it is narrower than the last sub-panel (few cuticle
 //! layers), that sub-panel is cut geometrically toward π/2.
 //!
-//! Measured against a 50× finer reference (`tests/tests/far_field_accuracy.rs`): worst
+//! Measured against a 50× finer reference (`tests/tests/suite/far_field_accuracy.rs`): worst
 //! relative error 5.0e-5 over the presets, 2.9e-5 over its 96 random parameter sets and 6.9e-5
 //! over three pinned sets from an 800-set scan, against the 1e-4 budget (`docs/accuracy.md`).
 

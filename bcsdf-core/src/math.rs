@@ -12,7 +12,7 @@
 //!   `atan2` and `exp`, and the polynomial [`asin_polynomial`] (micromath's own `asin` is off
 //!   by up to 0.018 rad); `sqrt` stays exact (it is not transcendental and is a single
 //!   instruction on most targets). Its error against [`Libm`] is measured by the test
-//!   `tests/tests/fast_math.rs` and documented in `docs/accuracy.md`.
+//!   `tests/tests/suite/fast_math.rs` and documented in `docs/accuracy.md`.
 //!
 //! Choosing the backend is explicit (`FurBcsdf<FastMath>`) rather than a global feature
 //! switch, so that one dependency enabling the feature cannot silently change the numbers
@@ -128,7 +128,7 @@ impl Math for FastMath {
     }
     #[inline]
     fn asin(x: f32) -> f32 {
-        // micromath's asin is off by up to 0.018 rad (measured, tests/tests/fast_math.rs),
+        // micromath's asin is off by up to 0.018 rad (measured, tests/tests/suite/fast_math.rs),
         // which moves every lobe by about a degree; this polynomial is as fast and far better.
         asin_polynomial(x)
     }

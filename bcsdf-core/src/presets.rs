@@ -1,7 +1,7 @@
 //! Built-in presets (docs/model.md §9) as constants, for no_std users.
 //!
 //! The human-editable source is `bcsdf-core/presets.toml`, which the std tools read (and
-//! which users copy to make their own); `tests/tests/presets.rs` checks that these constants
+//! which users copy to make their own); `tests/tests/suite/presets.rs` checks that these constants
 //! and that file agree exactly.
 
 use crate::params::FurParamsInput;

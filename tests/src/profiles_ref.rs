@@ -11,7 +11,7 @@
 //! - [`scattered_energy`]: the scattered part of the white-furnace prediction (docs/model.md §8).
 //!
 //! The only things taken from the core are the generated tables and their lookup
-//! (`MedullaProfiles::cn`, `cm`), which `tests/tests/profiles.rs` checks on its
+//! (`MedullaProfiles::cn`, `cm`), which `tests/tests/suite/profiles.rs` checks on its
 //! own. Nothing here calls the core's geometry, Fresnel, scattered or far-field code.
 
 use crate::quadrature::{composite_gl_nodes, gauss_legendre};

@@ -14,7 +14,7 @@
 //! Each query goes through the same operations (the families are summed without being
 //! stored, `BakedBcsdf::total`) as [`BakedBcsdf::eval_far`] followed by
 //! [`Families::total`], so the results equal the scalar path's bit for bit
-//! (`tests/tests/baked_batch.rs` checks 10⁵ queries, NaN, ∞ and edge angles included).
+//! (`tests/tests/suite/baked_batch.rs` checks 10⁵ queries, NaN, ∞ and edge angles included).
 
 use super::dispatch::KernelOp;
 #[cfg(target_arch = "x86_64")]

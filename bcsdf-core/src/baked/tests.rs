@@ -10,6 +10,7 @@ use crate::math::wrap_angle;
 use crate::params::FurParamsInput;
 use crate::presets;
 use crate::Absorption;
+use std::sync::OnceLock;
 use std::vec;
 use std::vec::Vec;
 
@@ -80,18 +81,22 @@ fn half(v: f32) -> u16 {
 }
 
 /// Every table affine in its node indices: M = x + c, N = x + 2y + 5k + c (y the |θ_r| row
-/// within absorption plane k), M_s = x + 3y + c.
-fn affine() -> Vec<u8> {
-    blob(RES, |t, x, y, c| {
-        let v = match t {
-            Table::M => x as f32,
-            Table::N => {
-                let (plane, row) = (y / RES.n_theta_r as usize, y % RES.n_theta_r as usize);
-                x as f32 + 2.0 * row as f32 + 5.0 * plane as f32
-            }
-            Table::MS => x as f32 + 3.0 * y as f32,
-        };
-        half(v + c as f32)
+/// within absorption plane k), M_s = x + 3y + c. Built once per test process and shared, as
+/// [`random_with`]'s LUTs are: under Miri one build of a LUT costs seconds.
+fn affine() -> &'static [u8] {
+    static AFFINE: OnceLock<Vec<u8>> = OnceLock::new();
+    AFFINE.get_or_init(|| {
+        blob(RES, |t, x, y, c| {
+            let v = match t {
+                Table::M => x as f32,
+                Table::N => {
+                    let (plane, row) = (y / RES.n_theta_r as usize, y % RES.n_theta_r as usize);
+                    x as f32 + 2.0 * row as f32 + 5.0 * plane as f32
+                }
+                Table::MS => x as f32 + 3.0 * y as f32,
+            };
+            half(v + c as f32)
+        })
     })
 }
 
@@ -141,7 +146,7 @@ fn axis_locates_nodes_interpolates_and_clamps() {
 #[test]
 fn lookups_interpolate_every_table_linearly() {
     let b = affine();
-    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let lut = BakedBcsdf::from_bytes(b).unwrap();
     let r = RES;
     // Under Miri (CI's unsafe-code check, ~10⁴ times slower): both ends and two inside.
     let (thetas, phis) = if cfg!(miri) {
@@ -214,7 +219,7 @@ fn lookups_interpolate_every_table_linearly() {
 #[test]
 fn colours_are_located_on_the_absorption_axis() {
     let b = affine();
-    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let lut = BakedBcsdf::from_bytes(b).unwrap();
     let plane = RES.n_plane();
     let scale = lut.header().absorption_scale();
     // Every node is reached exactly: its own weight 1 (to rounding), the others 0.
@@ -281,7 +286,7 @@ fn a_constant_lut_leaves_the_exact_cos2_factor() {
 #[test]
 fn value_reads_texels_and_is_zero_outside() {
     let b = affine();
-    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let lut = BakedBcsdf::from_bytes(b).unwrap();
     assert_eq!(lut.value(Table::M, 7, 0, 2), 9.0);
     assert_eq!(lut.value(Table::N, 3, 4, 3), 3.0 + 8.0 + 3.0);
     assert_eq!(lut.value(Table::N, 3, 6, 2), 3.0 + 2.0 + 5.0 + 2.0);
@@ -295,12 +300,22 @@ fn value_reads_texels_and_is_zero_outside() {
 }
 
 /// A LUT at [`RES`] with pseudo-random halves in [0, 2), one in eight zero.
-pub(crate) fn random() -> Vec<u8> {
+pub(crate) fn random() -> &'static [u8] {
     random_with(Closure::Report)
 }
 
-/// [`random`] in the closure `closure`.
-pub(crate) fn random_with(closure: Closure) -> Vec<u8> {
+/// [`random`] in the closure `closure`, built once per test process and shared by every test
+/// that reads it (under Miri one build and seal of a LUT costs seconds).
+pub(crate) fn random_with(closure: Closure) -> &'static [u8] {
+    static LUTS: [OnceLock<Vec<u8>>; 2] = [OnceLock::new(), OnceLock::new()];
+    let cell = match closure {
+        Closure::Report => &LUTS[0],
+        Closure::Energy => &LUTS[1],
+    };
+    cell.get_or_init(|| random_blob(closure))
+}
+
+fn random_blob(closure: Closure) -> Vec<u8> {
     blob_with(RES, closure, |t, x, y, c| {
         let mut z = (t as u64) << 48 ^ (x as u64) << 32 ^ (y as u64) << 16 ^ c as u64;
         z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
@@ -317,7 +332,7 @@ pub(crate) fn random_with(closure: Closure) -> Vec<u8> {
 #[test]
 fn directions_agree_with_angles_and_reject_like_angles() {
     let b = random();
-    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let lut = BakedBcsdf::from_bytes(b).unwrap();
     let (wr, tangent) = ([0.3, -1.0, 0.4], [0.0, 0.2, 1.0]);
     let frame = crate::Frame::from_view::<Libm>(wr, tangent).unwrap();
     // Under Miri (CI's unsafe-code check) a fifth of the queries.
@@ -383,7 +398,7 @@ fn batch_equals_the_scalar_path_bit_for_bit() {
 
 fn batch_equals_the_scalar_path_in(closure: Closure) {
     let b = random_with(closure);
-    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let lut = BakedBcsdf::from_bytes(b).unwrap();
     // More than three chunks, the last one partial; under Miri (CI's unsafe-code check, ~10⁴
     // times slower) one full chunk and a partial one.
     let n = if cfg!(miri) { 40 } else { 100 };
@@ -453,7 +468,7 @@ fn batch_equals_the_scalar_path_in(closure: Closure) {
 #[test]
 fn batch_rejects_slices_of_different_lengths() {
     let b = random();
-    let lut = BakedBcsdf::from_bytes(&b).unwrap();
+    let lut = BakedBcsdf::from_bytes(b).unwrap();
     let mut out = [Rgb([5.0; 3]); 2];
     let e = lut
         .eval_far_batch(&[0.0; 2], &[0.0; 3], &[0.0; 2], &mut out)
@@ -478,7 +493,7 @@ fn batch_rejects_slices_of_different_lengths() {
 
 #[test]
 fn from_bytes_rejects_damaged_blobs() {
-    let good = random();
+    let good = random().to_vec();
     assert!(BakedBcsdf::from_bytes(&good).is_ok());
     assert_eq!(
         BakedBcsdf::from_bytes(&good[..100]).unwrap_err(),

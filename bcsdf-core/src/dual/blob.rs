@@ -411,6 +411,35 @@ pub(super) fn checksum_of(blob: &[u8]) -> u64 {
     fnv1a64_continue(fnv1a64(&copy), &blob[HEADER_LEN..])
 }
 
+/// The set a stored half must lie in, checked on its bits: finite (exponent field not all
+/// ones), and for the signed sets compared as its value compares (±0 belongs to both sides).
+#[derive(Clone, Copy)]
+pub(super) enum HalfRange {
+    Finite,
+    NonNegative,
+    NonPositive,
+    /// [0, 1].
+    Unit,
+}
+
+impl HalfRange {
+    pub(super) fn holds(self, h: u16) -> bool {
+        const EXPONENT: u16 = 0x7c00;
+        const SIGN: u16 = 0x8000;
+        const ONE: u16 = 0x3c00;
+        let magnitude = h & !SIGN;
+        let finite = h & EXPONENT != EXPONENT;
+        let non_negative = h & SIGN == 0 || magnitude == 0;
+        finite
+            && match self {
+                HalfRange::Finite => true,
+                HalfRange::NonNegative => non_negative,
+                HalfRange::NonPositive => h & SIGN != 0 || magnitude == 0,
+                HalfRange::Unit => non_negative && magnitude <= ONE,
+            }
+    }
+}
+
 fn word(bytes: &[u8], at: usize) -> u32 {
     u32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]])
 }
@@ -491,28 +520,30 @@ impl DualLut {
         let Ok(default) = Absorption::from_sigma(colour) else {
             return Err(DualError::Colour);
         };
-        let half = |i: usize| {
+        let bits = |i: usize| {
             let at = HEADER_LEN + 2 * i;
-            // Portable, as in `half_bits`: a blob is decoded once, not per query.
-            half::f16::from_bits(u16::from_le_bytes([bytes[at], bytes[at + 1]])).to_f32_const()
+            u16::from_le_bytes([bytes[at], bytes[at + 1]])
         };
-        // Check every value before writing any.
+        let half = |i: usize| {
+            // Portable, as in `half_bits`: a blob is decoded once, not per query.
+            half::f16::from_bits(bits(i)).to_f32_const()
+        };
+        // Check every value before writing any, on the bits (the same sets as the float
+        // comparisons, without a conversion per value).
         for i in 0..ABS_NODES * NODE_HALVES {
-            let v = half(i);
             let within = i % NODE_HALVES;
-            let ok = v.is_finite()
-                && if within >= FIELD_HALVES {
-                    v >= 0.0
-                } else {
-                    match within % FIELDS {
-                        LOG2_DECAY => v <= 0.0,
-                        A_F2 => (0.0..=1.0).contains(&v),
-                        BETA_F | BACK | FRONT | SIGMA_B0 => v >= 0.0,
-                        f if f >= SD => v >= 0.0,
-                        _ => true,
-                    }
-                };
-            if !ok {
+            let range = if within >= FIELD_HALVES {
+                HalfRange::NonNegative
+            } else {
+                match within % FIELDS {
+                    LOG2_DECAY => HalfRange::NonPositive,
+                    A_F2 => HalfRange::Unit,
+                    BETA_F | BACK | FRONT | SIGMA_B0 => HalfRange::NonNegative,
+                    f if f >= SD => HalfRange::NonNegative,
+                    _ => HalfRange::Finite,
+                }
+            };
+            if !range.holds(bits(i)) {
                 return Err(DualError::Value(i));
             }
         }

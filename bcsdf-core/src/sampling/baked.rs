@@ -284,7 +284,7 @@ mod tests {
     #[test]
     fn row_inversion_hits_the_target_mass() {
         let b = blob();
-        let lut = BakedBcsdf::from_bytes(&b).unwrap();
+        let lut = BakedBcsdf::from_bytes(b).unwrap();
         let mut checked = 0;
         let n_theta_r = lut.header.res.n_theta_r as usize;
         let front = |phi: f64| phi / core::f64::consts::PI;
@@ -321,7 +321,7 @@ mod tests {
     #[test]
     fn samples_carry_the_pdf_and_the_weight_of_their_direction() {
         let b = blob();
-        let lut = BakedBcsdf::from_bytes(&b).unwrap();
+        let lut = BakedBcsdf::from_bytes(b).unwrap();
         let mut drawn = 0;
         // Under Miri (CI's unsafe-code check) a tenth of the draws: every θ_r still.
         let draws = if cfg!(miri) { 40 } else { 400 };

@@ -116,11 +116,11 @@ fn check_lut_pairs_a_blob_with_the_lut_it_records_and_no_other() {
     use crate::baked::{tests as luts, BakedBcsdf};
     use std::string::ToString;
     let bytes = luts::random();
-    let lut = BakedBcsdf::from_bytes(&bytes).unwrap();
+    let lut = BakedBcsdf::from_bytes(bytes).unwrap();
     // The header's checksum is the bytes' (from_bytes checked it; read, not recomputed).
-    assert_eq!(lut.checksum(), crate::lut::checksum(&bytes));
+    assert_eq!(lut.checksum(), crate::lut::checksum(bytes));
     let other_bytes = luts::random_with(Closure::Energy);
-    let other = BakedBcsdf::from_bytes(&other_bytes).unwrap();
+    let other = BakedBcsdf::from_bytes(other_bytes).unwrap();
     assert_ne!(other.checksum(), lut.checksum());
 
     let t = absorbing_tables();
@@ -239,5 +239,23 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
             "n = 0, channel {c}: {} vs {want} ({err:e})",
             direct[c]
         );
+    }
+}
+
+#[test]
+fn value_checks_on_the_bits_are_the_float_comparisons() {
+    use blob::HalfRange;
+    // Every one of the 65 536 halves, against the comparison on its value.
+    for h in 0..=u16::MAX {
+        let v = half::f16::from_bits(h).to_f32();
+        let cases = [
+            (HalfRange::Finite, v.is_finite()),
+            (HalfRange::NonNegative, v.is_finite() && v >= 0.0),
+            (HalfRange::NonPositive, v.is_finite() && v <= 0.0),
+            (HalfRange::Unit, v.is_finite() && (0.0..=1.0).contains(&v)),
+        ];
+        for (i, (range, want)) in cases.into_iter().enumerate() {
+            assert_eq!(range.holds(h), want, "range {i}, bits {h:#06x} ({v})");
+        }
     }
 }

@@ -144,7 +144,7 @@ mod tests {
     #[test]
     fn a_view_answers_as_the_trait_does_at_its_theta_r() {
         let b = blob();
-        let lut = BakedBcsdf::from_bytes(&b).unwrap();
+        let lut = BakedBcsdf::from_bytes(b).unwrap();
         let mut rng = Pcg32::new(22, 3);
         let mut positive = 0;
         // Under Miri (CI's unsafe-code check, ~10⁴ times slower) a thirtieth of the views.

@@ -7,7 +7,7 @@
 //!   two colours; the same metric flags the LUT read at the wrong colour, so the test can fail;
 //! - `every_preset_at_every_study_colour` (ignored: every preset × 25 colours, about 20
 //!   minutes on two cores): the table of docs/accuracy.md,
-//!   `cargo test --release -p fur-tests --test colour_budget -- --ignored --nocapture`.
+//!   `cargo test --release -p fur-tests --test suite colour_budget:: -- --ignored --nocapture`.
 //!
 //! Profiles and residual tables are cached under Cargo's per-target temporary directory.
 

@@ -8,7 +8,7 @@
 //!   M on the sphere, the residual) keeps the furnace white like the ideal fiber, for a plain
 //!   and a medullated preset; in the report closure its deficit per bounce order is printed.
 
-mod common;
+use crate::common;
 
 use bcsdf_core::{
     Angles, Bcsdf, Closure, Families, Libm, LobeFamily, Pigment, Rgb, SampledDirection,

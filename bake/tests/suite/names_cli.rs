@@ -10,7 +10,7 @@
 //!   tables do not depend on the name), and `bake_preset` is checked to refuse a bad name
 //!   before any work.
 
-mod cli_support;
+use crate::cli_support;
 
 use bake::pipeline::{self, BakeError, BakeOptions};
 use bake::presets::NamedPreset;

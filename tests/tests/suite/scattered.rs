@@ -154,7 +154,7 @@ fn forward_scattering_peaks_where_model_says() {
 /// h node) the integral is A^s_p·∫ C^N(ψ) dψ, C^N interpolated here from the raw table
 /// (linear between bin centres, circular), to 1e-3: C^N carries the medulla absorption
 /// (docs/model.md §7; its integral, the mean survival, is checked against an independent
-/// computation in `tests/tests/profiles.rs`), and the model applies no other σ_ma factor.
+/// computation in `tests/tests/suite/profiles.rs`), and the model applies no other σ_ma factor.
 #[test]
 fn phi_integral_of_scattered_lobes_is_attenuation() {
     let mut worst = 0.0f64;

@@ -3,7 +3,7 @@
 //! neither loader panics on or accepts corrupted bytes (every single-byte change of an EXR,
 //! random truncations and flips of both forms).
 
-mod common;
+use crate::common;
 
 use bake::lutfile::{exr_from_bytes, read_blob, LutFileError};
 use bcsdf_core::lut::{self, Table};

@@ -3,7 +3,7 @@
 //! fail cleanly, and bad input gives errors naming the file. Damaged and edited files:
 //! `lutfile_damage.rs`.
 
-mod common;
+use crate::common;
 
 use bake::lutfile::{
     encode_exr, exr_from_bytes, read_blob, read_exr, write_blob, write_exr,

@@ -1,6 +1,6 @@
 //! Determinism (docs/model.md §11): the same render.exr bytes for 1 and 2 threads.
 
-mod common;
+use crate::common;
 
 use render::scatter::One;
 use render::{integrator, output, scenes, SceneKind, SceneOptions, Settings};

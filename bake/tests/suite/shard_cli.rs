@@ -11,7 +11,7 @@
 //! Every bake is small (tiny tables, 0.5 % of the photon budget, no error check) and bypasses
 //! the profile cache, so the unsharded and sharded runs generate their profiles independently.
 
-mod cli_support;
+use crate::cli_support;
 
 use cli_support::{bake, check_success, files, summary_presets, text, CHEAP};
 use std::collections::BTreeMap;

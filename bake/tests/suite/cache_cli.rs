@@ -9,7 +9,7 @@
 //!   unlocked: the next bake regenerates it (removing the killed one's temporary file), and
 //!   the one after reads it.
 
-mod cli_support;
+use crate::cli_support;
 
 use cli_support::{bake, check_success, files, summary_rows, text, tree, CHEAP};
 use std::fs;

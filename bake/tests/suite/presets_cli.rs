@@ -7,7 +7,7 @@
 //!
 //! The bakes are the cheapest the CLI offers (tiny tables, few photons, no cache, no check).
 
-mod cli_support;
+use crate::cli_support;
 
 use cli_support::{bake as command, text, CHEAP};
 use std::fs;

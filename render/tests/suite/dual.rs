@@ -10,7 +10,7 @@
 //! The same numbers restricted to the fur (pixels whose centre's camera ray first meets a
 //! fiber) are printed beside them.
 
-mod common;
+use crate::common;
 
 use bcsdf_core::dual::{encode, Attenuation, Density, DualLut, DualTables, Quadrature};
 use bcsdf_core::{presets, Closure, FurBcsdf};
@@ -224,7 +224,7 @@ fn dual_scattering_is_within_the_bounds_of_the_path_tracer_deer() {
 }
 
 /// The table of docs/accuracy.md ("Dual scattering"): every preset, `ball` and `patch`,
-/// `path` at 32 spp. `cargo test -p render --test dual -- --ignored --nocapture every_preset`.
+/// `path` at 32 spp. `cargo test -p render --test suite dual:: -- --ignored --nocapture every_preset`.
 #[test]
 #[ignore = "every preset, minutes; its table is in docs/accuracy.md"]
 fn every_preset_against_the_path_tracer() {
@@ -281,7 +281,7 @@ fn dual_renders_are_deterministic() {
     });
 }
 
-/// The grid search of d_f, d_b (docs/accuracy.md): `cargo test -p render --test dual --
+/// The grid search of d_f, d_b (docs/accuracy.md): `cargo test -p render --test suite dual:: --
 /// --ignored --nocapture fit` (every preset, or the list in `DUAL_FIT_PRESETS`). 48 × 48
 /// pixels, 16 spp, one `path` image per preset and scene, a `dual` image per point of
 /// {0.5, 1, 1.5}²; the best point is the one whose worse scene's |mean error| is least.
@@ -357,7 +357,7 @@ fn fit_density() {
 /// from `lut.at`), and records `colour` as its own, so `Method::Dual` evaluates every channel
 /// interpolated along the axis at `colour`; `path` renders the preset with its σ_ca replaced
 /// by `colour`. Mean luminance within 10 % of `path` for two presets at two colours each, on
-/// `ball`, `path` at 32 spp. `cargo test -p render --test dual -- --ignored --nocapture
+/// `ball`, `path` at 32 spp. `cargo test -p render --test suite dual:: -- --ignored --nocapture
 /// dual_at_a_colour`.
 #[test]
 #[ignore]

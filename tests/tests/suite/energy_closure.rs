@@ -286,7 +286,7 @@ fn check_residual_furnace(name: &str) {
             // Near field: S at h (eleven lobes and the residual's own h-profile), h by the
             // midpoint rule; at the non-negative θ_r only, which halves the test's cost (the
             // far field and the LUT are checked at both signs; the near field's every-path
-            // agreement with the far field at random angles is viewer/tests/every_path.rs's).
+            // agreement with the far field at random angles is viewer/tests/suite/every_path.rs's).
             // Summed in h order, whatever the threads.
             let near_h: Vec<f64> = (0..if t >= 0.0 { NEAR_H } else { 0 })
                 .into_par_iter()

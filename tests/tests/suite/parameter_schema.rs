@@ -1,7 +1,7 @@
 //! The parameter schema ([`bcsdf_core::SCHEMA`]) walked through every serialisation of the
 //! parameter set: for each row a distinctive value is set, written in the format and read
 //! back. A parameter added to the schema that some format does not carry fails here; the
-//! viewer's summary page has the same walk in `viewer/tests/compare.rs`.
+//! viewer's summary page has the same walk in `viewer/tests/suite/compare.rs`.
 
 use bake::presets;
 use bake::tables::{encode, TableValues};

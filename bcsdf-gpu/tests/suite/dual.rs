@@ -17,7 +17,7 @@
 //! Without an adapter the tests print "skipped: no GPU adapter" and pass, unless
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
 
-mod common;
+use crate::common;
 
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::dual::axis_node;

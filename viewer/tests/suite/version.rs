@@ -1,5 +1,5 @@
 //! `viewer --version` prints the crate's version (the workspace's, which CHANGELOG.md's latest
-//! release must equal: tests/tests/changelog.rs).
+//! release must equal: tests/tests/suite/changelog.rs).
 
 use std::process::Command;
 

@@ -61,7 +61,7 @@ fn uniforms(seed: u64, i: usize) -> [f32; 3] {
 }
 
 /// The two samplers' views (`FurBcsdf::view`, `BakedBcsdf::view`): the per-view set-up done
-/// once per θ_r, the same bits as the `Bcsdf` methods (tests/tests/sampling.rs checks both).
+/// once per θ_r, the same bits as the `Bcsdf` methods (tests/tests/suite/sampling.rs checks both).
 trait Viewed: Bcsdf + Sync {
     /// `sample_direction` at θ_r = `tr` from uniforms `u`, and the density of (θ_i, φ), both
     /// from one view, handed to `f`.

@@ -31,7 +31,7 @@ fn committed_translations_are_current() {
     }
     assert!(
         stale.is_empty(),
-        "stale shader translations {stale:?}: run `FUR_BLESS_SHADERS=1 cargo test -p bcsdf-gpu --test translations` and commit them"
+        "stale shader translations {stale:?}: run `FUR_BLESS_SHADERS=1 cargo test -p bcsdf-gpu --test suite translations::` and commit them"
     );
     // Nothing else in the folder: a removed entry point does not leave an orphan behind.
     let mut names: Vec<String> = std::fs::read_dir(dir())

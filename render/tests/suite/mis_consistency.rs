@@ -2,7 +2,7 @@
 //! their MIS combination estimate the same image, so their means agree within their noise,
 //! over the whole image and per 16×16 tile (z-tests).
 
-mod common;
+use crate::common;
 
 use render::scatter::One;
 use render::{integrator, scenes, SceneKind, SceneOptions, Settings, Strategy};

@@ -16,6 +16,8 @@
 //!   and samples with another.
 //! - [`method`]: `path`, and the engine approximations `single` and `dual` (dual scattering,
 //!   docs/model.md §13) judged against it.
+//! - [`coat`]: the thick coat slab under a white sky (docs/model.md §14) whose rendered mean is
+//!   the coat colour a base colour asks for.
 //! - [`compare`]: an approximation's image against the reference (the dual-scattering mean and tile
 //!   metrics) and the side-by-side pictures of `viewer render --compare`.
 //! - [`film`], [`output`]: the image with per-pixel standard errors, bounce-order energies,
@@ -41,6 +43,7 @@
 
 pub mod accel;
 pub mod camera;
+pub mod coat;
 pub mod compare;
 pub mod fiber;
 pub mod film;

@@ -99,7 +99,7 @@ impl CoatColour {
     /// at most the one before it; the walk's noise is shared between nodes, so this moves
     /// a node by about its standard error at most).
     ///
-    /// Cost: [`COAT_NODES`]/3 walks; with [`CoatWalk::DEFAULT`] about 0.3–3 s on one core,
+    /// Cost: [`COAT_NODES`]/3 walks; with [`CoatWalk::DEFAULT`] about 1–4 s on one core (0.9 s deer, 3.8 s human hair),
     /// longest for lossless fibers (long paths in a nearly lossless coat).
     #[must_use]
     pub fn measure<M: Math>(lut: &BakedBcsdf<'_, M>, walk: &CoatWalk) -> CoatColour {

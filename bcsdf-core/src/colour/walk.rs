@@ -43,10 +43,10 @@ pub struct CoatWalk {
 }
 
 impl CoatWalk {
-    /// The budget [`super::CoatColour::measure`] uses: 8192 photons, at most 512 events.
+    /// The budget [`super::CoatColour::measure`] uses: 8192 photons, at most 2048 events.
     pub const DEFAULT: CoatWalk = CoatWalk {
         photons: 8192,
-        max_bounces: 512,
+        max_bounces: 2048,
         seed: 1,
     };
 }

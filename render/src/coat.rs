@@ -51,6 +51,34 @@ impl CoatSlab {
         seed: 1,
     };
 
+    /// Segments [`CoatSlab::for_absorption`] may spend on one slab.
+    pub const SEGMENT_BUDGET: f32 = 1.2e6;
+
+    /// The slab that checks the coat colour at cortex absorption `sigma` (the smallest of a
+    /// colour's channels), docs/model.md §14 "Checked against the path tracer": as deep as
+    /// that absorption needs for the floor not to show, 4/√σ free paths clamped to [10, 80]
+    /// (light diffuses about 1/√σ deep in a nearly lossless coat), 10 free paths wider than
+    /// half its depth on each side, and its fibers as thin as [`CoatSlab::SEGMENT_BUDGET`]
+    /// allows, radius from 1/13 (deep slabs) down to 1/120 of a free path (shallow ones), toward
+    /// the definition's limit of fibers far apart compared with their radius. NaN or negative
+    /// `sigma` reads as 0.
+    #[must_use]
+    pub fn for_absorption(sigma: f32) -> CoatSlab {
+        let sigma = if sigma > 0.0 { sigma } else { 0.0 };
+        let depth = (4.0 / sigma.sqrt()).clamp(10.0, 80.0);
+        let half_width = 10.0 + 0.5 * depth;
+        let len = CoatSlab::DEFAULT.segment_free_paths;
+        // segments = λ·volume/len with λ = 1/(2r): the radius that spends the budget.
+        let radius = ((2.0 * half_width).powi(2) * depth / (2.0 * len * Self::SEGMENT_BUDGET))
+            .clamp(1.0 / 120.0, 1.0 / 13.0);
+        CoatSlab {
+            depth_free_paths: depth,
+            half_width_free_paths: half_width,
+            radius_per_free_path: radius,
+            ..CoatSlab::DEFAULT
+        }
+    }
+
     /// How many segments the slab holds: the fiber length per unit volume λ = 1/(2r) in units
     /// of one free path, times the volume, over the segment length.
     #[must_use]

@@ -140,6 +140,7 @@ fn a_lossless_coat_returns_its_light_and_absorption_darkens_it() {
         photons: 4000,
         max_bounces: 4000,
         seed: 3,
+        depth: f32::INFINITY,
     };
     let lossless = coat_reflectance(&Ideal(1.0), &walk);
     // Energy: every photon leaves (or is still inside at the end), within the noise.

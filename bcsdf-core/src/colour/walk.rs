@@ -30,7 +30,7 @@ const STREAM: u64 = 0x636f_6174;
 const MAX_FLIGHT_STEPS: u32 = 4096;
 
 /// The walk's budget (docs/model.md §14).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CoatWalk {
     /// Photons per estimate (each a path from the viewer).
     pub photons: u32,
@@ -40,14 +40,19 @@ pub struct CoatWalk {
     /// Seed of the photons' streams (photon k has its own stream, the same at every colour,
     /// so estimates at neighbouring colours share their noise).
     pub seed: u64,
+    /// The coat's depth in majorant free paths over a black floor; `f32::INFINITY` is the
+    /// semi-infinite coat of the definition (a finite depth measures a check scene's slab).
+    pub depth: f32,
 }
 
 impl CoatWalk {
-    /// The budget [`super::CoatColour::measure`] uses: 8192 photons, at most 2048 events.
+    /// The budget [`super::CoatColour::measure`] uses: 8192 photons, at most 4096 events (the
+    /// path tracer's depth limit), the semi-infinite coat.
     pub const DEFAULT: CoatWalk = CoatWalk {
         photons: 8192,
-        max_bounces: 2048,
+        max_bounces: 4096,
         seed: 1,
+        depth: f32::INFINITY,
     };
 }
 
@@ -93,7 +98,7 @@ pub fn coat_reflectance<B: Bcsdf>(fiber: &B, walk: &CoatWalk) -> CoatEstimate {
     let (mut sum, mut sum2, mut lost) = ([0.0f64; 3], [0.0f64; 3], [0.0f64; 3]);
     for photon in 0..n {
         let mut rng = Pcg32::new(walk.seed, cell_stream(walk.seed, STREAM, u64::from(photon)));
-        let (escaped, left) = one_photon(fiber, walk.max_bounces, &mut rng);
+        let (escaped, left) = one_photon(fiber, walk, &mut rng);
         for c in 0..3 {
             let e = f64::from(escaped[c]);
             sum[c] += e;
@@ -119,16 +124,17 @@ pub fn coat_reflectance<B: Bcsdf>(fiber: &B, walk: &CoatWalk) -> CoatEstimate {
 
 /// One photon: (the throughput it leaves the coat with, the throughput still inside after
 /// `max_bounces` events).
-fn one_photon<B: Bcsdf>(fiber: &B, max_bounces: u32, rng: &mut Pcg32) -> (Rgb, Rgb) {
+fn one_photon<B: Bcsdf>(fiber: &B, walk: &CoatWalk, rng: &mut Pcg32) -> (Rgb, Rgb) {
     // Depth below the coat's top (≤ 0 inside), in majorant free paths; the path's direction.
     let mut z = 0.0f32;
     let mut d: Vec3 = [0.0, 0.0, -1.0];
     let mut beta = Rgb::splat(1.0);
-    for bounce in 0..max_bounces {
-        let tangent = match flight(&mut z, d, rng) {
+    let floor = -walk.depth;
+    for bounce in 0..walk.max_bounces {
+        let tangent = match flight(&mut z, d, floor, rng) {
             Flight::Fiber(t) => t,
             Flight::Leaves => return (beta, Rgb::ZERO),
-            Flight::Lost => return (Rgb::ZERO, Rgb::ZERO),
+            Flight::Floor | Flight::Lost => return (Rgb::ZERO, Rgb::ZERO),
         };
         let wr = [-d[0], -d[1], -d[2]];
         let u = [rng.uniform(), rng.uniform(), rng.uniform()];
@@ -152,8 +158,9 @@ fn one_photon<B: Bcsdf>(fiber: &B, max_bounces: u32, rng: &mut Pcg32) -> (Rgb, R
         }
     }
     // Still inside: one more flight decides whether the last event's light leaves directly.
-    match flight(&mut z, d, rng) {
+    match flight(&mut z, d, floor, rng) {
         Flight::Leaves => (beta, Rgb::ZERO),
+        Flight::Floor => (Rgb::ZERO, Rgb::ZERO),
         Flight::Fiber(_) | Flight::Lost => (Rgb::ZERO, beta),
     }
 }
@@ -164,17 +171,22 @@ enum Flight {
     Fiber(Vec3),
     /// Out of the coat, into the sky.
     Leaves,
+    /// Through the coat's bottom onto its black floor.
+    Floor,
     /// Given up after [`MAX_FLIGHT_STEPS`] null collisions.
     Lost,
 }
 
 /// Moves the path from depth `z` along `d` to its next fiber (delta tracking, the module's
-/// rate), or out of the coat.
-fn flight(z: &mut f32, d: Vec3, rng: &mut Pcg32) -> Flight {
+/// rate), or out of the coat through its top or onto its floor at depth `floor` (≤ 0).
+fn flight(z: &mut f32, d: Vec3, floor: f32, rng: &mut Pcg32) -> Flight {
     for _ in 0..MAX_FLIGHT_STEPS {
         *z += -libm::logf(rng.uniform_open0()) * d[2];
         if *z > 0.0 {
             return Flight::Leaves;
+        }
+        if *z < floor {
+            return Flight::Floor;
         }
         let t = sample_tangent(rng.uniform(), rng.uniform());
         if rng.uniform() < sine_between(d, t) {

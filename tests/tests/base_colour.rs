@@ -11,7 +11,7 @@
 use bake::profiles::{build_model, ProfileOptions};
 use bcsdf_core::colour::{CoatColour, CoatWalk};
 use bcsdf_core::lut::LutResolution;
-use bcsdf_core::{presets, Absorption, BakedBcsdf, FurParams, Rgb};
+use bcsdf_core::{presets, Absorption, BakedBcsdf, Bcsdf, FurParams, Rgb};
 use render::coat::{coat_scene, CoatSlab};
 use render::scatter::One;
 use render::{integrator, Settings};
@@ -79,6 +79,17 @@ fn a_picked_colour_is_the_colour_the_coat_shows() {
         if !within(got, want) {
             failures.push(format!("{b}: the coat shows {:?}", got.0));
         }
+        // What `bake` does for a base-colour preset: the σ_ca found becomes the LUT's default
+        // colour, bit for bit, and the tables stay as they were.
+        let mut recoloured = bytes.clone();
+        bake::colour::set_default_colour(&mut recoloured, &b.absorption).unwrap();
+        let again = BakedBcsdf::from_bytes(&recoloured).unwrap();
+        assert_eq!(
+            again.params().sigma_ca().0.map(f32::to_bits),
+            b.absorption.sigma().0.map(f32::to_bits)
+        );
+        let a = bcsdf_core::Angles::new(0.3, -0.2, 2.0).unwrap();
+        assert_eq!(again.eval(&a), lut.at(&b.absorption).eval(&a));
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }

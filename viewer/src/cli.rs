@@ -423,8 +423,10 @@ pub fn set_help() -> String {
     let keys: Vec<&str> = bcsdf_core::SCHEMA.iter().map(|spec| spec.key).collect();
     format!(
         "Override one parameter of the preset; repeatable, applied left to right. KEY is one \
-         of {}; sigma_ca also takes r,g,b, closure takes report or energy. With --lut only \
-         the colour keys (the LUT is read at that sigma_ca).",
+         of {}; sigma_ca and base_colour also take r,g,b, closure takes report or energy. \
+         With --lut only the colour keys (the LUT is read at that sigma_ca; base_colour is \
+         inverted with the LUT's coat colour table). Without --lut, base_colour is refused: \
+         bake a LUT from it.",
         keys.join(", ")
     )
 }

@@ -120,6 +120,8 @@ pub fn coat_scene(slab: &CoatSlab) -> Scene {
             p1: centre + t * (0.5 * len),
             r0: r,
             r1: r,
+            v0: 0.0,
+            v1: 1.0,
             fiber: id as u32,
             node: 0,
         });

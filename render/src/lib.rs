@@ -14,6 +14,9 @@
 //! - [`scatter`]: what the integrator asks of a fiber; [`scatter::One`] wraps any `Bcsdf`
 //!   (the analytic `FurBcsdf` or the baked `BakedBcsdf`), [`scatter::Guided`] evaluates one
 //!   and samples with another.
+//! - [`strand`]: what a fiber scatters like at a hit ([`strand::FiberMaterial`]): any
+//!   scatterer (one colour), or a colour per strand from root to tip with a per-strand
+//!   variation ([`strand::Coloured`], docs/model.md §14).
 //! - [`method`]: `path`, and the engine approximations `single` and `dual` (dual scattering,
 //!   docs/model.md §13) judged against it.
 //! - [`coat`]: the thick coat slab under a white sky (docs/model.md §14) whose rendered mean is
@@ -55,6 +58,7 @@ pub mod sampler;
 pub mod scatter;
 pub mod scene;
 pub mod scenes;
+pub mod strand;
 pub mod surface;
 
 pub use film::{Estimate, Image, Render};

@@ -4,7 +4,8 @@
 //! analytic far field into half-float tables ([`tables`]), writing and reading them as
 //! OpenEXR and raw blobs ([`lutfile`]), the shared baked-vs-analytic error metrics
 //! ([`metrics`]), one preset end to end ([`pipeline`], used by the `bake` binary) — plus
-//! preset files, `key=value` parameter overrides, splitting a preset list over N jobs
+//! preset files, `key=value` parameter overrides, a base colour as a LUT's default colour
+//! ([`colour`]), splitting a preset list over N jobs
 //! ([`shard`], `bake --shard K/N`), and generating (in parallel) and caching
 //! the medulla profiles the full model needs ([`profiles`]). [`fsutil`] writes files atomically
 //! and checks output folders (the viewer uses it too).
@@ -18,6 +19,7 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod colour;
 pub mod fsutil;
 pub mod limits;
 pub mod lutfile;

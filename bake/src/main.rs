@@ -313,6 +313,10 @@ fn run(cli: Cli) -> Result<u8, Failure> {
         if let Some(note) = &report.residual_note {
             eprintln!("note: {note}");
         }
+        if let Some(b) = &report.base_colour {
+            let tag = if b.is_clamped() { "warning" } else { "note" };
+            eprintln!("{tag}: preset {}: {b}", report.preset);
+        }
         reports.push(report);
     }
     print_summary(&reports, &budget, &opts.res, &opts.out_dir);

@@ -1,7 +1,7 @@
 //! `key=value` parameter overrides (`viewer probe --set`).
 //!
 //! The key is a [`ParamName::key`] (`eta_c`, `sigma_ca`, `kappa`, …). The value is one number;
-//! `sigma_ca` also takes three, `r,g,b`. Each value is checked against its parameter's valid
+//! `sigma_ca` and `base_colour` also take three, `r,g,b`. Each value is checked against its parameter's valid
 //! range when parsed. Overrides apply left to right with [`FurParamsInput::set_value`]'s meaning:
 //! `sigma_ca` replaces any melanin colour, and `eumelanin` / `pheomelanin` replace an RGB
 //! `sigma_ca` (the other concentration then starts from 0).
@@ -81,8 +81,8 @@ impl fmt::Display for OverrideError {
             }
             OverrideErrorKind::WrongArity(n) => {
                 let key = self.spec.split('=').next().unwrap_or("").trim();
-                if key == ParamName::SigmaCa.key() {
-                    write!(f, "sigma_ca takes one value or three (r,g,b), got {n}")
+                if ParamName::from_key(key).is_some_and(ParamName::takes_rgb) {
+                    write!(f, "{key} takes one value or three (r,g,b), got {n}")
                 } else {
                     write!(f, "{key} takes one value, got {n}")
                 }
@@ -120,7 +120,7 @@ impl Override {
             });
         }
         let parts: Vec<&str> = value.split(',').map(str::trim).collect();
-        let rgb_ok = name == ParamName::SigmaCa;
+        let rgb_ok = name.takes_rgb();
         if !(parts.len() == 1 || rgb_ok && parts.len() == 3) {
             return Err(fail(OverrideErrorKind::WrongArity(parts.len())));
         }

@@ -2,6 +2,7 @@
 //! → dual-scattering tables from the baked LUT → measured error → `<out>/<preset>.exr`,
 //! `<out>/<preset>.furlut` and `<out>/<preset>.furdual`, each written atomically.
 
+use crate::colour::{resolve_into, ResolveError};
 use crate::fsutil;
 use crate::lutfile::{self, LutFile, LutFileError, LutMeta};
 use crate::metrics::{compare, ErrorSummary, MetricSet};
@@ -9,9 +10,10 @@ use crate::presets::NamedPreset;
 use crate::profiles::{self, build_model, CacheOutcome, ProfileOptions};
 use crate::tables;
 use bcsdf_core::baked::BakedBcsdf;
+use bcsdf_core::colour::BaseColour;
 use bcsdf_core::dual::{self, Attenuation, DualTables, Quadrature};
 use bcsdf_core::lut::{self as core_lut, LutResolution};
-use bcsdf_core::{Absorption, FurParams, ParamError, Rgb};
+use bcsdf_core::{Absorption, FurParams, ParamError, Pigment, Rgb};
 use std::fmt;
 use std::io;
 use std::path::{Path, PathBuf};
@@ -104,6 +106,9 @@ pub struct BakeReport {
     pub cache: Option<CacheOutcome>,
     /// Why the residual's cache file was rejected, when it was (and regenerated).
     pub residual_note: Option<String>,
+    /// For a preset given as a base colour: the σ_ca found and written as the LUT's default
+    /// colour (docs/model.md §14; its `Display` says which channels were out of reach).
+    pub base_colour: Option<BaseColour>,
 }
 
 impl BakeReport {
@@ -136,6 +141,13 @@ pub enum BakeError {
     Write(LutFileError),
     /// The freshly baked blob did not validate (a bug; reported, never written).
     Invalid(bcsdf_core::lut::LutError),
+    /// The preset's base colour could not be turned into the LUT's default σ_ca.
+    BaseColour {
+        /// Preset name.
+        preset: String,
+        /// Why.
+        error: ResolveError,
+    },
     /// The preset's name cannot be a file name in the output directory
     /// ([`fsutil::output_path`]); checked before any work.
     Name(fsutil::OutputNameError),
@@ -153,6 +165,9 @@ impl fmt::Display for BakeError {
             ),
             BakeError::Write(e) => write!(f, "{e}"),
             BakeError::Invalid(e) => write!(f, "baked LUT failed validation: {e}"),
+            BakeError::BaseColour { preset, error } => {
+                write!(f, "preset {preset}: base_colour: {error}")
+            }
             BakeError::Name(e) => write!(f, "{e}"),
         }
     }
@@ -232,6 +247,7 @@ pub struct Computed {
     metric_seconds: f64,
     cache: Option<CacheOutcome>,
     residual_note: Option<String>,
+    base_colour: Option<BaseColour>,
 }
 
 /// Bakes one preset into `opts.out_dir`; `on_step` hears each step as it starts. The name is
@@ -262,20 +278,31 @@ pub fn bake_preset(
         errors: c.file.meta.errors,
         cache: c.cache,
         residual_note: c.residual_note,
+        base_colour: c.base_colour,
     })
 }
 
 /// Everything [`bake_preset`] does before writing: profiles, tables, dual-scattering tables and
 /// (when `opts.metrics` asks) the measured error. `opts.out_dir` is not touched.
+///
+/// A preset given as a base colour (docs/model.md §14) is baked at σ_ca = 0 (the tables do
+/// not depend on it), then the colour is inverted with the coat colour table of the baked
+/// LUT and the σ_ca found becomes the LUT's default colour ([`crate::colour::resolve_into`]),
+/// before the dual-scattering tables and the metrics, which read that colour.
 pub fn compute(
     preset: &NamedPreset,
     opts: &BakeOptions,
     on_step: &dyn Fn(Step),
 ) -> Result<Computed, BakeError> {
-    let params = FurParams::new(&preset.input).map_err(|error| BakeError::Params {
+    let params_error = |error| BakeError::Params {
         preset: preset.name.clone(),
         error,
-    })?;
+    };
+    let (input, base) = match preset.input.pigment {
+        Pigment::BaseColour(c) => (preset.input.with_sigma_ca(&Absorption::LOSSLESS), Some(c)),
+        _ => (preset.input, None),
+    };
+    let params = FurParams::new(&input).map_err(params_error)?;
 
     on_step(Step::Profiles);
     let t = Instant::now();
@@ -284,8 +311,21 @@ pub fn compute(
 
     on_step(Step::Tables);
     let t = Instant::now();
-    let blob = tables::try_bake(&model, &preset.input, opts.res).map_err(BakeError::Profiles)?;
+    let mut blob = tables::try_bake(&model, &input, opts.res).map_err(BakeError::Profiles)?;
     let table_seconds = t.elapsed().as_secs_f64();
+    let base_colour = match base {
+        Some(c) => Some(
+            resolve_into(&mut blob, c).map_err(|error| BakeError::BaseColour {
+                preset: preset.name.clone(),
+                error,
+            })?,
+        ),
+        None => None,
+    };
+    let model = match &base_colour {
+        Some(b) => model.at_sigma(&b.absorption).map_err(BakeError::Profiles)?,
+        None => model,
+    };
     let baked = BakedBcsdf::from_bytes(&blob).map_err(BakeError::Invalid)?;
 
     on_step(Step::Dual);
@@ -316,6 +356,7 @@ pub fn compute(
         metric_seconds,
         cache,
         residual_note: model.residual_cache_note().map(str::to_owned),
+        base_colour,
     })
 }
 

@@ -8,17 +8,19 @@
 //!   e.g. `eta_c`, `alpha_deg`, `kappa`; a parameter with a default may be left out
 //!   (`beta_n_deg` follows `beta_m_deg`, `eta_m` follows `eta_c`, `sigma_ma` is 0);
 //! - the colour, exactly one of: `sigma_ca = value` or `sigma_ca = [r, g, b]`, or
-//!   `eumelanin` and/or `pheomelanin` (concentrations, the missing one is 0).
+//!   `eumelanin` and/or `pheomelanin` (concentrations, the missing one is 0), or
+//!   `base_colour = [r, g, b]` (linear, each in [0, 1]: the colour the coat shows,
+//!   docs/model.md §14; `bake` turns it into σ_ca with the coat colour table of the LUT it
+//!   bakes).
 //!
-//! Unknown keys are errors, and every preset is validated with [`FurParams::new`] when the
-//! file is loaded, so a loaded preset always builds a model. Every error is one line that names
+//! Unknown keys are errors, and every preset is validated with [`FurParamsInput::check`] when
+//! the file is loaded, so a loaded preset always builds a model ([`bcsdf_core::FurParams::new`]) once a
+//! base colour has been turned into σ_ca. Every error is one line that names
 //! the file, the line, the preset and the field, e.g.
 //! `presets.toml:12: preset "foo": invalid kappa = 1.2: valid range is [0, 0.99]`.
 
 use bcsdf_core::presets::Alias;
-use bcsdf_core::{
-    FurParams, FurParamsInput, InputError, ParamDefault, ParamName, ParamValue, Rgb, SCHEMA,
-};
+use bcsdf_core::{FurParamsInput, InputError, ParamDefault, ParamName, ParamValue, Rgb, SCHEMA};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::fmt;
@@ -41,7 +43,7 @@ pub struct NamedPreset {
     pub name: String,
     /// Where the numbers come from.
     pub source: String,
-    /// The parameters; [`FurParams::new`] accepts them (checked at load).
+    /// The parameters; [`FurParamsInput::check`] accepts them (checked at load).
     pub input: FurParamsInput,
 }
 
@@ -118,7 +120,7 @@ pub fn lookup<'a>(
 /// Parses preset-file text; `file` is only used in error messages.
 ///
 /// Checks, in this order: TOML syntax, unknown keys and value types, the name
-/// ([`bcsdf_core::params::check_name`]), the colour (exactly one form), [`FurParams::new`]
+/// ([`bcsdf_core::params::check_name`]), the colour (exactly one form), [`FurParamsInput::check`]
 /// for every preset, and that names are unique.
 pub fn parse(text: &str, file: &str) -> Result<Vec<NamedPreset>, PresetError> {
     let raw: RawFile = toml::from_str(text).map_err(|e| toml_error(text, file, &e))?;
@@ -155,7 +157,8 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<NamedPreset>, PresetError> {
         let input = preset
             .to_input(entry.span())
             .map_err(|(span, m)| err(span, m))?;
-        FurParams::new(&input)
+        input
+            .check()
             .map_err(|e| err(preset.span_of(e.name, entry.span()), e.to_string()))?;
         let name = preset.name.get_ref().clone();
         let line = line_of(text, preset.name.span().start);
@@ -328,7 +331,7 @@ impl RawPreset {
     fn to_input(&self, table: Range<usize>) -> Result<FurParamsInput, (Range<usize>, String)> {
         FurParamsInput::from_values(|name| self.value_of(name).map(|(v, _)| v)).map_err(|e| {
             let span = match e {
-                InputError::TwoColours { .. } => self.span_of(ParamName::SigmaCa, table),
+                InputError::TwoColours { first, .. } => self.span_of(first, table),
                 InputError::Missing(_) | InputError::NoColour => table,
             };
             (span, e.to_string())
@@ -354,8 +357,8 @@ impl RawPreset {
     }
 }
 
-/// A parameter's value from TOML: a number (integers accepted), or for `sigma_ca` also
-/// `[r, g, b]`, or for a choice (`closure`) one of its names as a string. The error says
+/// A parameter's value from TOML: a number (integers accepted), or for `sigma_ca` and
+/// `base_colour` also `[r, g, b]`, or for a choice (`closure`) one of its names as a string. The error says
 /// what was expected.
 fn param_value(name: ParamName, value: &toml::Value) -> Result<ParamValue, String> {
     let spec = name.spec();
@@ -379,7 +382,7 @@ fn param_value(name: ParamName, value: &toml::Value) -> Result<ParamValue, Strin
         toml::Value::Integer(i) => Some(*i as f32),
         _ => None,
     };
-    let rgb_ok = name == ParamName::SigmaCa;
+    let rgb_ok = name.takes_rgb();
     let expected = if rgb_ok {
         "a number or an array of three numbers [r, g, b]"
     } else {

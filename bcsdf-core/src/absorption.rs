@@ -113,23 +113,26 @@ impl Absorption {
                 });
             }
         }
-        Absorption::from_sigma(
-            Pigment::Melanin {
-                eumelanin,
-                pheomelanin,
-            }
-            .sigma_ca(),
-        )
+        let mix = Pigment::Melanin {
+            eumelanin,
+            pheomelanin,
+        }
+        .sigma_ca()
+        .unwrap_or(Rgb::ZERO);
+        Absorption::from_sigma(mix)
     }
 
-    /// The colour of a pigment ([`Pigment::sigma_ca`]), checked as [`Absorption::from_sigma`].
-    pub fn from_pigment(pigment: &Pigment) -> Result<Absorption, AbsorptionError> {
+    /// The colour of a pigment ([`Pigment::sigma_ca`]), checked as [`Absorption::from_sigma`];
+    /// `Ok(None)` for a base colour, which needs the fur's coat colour table
+    /// ([`Absorption::from_base_colour`], docs/model.md §14).
+    pub fn from_pigment(pigment: &Pigment) -> Result<Option<Absorption>, AbsorptionError> {
         match *pigment {
-            Pigment::Absorption(s) => Absorption::from_sigma(s),
+            Pigment::Absorption(s) => Absorption::from_sigma(s).map(Some),
             Pigment::Melanin {
                 eumelanin,
                 pheomelanin,
-            } => Absorption::from_melanin(eumelanin, pheomelanin),
+            } => Absorption::from_melanin(eumelanin, pheomelanin).map(Some),
+            Pigment::BaseColour(_) => Ok(None),
         }
     }
 
@@ -176,7 +179,7 @@ mod tests {
             eumelanin: 2.0,
             pheomelanin: 0.5,
         };
-        assert_eq!(Absorption::from_pigment(&p).unwrap(), a);
+        assert_eq!(Absorption::from_pigment(&p).unwrap(), Some(a));
     }
 
     extern crate std;

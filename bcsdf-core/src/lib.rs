@@ -84,6 +84,7 @@
 
 mod absorption;
 pub mod baked;
+pub mod colour;
 pub mod dual;
 pub mod lut;
 pub mod medulla;
@@ -134,6 +135,7 @@ pub mod unscattered;
 pub use absorption::{Absorption, AbsorptionError};
 pub use baked::{BakedAt, BakedBcsdf, BatchLengthError, ColourAt, Kernel};
 pub use bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection, MIN_COS_THETA_PDF};
+pub use colour::{BaseColour, BaseColourError, CoatColour};
 pub use frame::{AngleError, Angles, Frame, Vec3};
 pub use lobes::{
     Families, Lobe, LobeFamily, LobeGroup, Lobes, FAMILY_COUNT, LOBE_COUNT, UNSCATTERED_COUNT,

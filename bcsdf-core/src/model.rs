@@ -181,6 +181,26 @@ impl<'a, M: Math> FurBcsdf<'a, M> {
         &self.params
     }
 
+    /// This model at another colour: the σ_ca of `absorption`, every other parameter
+    /// unchanged (`FurParams::with_absorption`). The longitudinal constants and the medulla's
+    /// precomputed M^s do not depend on σ_ca, so this is a copy, cheap enough per query
+    /// (a renderer colouring each strand). `None` when the model carries a residual table:
+    /// that table was generated for the model's own σ_ca (docs/model.md §12), and the model
+    /// at another colour needs its own.
+    #[must_use]
+    pub fn at_absorption(
+        &self,
+        absorption: &crate::absorption::Absorption,
+    ) -> Option<FurBcsdf<'a, M>> {
+        if self.residual.is_some() {
+            return None;
+        }
+        Some(FurBcsdf {
+            params: self.params.with_absorption(absorption),
+            ..*self
+        })
+    }
+
     /// The medulla profiles, when the model has them.
     #[must_use]
     pub fn profiles(&self) -> Option<&MedullaProfiles<'a>> {
@@ -424,6 +444,18 @@ mod tests {
         let edge = |s: f32| libm::cosf(PI / 2.0 - s).powi(2);
         assert!(edge(POLE_SLIVER * 0.999) < MIN_COS2_THETA_I);
         assert!(edge(POLE_SLIVER * 1.001) > MIN_COS2_THETA_I);
+    }
+
+    #[test]
+    fn a_model_at_another_colour_is_the_model_of_those_parameters() {
+        let base = params("human-hair");
+        let red = crate::absorption::Absorption::from_sigma(Rgb([0.2, 1.5, 4.0])).unwrap();
+        let model: FurBcsdf = FurBcsdf::unscattered(base);
+        let at = model.at_absorption(&red).unwrap();
+        let want: FurBcsdf = FurBcsdf::unscattered(base.with_absorption(&red));
+        let a = Angles::from_degrees(30.0, -20.0, 150.0).unwrap();
+        assert_eq!(at.eval_far(&a), want.eval_far(&a));
+        assert_eq!(at.params().sigma_ca(), Rgb([0.2, 1.5, 4.0]));
     }
 
     #[test]

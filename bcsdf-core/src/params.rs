@@ -35,6 +35,9 @@ pub enum ParamName {
     Eumelanin,
     /// Pheomelanin concentration (colours σ_ca).
     Pheomelanin,
+    /// The base colour, linear RGB: the colour the coat shows (σ_ca through the coat colour
+    /// table, docs/model.md §14).
+    BaseColour,
     /// α, cuticle scale tilt in degrees.
     AlphaDeg,
     /// β_m, longitudinal roughness in degrees.
@@ -63,7 +66,9 @@ impl fmt::Display for ParamName {
     }
 }
 
-/// A parameter outside its valid domain.
+/// A parameter outside its valid domain; or, for [`ParamName::BaseColour`] with a value inside
+/// it, a base colour not yet turned into σ_ca (that needs the fur's coat colour table,
+/// docs/model.md §14: `bake` resolves it when it bakes a LUT).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ParamError {
     /// Which parameter.
@@ -77,6 +82,13 @@ impl core::error::Error for ParamError {}
 impl fmt::Display for ParamError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let spec = self.name.spec();
+        if self.name == ParamName::BaseColour && spec.domain.contains(self.value) {
+            return f.write_str(
+                "base_colour needs this fur's coat colour table to become sigma_ca: \
+                 bake a LUT from these parameters (the LUT records the sigma_ca found), \
+                 or give sigma_ca",
+            );
+        }
         if spec.is_choice() {
             write!(
                 f,
@@ -107,10 +119,13 @@ pub enum InputError {
     Missing(ParamName),
     /// No colour: neither σ_ca nor a melanin concentration is given.
     NoColour,
-    /// σ_ca and a melanin concentration (this one) are both given.
+    /// Two colour forms are given: σ_ca, melanin or the base colour (eumelanin with
+    /// pheomelanin is one form).
     TwoColours {
-        /// The melanin parameter given alongside σ_ca.
-        melanin: ParamName,
+        /// The colour parameter given first (schema order).
+        first: ParamName,
+        /// The colour parameter of another form given after it.
+        second: ParamName,
     },
 }
 
@@ -119,13 +134,15 @@ impl fmt::Display for InputError {
         match self {
             InputError::Missing(name) => write!(f, "missing field `{}`", name.key()),
             InputError::NoColour => f.write_str(
-                "no colour: give sigma_ca = value | [r, g, b], or eumelanin and/or pheomelanin",
+                "no colour: give sigma_ca = value | [r, g, b], eumelanin and/or pheomelanin, \
+                 or base_colour = [r, g, b]",
             ),
-            InputError::TwoColours { melanin } => write!(
+            InputError::TwoColours { first, second } => write!(
                 f,
-                "sigma_ca and {} both given: give exactly one colour form, \
-                 sigma_ca or eumelanin/pheomelanin",
-                melanin.key()
+                "{} and {} both given: give exactly one colour form, \
+                 sigma_ca, eumelanin/pheomelanin or base_colour",
+                first.key(),
+                second.key()
             ),
         }
     }
@@ -172,7 +189,14 @@ impl FurParamsInput {
             (ParamName::SigmaCa, Pigment::Absorption(rgb)) => Some(ParamValue::Rgb(rgb)),
             (ParamName::Eumelanin, Pigment::Melanin { eumelanin, .. }) => scalar(eumelanin),
             (ParamName::Pheomelanin, Pigment::Melanin { pheomelanin, .. }) => scalar(pheomelanin),
-            (ParamName::SigmaCa | ParamName::Eumelanin | ParamName::Pheomelanin, _) => None,
+            (ParamName::BaseColour, Pigment::BaseColour(rgb)) => Some(ParamValue::Rgb(rgb)),
+            (
+                ParamName::SigmaCa
+                | ParamName::Eumelanin
+                | ParamName::Pheomelanin
+                | ParamName::BaseColour,
+                _,
+            ) => None,
             (ParamName::EtaC, _) => scalar(self.eta_c),
             (ParamName::AlphaDeg, _) => scalar(self.alpha_deg),
             (ParamName::BetaMDeg, _) => scalar(self.beta_m_deg),
@@ -187,9 +211,10 @@ impl FurParamsInput {
         }
     }
 
-    /// Sets one parameter. σ_ca (scalar or RGB) replaces a melanin colour; eumelanin or
-    /// pheomelanin replaces an RGB σ_ca (the other concentration then starts from 0). An RGB
-    /// value for any other parameter sets its first channel. A choice sets `closure` (index
+    /// Sets one parameter. σ_ca or the base colour (scalar: grey, or RGB) replaces any other
+    /// colour form; eumelanin or pheomelanin replaces σ_ca or a base colour (the other
+    /// concentration then starts from 0). An RGB value for any other parameter sets its first
+    /// channel. A choice sets `closure` (index
     /// past the end: left unchanged); a number sets it by index, and a choice sets any
     /// number parameter to its index.
     pub fn set_value(&mut self, name: ParamName, value: ParamValue) {
@@ -197,11 +222,14 @@ impl FurParamsInput {
             ParamValue::Scalar(v) => v,
             ParamValue::Choice(i) => f32::from(i),
             ParamValue::Rgb(rgb) => {
-                if name == ParamName::SigmaCa {
-                    self.pigment = Pigment::Absorption(rgb);
-                    return;
+                match name {
+                    ParamName::SigmaCa => self.pigment = Pigment::Absorption(rgb),
+                    ParamName::BaseColour => self.pigment = Pigment::BaseColour(rgb),
+                    _ => {
+                        self.set_value(name, ParamValue::Scalar(rgb.0[0]));
+                    }
                 }
-                rgb.0[0]
+                return;
             }
         };
         let (eumelanin, pheomelanin) = match self.pigment {
@@ -209,11 +237,12 @@ impl FurParamsInput {
                 eumelanin,
                 pheomelanin,
             } => (eumelanin, pheomelanin),
-            Pigment::Absorption(_) => (0.0, 0.0),
+            Pigment::Absorption(_) | Pigment::BaseColour(_) => (0.0, 0.0),
         };
         match name {
             ParamName::EtaC => self.eta_c = v,
             ParamName::SigmaCa => self.pigment = Pigment::Absorption(Rgb::splat(v)),
+            ParamName::BaseColour => self.pigment = Pigment::BaseColour(Rgb::splat(v)),
             ParamName::Eumelanin => {
                 self.pigment = Pigment::Melanin {
                     eumelanin: v,
@@ -259,8 +288,13 @@ impl FurParamsInput {
             match (get(spec.name), spec.default) {
                 (Some(v), ParamDefault::Colour) => {
                     if let Some(first) = colour {
-                        if first == ParamName::SigmaCa {
-                            return Err(InputError::TwoColours { melanin: spec.name });
+                        let melanin =
+                            |n| matches!(n, ParamName::Eumelanin | ParamName::Pheomelanin);
+                        if !(melanin(first) && melanin(spec.name)) {
+                            return Err(InputError::TwoColours {
+                                first,
+                                second: spec.name,
+                            });
                         }
                     }
                     colour = Some(spec.name);
@@ -304,6 +338,33 @@ impl FurParamsInput {
     }
 }
 
+impl FurParamsInput {
+    /// Checks every parameter as [`FurParams::new`] does, except that a base colour
+    /// ([`Pigment::BaseColour`]) only has its channels checked (in [0, 1]): it becomes σ_ca
+    /// through the fur's coat colour table (docs/model.md §14), and every other parameter is
+    /// valid at any σ_ca. What a preset file or an override is checked with when it is read.
+    pub fn check(&self) -> Result<(), ParamError> {
+        let mut rest = *self;
+        if let Pigment::BaseColour(c) = self.pigment {
+            for v in c.0 {
+                ParamName::BaseColour.check(v)?;
+            }
+            rest.pigment = Pigment::Absorption(Rgb::ZERO);
+        }
+        FurParams::new(&rest).map(|_| ())
+    }
+
+    /// This input with its base colour (if it has one) replaced by the σ_ca `absorption`:
+    /// what [`FurParams::new`] accepts once the coat colour table has inverted the colour.
+    #[must_use]
+    pub fn with_sigma_ca(&self, absorption: &crate::absorption::Absorption) -> FurParamsInput {
+        FurParamsInput {
+            pigment: Pigment::Absorption(absorption.sigma()),
+            ..*self
+        }
+    }
+}
+
 /// Validated parameters of the double-cylinder model (docs/model.md §2), angles in radians.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FurParams {
@@ -340,7 +401,18 @@ impl FurParams {
             } => {
                 ParamName::Eumelanin.check(eumelanin)?;
                 ParamName::Pheomelanin.check(pheomelanin)?;
-                input.pigment.sigma_ca()
+                input.pigment.sigma_ca().unwrap_or(Rgb::ZERO)
+            }
+            Pigment::BaseColour(c) => {
+                for v in c.0 {
+                    ParamName::BaseColour.check(v)?;
+                }
+                // A base colour becomes σ_ca only through the fur's coat colour table
+                // (docs/model.md §14); without one there is no model to build.
+                return Err(ParamError {
+                    name: ParamName::BaseColour,
+                    value: c.0[0],
+                });
             }
         };
         let beta_m_deg = ParamName::BetaMDeg.check(input.beta_m_deg)?;

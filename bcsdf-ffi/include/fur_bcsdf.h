@@ -64,6 +64,11 @@
 #define FUR_DUAL_BLOB_LEN 292944
 
 /**
+ * Nodes of a coat colour table (`fur_coat`; `bcsdf_core::colour::COAT_NODES`).
+ */
+#define FUR_COAT_NODES 24
+
+/**
  * Status of a call; `FUR_OK` (0) is success. `fur_status_str` describes each.
  */
 typedef enum fur_status {
@@ -163,6 +168,16 @@ typedef enum fur_status {
    * 1000); the outputs for it are 0.
    */
   FUR_ERR_COLOUR = 21,
+  /**
+   * A base colour is invalid (`fur_absorption_from_colour`): a channel is NaN or outside
+   * [0, 1] (linear RGB); the outputs are not written.
+   */
+  FUR_ERR_BASE_COLOUR = 22,
+  /**
+   * A `fur_coat` table is invalid: a value is NaN, outside [0, 1] or above the one before
+   * it; the outputs are not written.
+   */
+  FUR_ERR_COAT_TABLE = 23,
 } fur_status;
 
 /**
@@ -212,6 +227,19 @@ typedef struct fur_lut {
    */
   uint64_t _opaque[FUR_LUT_WORDS];
 } fur_lut;
+
+/**
+ * A preset's coat colour table (docs/model.md §14): the colour a thick coat of its fibers
+ * shows, one channel's value at each node of the absorption axis of `bcsdf_core::colour`
+ * (node 0 lossless, the last sigma_ca = 1000), non-increasing. Filled by
+ * `fur_coat_measure`; plain data, so it may be stored and copied.
+ */
+typedef struct fur_coat {
+  /**
+   * The coat colour at each node, in node order.
+   */
+  float colour[FUR_COAT_NODES];
+} fur_coat;
 
 /**
  * Decoded dual-scattering tables (docs/model.md §13): fixed-size, caller-owned storage of
@@ -269,6 +297,41 @@ typedef struct fur_sample {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Measures the coat colour table of an open LUT (docs/model.md §14: a random walk through a
+ * thick coat of its fibers, `CoatColour::measure`) into `*out`, with `photons` photons per
+ * walk (0: the default, 8192; at most 1 048 576). Slow: about 1–4 s on one core with the
+ * default, so measure once per LUT and keep the table. `out` must not overlap `*lut` or the
+ * LUT bytes (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `lut` is NULL or points to an initialised `fur_lut`; `out` is NULL or points to a
+ * writable `fur_coat`.
+ */
+enum fur_status fur_coat_measure(const struct fur_lut *FUR_RESTRICT lut,
+                                 uint32_t photons,
+                                 struct fur_coat *FUR_RESTRICT out);
+
+/**
+ * The cortex absorption sigma_ca per RGB channel whose thick coat shows the linear colour
+ * `colour[3]` (docs/model.md §14; `Absorption::from_base_colour`), into `out_sigma_ca[3]`,
+ * from a table of `fur_coat_measure`. A channel NaN or outside [0, 1] gives
+ * `FUR_ERR_BASE_COLOUR`, an invalid table `FUR_ERR_COAT_TABLE` (nothing written). A channel
+ * the coat cannot show (brighter than its lossless coat, darker than its fully absorbing
+ * one) is clamped to the nearest colour it can show, and reported: bit c of
+ * `*out_clamped` (0 red, 1 green, 2 blue) is set for each clamped channel, 0 when none was.
+ * The outputs must not overlap each other or the inputs (`FUR_ERR_OVERLAP`).
+ *
+ * # Safety
+ * `coat` is NULL or points to a `fur_coat`; `colour` is NULL or points to 3 readable floats;
+ * `out_sigma_ca` is NULL or points to 3 writable floats; `out_clamped` is NULL or points to
+ * a writable `uint32_t`.
+ */
+enum fur_status fur_absorption_from_colour(const struct fur_coat *FUR_RESTRICT coat,
+                                           const float *FUR_RESTRICT colour,
+                                           float *FUR_RESTRICT out_sigma_ca,
+                                           uint32_t *FUR_RESTRICT out_clamped);
 
 /**
  * The colour of eumelanin and pheomelanin concentrations (the mix of the parameters'

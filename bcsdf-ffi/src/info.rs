@@ -33,6 +33,8 @@ pub extern "C" fn fur_status_str(status: i32) -> &'static c_char {
         19 => b"the dual-scattering blob has another layout, an unknown attenuation or an invalid value\0",
         20 => b"the dual-scattering blob was not computed from this LUT (another LUT's checksum, or none recorded)\0",
         21 => b"a colour is invalid: a sigma_ca channel or melanin concentration is NaN or negative (valid sigma_ca: [0, 1000], larger values are clamped)\0",
+        22 => b"a base colour is invalid: a channel is NaN or outside [0, 1] (linear RGB)\0",
+        23 => b"the fur_coat table is invalid: a value is NaN, outside [0, 1] or above the one before it\0",
         _ => b"unknown status\0",
     };
     as_c_char(s.first().unwrap_or(&0))

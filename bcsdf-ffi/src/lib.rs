@@ -47,6 +47,7 @@ macro_rules! tri {
 
 // cbindgen writes the functions file by file in path order: colour, dual, eval, handle, info.
 mod args;
+mod coat;
 mod colour;
 mod dual;
 mod eval;
@@ -55,6 +56,7 @@ mod info;
 mod nostd;
 mod sample;
 
+pub use coat::{fur_absorption_from_colour, fur_coat, fur_coat_measure, FUR_COAT_NODES};
 pub use colour::{fur_lut_sigma_ca, fur_sigma_from_melanin};
 pub use dual::{fur_dual_close, fur_dual_open, fur_eval_dual, fur_eval_dual_dirs};
 pub use eval::{
@@ -124,6 +126,12 @@ pub enum fur_status {
     /// negative (valid sigma_ca: [0, 1000] per fiber radius; larger values are clamped to
     /// 1000); the outputs for it are 0.
     FUR_ERR_COLOUR = 21,
+    /// A base colour is invalid (`fur_absorption_from_colour`): a channel is NaN or outside
+    /// [0, 1] (linear RGB); the outputs are not written.
+    FUR_ERR_BASE_COLOUR = 22,
+    /// A `fur_coat` table is invalid: a value is NaN, outside [0, 1] or above the one before
+    /// it; the outputs are not written.
+    FUR_ERR_COAT_TABLE = 23,
 }
 
 /// The lobe family a sample was drawn from (docs/model.md sections 5, 6).

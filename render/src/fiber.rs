@@ -25,6 +25,11 @@ pub struct FiberSegment {
     pub r0: f32,
     /// Radius at `p1`.
     pub r1: f32,
+    /// Position along the whole strand at `p0`: 0 at the root, 1 at the tip (what a colour
+    /// gradient from root to tip reads, [`crate::strand`]).
+    pub v0: f32,
+    /// Position along the whole strand at `p1`.
+    pub v1: f32,
     /// Which fiber the segment belongs to (a scattered ray ignores its own fiber nearby).
     pub fiber: u32,
     /// Node index in the BVH (set by the BVH build).
@@ -46,6 +51,14 @@ impl FiberSegment {
     #[must_use]
     pub fn tangent(&self) -> Vector3<f32> {
         self.p1 - self.p0
+    }
+
+    /// Position along the strand (0 root, 1 tip) of the point at `s` along this segment
+    /// ([`SegmentHit::s`]): linear between [`FiberSegment::v0`] and [`FiberSegment::v1`].
+    #[inline]
+    #[must_use]
+    pub fn along(&self, s: f32) -> f32 {
+        self.v0 + (self.v1 - self.v0) * s.clamp(0.0, 1.0)
     }
 
     /// Where the ray `origin + t·dir` (`dir` unit length) passes within the segment's
@@ -113,6 +126,8 @@ mod tests {
             p1: Vector3::new(0.0, 0.0, 2.0),
             r0: 0.1,
             r1: 0.05,
+            v0: 0.5,
+            v1: 1.0,
             fiber: 0,
             node: 0,
         }
@@ -127,6 +142,7 @@ mod tests {
             .intersect(&Vector3::new(-5.0, 0.07, 1.0), &dir, 0.0, f32::INFINITY)
             .unwrap();
         assert!((hit.t - 5.0).abs() < 1e-5 && (hit.s - 0.5).abs() < 1e-6);
+        assert_eq!(seg.along(hit.s), 0.75);
         assert!(seg
             .intersect(&Vector3::new(-5.0, 0.08, 1.0), &dir, 0.0, f32::INFINITY)
             .is_none());

@@ -22,6 +22,7 @@ use crate::method::Method;
 use crate::sampler::Sampler;
 use crate::scatter::Scatterer;
 use crate::scene::{HitKind, Scene};
+use crate::strand::{FiberMaterial, StrandPoint};
 use crate::surface::{cosine_pdf, lambert_f, sample_cosine};
 use core::fmt;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -158,8 +159,10 @@ struct Row {
     rays: u64,
 }
 
-/// Renders `scene` with scatterer `fiber` (see [`crate::scatter`]) by path tracing.
-pub fn render<S: Scatterer>(
+/// Renders `scene` with fiber material `fiber` by path tracing: any scatterer (see
+/// [`crate::scatter`], one colour everywhere) or a material coloured per strand
+/// ([`crate::strand`]).
+pub fn render<S: FiberMaterial>(
     scene: &Scene,
     fiber: &S,
     settings: &Settings,
@@ -167,9 +170,9 @@ pub fn render<S: Scatterer>(
     render_method(scene, fiber, settings, &Method::Path)
 }
 
-/// Renders `scene` with scatterer `fiber` including the light paths `method` includes
+/// Renders `scene` with fiber material `fiber` including the light paths `method` includes
 /// ([`crate::method`], docs/model.md §13).
-pub fn render_method<S: Scatterer>(
+pub fn render_method<S: FiberMaterial>(
     scene: &Scene,
     fiber: &S,
     settings: &Settings,
@@ -238,7 +241,7 @@ pub fn render_method<S: Scatterer>(
     })
 }
 
-fn render_row<S: Scatterer>(
+fn render_row<S: FiberMaterial>(
     scene: &Scene,
     fiber: &S,
     settings: &Settings,
@@ -304,7 +307,7 @@ fn add(
 }
 
 /// One camera path through pixel (x, y): its radiance estimate.
-fn trace<S: Scatterer>(
+fn trace<S: FiberMaterial>(
     scene: &Scene,
     fiber: &S,
     settings: &Settings,
@@ -357,7 +360,12 @@ fn trace<S: Scatterer>(
         let u_scatter = sampler.next_3d();
         let u_rr = sampler.next_1d();
 
-        // The vertex: how it scatters, where rays leave it from.
+        // The vertex: how it scatters (a fiber's material asked once, at this point of its
+        // strand), where rays leave it from.
+        let strand = match hit.kind {
+            HitKind::Fiber { fiber: id, v, .. } => Some(fiber.at(&StrandPoint { fiber: id, v })),
+            HitKind::Surface { .. } => None,
+        };
         let (next_origin, next_from) = match hit.kind {
             HitKind::Fiber { fiber: id, .. } => (hit.point, Some(id)),
             HitKind::Surface { normal, .. } => {
@@ -368,9 +376,10 @@ fn trace<S: Scatterer>(
             }
         };
         let eval = |wi: &Vector3<f32>| -> ([f32; 3], f32) {
-            match hit.kind {
-                HitKind::Fiber { tangent, .. } => fiber.eval(wi, &wr, &tangent),
-                HitKind::Surface { normal, albedo } => {
+            match (hit.kind, &strand) {
+                (HitKind::Fiber { tangent, .. }, Some(s)) => s.eval(wi, &wr, &tangent),
+                (HitKind::Fiber { .. }, None) => ([0.0; 3], 0.0),
+                (HitKind::Surface { normal, albedo }, _) => {
                     let cos = normal.dot(wi);
                     if cos > 0.0 {
                         (lambert_f(albedo).map(|f| f * cos), cosine_pdf(cos))
@@ -383,14 +392,16 @@ fn trace<S: Scatterer>(
 
         // `single` and `dual` at a fiber: light sampling with a counted shadow ray; the path
         // goes on only through the fibers to a surface (crate::method).
-        let approximated = if let (HitKind::Fiber { tangent, .. }, true) = (hit.kind, approximate) {
+        let approximated = if let (HitKind::Fiber { tangent, .. }, Some(s), true) =
+            (hit.kind, &strand, approximate)
+        {
             if let Some(wl) = lights.sample(u_pick, u_light) {
                 let p_light = lights.pdf(&wl);
                 if p_light > 0.0 {
                     row.rays += 1;
                     if let Some(n) = scene.fibers_crossed(&next_origin, &wl, next_from) {
                         let below = || scene.fibers_below(&next_origin, &wl, next_from);
-                        let f = method.fiber_light(fiber, &wl, &wr, &tangent, n, below);
+                        let f = method.fiber_light(s, &wl, &wr, &tangent, n, below);
                         let le = lights.radiance(&wl);
                         let value: [f32; 3] = core::array::from_fn(|c| f[c] * le[c]);
                         add(&mut l, &mut row.orders, order, &beta, &value, 1.0 / p_light);
@@ -431,9 +442,10 @@ fn trace<S: Scatterer>(
         }
 
         // 2. The scattered direction.
-        let scattered = match hit.kind {
-            HitKind::Fiber { tangent, .. } => fiber.sample(&wr, &tangent, u_scatter),
-            HitKind::Surface { normal, albedo } => {
+        let scattered = match (hit.kind, &strand) {
+            (HitKind::Fiber { tangent, .. }, Some(s)) => s.sample(&wr, &tangent, u_scatter),
+            (HitKind::Fiber { .. }, None) => None,
+            (HitKind::Surface { normal, albedo }, _) => {
                 let wi = sample_cosine(&normal, [u_scatter[0], u_scatter[1]]);
                 let pdf = cosine_pdf(normal.dot(&wi));
                 (pdf > 0.0).then_some(crate::scatter::Scattered {
@@ -450,11 +462,14 @@ fn trace<S: Scatterer>(
                 // Light from the first surface behind n fibers: S·V + D(n) (crate::method);
                 // with no surface there the light came by light sampling alone.
                 row.rays += 1;
-                let Some(n) = scene.fibers_before_surface(&next_origin, &s.wi, next_from) else {
+                let (Some(n), Some(at)) = (
+                    scene.fibers_before_surface(&next_origin, &s.wi, next_from),
+                    &strand,
+                ) else {
                     break;
                 };
                 let below = || scene.fibers_below(&next_origin, &s.wi, next_from);
-                let f = method.fiber_light(fiber, &s.wi, &wr, &tangent, n, below);
+                let f = method.fiber_light(at, &s.wi, &wr, &tangent, n, below);
                 f.map(|v| v / s.pdf)
             }
         };

@@ -14,8 +14,13 @@
 //! - [`scatter`]: what the integrator asks of a fiber; [`scatter::One`] wraps any `Bcsdf`
 //!   (the analytic `FurBcsdf` or the baked `BakedBcsdf`), [`scatter::Guided`] evaluates one
 //!   and samples with another.
+//! - [`strand`]: what a fiber scatters like at a hit ([`strand::FiberMaterial`]): any
+//!   scatterer (one colour), or a colour per strand from root to tip with a per-strand
+//!   variation ([`strand::Coloured`], docs/model.md §14).
 //! - [`method`]: `path`, and the engine approximations `single` and `dual` (dual scattering,
 //!   docs/model.md §13) judged against it.
+//! - [`coat`]: the thick coat slab under a white sky (docs/model.md §14) whose rendered mean is
+//!   the coat colour a base colour asks for.
 //! - [`compare`]: an approximation's image against the reference (the dual-scattering mean and tile
 //!   metrics) and the side-by-side pictures of `viewer render --compare`.
 //! - [`film`], [`output`]: the image with per-pixel standard errors, bounce-order energies,
@@ -41,6 +46,7 @@
 
 pub mod accel;
 pub mod camera;
+pub mod coat;
 pub mod compare;
 pub mod fiber;
 pub mod film;
@@ -52,6 +58,7 @@ pub mod sampler;
 pub mod scatter;
 pub mod scene;
 pub mod scenes;
+pub mod strand;
 pub mod surface;
 
 pub use film::{Estimate, Image, Render};

@@ -46,6 +46,55 @@ fn s_cos(s: bcsdf_core::Rgb, angles: &Angles) -> [f32; 3] {
     })
 }
 
+/// A borrowed scatterer scatters as the scatterer (what a uniform
+/// [`crate::strand::FiberMaterial`] hands out at every hit).
+impl<S: Scatterer + ?Sized> Scatterer for &S {
+    fn eval(
+        &self,
+        wi: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+    ) -> ([f32; 3], f32) {
+        (**self).eval(wi, wr, tangent)
+    }
+
+    fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered> {
+        (**self).sample(wr, tangent, u)
+    }
+}
+
+/// S·cos θ_i and the density of one BCSDF ([`One`], [`Owned`]).
+fn eval_one<B: Bcsdf>(
+    b: &B,
+    wi: &Vector3<f32>,
+    wr: &Vector3<f32>,
+    tangent: &Vector3<f32>,
+) -> ([f32; 3], f32) {
+    match Angles::from_directions::<B::Math>((*wi).into(), (*wr).into(), (*tangent).into()) {
+        Ok(a) => {
+            let (value, pdf) = b.eval_with_pdf(&a);
+            (s_cos(value.total(), &a), pdf)
+        }
+        Err(_) => ([0.0; 3], 0.0),
+    }
+}
+
+/// A direction drawn from one BCSDF's sampler ([`One`], [`Owned`]).
+fn sample_one<B: Bcsdf>(
+    b: &B,
+    wr: &Vector3<f32>,
+    tangent: &Vector3<f32>,
+    u: [f32; 3],
+) -> Option<Scattered> {
+    let s = b.sample_dirs((*wr).into(), (*tangent).into(), u)?;
+    let wi = Vector3::from(s.wi?);
+    Some(Scattered {
+        wi,
+        weight: s.weight.0,
+        pdf: s.pdf,
+    })
+}
+
 /// One BCSDF evaluates and samples.
 pub struct One<'a, B>(pub &'a B);
 
@@ -56,23 +105,30 @@ impl<B: Bcsdf + Sync> Scatterer for One<'_, B> {
         wr: &Vector3<f32>,
         tangent: &Vector3<f32>,
     ) -> ([f32; 3], f32) {
-        match Angles::from_directions::<B::Math>((*wi).into(), (*wr).into(), (*tangent).into()) {
-            Ok(a) => {
-                let (value, pdf) = self.0.eval_with_pdf(&a);
-                (s_cos(value.total(), &a), pdf)
-            }
-            Err(_) => ([0.0; 3], 0.0),
-        }
+        eval_one(self.0, wi, wr, tangent)
     }
 
     fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered> {
-        let s = self.0.sample_dirs((*wr).into(), (*tangent).into(), u)?;
-        let wi = Vector3::from(s.wi?);
-        Some(Scattered {
-            wi,
-            weight: s.weight.0,
-            pdf: s.pdf,
-        })
+        sample_one(self.0, wr, tangent, u)
+    }
+}
+
+/// [`One`] owning its BCSDF: a value made per hit, such as a LUT at one strand's colour
+/// (`BakedBcsdf::at`, [`crate::strand`]).
+pub struct Owned<B>(pub B);
+
+impl<B: Bcsdf + Sync> Scatterer for Owned<B> {
+    fn eval(
+        &self,
+        wi: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+    ) -> ([f32; 3], f32) {
+        eval_one(&self.0, wi, wr, tangent)
+    }
+
+    fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered> {
+        sample_one(&self.0, wr, tangent, u)
     }
 }
 

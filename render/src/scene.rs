@@ -16,6 +16,8 @@ pub enum HitKind {
         tangent: Vector3<f32>,
         /// The fiber's index.
         fiber: u32,
+        /// Position along the strand, 0 at the root, 1 at the tip ([`FiberSegment::along`]).
+        v: f32,
     },
     /// A Lambertian surface: its outward unit normal and reflectance.
     Surface {
@@ -103,6 +105,7 @@ impl Scene {
                 kind: HitKind::Fiber {
                     tangent: seg.tangent(),
                     fiber: seg.fiber,
+                    v: seg.along(hit.s),
                 },
             });
         }

@@ -135,6 +135,8 @@ fn grow(
             p1: q,
             r0: g.r_root * (1.0 - (1.0 - g.taper) * s0),
             r1: g.r_root * (1.0 - (1.0 - g.taper) * s1),
+            v0: s0,
+            v1: s1,
             fiber: id,
             node: 0,
         });

@@ -48,12 +48,15 @@ pub fn list(args: &PresetsListArgs) -> Result<(), Error> {
     Ok(())
 }
 
-/// The schema rows that get a column: every row but the melanin concentrations, which
-/// share σ_ca's column.
+/// The schema rows that get a column: every row but the melanin concentrations and the base
+/// colour, which share σ_ca's column.
 fn columns() -> impl Iterator<Item = &'static ParamSpec> {
-    SCHEMA
-        .iter()
-        .filter(|s| !matches!(s.name, ParamName::Eumelanin | ParamName::Pheomelanin))
+    SCHEMA.iter().filter(|s| {
+        !matches!(
+            s.name,
+            ParamName::Eumelanin | ParamName::Pheomelanin | ParamName::BaseColour
+        )
+    })
 }
 
 /// One cell: a number as the shortest text that reads back the same; an RGB σ_ca as one
@@ -66,6 +69,9 @@ fn cell(input: &FurParamsInput, spec: &ParamSpec) -> String {
         } = input.pigment
         {
             return format!("eu={eumelanin},pheo={pheomelanin}");
+        }
+        if let Pigment::BaseColour(Rgb([r, g, b])) = input.pigment {
+            return format!("base={r},{g},{b}");
         }
     }
     match input.resolved().value(spec.name) {

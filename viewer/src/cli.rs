@@ -186,6 +186,23 @@ pub struct RenderArgs {
     #[arg(long, conflicts_with = "method")]
     pub compare: bool,
 
+    /// Colour of the strands (at the root, with --tip-colour): a linear base colour R,G,B
+    /// (or one grey), each in [0, 1], turned into sigma_ca per query through the coat colour
+    /// table measured from the LUT (docs/model.md §14). Needs a baked LUT (--lut, or
+    /// --evaluator baked) and --method path or single.
+    #[arg(long, value_name = "R,G,B")]
+    pub colour: Option<String>,
+
+    /// Colour at the tips: the colour goes linearly from --colour at the root to this at the
+    /// tip.
+    #[arg(long, value_name = "R,G,B", requires = "colour")]
+    pub tip_colour: Option<String>,
+
+    /// Random per-strand variation of the colour's lightness, in percent (0 to 100): each
+    /// strand's colour times 1 + P/100 x (2u - 1), u drawn from --seed and the fiber's index.
+    #[arg(long, value_name = "P", requires = "colour")]
+    pub colour_jitter: Option<f32>,
+
     /// Dual scattering's forward density factor d_f (docs/model.md §13).
     #[arg(long, value_name = "D", default_value_t = bcsdf_core::dual::Density::DEFAULT.d_f)]
     pub d_f: f32,
@@ -423,8 +440,10 @@ pub fn set_help() -> String {
     let keys: Vec<&str> = bcsdf_core::SCHEMA.iter().map(|spec| spec.key).collect();
     format!(
         "Override one parameter of the preset; repeatable, applied left to right. KEY is one \
-         of {}; sigma_ca also takes r,g,b, closure takes report or energy. With --lut only \
-         the colour keys (the LUT is read at that sigma_ca).",
+         of {}; sigma_ca and base_colour also take r,g,b, closure takes report or energy. \
+         With --lut only the colour keys (the LUT is read at that sigma_ca; base_colour is \
+         inverted with the LUT's coat colour table). Without --lut, base_colour is refused: \
+         bake a LUT from it.",
         keys.join(", ")
     )
 }

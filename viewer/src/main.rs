@@ -14,6 +14,7 @@ mod render_cmd;
 mod report;
 mod sample;
 mod source;
+mod strand_cmd;
 mod summary;
 
 use clap::Parser;

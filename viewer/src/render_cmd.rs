@@ -80,6 +80,7 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         (None, Some(_)) => Evaluator::Baked,
         (None, None) => Evaluator::Analytic,
     };
+    let strands = crate::strand_cmd::request(args, evaluator == Evaluator::Baked)?;
     fsutil::prepare_dir(&args.out).map_err(|e| Error::Failure(e.to_string()))?;
 
     let scene = scenes::build(&SceneOptions {
@@ -104,10 +105,14 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
             d.set_absorption(&colour);
             d
         });
-        (
-            path.display().to_string(),
-            trace(&scene, &baked.at(&colour), stored, &settings, args)?,
-        )
+        let r = match &strands {
+            Some(req) => vec![(
+                args.method,
+                crate::strand_cmd::render(&scene, &baked, req, &settings, args.method)?,
+            )],
+            None => trace(&scene, &baked.at(&colour), stored, &settings, args)?,
+        };
+        (path.display().to_string(), r)
     } else {
         // clap requires --preset without --lut.
         let preset = args.preset.as_deref().unwrap_or_default();
@@ -126,7 +131,13 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
                 let blob = bake::tables::bake(&model, &input, LutResolution::DEFAULT);
                 let baked = BakedBcsdf::from_bytes(&blob)
                     .map_err(|e| Error::Failure(format!("the LUT baked in memory: {e}")))?;
-                trace(&scene, &baked, None, &settings, args)?
+                match &strands {
+                    Some(req) => vec![(
+                        args.method,
+                        crate::strand_cmd::render(&scene, &baked, req, &settings, args.method)?,
+                    )],
+                    None => trace(&scene, &baked, None, &settings, args)?,
+                }
             }
         };
         (preset.to_string(), r)
@@ -301,6 +312,9 @@ fn setup_report(
         "spp": args.spp,
         "max_depth": args.max_depth,
         "seed": args.seed,
+        "colour": args.colour,
+        "tip_colour": args.tip_colour,
+        "colour_jitter_percent": args.colour_jitter,
     }))
 }
 

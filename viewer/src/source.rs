@@ -9,7 +9,9 @@ use bake::lutfile;
 use bake::profiles::{self, CacheOutcome, OwnedModel, ProfileKey, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::lut;
-use bcsdf_core::{Absorption, FurBcsdf, FurParams, PhotonBudget, ProfileLayout, Resolution};
+use bcsdf_core::{
+    Absorption, FurBcsdf, FurParams, PhotonBudget, Pigment, ProfileLayout, Resolution,
+};
 use std::fs::File;
 use std::io::{self, IsTerminal, Read, Write};
 use std::path::{Path, PathBuf};
@@ -81,6 +83,9 @@ impl Source {
 /// The colour a LUT is read at: its parameters' σ_ca, or the σ_ca that `set` (`--set`
 /// overrides applied to the LUT's parameters) gives. Only the colour keys can change: every
 /// other parameter is baked into the tables, and an override of one is refused by name.
+/// `base_colour=r,g,b` is inverted with the coat colour table measured from this LUT
+/// (docs/model.md §14, a few seconds); a channel out of the fur's reach is clamped and
+/// reported on stderr.
 pub fn lut_colour(path: &Path, blob: &[u8], set: &[String]) -> Result<Absorption, Error> {
     let header = lut::LutHeader::decode(blob)
         .map_err(|e| Error::input(format!("{}: {e}", path.display())))?;
@@ -90,10 +95,21 @@ pub fn lut_colour(path: &Path, blob: &[u8], set: &[String]) -> Result<Absorption
     rest.pigment = header.params.pigment;
     if rest != header.params {
         return Err(Error::input(format!(
-            "--set with --lut {}: only the colour (sigma_ca or the melanin keys) can change; \
-             the LUT's other parameters are baked into its tables",
+            "--set with --lut {}: only the colour (sigma_ca, the melanin keys or base_colour) \
+             can change; the LUT's other parameters are baked into its tables",
             path.display()
         )));
+    }
+    if let Pigment::BaseColour(c) = input.pigment {
+        let found = bake::colour::base_colour_of(blob, c)
+            .map_err(|e| Error::input(format!("--set base_colour: {e}")))?;
+        let tag = if found.is_clamped() {
+            "warning"
+        } else {
+            "note"
+        };
+        let _ = writeln!(io::stderr().lock(), "{tag}: {found}");
+        return Ok(found.absorption);
     }
     let params = FurParams::new(&input).map_err(|e| Error::input(format!("--set: {e}")))?;
     Absorption::from_sigma(params.sigma_ca()).map_err(|e| Error::input(format!("--set: {e}")))

@@ -186,7 +186,7 @@ struct ParamRow {
 }
 
 /// The parameters of `params` in [`SCHEMA`] order, one row per parameter given. The colour
-/// form not in use (σ_ca, or eumelanin and pheomelanin) has no row; a [`ParamDefault::SameAs`]
+/// forms not in use (σ_ca, eumelanin and pheomelanin, the base colour) have no row; a [`ParamDefault::SameAs`]
 /// parameter left absent reads `= β_m` (the header stores them resolved, so only hand-made
 /// inputs show this).
 fn parameter_rows(params: &FurParamsInput) -> Vec<ParamRow> {
@@ -336,12 +336,12 @@ mod tests {
     fn the_parameter_table_walks_the_schema() {
         let rgb = input(Pigment::Absorption(Rgb([0.25, 0.5, 1.0])));
         let rows = parameter_rows(&rgb);
-        // Every schema row but the melanin pair, in schema order.
+        // Every schema row but the melanin pair and the base colour, in schema order.
         let keys: Vec<&str> = rows.iter().map(|r| r.key).collect();
         let expected: Vec<&str> = SCHEMA
             .iter()
             .map(|s| s.key)
-            .filter(|k| !matches!(*k, "eumelanin" | "pheomelanin"))
+            .filter(|k| !matches!(*k, "eumelanin" | "pheomelanin" | "base_colour"))
             .collect();
         assert_eq!(keys, expected);
         for row in &rows {
@@ -364,7 +364,11 @@ mod tests {
             pheomelanin: 0.0,
         });
         let rows = parameter_rows(&melanin.resolved());
-        assert_eq!(rows.len(), SCHEMA.len() - 1, "no sigma_ca row");
+        assert_eq!(
+            rows.len(),
+            SCHEMA.len() - 2,
+            "no sigma_ca or base_colour row"
+        );
         assert!(rows.iter().all(|r| r.key != "sigma_ca"));
         let value = |key: &str| rows.iter().find(|r| r.key == key).unwrap().value.clone();
         assert_eq!(value("eumelanin"), "1.5");
@@ -381,7 +385,7 @@ mod tests {
         parameter_table(&mut html, &header);
         for spec in SCHEMA
             .iter()
-            .filter(|s| s.key != "eumelanin" && s.key != "pheomelanin")
+            .filter(|s| !matches!(s.key, "eumelanin" | "pheomelanin" | "base_colour"))
         {
             let cell = format!(
                 "<tr><td>{}</td><td><code>{}</code></td>",

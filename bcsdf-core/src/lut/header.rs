@@ -60,8 +60,10 @@ impl Reader<'_> {
     }
 }
 
-/// The header's pigment record: kind (0 = σ_ca RGB, 1 = melanin) and three values
-/// (melanin: eumelanin, pheomelanin, 0).
+/// The header's pigment record: kind (0 = σ_ca RGB, 1 = melanin, 2 = base colour) and three
+/// values (melanin: eumelanin, pheomelanin, 0). A LUT never holds kind 2 (`bake` records the
+/// σ_ca a base colour resolves to, docs/model.md §14); the decoder reads it and then refuses
+/// it through [`FurParams::new`], as it refuses any parameters that build no model.
 fn pigment_record(pigment: &Pigment) -> (u32, [f32; 3]) {
     match *pigment {
         Pigment::Absorption(s) => (0, s.0),
@@ -69,6 +71,7 @@ fn pigment_record(pigment: &Pigment) -> (u32, [f32; 3]) {
             eumelanin,
             pheomelanin,
         } => (1, [eumelanin, pheomelanin, 0.0]),
+        Pigment::BaseColour(c) => (2, c.0),
     }
 }
 
@@ -191,6 +194,7 @@ impl LutHeader {
                         eumelanin: pig[0],
                         pheomelanin: pig[1],
                     },
+                    2 => Pigment::BaseColour(Rgb(pig)),
                     _ => return Err(LutError::Field { field: "pigment" }),
                 };
             } else if name.spec().is_choice() {
@@ -344,6 +348,14 @@ mod tests {
             h.params.set_value(spec.name, nudged);
             let bytes = h.encode();
             assert_ne!(bytes, reference, "{} changes no header byte", spec.key);
+            if spec.name == ParamName::BaseColour {
+                // Recorded as pigment kind 2, and refused: a LUT holds the σ_ca it resolved to.
+                assert!(matches!(
+                    LutHeader::decode(&blob(&h)),
+                    Err(LutError::Params(e)) if e.name == ParamName::BaseColour
+                ));
+                continue;
+            }
             let back = LutHeader::decode(&blob(&h)).unwrap();
             assert_eq!(back.params.value(spec.name), Some(nudged), "{}", spec.key);
         }
@@ -353,8 +365,8 @@ mod tests {
     fn corrupt_parameter_blocks_are_refused() {
         let h = header("human-hair");
         let mut bytes = blob(&h);
-        // Pigment kind 2 does not exist.
-        bytes[56..60].copy_from_slice(&2u32.to_le_bytes());
+        // Pigment kind 3 does not exist.
+        bytes[56..60].copy_from_slice(&3u32.to_le_bytes());
         assert_eq!(
             LutHeader::decode(&bytes),
             Err(LutError::Field { field: "pigment" })

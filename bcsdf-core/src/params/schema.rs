@@ -65,17 +65,17 @@ pub enum ParamDefault {
     Value(f32),
     /// The (resolved) value of another parameter, e.g. η_m = η_c.
     SameAs(ParamName),
-    /// One of the colour forms: σ_ca, or eumelanin and/or pheomelanin (an absent
-    /// concentration is 0 when the other one is given).
+    /// One of the colour forms: σ_ca, eumelanin and/or pheomelanin (an absent
+    /// concentration is 0 when the other one is given), or the base colour.
     Colour,
 }
 
-/// The value of one parameter: a number, or (σ_ca only) an RGB triple.
+/// The value of one parameter: a number, or (σ_ca and the base colour only) an RGB triple.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ParamValue {
     /// One number (for σ_ca: all three channels).
     Scalar(f32),
-    /// Three numbers; only σ_ca takes them.
+    /// Three numbers; only σ_ca and the base colour take them ([`ParamName::takes_rgb`]).
     Rgb(Rgb),
     /// One of a choice parameter's values, by index into [`ParamSpec::choices`] (`closure`).
     Choice(u8),
@@ -131,7 +131,7 @@ impl ParamSpec {
 
 /// The parameter schema, in [`ParamName::ALL`] order (which is also the order of the LUT
 /// header's parameter block, docs/lut.md).
-pub const SCHEMA: [ParamSpec; 14] = [
+pub const SCHEMA: [ParamSpec; 15] = [
     ParamSpec {
         name: ParamName::EtaC,
         key: "eta_c",
@@ -174,6 +174,16 @@ pub const SCHEMA: [ParamSpec; 14] = [
         unit: "",
         meaning: "pheomelanin concentration (colours σ_ca)",
         domain: Domain::closed(0.0, 100.0),
+        default: ParamDefault::Colour,
+        choices: &[],
+    },
+    ParamSpec {
+        name: ParamName::BaseColour,
+        key: "base_colour",
+        symbol: "c_base",
+        unit: "",
+        meaning: "colour the coat shows, linear RGB (colours σ_ca through the coat colour table)",
+        domain: Domain::closed(0.0, 1.0),
         default: ParamDefault::Colour,
         choices: &[],
     },
@@ -293,11 +303,12 @@ pub const SCHEMA: [ParamSpec; 14] = [
 
 impl ParamName {
     /// Every parameter, in docs/model.md §2 order (the order of [`SCHEMA`]).
-    pub const ALL: [ParamName; 14] = [
+    pub const ALL: [ParamName; 15] = [
         ParamName::EtaC,
         ParamName::SigmaCa,
         ParamName::Eumelanin,
         ParamName::Pheomelanin,
+        ParamName::BaseColour,
         ParamName::AlphaDeg,
         ParamName::BetaMDeg,
         ParamName::BetaNDeg,
@@ -322,10 +333,18 @@ impl ParamName {
         self.spec().key
     }
 
-    /// Whether this is one of the colour parameters (σ_ca, eumelanin, pheomelanin).
+    /// Whether this is one of the colour parameters (σ_ca, eumelanin, pheomelanin,
+    /// base colour).
     #[must_use]
     pub const fn is_colour(self) -> bool {
         matches!(self.spec().default, ParamDefault::Colour)
+    }
+
+    /// Whether the parameter takes three numbers `[r, g, b]` as well as one (σ_ca, the base
+    /// colour).
+    #[must_use]
+    pub const fn takes_rgb(self) -> bool {
+        matches!(self, ParamName::SigmaCa | ParamName::BaseColour)
     }
 
     /// Looks a parameter up by its key; `None` for an unknown key.

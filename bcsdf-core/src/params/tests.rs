@@ -89,7 +89,7 @@ fn set_value_then_value_round_trips_every_parameter() {
             continue;
         }
         input.set(spec.name, v);
-        let expected = if spec.name == ParamName::SigmaCa {
+        let expected = if spec.name.takes_rgb() {
             ParamValue::Rgb(Rgb::splat(v))
         } else {
             ParamValue::Scalar(v)
@@ -100,6 +100,23 @@ fn set_value_then_value_round_trips_every_parameter() {
     input.set_value(ParamName::SigmaCa, ParamValue::Rgb(Rgb([0.1, 0.2, 0.3])));
     assert_eq!(input.pigment, Pigment::Absorption(Rgb([0.1, 0.2, 0.3])));
     assert_eq!(input.value(ParamName::Eumelanin), None);
+    input.set_value(
+        ParamName::BaseColour,
+        ParamValue::Rgb(Rgb([0.5, 0.25, 0.1])),
+    );
+    assert_eq!(input.pigment, Pigment::BaseColour(Rgb([0.5, 0.25, 0.1])));
+    assert_eq!(input.value(ParamName::SigmaCa), None);
+    // A base colour builds no model until the coat table has turned it into σ_ca, and the
+    // error says so; a channel outside [0, 1] is refused as any other value.
+    let e = FurParams::new(&input).unwrap_err();
+    assert_eq!(e.name, ParamName::BaseColour);
+    assert!(e.to_string().contains("coat colour table"), "{e}");
+    input.set_value(ParamName::BaseColour, ParamValue::Rgb(Rgb([0.5, 1.5, 0.1])));
+    let e = FurParams::new(&input).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "invalid base_colour = 1.5: valid range is [0, 1]"
+    );
 }
 
 #[test]

@@ -6,4 +6,5 @@ mod common;
 mod determinism;
 mod dual;
 mod mis_consistency;
+mod strand_colour;
 mod white_furnace;

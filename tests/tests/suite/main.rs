@@ -8,6 +8,7 @@
 mod bake_budget;
 mod baked_batch;
 mod baked_format;
+mod base_colour;
 mod changelog;
 mod colour_budget;
 mod energy_closure;

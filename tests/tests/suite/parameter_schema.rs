@@ -7,7 +7,7 @@ use bake::presets;
 use bake::tables::{encode, TableValues};
 use bake::Override;
 use bcsdf_core::lut::{LutHeader, LutResolution, Table, TABLE_COUNT};
-use bcsdf_core::{FurParams, FurParamsInput, ParamName, ParamValue, Rgb, SCHEMA};
+use bcsdf_core::{FurParamsInput, ParamName, ParamValue, Rgb, SCHEMA};
 
 /// A value a quarter of the way into `name`'s domain: valid, and unlike any preset's.
 fn quarter(name: ParamName) -> f32 {
@@ -23,7 +23,7 @@ fn one_per_row() -> Vec<(ParamName, FurParamsInput, ParamValue)> {
         .map(|spec| {
             let mut input = bcsdf_core::presets::find("bobcat").unwrap().input;
             let value = match spec.name {
-                ParamName::SigmaCa => {
+                ParamName::SigmaCa | ParamName::BaseColour => {
                     let q = quarter(spec.name);
                     ParamValue::Rgb(Rgb([q, 0.5 * q, 0.25 * q]))
                 }
@@ -35,7 +35,11 @@ fn one_per_row() -> Vec<(ParamName, FurParamsInput, ParamValue)> {
                 n => ParamValue::Scalar(quarter(n)),
             };
             input.set_value(spec.name, value);
-            FurParams::new(&input).unwrap_or_else(|e| panic!("{}: {e}", spec.key));
+            // What preset files and overrides are checked with (a base colour becomes σ_ca
+            // through a LUT's coat colour table, docs/model.md §14).
+            input
+                .check()
+                .unwrap_or_else(|e| panic!("{}: {e}", spec.key));
             (spec.name, input, value)
         })
         .collect()
@@ -78,6 +82,13 @@ fn lut_header_carries_every_parameter() {
     let values = TableValues { res, tables };
     for (name, input, value) in one_per_row() {
         let blob = encode(&values, &input, None);
+        if name == ParamName::BaseColour {
+            // A LUT records the σ_ca its base colour resolves to (`bake::colour`), never the
+            // colour: a header holding one is refused, by name.
+            let e = LutHeader::decode(&blob).unwrap_err().to_string();
+            assert!(e.contains("base_colour"), "{e}");
+            continue;
+        }
         let header = LutHeader::decode(&blob).unwrap();
         assert_eq!(header.params.value(name), Some(value), "{name}");
         assert_eq!(header.params, input.resolved(), "{name}");

@@ -203,10 +203,12 @@ fn numbers() -> Vec<ParamName> {
         .collect()
 }
 
-/// One parameter set to an invalid value (σ_ca: in its green channel only).
+/// One parameter set to an invalid value (σ_ca, the base colour: in the green channel only).
 fn set_invalid(input: &mut FurParamsInput, name: ParamName, v: f32) {
     match name {
-        ParamName::SigmaCa => input.set_value(name, ParamValue::Rgb(Rgb([0.5, v, 0.5]))),
+        ParamName::SigmaCa | ParamName::BaseColour => {
+            input.set_value(name, ParamValue::Rgb(Rgb([0.5, v, 0.5])));
+        }
         _ => input.set(name, v),
     }
 }
@@ -234,6 +236,8 @@ fn invalid_value(name: ParamName) -> BoxedStrategy<f32> {
             prop_oneof![-1e30f32..=0.0, Just(0.0f32)].boxed()
         }
         ParamName::AlphaDeg => prop_oneof![90.0f32..1e30, -1e30f32..-90.0].boxed(),
+        // A linear colour channel: outside [0, 1].
+        ParamName::BaseColour => prop_oneof![1.0001f32..1e30, negative].boxed(),
         // Not a whole index of a choice (`closure`); not drawn below, since the typed field
         // cannot hold it (its parsers' errors are tested in bake).
         ParamName::Closure => prop_oneof![Just(0.5f32), Just(2.0f32)].boxed(),

@@ -517,11 +517,11 @@ fn presets_lists_every_builtin_with_its_parameters_and_source() {
     let out = ok(&["presets"], None);
     let lines: Vec<&str> = out.lines().collect();
     let n = presets::PRESETS.len();
-    // The header walks the schema: one column per row but the melanin keys (they share
-    // σ_ca's column).
+    // The header walks the schema: one column per row but the melanin keys and the base
+    // colour (they share σ_ca's column).
     let header: Vec<&str> = lines[0].split_whitespace().collect();
     assert_eq!(header[0], "name");
-    assert_eq!(header.len(), 1 + bcsdf_core::SCHEMA.len() - 2, "{header:?}");
+    assert_eq!(header.len(), 1 + bcsdf_core::SCHEMA.len() - 3, "{header:?}");
     for (p, line) in presets::PRESETS.iter().zip(&lines[1..=n]) {
         let cells: Vec<&str> = line.split_whitespace().collect();
         assert_eq!(cells[0], p.name, "{line}");
@@ -583,6 +583,16 @@ fn presets_json_has_every_preset_and_parameter_as_resolved() {
             }
             Pigment::Melanin { eumelanin, .. } => {
                 assert_eq!(params["eumelanin"].as_f64().unwrap() as f32, eumelanin);
+                assert!(!params.contains_key("sigma_ca"));
+            }
+            Pigment::BaseColour(c) => {
+                let got: Vec<f32> = params["base_colour"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.as_f64().unwrap() as f32)
+                    .collect();
+                assert_eq!(got, c.0, "{}", p.name);
                 assert!(!params.contains_key("sigma_ca"));
             }
         }

@@ -12,6 +12,17 @@
 /// The presets every per-preset test checks in the everyday run; the rest run in the full sweep.
 pub const CORE_PRESETS: [&str; 4] = ["human-hair", "air-medulla", "human-fur", "raccoon"];
 
+/// The built-in presets a test that loops over presets checks in the everyday run (the
+/// [`CORE_PRESETS`]) or in the full sweep (every other one): the same split as
+/// [`per_preset_tests!`], for a test whose check spans several presets at once.
+#[must_use]
+pub fn presets_of(sweep: bool) -> Vec<&'static bcsdf_core::presets::Preset> {
+    bcsdf_core::presets::PRESETS
+        .iter()
+        .filter(|p| CORE_PRESETS.contains(&p.name) != sweep)
+        .collect()
+}
+
 /// `per_preset_tests!(check, completeness_test; test_a: "preset-a", test_b: "preset-b", …)`
 /// defines, for each core preset, `#[test] fn test_a() { check("preset-a") }`, for every other
 /// one `mod test_b { #[test] #[ignore] fn full_sweep() { check("preset-b") } }`, and

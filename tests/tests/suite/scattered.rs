@@ -466,15 +466,29 @@ fn rho_at_most_one_index_matched_presets() {
 }
 
 #[test]
-fn rho_at_most_one_other_presets_and_lossless() {
-    let mut sets: Vec<(String, FurParams)> = presets::PRESETS
-        .iter()
-        .filter(|p| !p.name.starts_with("yan-row-"))
-        .map(|p| (p.name.to_string(), FurParams::new(&p.input).unwrap()))
-        .collect();
+fn rho_at_most_one_core_presets_and_lossless() {
+    let mut sets = preset_sets(false);
     assert!(sets.len() >= 2, "human-hair and air-medulla");
     sets.push(("lossless".into(), lossless()));
     check_rho_at_most_one(&sets);
+}
+
+/// ρ ≤ 1 for the other species (the full sweep).
+mod rho_at_most_one_other_species {
+    #[test]
+    #[ignore = "full sweep: cargo test --workspace -- --ignored full_sweep"]
+    fn full_sweep() {
+        super::check_rho_at_most_one(&super::preset_sets(true));
+    }
+}
+
+/// The core presets' parameters, or the other species' with `sweep`
+/// (fur_tests::per_preset::presets_of).
+fn preset_sets(sweep: bool) -> Vec<(String, FurParams)> {
+    fur_tests::per_preset::presets_of(sweep)
+        .into_iter()
+        .map(|p| (p.name.to_string(), FurParams::new(&p.input).unwrap()))
+        .collect()
 }
 
 /// docs/model.md §6: the scattered paths cross the cuticle twice, like TT, so with a

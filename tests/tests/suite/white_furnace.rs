@@ -143,8 +143,23 @@ fn h_average_is_converged() {
 
 #[test]
 fn furnace_matches_prediction_for_presets() {
+    furnace_matches_prediction_for(false);
+}
+
+/// The other species' white furnace (the full sweep).
+mod furnace_matches_prediction_other_species {
+    #[test]
+    #[ignore = "full sweep: cargo test --workspace -- --ignored full_sweep"]
+    fn full_sweep() {
+        super::furnace_matches_prediction_for(true);
+    }
+}
+
+/// The white furnace against its prediction for the core presets, or the others with `sweep`
+/// (fur_tests::per_preset::presets_of).
+fn furnace_matches_prediction_for(sweep: bool) {
     let mut worst = 0.0f64;
-    for preset in presets::PRESETS.iter() {
+    for preset in fur_tests::per_preset::presets_of(sweep) {
         let p = FurParams::new(&preset.input).unwrap();
         let o = check(
             preset.name,

@@ -14,7 +14,8 @@ pub const CORE_PRESETS: [&str; 4] = ["human-hair", "air-medulla", "human-fur", "
 
 /// The built-in presets a test that loops over presets checks in the everyday run (the
 /// [`CORE_PRESETS`]) or in the full sweep (every other one): the same split as
-/// [`per_preset_tests!`], for a test whose check spans several presets at once.
+/// [`per_preset_tests!`](crate::per_preset_tests), for a test whose check spans several
+/// presets at once.
 #[must_use]
 pub fn presets_of(sweep: bool) -> Vec<&'static bcsdf_core::presets::Preset> {
     bcsdf_core::presets::PRESETS

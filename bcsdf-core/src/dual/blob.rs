@@ -28,6 +28,7 @@
 //! stored as standard deviations, not variances: the narrowest (0.1°) stays a normal half.
 
 use super::coat::node_coat;
+use super::half_range::HalfRange;
 use super::{coat_decay, local_backscatter, Attenuation, DualTables, PHI_NODES, THETA_NODES};
 use crate::absorption::Absorption;
 use crate::baked::BakedBcsdf;
@@ -411,35 +412,6 @@ pub(super) fn checksum_of(blob: &[u8]) -> u64 {
     fnv1a64_continue(fnv1a64(&copy), &blob[HEADER_LEN..])
 }
 
-/// The set a stored half must lie in, checked on its bits: finite (exponent field not all
-/// ones), and for the signed sets compared as its value compares (±0 belongs to both sides).
-#[derive(Clone, Copy)]
-pub(super) enum HalfRange {
-    Finite,
-    NonNegative,
-    NonPositive,
-    /// [0, 1].
-    Unit,
-}
-
-impl HalfRange {
-    pub(super) fn holds(self, h: u16) -> bool {
-        const EXPONENT: u16 = 0x7c00;
-        const SIGN: u16 = 0x8000;
-        const ONE: u16 = 0x3c00;
-        let magnitude = h & !SIGN;
-        let finite = h & EXPONENT != EXPONENT;
-        let non_negative = h & SIGN == 0 || magnitude == 0;
-        finite
-            && match self {
-                HalfRange::Finite => true,
-                HalfRange::NonNegative => non_negative,
-                HalfRange::NonPositive => h & SIGN != 0 || magnitude == 0,
-                HalfRange::Unit => non_negative && magnitude <= ONE,
-            }
-    }
-}
-
 fn word(bytes: &[u8], at: usize) -> u32 {
     u32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]])
 }
@@ -532,16 +504,13 @@ impl DualLut {
         // comparisons, without a conversion per value).
         for i in 0..ABS_NODES * NODE_HALVES {
             let within = i % NODE_HALVES;
-            let range = if within >= FIELD_HALVES {
-                HalfRange::NonNegative
-            } else {
-                match within % FIELDS {
-                    LOG2_DECAY => HalfRange::NonPositive,
-                    A_F2 => HalfRange::Unit,
-                    BETA_F | BACK | FRONT | SIGMA_B0 => HalfRange::NonNegative,
-                    f if f >= SD => HalfRange::NonNegative,
-                    _ => HalfRange::Finite,
-                }
+            let range = match within % FIELDS {
+                _ if within >= FIELD_HALVES => HalfRange::NonNegative,
+                LOG2_DECAY => HalfRange::NonPositive,
+                A_F2 => HalfRange::Unit,
+                BETA_F | BACK | FRONT | SIGMA_B0 => HalfRange::NonNegative,
+                f if f >= SD => HalfRange::NonNegative,
+                _ => HalfRange::Finite,
             };
             if !range.holds(bits(i)) {
                 return Err(DualError::Value(i));

@@ -18,6 +18,7 @@
 pub(crate) mod blob;
 pub mod coat;
 mod eval;
+mod half_range;
 mod tables;
 #[cfg(test)]
 mod tests;

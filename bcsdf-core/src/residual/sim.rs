@@ -1,11 +1,11 @@
+// One file past 600 lines on purpose: it is one concern, the photon walk and the per-cell
+// bookkeeping that shares its random stream (common random numbers across colours); split,
+// the stream's order would be spread over two files.
+
 //! The model's own cross-section simulation at one (θ_r, h) cell (docs/model.md §12,
 //! "Residual"): the flatland problem of §3 — outer circle of radius 1 with the layered cuticle
 //! Fresnel at η'_c, medulla circle κ at η'_m, cortex absorption σ_ca/cos θ_tc, medulla
 //! scattering σ_ms/cos θ_tm (2D Henyey–Greenstein) and absorption σ_ma/cos θ_tm per 2D length.
-//!
-//! One file past 600 lines on purpose: it is one concern, the photon walk and the per-cell
-//! bookkeeping that shares its random stream (common random numbers across colours); split,
-//! the stream's order would be spread over two files.
 //!
 //! - **Unscattered light** is a deterministic beam tree: the beam entering at h is split at
 //!   every interface into its reflected and transmitted beams (× f, × (1 − f); total internal

@@ -244,7 +244,7 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
 
 #[test]
 fn value_checks_on_the_bits_are_the_float_comparisons() {
-    use blob::HalfRange;
+    use crate::dual::half_range::HalfRange;
     // Every one of the 65 536 halves, against the comparison on its value.
     for h in 0..=u16::MAX {
         let v = half::f16::from_bits(h).to_f32();

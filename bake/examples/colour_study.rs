@@ -45,8 +45,10 @@ fn main() {
             let blob = tables::bake(&model, &preset.input, res);
             let lut = BakedBcsdf::from_bytes(&blob).unwrap();
             let mut worst = [0.0f64; 3];
-            for (label, colour) in colour_set(params.sigma_ca()) {
-                let reference = model.at_sigma(&colour).unwrap();
+            let colours = colour_set(params.sigma_ca());
+            let absorptions: Vec<_> = colours.iter().map(|(_, c)| *c).collect();
+            let references = model.at_sigmas(&absorptions).unwrap();
+            for ((label, colour), reference) in colours.into_iter().zip(&references) {
                 let s = compare(&reference.model(), &lut.at(&colour), &MetricSet::DEFAULT);
                 let w = s.worst();
                 for (a, b) in worst.iter_mut().zip(w) {

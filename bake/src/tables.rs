@@ -280,21 +280,21 @@ pub fn rebuild_model(
 
 /// The models of table `N`'s absorption planes: model j is `model` at the RGB σ_ca of nodes
 /// 3j, 3j + 1, 3j + 2 (`lut::absorption_node(k, n_abs, s₀)`, s₀ = `lut::absorption_scale(κ)`;
-/// past the last node, the last node again), ⌈n_abs/3⌉ models ([`OwnedModel::at_sigma`]: the
-/// residual of each colour from `model`'s cache, or generated: one simulation gives three
-/// planes).
+/// past the last node, the last node again), ⌈n_abs/3⌉ models ([`OwnedModel::at_sigmas`]: the
+/// residual of each colour from `model`'s cache, or generated: one photon walk gives up to
+/// eight models, 24 planes).
 pub fn absorption_planes(
     model: &OwnedModel,
     n_abs: u32,
 ) -> Result<Vec<OwnedModel>, crate::profiles::Error> {
     let scale = lut::absorption_scale(model.model().params().kappa());
-    (0..(n_abs as usize).div_ceil(3))
+    let colours: Vec<Absorption> = (0..(n_abs as usize).div_ceil(3))
         .map(|j| {
             let sigma = Rgb([0, 1, 2].map(|c| lut::absorption_node(3 * j + c, n_abs, scale)));
-            let a = Absorption::from_sigma(sigma).expect("absorption nodes lie in [0, 1000]");
-            model.at_sigma(&a)
+            Absorption::from_sigma(sigma).expect("absorption nodes lie in [0, 1000]")
         })
-        .collect()
+        .collect();
+    model.at_sigmas(&colours)
 }
 
 /// Samples and encodes `model` (made from `input`) at resolution `res`: the LUT blob, or why

@@ -509,6 +509,21 @@ impl FurParams {
         self.sigma_ca = absorption.sigma();
         self
     }
+
+    /// Whether `other` is these parameters at another colour: every field but σ_ca the same
+    /// bits (what the absorption planes of one LUT share, so that one residual walk serves
+    /// them all: [`crate::residual_gen::generate_rows`]).
+    #[must_use]
+    pub fn same_but_absorption(&self, other: &FurParams) -> bool {
+        let bits = |p: &FurParams| {
+            [
+                p.eta_c, p.alpha, p.beta_m, p.beta_n, p.l, p.kappa, p.eta_m, p.sigma_ms,
+                p.sigma_ma, p.g,
+            ]
+            .map(f32::to_bits)
+        };
+        bits(self) == bits(other) && self.closure == other.closure
+    }
 }
 
 /// The analytic model's parameters at a colour (here, with the parameters, so that

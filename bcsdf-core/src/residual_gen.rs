@@ -12,7 +12,7 @@ use crate::math::{Libm, Math, PI, TAU};
 use crate::medulla::ProfileError;
 use crate::model::FurBcsdf;
 use crate::params::FurParams;
-use crate::residual::sim::{simulate_cell, CellTally, Section};
+use crate::residual::sim::{simulate_cells, CellTally, Section};
 use crate::residual::{ResidualLayout, MEAN_SUBDIVISION};
 use crate::rng::{cell_stream, Pcg32};
 use crate::scattered::{azimuthal_on_row, exit_transmittance, scattered_paths};
@@ -113,24 +113,127 @@ fn simulate_row<M: Math>(
     seed: u64,
     out: &mut [f32],
 ) -> RowStats {
-    let mut stats = RowStats::default();
-    let params = model.params();
-    let sec = section(params, theta_r);
-    let energies = ModelEnergy::new(model, theta_r);
-    let n_h = layout.n_h;
     let mut hist = [[0.0f64; 3]; 4096];
-    let scale_at = layout.scale_offset();
-    let (mut scattered_mean, mut excess_mean) = ([0.0f64; 3], [0.0f64; 3]);
-    let (mut unscattered_mean, mut lossless_mean) = ([0.0f64; 3], [0.0f64; 3]);
-    let hist = &mut hist[..layout.n_phi];
-    let inv_n = 1.0 / n_h as f64;
+    let [stats] = simulate_rows(
+        &[model],
+        layout,
+        theta_r,
+        row,
+        seed,
+        [out],
+        &mut hist[..layout.n_phi],
+    );
+    stats
+}
+
+/// Row `row` of `layout` for `P` models at once, one walk for all ([`simulate_cells`]):
+/// model k's row goes to `out[k]` ([`ResidualLayout::row_len`] values each), bit for bit what
+/// [`generate_row`] writes for it alone. The models must differ in σ_ca only (the colours of
+/// a LUT's absorption planes: [`FurParams::same_but_absorption`]); `hist` is scratch of at
+/// least `P·n_phi` bins. Nothing is written (and the statistics are zero) when the layout is
+/// invalid, the row is out of range, an `out` has the wrong length, `hist` is too short or
+/// the models differ in more than σ_ca. What a bake's absorption planes are generated with:
+/// the photon walks' geometry is computed once for all `P` colours.
+pub fn generate_rows<M: Math, const P: usize>(
+    models: &[&FurBcsdf<'_, M>; P],
+    layout: &ResidualLayout,
+    row: usize,
+    seed: u64,
+    out: [&mut [f32]; P],
+    hist: &mut [[f64; 3]],
+) -> [RowStats; P] {
+    let n_phi = layout.n_phi;
+    let fits = layout.validate().is_ok()
+        && row < layout.n_theta
+        && out.iter().all(|o| o.len() == layout.row_len())
+        && hist.len() >= P * n_phi
+        && models
+            .iter()
+            .all(|m| m.params().same_but_absorption(models[0].params()));
+    if !fits {
+        return [RowStats::default(); P];
+    }
+    simulate_rows(
+        models,
+        layout,
+        layout.theta_node(row),
+        row as u64,
+        seed,
+        out,
+        &mut hist[..P * n_phi],
+    )
+}
+
+/// The rows of `models` (differing in σ_ca only) at `theta_r`, cell streams of row id `row`,
+/// into `out`, with `hist` (`P·n_phi` bins) as the colours' histograms.
+fn simulate_rows<M: Math, const P: usize>(
+    models: &[&FurBcsdf<'_, M>; P],
+    layout: &ResidualLayout,
+    theta_r: f32,
+    row: u64,
+    seed: u64,
+    mut out: [&mut [f32]; P],
+    hist: &mut [[f64; 3]],
+) -> [RowStats; P] {
+    let sec = section(models[0].params(), theta_r);
+    let cortex: [Rgb; P] =
+        core::array::from_fn(|k| section(models[k].params(), theta_r).ext.cortex);
+    let mut rows: [RowAcc<'_, '_, M>; P] =
+        core::array::from_fn(|k| RowAcc::new(models[k], theta_r));
+    hist.fill([0.0; 3]);
+    let n_h = layout.n_h;
     for j in 0..n_h {
         let h = layout.h_node(j);
         let stream = cell_stream(seed, TABLE_RESIDUAL, row * n_h as u64 + j as u64);
         let mut rng = Pcg32::new(stream, stream.rotate_left(17));
-        let t: CellTally = simulate_cell(&sec, h, layout.photons, &mut rng, hist);
-        let (e_unscattered, e_scattered) = energies.at(h);
-        let e_lossless = energies.lossless_at(h);
+        let tallies = simulate_cells(
+            &sec,
+            &cortex,
+            h,
+            layout.photons,
+            &mut rng,
+            hist,
+            layout.n_phi,
+        );
+        for ((acc, t), o) in rows.iter_mut().zip(&tallies).zip(out.iter_mut()) {
+            acc.cell(layout, j, t, o);
+        }
+    }
+    let n = layout.n_phi;
+    core::array::from_fn(|k| rows[k].finish(layout, &hist[k * n..(k + 1) * n], &mut *out[k]))
+}
+
+/// One colour's row in the making ([`simulate_rows`]): its model's E_model per offset and
+/// the h-means of the offsets' energies.
+struct RowAcc<'m, 'a, M: Math> {
+    energies: ModelEnergy<'m, 'a, M>,
+    stats: RowStats,
+    scattered_mean: [f64; 3],
+    excess_mean: [f64; 3],
+    unscattered_mean: [f64; 3],
+    lossless_mean: [f64; 3],
+}
+
+impl<'m, 'a, M: Math> RowAcc<'m, 'a, M> {
+    fn new(model: &'m FurBcsdf<'a, M>, theta_r: f32) -> Self {
+        RowAcc {
+            energies: ModelEnergy::new(model, theta_r),
+            stats: RowStats::default(),
+            scattered_mean: [0.0; 3],
+            excess_mean: [0.0; 3],
+            unscattered_mean: [0.0; 3],
+            lossless_mean: [0.0; 3],
+        }
+    }
+
+    /// Offset `j`'s cell: the simulation's tally `t` against E_model, written into `out`.
+    fn cell(&mut self, layout: &ResidualLayout, j: usize, t: &CellTally, out: &mut [f32]) {
+        let h = layout.h_node(j);
+        let scale_at = layout.scale_offset();
+        let inv_n = 1.0 / layout.n_h as f64;
+        let stats = &mut self.stats;
+        let (e_unscattered, e_scattered) = self.energies.at(h);
+        let e_lossless = self.energies.lossless_at(h);
         let mut cell_drop = 0.0f64;
         for c in 0..3 {
             let (eu, es) = (f64::from(e_unscattered.0[c]), f64::from(e_scattered.0[c]));
@@ -147,10 +250,10 @@ fn simulate_row<M: Math>(
             } else {
                 1.0
             };
-            scattered_mean[c] += es * inv_n;
-            unscattered_mean[c] += eu * inv_n;
-            lossless_mean[c] += f64::from(e_lossless.0[c]) * inv_n;
-            excess_mean[c] += excess * inv_n;
+            self.scattered_mean[c] += es * inv_n;
+            self.unscattered_mean[c] += eu * inv_n;
+            self.lossless_mean[c] += f64::from(e_lossless.0[c]) * inv_n;
+            self.excess_mean[c] += excess * inv_n;
             stats.exiting[c] += t.exiting[c] * inv_n;
             stats.excess[c] += excess * inv_n;
             stats.residual[c] += res * inv_n;
@@ -162,59 +265,68 @@ fn simulate_row<M: Math>(
         stats.beams += t.beams;
         stats.photons += t.photons;
     }
-    // The far field carries the lobes' exact h-means; the offsets' midpoint rule misses them
-    // where E_model(h) jumps (h = κη'_c, the medulla's total reflection; the jumps move with
-    // θ_r) or turns steeply (the cuticle's Fresnel toward h = 1) by up to half a jump times
-    // 1/n_h. Lossless, E_sim ≡ 1 is smooth and those features are the residual's:
-    // ⟨A_res⟩_h = 1 − exact⟨E_model⟩ (the midpoint rule for E_sim, exact means for the lobes).
-    // Absorption makes E_sim itself jump with the paths (and leaves the series beyond TRT of a
-    // medulla-free fiber smooth, where midpoint⟨res⟩ was right): the correction
-    // (midpoint − exact)⟨E_u + s·E_s⟩ is weighted by τ = midpoint⟨E_sim − E_u⟩ /
-    // midpoint⟨1 − E_0⟩, the part of the energy off the eight unscattered paths that survives
-    // absorption (E_0: Σ_p A_p without absorption; τ = 1 lossless, → 0 for dark fibers). The
-    // offsets keep the simulation's values and their mean; the near field scales them to the
-    // far field's mean (`ResidualTable::magnitude`).
-    let (unscattered_exact, scattered_exact) = energies.mean();
-    for c in 0..3 {
-        let scale = if scattered_mean[c] > 0.0 {
-            (1.0 - excess_mean[c] / scattered_mean[c]).clamp(0.0, 1.0)
-        } else {
-            1.0
-        };
-        let (eu, es) = (
-            f64::from(unscattered_exact.0[c]),
-            f64::from(scattered_exact.0[c]),
-        );
-        let off_paths = stats.exiting[c] + stats.dropped[c] - unscattered_mean[c];
-        let lossless_off_paths = 1.0 - lossless_mean[c];
-        let tau = if lossless_off_paths > 1e-12 {
-            (off_paths / lossless_off_paths).clamp(0.0, 1.0)
-        } else {
-            1.0
-        };
-        let midpoint = stats.residual[c];
-        let correction = (unscattered_mean[c] - eu) + scale * (scattered_mean[c] - es);
-        let mean = (midpoint + tau * correction).max(0.0);
-        stats.residual[c] = mean;
-        stats.model[c] = eu + es;
-        out[3 * n_h + c] = midpoint as f32;
-        out[layout.far_mean_offset() + c] = mean as f32;
-        out[scale_at + 3 * n_h + c] = scale as f32;
-    }
-    // D_res: the histogram over |φ| ∈ [0, π] as a density over φ ∈ (−π, π] (both signs).
-    let width = PI / layout.n_phi as f32;
-    let d = &mut out[3 * (n_h + 1)..scale_at];
-    for c in 0..3 {
-        let total: f64 = hist.iter().map(|b| b[c]).sum();
-        for (k, b) in hist.iter().enumerate() {
-            d[3 * k + c] = if total > 0.0 {
-                (b[c] / (total * 2.0 * f64::from(width))) as f32
+
+    /// The row's means, scale factors and D_res from the colour's histogram `hist`, into
+    /// `out`.
+    fn finish(&mut self, layout: &ResidualLayout, hist: &[[f64; 3]], out: &mut [f32]) -> RowStats {
+        let n_h = layout.n_h;
+        let scale_at = layout.scale_offset();
+        // The far field carries the lobes' exact h-means; the offsets' midpoint rule misses them
+        // where E_model(h) jumps (h = κη'_c, the medulla's total reflection; the jumps move with
+        // θ_r) or turns steeply (the cuticle's Fresnel toward h = 1) by up to half a jump times
+        // 1/n_h. Lossless, E_sim ≡ 1 is smooth and those features are the residual's:
+        // ⟨A_res⟩_h = 1 − exact⟨E_model⟩ (the midpoint rule for E_sim, exact means for the lobes).
+        // Absorption makes E_sim itself jump with the paths (and leaves the series beyond TRT of a
+        // medulla-free fiber smooth, where midpoint⟨res⟩ was right): the correction
+        // (midpoint − exact)⟨E_u + s·E_s⟩ is weighted by τ = midpoint⟨E_sim − E_u⟩ /
+        // midpoint⟨1 − E_0⟩, the part of the energy off the eight unscattered paths that survives
+        // absorption (E_0: Σ_p A_p without absorption; τ = 1 lossless, → 0 for dark fibers). The
+        // offsets keep the simulation's values and their mean; the near field scales them to the
+        // far field's mean (`ResidualTable::magnitude`).
+        let (unscattered_exact, scattered_exact) = self.energies.mean();
+        for c in 0..3 {
+            let scale = if self.scattered_mean[c] > 0.0 {
+                (1.0 - self.excess_mean[c] / self.scattered_mean[c]).clamp(0.0, 1.0)
             } else {
-                1.0 / TAU
+                1.0
             };
+            let (eu, es) = (
+                f64::from(unscattered_exact.0[c]),
+                f64::from(scattered_exact.0[c]),
+            );
+            let off_paths =
+                self.stats.exiting[c] + self.stats.dropped[c] - self.unscattered_mean[c];
+            let lossless_off_paths = 1.0 - self.lossless_mean[c];
+            let tau = if lossless_off_paths > 1e-12 {
+                (off_paths / lossless_off_paths).clamp(0.0, 1.0)
+            } else {
+                1.0
+            };
+            let midpoint = self.stats.residual[c];
+            let correction =
+                (self.unscattered_mean[c] - eu) + scale * (self.scattered_mean[c] - es);
+            let mean = (midpoint + tau * correction).max(0.0);
+            self.stats.residual[c] = mean;
+            self.stats.model[c] = eu + es;
+            out[3 * n_h + c] = midpoint as f32;
+            out[layout.far_mean_offset() + c] = mean as f32;
+            out[scale_at + 3 * n_h + c] = scale as f32;
         }
+        // D_res: the histogram over |φ| ∈ [0, π] as a density over φ ∈ (−π, π] (both signs).
+        let width = PI / layout.n_phi as f32;
+        let d = &mut out[3 * (n_h + 1)..scale_at];
+        for c in 0..3 {
+            let total: f64 = hist.iter().map(|b| b[c]).sum();
+            for (k, b) in hist.iter().enumerate() {
+                d[3 * k + c] = if total > 0.0 {
+                    (b[c] / (total * 2.0 * f64::from(width))) as f32
+                } else {
+                    1.0 / TAU
+                };
+            }
+        }
+        self.stats
     }
-    stats
 }
 
 /// Generates the whole table sequentially into `out` ([`ResidualLayout::len`]); the std

@@ -309,10 +309,12 @@ fn compare_file(
     // The same budget at other colours: the LUT read at each against the analytic model
     // with that σ_ca (docs/lut.md "The absorption axis").
     let mut colour_lines = String::new();
-    for (label, colour) in metrics::random_colours(usize::from(args.colours)) {
-        let reference = owned
-            .at_sigma(&colour)
-            .map_err(|e| Failure::Fatal(Error::Failure(e.to_string())))?;
+    let colours = metrics::random_colours(usize::from(args.colours));
+    // The analytic models at those colours, their residual tables made together.
+    let references = owned
+        .at_sigmas(&colours.iter().map(|(_, c)| *c).collect::<Vec<_>>())
+        .map_err(|e| Failure::Fatal(Error::Failure(e.to_string())))?;
+    for ((label, colour), reference) in colours.into_iter().zip(&references) {
         let e = metrics::compare(&reference.model(), &baked.at(&colour), &MetricSet::DEFAULT);
         let over = budget.check(&e);
         let [r, g, b] = colour.sigma().0;

@@ -43,7 +43,8 @@ pub use cache::{
 pub use generate::{generate_parallel, scale_budget};
 pub use model::{build_model, needs_profiles, OwnedModel, ProfileOptions};
 pub use residual::{
-    decode_residual, encode_residual, generate_residual, load_or_generate_residual, ResidualKey,
+    decode_residual, encode_residual, generate_residual, generate_residuals,
+    load_or_generate_residual, load_or_generate_residuals, ResidualKey, COLOURS_PER_WALK,
     RESIDUAL_EXTENSION, RESIDUAL_FORMAT_VERSION, RESIDUAL_MAGIC,
 };
 

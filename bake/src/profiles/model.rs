@@ -3,7 +3,7 @@
 //! [`FurBcsdf`] over them.
 
 use super::cache::load_or_generate;
-use super::residual::load_or_generate_residual;
+use super::residual::{load_or_generate_residual, load_or_generate_residuals};
 use super::{Error, OwnedProfiles, DEFAULT_SEED};
 use bcsdf_core::medulla::{PhotonBudget, ProfileError, Resolution};
 use bcsdf_core::residual::{ResidualLayout, ResidualTable};
@@ -112,6 +112,44 @@ impl OwnedModel {
         let mut model = model.with_residual(data)?;
         model.residual_note = outcome.note();
         Ok(model)
+    }
+
+    /// [`OwnedModel::at_sigma`] at several colours: the residual tables of those colours
+    /// that the cache lacks are generated together, one photon walk for up to
+    /// [`super::residual::COLOURS_PER_WALK`] colours ([`load_or_generate_residuals`]), each
+    /// the same bits as [`OwnedModel::at_sigma`]'s. What a baked LUT's absorption planes are
+    /// made with.
+    pub fn at_sigmas(&self, colours: &[Absorption]) -> Result<Vec<OwnedModel>, Error> {
+        let models = colours
+            .iter()
+            .map(|a| {
+                let mut model =
+                    OwnedModel::new(self.params.with_absorption(a), self.profiles.clone())?;
+                model.residual_source = self.residual_source.clone();
+                Ok(model)
+            })
+            .collect::<Result<Vec<_>, Error>>()?;
+        if self.params.closure() != Closure::Energy {
+            return Ok(models);
+        }
+        let src = &self.residual_source;
+        let refs: Vec<&OwnedModel> = models.iter().collect();
+        let tables = load_or_generate_residuals(
+            &refs,
+            ResidualLayout::DEFAULT,
+            src.seed.unwrap_or(DEFAULT_SEED),
+            src.cache_dir.as_deref(),
+            src.threads,
+        )?;
+        models
+            .into_iter()
+            .zip(tables)
+            .map(|(model, (data, outcome))| {
+                let mut model = model.with_residual(data)?;
+                model.residual_note = outcome.note();
+                Ok(model)
+            })
+            .collect()
     }
 
     /// This model with the residual table `data` ([`ResidualLayout::DEFAULT`], generated for

@@ -32,13 +32,15 @@
 //! layout, seed, profiles or parameter), then the table through
 //! [`ResidualTable::new`]. Each failure is a [`CacheError`] with one line.
 
-use super::cache::entry::{load_or_make, EntryPaths};
+use super::cache::entry::{load_or_make, load_or_make_many, EntryPaths};
 use super::cache::{check_container, fnv1a64, CacheError, CacheOutcome};
 use super::{Error, OwnedModel, ProfileKey};
 use crate::fsutil::output_path;
 use bcsdf_core::params::HEADER_FIELDS;
 use bcsdf_core::residual::{ResidualLayout, ResidualTable};
-use bcsdf_core::residual_gen::{fill_means, generate_row, mean_node_energy, RowStats};
+use bcsdf_core::residual_gen::{
+    fill_means, generate_row, generate_rows, mean_node_energy, RowStats,
+};
 use bcsdf_core::{FurBcsdf, FurParams, Libm, MODEL_VERSION};
 use rayon::prelude::*;
 use std::path::Path;
@@ -96,6 +98,104 @@ pub fn generate_residual(
             .install(work),
     }
     Ok((data, stats))
+}
+
+/// Most colours one photon walk carries ([`generate_residuals`]): a default LUT's 22
+/// absorption nodes are eight models of three channels, one walk.
+pub const COLOURS_PER_WALK: usize = 8;
+
+/// The residual tables of `models` (models without a residual that differ in σ_ca only,
+/// [`FurParams::same_but_absorption`]: a LUT's absorption planes) at `layout`: each table bit
+/// for bit what [`generate_residual`] gives for its model alone, made by one photon walk per
+/// [`COLOURS_PER_WALK`] models ([`generate_rows`]: the walk does not depend on the colour, so
+/// its geometry is computed once for all of them). Models that differ in more than σ_ca are
+/// generated one by one. `threads` as for [`generate_residual`].
+pub fn generate_residuals(
+    models: &[&FurBcsdf<'_>],
+    layout: &ResidualLayout,
+    seed: u64,
+    threads: Option<usize>,
+) -> Result<Vec<Vec<f32>>, Error> {
+    layout.validate()?;
+    let Some(first) = models.first() else {
+        return Ok(Vec::new());
+    };
+    if !models
+        .iter()
+        .all(|m| m.params().same_but_absorption(first.params()))
+    {
+        return models
+            .iter()
+            .map(|m| generate_residual(m, layout, seed, threads).map(|(data, _)| data))
+            .collect();
+    }
+    let work = || -> Vec<Vec<f32>> {
+        let mut tables: Vec<Vec<f32>> = models
+            .chunks(COLOURS_PER_WALK)
+            .flat_map(|chunk| match chunk.len() {
+                1 => walk::<1>(chunk, layout, seed),
+                2 => walk::<2>(chunk, layout, seed),
+                3 | 4 => walk::<4>(chunk, layout, seed),
+                _ => walk::<COLOURS_PER_WALK>(chunk, layout, seed),
+            })
+            .collect();
+        for (data, model) in tables.iter_mut().zip(models) {
+            let energies: Vec<_> = (0..layout.n_mean())
+                .into_par_iter()
+                .map(|i| mean_node_energy(model, layout, i))
+                .collect();
+            fill_means(layout, |i| energies[i], data);
+        }
+        tables
+    };
+    match threads {
+        None => Ok(work()),
+        Some(n) => Ok(rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .map_err(|e| Error::ThreadPool(e.to_string()))?
+            .install(work)),
+    }
+}
+
+/// The rows of the tables of `chunk` (at most `P` models), one walk of `P` colours per θ_r
+/// row on rayon (a short chunk repeats its last model; the copies are dropped).
+fn walk<const P: usize>(
+    chunk: &[&FurBcsdf<'_>],
+    layout: &ResidualLayout,
+    seed: u64,
+) -> Vec<Vec<f32>> {
+    let n = chunk.len();
+    let models: [&FurBcsdf<'_>; P] = core::array::from_fn(|k| chunk[k.min(n - 1)]);
+    let row_len = layout.row_len();
+    let rows: Vec<[Vec<f32>; P]> = (0..layout.n_theta)
+        .into_par_iter()
+        .map(|row| {
+            let mut out: [Vec<f32>; P] = core::array::from_fn(|_| vec![0.0; row_len]);
+            let mut hist = vec![[0.0f64; 3]; P * layout.n_phi];
+            generate_rows(
+                &models,
+                layout,
+                row,
+                seed,
+                out.each_mut().map(Vec::as_mut_slice),
+                &mut hist,
+            );
+            out
+        })
+        .collect();
+    (0..n)
+        .map(|k| {
+            let mut data = vec![0.0f32; layout.len()];
+            for (chunk, row) in data[..layout.means_offset()]
+                .chunks_exact_mut(row_len)
+                .zip(&rows)
+            {
+                chunk.copy_from_slice(&row[k]);
+            }
+            data
+        })
+        .collect()
 }
 
 /// Everything that determines a residual table's bits besides the model's code
@@ -264,6 +364,57 @@ pub fn load_or_generate_residual(
         |bytes| decode_residual(bytes, &key),
         make,
         |data| encode_residual(&key, data),
+    )
+}
+
+/// [`load_or_generate_residual`] for several models that differ in σ_ca only (a LUT's
+/// absorption planes): each table read from `cache_dir` when it holds a valid file for its
+/// key, the others generated together ([`generate_residuals`]) under their entries' locks and
+/// written atomically, each to its own file (the same files [`load_or_generate_residual`]
+/// reads and writes). Without a cache directory they are always generated.
+pub fn load_or_generate_residuals(
+    models: &[&OwnedModel],
+    layout: ResidualLayout,
+    seed: u64,
+    cache_dir: Option<&Path>,
+    threads: Option<usize>,
+) -> Result<Vec<(Vec<f32>, CacheOutcome)>, Error> {
+    layout.validate()?;
+    let views: Vec<FurBcsdf<'_>> = models
+        .iter()
+        .map(|m| m.model_without_residual::<Libm>())
+        .collect();
+    let make = |which: &[usize]| {
+        let chosen: Vec<&FurBcsdf<'_>> = which.iter().map(|&i| &views[i]).collect();
+        generate_residuals(&chosen, &layout, seed, threads)
+    };
+    let Some(dir) = cache_dir else {
+        let all: Vec<usize> = (0..models.len()).collect();
+        return Ok(make(&all)?
+            .into_iter()
+            .map(|data| (data, CacheOutcome::Generated { path: None }))
+            .collect());
+    };
+    let keys: Vec<ResidualKey> = models
+        .iter()
+        .map(|m| ResidualKey::of(m, layout, seed))
+        .collect();
+    let entries = keys
+        .iter()
+        .map(|key| {
+            let stem = key.stem();
+            Ok(EntryPaths {
+                dir,
+                file: output_path(dir, &stem, RESIDUAL_EXTENSION).map_err(Error::CacheName)?,
+                lock: output_path(dir, &stem, super::LOCK_EXTENSION).map_err(Error::CacheName)?,
+            })
+        })
+        .collect::<Result<Vec<_>, Error>>()?;
+    load_or_make_many(
+        entries,
+        |i, bytes| decode_residual(bytes, &keys[i]),
+        make,
+        |i, data| encode_residual(&keys[i], data),
     )
 }
 

@@ -174,9 +174,13 @@ enum Place {
     Medulla,
 }
 
+/// A beam of the tree, carrying its weight in each of `P` colours (cortex absorptions) at
+/// once: the walk is the same at every colour ("Common random numbers"), only the weights
+/// differ, so one walk serves `P` absorption planes ([`simulate_cells`]).
 #[derive(Clone, Copy, Debug)]
-struct Beam {
-    weight: Rgb,
+struct Beam<const P: usize> {
+    /// The weight at each colour.
+    weight: [Rgb; P],
     /// The weight the beam would carry without cortex absorption (σ_ca = 0; every other
     /// factor is grey): what the cutoff and the photon count go by, so that the tree's shape,
     /// the photons launched and therefore the random numbers drawn are the same at every
@@ -189,8 +193,20 @@ struct Beam {
     place: Place,
 }
 
+/// Each colour's weight `w` times the grey factor `s`.
+#[inline(always)]
+fn scaled<const P: usize>(w: &[Rgb; P], s: f32) -> [Rgb; P] {
+    core::array::from_fn(|k| w[k] * s)
+}
+
+/// Each colour's weight `w` times that colour's factor `t`.
+#[inline(always)]
+fn filtered<const P: usize>(w: &[Rgb; P], t: &[Rgb; P]) -> [Rgb; P] {
+    core::array::from_fn(|k| w[k] * t[k])
+}
+
 /// The per-chord constants of the beam tree at offset h.
-struct Legs {
+struct Legs<const P: usize> {
     /// a, c and the medulla event of the chord.
     chord: Chord,
     /// Cuticle reflectance f (outside at a, inside at c: the same, docs/model.md §4).
@@ -198,8 +214,8 @@ struct Legs {
     /// Medulla reflectance f_m (1 under total reflection; 0 when missed).
     fm: f32,
     /// Transmittance of the cortex chord that misses the medulla (2 cos c), or of one cortex
-    /// leg ℓ_c when it hits.
-    cortex: Rgb,
+    /// leg ℓ_c when it hits, at each colour.
+    cortex: [Rgb; P],
     /// Medulla chord ℓ_m = 2κ cos μ (0 unless the ray enters).
     ell_m: f32,
 }
@@ -211,10 +227,43 @@ fn add(acc: &mut [f64; 3], w: Rgb) {
     }
 }
 
+/// The tallies of `P` colours and their histograms (`n_phi` bins each, colour k's at
+/// `hist[k·n_phi..]`).
+struct Tallies<'h, const P: usize> {
+    cells: [CellTally; P],
+    hist: &'h mut [[f64; 3]],
+    n_phi: usize,
+}
+
+impl<const P: usize> Tallies<'_, P> {
+    fn exiting(&mut self, w: &[Rgb; P]) {
+        for (t, w) in self.cells.iter_mut().zip(w) {
+            add(&mut t.exiting, *w);
+        }
+    }
+
+    fn dropped(&mut self, w: &[Rgb; P]) {
+        for (t, w) in self.cells.iter_mut().zip(w) {
+            add(&mut t.dropped, *w);
+        }
+    }
+
+    /// Tallies `w` as unmodelled and bins it at exit azimuth `phi`.
+    fn unmodelled(&mut self, phi: f32, w: &[Rgb; P]) {
+        let n = self.n_phi;
+        for (k, (t, w)) in self.cells.iter_mut().zip(w).enumerate() {
+            add(&mut t.unmodelled, *w);
+            bin(&mut self.hist[k * n..(k + 1) * n], phi, *w);
+        }
+    }
+}
+
 /// Simulates the cell (θ_r of `section`, offset `h`): the beam tree, and `photons` photons
 /// per unit of scattered weight without cortex absorption (at least one per medulla chord
-/// that scatters; the same random numbers at every colour), drawn from `rng`. Unmodelled energy is binned by |Φ| into `hist` (`n_phi` bins of [0, π], RGB
-/// interleaved, accumulated). Allocation-free; the same bits for the same inputs.
+/// that scatters; the same random numbers at every colour), drawn from `rng`. Unmodelled
+/// energy is binned by |Φ| into `hist` (`n_phi` bins of [0, π], RGB interleaved,
+/// accumulated). Allocation-free; the same bits for the same inputs. [`simulate_cells`] at
+/// the one colour of `section`.
 pub fn simulate_cell(
     section: &Section,
     h: f32,
@@ -222,24 +271,52 @@ pub fn simulate_cell(
     rng: &mut Pcg32,
     hist: &mut [[f64; 3]],
 ) -> CellTally {
-    let mut tally = CellTally::default();
+    let n_phi = hist.len();
+    let [t] = simulate_cells(section, &[section.ext.cortex], h, photons, rng, hist, n_phi);
+    t
+}
+
+/// [`simulate_cell`] at `P` colours in one walk: colour k has the cortex extinction
+/// `cortex[k]` (σ_ca/cos θ_tc per channel) in place of `section.ext.cortex`, everything else
+/// of `section`. The walk draws the same random numbers at every colour ("Common random
+/// numbers"), so colour k's tally is, bit for bit, what [`simulate_cell`] gives for the
+/// section with `ext.cortex = cortex[k]` and the same `rng` state; `rng` ends where that
+/// call leaves it. Colour k's histogram is `hist[k·n_phi..(k + 1)·n_phi]`; nothing is
+/// simulated (all tallies zero) when `hist` is shorter than `P·n_phi`. What the bake's
+/// absorption planes are made with: their walk's geometry, Fresnel choices and scattering
+/// are computed once for all planes.
+pub fn simulate_cells<const P: usize>(
+    section: &Section,
+    cortex: &[Rgb; P],
+    h: f32,
+    photons: u32,
+    rng: &mut Pcg32,
+    hist: &mut [[f64; 3]],
+    n_phi: usize,
+) -> [CellTally; P] {
+    let Some(hist) = hist.get_mut(..P * n_phi) else {
+        return [CellTally::default(); P];
+    };
+    let mut tally = Tallies {
+        cells: [CellTally::default(); P],
+        hist,
+        n_phi,
+    };
+    let (mut beams, mut launched) = (0u64, 0u64);
     let slice = &section.slice;
     let chord = Chord::at_offset::<Libm>(slice, h);
     let f = fresnel::cuticle::<Libm>(chord.cos_a, slice.eta_c_prime, section.layers);
-    let (fm, cortex, ell_m) = match chord.medulla {
-        MedullaEvent::Miss => (
-            0.0,
-            transmittance::<Libm>(section.ext.cortex, 2.0 * chord.cos_c),
-            0.0,
-        ),
-        MedullaEvent::TotalReflection { cos_m, .. } => (
-            1.0,
-            transmittance::<Libm>(section.ext.cortex, cortex_leg(slice, &chord, cos_m)),
-            0.0,
-        ),
+    let legs_through = |length: f32| -> [Rgb; P] {
+        core::array::from_fn(|k| transmittance::<Libm>(cortex[k], length))
+    };
+    let (fm, cortex_t, ell_m) = match chord.medulla {
+        MedullaEvent::Miss => (0.0, legs_through(2.0 * chord.cos_c), 0.0),
+        MedullaEvent::TotalReflection { cos_m, .. } => {
+            (1.0, legs_through(cortex_leg(slice, &chord, cos_m)), 0.0)
+        }
         MedullaEvent::Enter { cos_m, cos_mu, .. } => (
             fresnel::medulla::<Libm>(cos_m, slice.eta_m_prime / slice.eta_c_prime),
-            transmittance::<Libm>(section.ext.cortex, cortex_leg(slice, &chord, cos_m)),
+            legs_through(cortex_leg(slice, &chord, cos_m)),
             2.0 * slice.kappa * cos_mu,
         ),
     };
@@ -247,16 +324,15 @@ pub fn simulate_cell(
         chord,
         f,
         fm,
-        cortex,
+        cortex: cortex_t,
         ell_m,
     };
     let (a, c) = (chord.a, chord.c);
     // R: reflection off the outside, Φ_R = −2a.
-    let r = Rgb::splat(f);
-    add(&mut tally.exiting, r);
-    tally.beams += 1;
+    tally.exiting(&[Rgb::splat(f); P]);
+    beams += 1;
     let mut stack = [Beam {
-        weight: Rgb::ZERO,
+        weight: [Rgb::ZERO; P],
         clear: 0.0,
         events: Events::EMPTY,
         turn: 0.0,
@@ -268,7 +344,7 @@ pub fn simulate_cell(
         &mut top,
         &mut tally,
         Beam {
-            weight: Rgb::splat(1.0 - f),
+            weight: [Rgb::splat(1.0 - f); P],
             clear: 1.0 - f,
             events: Events::EMPTY.push(Event::T),
             turn: c - a,
@@ -278,29 +354,28 @@ pub fn simulate_cell(
     while top > 0 {
         top -= 1;
         let beam = stack[top];
-        tally.beams += 1;
+        beams += 1;
         let w = beam.weight;
         match (beam.place, legs.chord.medulla) {
             (Place::CortexIn, MedullaEvent::Miss) | (Place::CortexOut, _) => {
                 // A cortex leg to the cuticle, then out (T) or back in (R).
-                let w = w * legs.cortex;
+                let w = filtered(&w, &legs.cortex);
                 exit_beam(
                     &Beam {
-                        weight: w * (1.0 - legs.f),
+                        weight: scaled(&w, 1.0 - legs.f),
                         clear: beam.clear * (1.0 - legs.f),
                         events: beam.events.push(Event::T),
                         turn: beam.turn + (c - a),
                         ..beam
                     },
                     &mut tally,
-                    hist,
                 );
                 push(
                     &mut stack,
                     &mut top,
                     &mut tally,
                     Beam {
-                        weight: w * legs.f,
+                        weight: scaled(&w, legs.f),
                         clear: beam.clear * legs.f,
                         events: beam.events.push(Event::R),
                         turn: beam.turn + PI + 2.0 * c,
@@ -311,13 +386,13 @@ pub fn simulate_cell(
             (Place::CortexIn, MedullaEvent::TotalReflection { m, .. })
             | (Place::CortexIn, MedullaEvent::Enter { m, .. }) => {
                 // A cortex leg to the medulla, reflected off it (r) or into it (t).
-                let w = w * legs.cortex;
+                let w = filtered(&w, &legs.cortex);
                 push(
                     &mut stack,
                     &mut top,
                     &mut tally,
                     Beam {
-                        weight: w * legs.fm,
+                        weight: scaled(&w, legs.fm),
                         clear: beam.clear * legs.fm,
                         events: beam.events.push(Event::Rm),
                         turn: beam.turn + PI - 2.0 * m,
@@ -330,7 +405,7 @@ pub fn simulate_cell(
                         &mut top,
                         &mut tally,
                         Beam {
-                            weight: w * (1.0 - legs.fm),
+                            weight: scaled(&w, 1.0 - legs.fm),
                             clear: beam.clear * (1.0 - legs.fm),
                             events: beam.events.push(Event::Tm),
                             turn: beam.turn + (mu - m),
@@ -346,16 +421,23 @@ pub fn simulate_cell(
                 let p = 1.0 - libm::expf(-section.ext.medulla_scattering * ell);
                 if p > 0.0 {
                     let count = photon_count(photons, beam.clear * p);
-                    scatter(section, &beam, h, w * p, count, rng, &mut tally, hist);
+                    launched += u64::from(count);
+                    let photon_walk = Scatter {
+                        section,
+                        cortex,
+                        beam: &beam,
+                        h,
+                    };
+                    photon_walk.run(&scaled(&w, p), count, rng, &mut tally);
                 }
                 let through = libm::expf(-section.ext.medulla * ell);
-                let (w, clear) = (w * through, beam.clear * through);
+                let (w, clear) = (scaled(&w, through), beam.clear * through);
                 push(
                     &mut stack,
                     &mut top,
                     &mut tally,
                     Beam {
-                        weight: w * legs.fm,
+                        weight: scaled(&w, legs.fm),
                         clear: clear * legs.fm,
                         events: beam.events.push(Event::Rm),
                         turn: beam.turn + PI + 2.0 * mu,
@@ -367,7 +449,7 @@ pub fn simulate_cell(
                     &mut top,
                     &mut tally,
                     Beam {
-                        weight: w * (1.0 - legs.fm),
+                        weight: scaled(&w, 1.0 - legs.fm),
                         clear: clear * (1.0 - legs.fm),
                         events: beam.events.push(Event::Tm),
                         turn: beam.turn + (mu - m),
@@ -376,30 +458,39 @@ pub fn simulate_cell(
                 );
             }
             // A beam in the medulla exists only where the chord enters it.
-            (Place::Medulla, _) => add(&mut tally.dropped, w),
+            (Place::Medulla, _) => tally.dropped(&w),
         }
     }
-    tally
+    let mut cells = tally.cells;
+    for t in &mut cells {
+        t.beams = beams;
+        t.photons = launched;
+    }
+    cells
 }
 
 /// Pushes `beam` onto the walk's stack, or tallies it as dropped when its weight without
 /// cortex absorption is below the cutoff or the stack is full.
-fn push(stack: &mut [Beam; BEAM_STACK], top: &mut usize, tally: &mut CellTally, beam: Beam) {
+fn push<const P: usize>(
+    stack: &mut [Beam<P>; BEAM_STACK],
+    top: &mut usize,
+    tally: &mut Tallies<'_, P>,
+    beam: Beam<P>,
+) {
     if beam.clear < BEAM_CUTOFF || *top == BEAM_STACK {
-        add(&mut tally.dropped, beam.weight);
+        tally.dropped(&beam.weight);
     } else {
         stack[*top] = beam;
         *top += 1;
     }
 }
 
-/// Tallies a beam leaving the fiber: all of it as exiting, and in `hist` at its exit azimuth
-/// Φ = π + turn when its event string is not one of the eight modelled paths.
-fn exit_beam(beam: &Beam, tally: &mut CellTally, hist: &mut [[f64; 3]]) {
-    add(&mut tally.exiting, beam.weight);
+/// Tallies a beam leaving the fiber: all of it as exiting, and in the histograms at its exit
+/// azimuth Φ = π + turn when its event string is not one of the eight modelled paths.
+fn exit_beam<const P: usize>(beam: &Beam<P>, tally: &mut Tallies<'_, P>) {
+    tally.exiting(&beam.weight);
     if !MODELLED_UNSCATTERED.contains(&beam.events) {
-        add(&mut tally.unmodelled, beam.weight);
-        bin(hist, PI + beam.turn, beam.weight);
+        tally.unmodelled(PI + beam.turn, &beam.weight);
     }
 }
 
@@ -485,98 +576,73 @@ fn photon_count(photons: u32, clear: f32) -> u32 {
     (libm::ceilf(photons as f32 * clear) as u32).max(1)
 }
 
-/// Launches `k` photons carrying `w_s`, the weight of `beam` that scatters on its medulla
-/// chord, and walks them out of the fiber (docs/model.md §12, "Residual").
-#[allow(clippy::too_many_arguments)]
-fn scatter(
-    section: &Section,
-    beam: &Beam,
+/// The photons of one scattering medulla chord: the chord `beam` crosses at offset `h`,
+/// in `section` with the colours' cortex extinctions `cortex` (docs/model.md §12,
+/// "Residual").
+struct Scatter<'a, const P: usize> {
+    section: &'a Section,
+    cortex: &'a [Rgb; P],
+    beam: &'a Beam<P>,
     h: f32,
-    w_s: Rgb,
-    k: u32,
-    rng: &mut Pcg32,
-    tally: &mut CellTally,
-    hist: &mut [[f64; 3]],
-) {
-    let slice = &section.slice;
-    let kappa = slice.kappa;
-    let sigma_s = section.ext.medulla_scattering;
-    // The chord: travel direction at angle π − turn, signed impact parameter h/η'_m.
-    let angle = PI - beam.turn;
-    let d0 = [libm::cosf(angle), libm::sinf(angle)];
-    let b = h / slice.eta_m_prime;
-    let q = [b * d0[1], -b * d0[0]];
-    let half = libm::sqrtf((kappa * kappa - b * b).max(0.0));
-    let entry = [q[0] - half * d0[0], q[1] - half * d0[1]];
-    let ell = 2.0 * half;
-    let p_scatter = 1.0 - libm::expf(-sigma_s * ell);
-    let modelled_before = MODELLED_BEFORE_SCATTERING.contains(&beam.events);
-    let w0 = w_s * (1.0 / k as f32);
-    for _ in 0..k {
-        tally.photons += 1;
-        // First scattering from the truncated exponential on the chord.
-        let u = rng.uniform();
-        let s = (-libm::logf(1.0 - u * p_scatter) / sigma_s).min(ell);
-        let mut w = w0 * libm::expf(-section.medulla_absorption * s);
-        let mut p = [entry[0] + s * d0[0], entry[1] + s * d0[1]];
-        let mut a = angle + sample_hg_2d(section.g, rng.uniform());
-        let mut d = [libm::cosf(a), libm::sinf(a)];
-        let mut region = Region::Medulla;
-        let mut after = Events::EMPTY;
-        let mut events = 0u32;
-        let mut left = false;
-        while events < MAX_PHOTON_EVENTS {
-            events += 1;
-            match region {
-                Region::Medulla => {
-                    let t = exit_distance(p, d, kappa);
-                    let free = -libm::logf(rng.uniform_open0()) / sigma_s;
-                    if free < t {
-                        p = [p[0] + free * d[0], p[1] + free * d[1]];
-                        w = w * libm::expf(-section.medulla_absorption * free);
-                        a = libm::atan2f(d[1], d[0]) + sample_hg_2d(section.g, rng.uniform());
-                        d = [libm::cosf(a), libm::sinf(a)];
-                        continue;
-                    }
-                    p = [p[0] + t * d[0], p[1] + t * d[1]];
-                    w = w * libm::expf(-section.medulla_absorption * t);
-                    let n = normal(p);
-                    let cos_i = dot(d, n).clamp(0.0, 1.0);
-                    let eta = slice.eta_m_prime / slice.eta_c_prime;
-                    let fr =
-                        fresnel::dielectric::<Libm>(cos_i, slice.eta_c_prime / slice.eta_m_prime);
-                    match refract(d, n, eta) {
-                        Some(out) if rng.uniform() >= fr => {
-                            d = out;
-                            region = Region::Cortex;
-                            after = after.push(Event::Tm);
+}
+
+impl<const P: usize> Scatter<'_, P> {
+    /// Launches `k` photons carrying `w_s` (per colour), the weight of the beam that
+    /// scatters on its medulla chord, and walks them out of the fiber.
+    fn run(&self, w_s: &[Rgb; P], k: u32, rng: &mut Pcg32, tally: &mut Tallies<'_, P>) {
+        let section = self.section;
+        let slice = &section.slice;
+        let kappa = slice.kappa;
+        let sigma_s = section.ext.medulla_scattering;
+        // The chord: travel direction at angle π − turn, signed impact parameter h/η'_m.
+        let angle = PI - self.beam.turn;
+        let d0 = [libm::cosf(angle), libm::sinf(angle)];
+        let b = self.h / slice.eta_m_prime;
+        let q = [b * d0[1], -b * d0[0]];
+        let half = libm::sqrtf((kappa * kappa - b * b).max(0.0));
+        let entry = [q[0] - half * d0[0], q[1] - half * d0[1]];
+        let ell = 2.0 * half;
+        let p_scatter = 1.0 - libm::expf(-sigma_s * ell);
+        let modelled_before = MODELLED_BEFORE_SCATTERING.contains(&self.beam.events);
+        let w0 = scaled(w_s, 1.0 / k as f32);
+        for _ in 0..k {
+            // First scattering from the truncated exponential on the chord.
+            let u = rng.uniform();
+            let s = (-libm::logf(1.0 - u * p_scatter) / sigma_s).min(ell);
+            let mut w = scaled(&w0, libm::expf(-section.medulla_absorption * s));
+            let mut p = [entry[0] + s * d0[0], entry[1] + s * d0[1]];
+            let mut a = angle + sample_hg_2d(section.g, rng.uniform());
+            let mut d = [libm::cosf(a), libm::sinf(a)];
+            let mut region = Region::Medulla;
+            let mut after = Events::EMPTY;
+            let mut events = 0u32;
+            let mut left = false;
+            while events < MAX_PHOTON_EVENTS {
+                events += 1;
+                match region {
+                    Region::Medulla => {
+                        let t = exit_distance(p, d, kappa);
+                        let free = -libm::logf(rng.uniform_open0()) / sigma_s;
+                        if free < t {
+                            p = [p[0] + free * d[0], p[1] + free * d[1]];
+                            w = scaled(&w, libm::expf(-section.medulla_absorption * free));
+                            a = libm::atan2f(d[1], d[0]) + sample_hg_2d(section.g, rng.uniform());
+                            d = [libm::cosf(a), libm::sinf(a)];
+                            continue;
                         }
-                        _ => {
-                            d = reflect(d, n);
-                            after = after.push(Event::Rm);
-                        }
-                    }
-                }
-                Region::Cortex => {
-                    let to_medulla = if kappa > 0.0 {
-                        entry_distance(p, d, kappa)
-                    } else {
-                        None
-                    };
-                    let t = to_medulla.unwrap_or_else(|| exit_distance(p, d, 1.0));
-                    p = [p[0] + t * d[0], p[1] + t * d[1]];
-                    w = w * transmittance::<Libm>(section.ext.cortex, t);
-                    let n = normal(p);
-                    if to_medulla.is_some() {
-                        // From the cortex onto the medulla.
-                        let cos_i = (-dot(d, n)).clamp(0.0, 1.0);
-                        let eta = slice.eta_c_prime / slice.eta_m_prime;
-                        let fr =
-                            fresnel::medulla::<Libm>(cos_i, slice.eta_m_prime / slice.eta_c_prime);
+                        p = [p[0] + t * d[0], p[1] + t * d[1]];
+                        w = scaled(&w, libm::expf(-section.medulla_absorption * t));
+                        let n = normal(p);
+                        let cos_i = dot(d, n).clamp(0.0, 1.0);
+                        let eta = slice.eta_m_prime / slice.eta_c_prime;
+                        let fr = fresnel::dielectric::<Libm>(
+                            cos_i,
+                            slice.eta_c_prime / slice.eta_m_prime,
+                        );
                         match refract(d, n, eta) {
-                            Some(inside) if rng.uniform() >= fr => {
-                                d = inside;
-                                region = Region::Medulla;
+                            Some(out) if rng.uniform() >= fr => {
+                                d = out;
+                                region = Region::Cortex;
                                 after = after.push(Event::Tm);
                             }
                             _ => {
@@ -584,42 +650,75 @@ fn scatter(
                                 after = after.push(Event::Rm);
                             }
                         }
-                    } else {
-                        // From the cortex onto the cuticle: the outside angle a has
-                        // sin a = η'_c sin c; beyond 1 the cuticle reflects totally.
-                        let cos_c = dot(d, n).clamp(0.0, 1.0);
-                        let sin_a = slice.eta_c_prime * libm::sqrtf((1.0 - cos_c * cos_c).max(0.0));
-                        let fr = if sin_a >= 1.0 {
-                            1.0
+                    }
+                    Region::Cortex => {
+                        let to_medulla = if kappa > 0.0 {
+                            entry_distance(p, d, kappa)
                         } else {
-                            let cos_a = libm::sqrtf((1.0 - sin_a) * (1.0 + sin_a));
-                            fresnel::cuticle::<Libm>(cos_a, slice.eta_c_prime, section.layers)
+                            None
                         };
-                        match refract(d, n, slice.eta_c_prime) {
-                            Some(out) if rng.uniform() >= fr => {
-                                after = after.push(Event::T);
-                                d = out;
-                                left = true;
-                                break;
+                        let t = to_medulla.unwrap_or_else(|| exit_distance(p, d, 1.0));
+                        p = [p[0] + t * d[0], p[1] + t * d[1]];
+                        let through: [Rgb; P] =
+                            core::array::from_fn(|c| transmittance::<Libm>(self.cortex[c], t));
+                        w = filtered(&w, &through);
+                        let n = normal(p);
+                        if to_medulla.is_some() {
+                            // From the cortex onto the medulla.
+                            let cos_i = (-dot(d, n)).clamp(0.0, 1.0);
+                            let eta = slice.eta_c_prime / slice.eta_m_prime;
+                            let fr = fresnel::medulla::<Libm>(
+                                cos_i,
+                                slice.eta_m_prime / slice.eta_c_prime,
+                            );
+                            match refract(d, n, eta) {
+                                Some(inside) if rng.uniform() >= fr => {
+                                    d = inside;
+                                    region = Region::Medulla;
+                                    after = after.push(Event::Tm);
+                                }
+                                _ => {
+                                    d = reflect(d, n);
+                                    after = after.push(Event::Rm);
+                                }
                             }
-                            _ => {
-                                d = reflect(d, n);
-                                after = after.push(Event::R);
+                        } else {
+                            // From the cortex onto the cuticle: the outside angle a has
+                            // sin a = η'_c sin c; beyond 1 the cuticle reflects totally.
+                            let cos_c = dot(d, n).clamp(0.0, 1.0);
+                            let sin_a =
+                                slice.eta_c_prime * libm::sqrtf((1.0 - cos_c * cos_c).max(0.0));
+                            let fr = if sin_a >= 1.0 {
+                                1.0
+                            } else {
+                                let cos_a = libm::sqrtf((1.0 - sin_a) * (1.0 + sin_a));
+                                fresnel::cuticle::<Libm>(cos_a, slice.eta_c_prime, section.layers)
+                            };
+                            match refract(d, n, slice.eta_c_prime) {
+                                Some(out) if rng.uniform() >= fr => {
+                                    after = after.push(Event::T);
+                                    d = out;
+                                    left = true;
+                                    break;
+                                }
+                                _ => {
+                                    d = reflect(d, n);
+                                    after = after.push(Event::R);
+                                }
                             }
                         }
                     }
                 }
             }
-        }
-        if !left {
-            add(&mut tally.dropped, w);
-            continue;
-        }
-        add(&mut tally.exiting, w);
-        if !(modelled_before && after == MODELLED_AFTER_SCATTERING) {
-            add(&mut tally.unmodelled, w);
-            // The exit azimuth of the event rule: Φ = −(travel direction angle).
-            bin(hist, -libm::atan2f(d[1], d[0]), w);
+            if !left {
+                tally.dropped(&w);
+                continue;
+            }
+            tally.exiting(&w);
+            if !(modelled_before && after == MODELLED_AFTER_SCATTERING) {
+                // The exit azimuth of the event rule: Φ = −(travel direction angle).
+                tally.unmodelled(-libm::atan2f(d[1], d[0]), &w);
+            }
         }
     }
 }

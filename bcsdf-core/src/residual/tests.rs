@@ -1,5 +1,5 @@
 extern crate std;
-use super::sim::{simulate_cell, Events, MODELLED_UNSCATTERED};
+use super::sim::{simulate_cell, simulate_cells, Events, MODELLED_UNSCATTERED};
 use super::*;
 use crate::frame::Angles;
 use crate::math::{Libm, TAU};
@@ -10,7 +10,7 @@ use crate::params::FurParams;
 use crate::params::{Closure, FurParamsInput};
 use crate::pigment::Pigment;
 use crate::presets;
-use crate::residual_gen::{generate, generate_row, section};
+use crate::residual_gen::{generate, generate_row, generate_rows, section, RowStats};
 use crate::rng::Pcg32;
 use crate::spectrum::Rgb;
 use std::vec;
@@ -120,6 +120,80 @@ fn a_cell_draws_the_same_random_numbers_at_every_colour() {
             );
         }
     }
+}
+
+#[test]
+fn one_walk_at_several_colours_is_each_colours_own_walk_bit_for_bit() {
+    // The walk does not depend on the colour (common random numbers), so the colours of a
+    // LUT's absorption planes share one walk: each colour's tally, histogram and row must be
+    // the bits of its own walk.
+    let base = presets::find("bobcat").unwrap().input;
+    let at = |sigma: [f32; 3]| {
+        let input = FurParamsInput {
+            pigment: Pigment::Absorption(Rgb(sigma)),
+            ..base
+        };
+        FurParams::new(&input).unwrap()
+    };
+    let colours = [[0.0, 0.004, 0.018], [0.3, 3.0, 30.0], [5.3, 59.1, 1000.0]];
+    for theta_r in [0.0f32, 0.7, 1.3] {
+        for h in [0.05f32, 0.4, 0.8] {
+            let sec = section(&at(colours[0]), theta_r);
+            let cortex = colours.map(|s| section(&at(s), theta_r).ext.cortex);
+            let mut rng = Pcg32::new(3, 4);
+            let mut hist = [[0.0; 3]; 3 * 12];
+            let all = simulate_cells(&sec, &cortex, h, 500, &mut rng, &mut hist, 12);
+            let next = rng.next_u32();
+            for (k, sigma) in colours.into_iter().enumerate() {
+                let mut rng = Pcg32::new(3, 4);
+                let mut own = [[0.0; 3]; 12];
+                let t = simulate_cell(&section(&at(sigma), theta_r), h, 500, &mut rng, &mut own);
+                assert_eq!(all[k], t, "{sigma:?} at θ_r {theta_r}, h {h}");
+                assert_eq!(&hist[12 * k..12 * (k + 1)], &own[..], "{sigma:?}");
+                assert_eq!(rng.next_u32(), next);
+            }
+        }
+    }
+    // Rows: the models of three colours with the same profiles.
+    let p = at(colours[0]);
+    let (layout, cn, cm) = small_profiles(&p);
+    let profiles = MedullaProfiles::new(layout, &cn, &cm).unwrap();
+    let models = colours.map(|s| FurBcsdf::<Libm>::new(at(s), profiles).unwrap());
+    let len = SMALL.row_len();
+    let mut rows = vec![0.0; 3 * len];
+    let mut hist = vec![[0.0; 3]; 3 * SMALL.n_phi];
+    let (r0, rest) = rows.split_at_mut(len);
+    let (r1, r2) = rest.split_at_mut(len);
+    let stats = generate_rows(
+        &[&models[0], &models[1], &models[2]],
+        &SMALL,
+        1,
+        9,
+        [r0, r1, r2],
+        &mut hist,
+    );
+    for (k, model) in models.iter().enumerate() {
+        let mut own = vec![0.0; len];
+        let s = generate_row(model, &SMALL, 1, 9, &mut own);
+        assert_eq!(&rows[k * len..(k + 1) * len], &own[..], "colour {k}");
+        assert_eq!(stats[k], s);
+    }
+    // Models that differ in more than σ_ca are refused: nothing is written.
+    let other = FurBcsdf::<Libm>::new(
+        FurParams::new(&FurParamsInput {
+            alpha_deg: base.alpha_deg + 1.0,
+            pigment: Pigment::Absorption(Rgb(colours[1])),
+            ..base
+        })
+        .unwrap(),
+        profiles,
+    )
+    .unwrap();
+    let mut out = vec![7.0; 2 * len];
+    let (o0, o1) = out.split_at_mut(len);
+    let refused = generate_rows(&[&models[0], &other], &SMALL, 1, 9, [o0, o1], &mut hist);
+    assert_eq!(refused, [RowStats::default(); 2]);
+    assert!(out.iter().all(|&v| v == 7.0));
 }
 
 #[test]

@@ -122,3 +122,64 @@ fn the_cache_returns_the_generated_bits_and_replaces_a_damaged_file() {
     ));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn colours_made_together_are_each_colours_own_table_and_cache_file() {
+    // A LUT's absorption planes: one walk for several colours (and a colour given twice),
+    // each table the bits of its own generation, each cached in its own file, which the
+    // one-colour path then reads; a damaged file among them is remade alone.
+    let dir = temp_dir("together");
+    let layout = ResidualLayout {
+        n_theta: 6,
+        ..ResidualLayout::DEFAULT
+    };
+    let models = [
+        model(Some(0.0)),
+        model(Some(0.4)),
+        model(Some(7.0)),
+        model(Some(0.4)),
+    ];
+    let own: Vec<Vec<f32>> = models[..3]
+        .iter()
+        .map(|m| {
+            generate_residual(&m.model_without_residual::<Libm>(), &layout, 5, None)
+                .unwrap()
+                .0
+        })
+        .collect();
+    let own = [&own[0], &own[1], &own[2], &own[1]];
+    let same = |a: &[f32], b: &[f32]| {
+        a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+    };
+    let refs: Vec<&OwnedModel> = models.iter().collect();
+    let first = load_or_generate_residuals(&refs, layout, 5, Some(&dir), None).unwrap();
+    for (k, (t, outcome)) in first.iter().enumerate() {
+        assert!(same(t, own[k]), "colour {k}");
+        match (k, outcome) {
+            (3, CacheOutcome::Hit { .. }) | (0..=2, CacheOutcome::Generated { path: Some(_) }) => {}
+            other => panic!("{other:?}"),
+        }
+    }
+    for (k, m) in models.iter().enumerate() {
+        let (t, outcome) = load_or_generate_residual(m, layout, 5, Some(&dir), None).unwrap();
+        assert!(matches!(outcome, CacheOutcome::Hit { .. }), "{outcome:?}");
+        assert!(same(&t, own[k]));
+    }
+    // Damage the second colour's file: it alone is regenerated.
+    let path = dir.join(format!(
+        "{}.{RESIDUAL_EXTENSION}",
+        ResidualKey::of(&models[1], layout, 5).stem()
+    ));
+    let mut bytes = std::fs::read(&path).unwrap();
+    bytes[HEADER_LEN + 12] ^= 0x01;
+    std::fs::write(&path, &bytes).unwrap();
+    let again = load_or_generate_residuals(&refs, layout, 5, Some(&dir), None).unwrap();
+    for (k, (t, outcome)) in again.iter().enumerate() {
+        assert!(same(t, own[k]), "colour {k}");
+        match (k, outcome) {
+            (1, CacheOutcome::Regenerated { .. }) | (0 | 2 | 3, CacheOutcome::Hit { .. }) => {}
+            other => panic!("{other:?}"),
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

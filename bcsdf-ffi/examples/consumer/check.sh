@@ -24,7 +24,9 @@ for f in "$libdir/libfur_bcsdf.a" "$libdir/libfur_bcsdf.so" "$prefix/include/fur
 done
 readelf -d "$libdir/libfur_bcsdf.so" | grep SONAME
 
-expected=$(cargo run --quiet --release --manifest-path "$root/Cargo.toml" -p bcsdf-ffi \
+# The test profile (optimised): after `cargo test --workspace` its dependencies are built, so
+# this compiles the example alone; --release would build the crate's dev-dependencies again.
+expected=$(cargo run --quiet --profile test --manifest-path "$root/Cargo.toml" -p bcsdf-ffi \
   --example eval_far -- "$lut" "${angles[@]}")
 echo "Rust (bcsdf_core::BakedBcsdf):          $expected"
 same() { # NAME OUTPUT

@@ -1,5 +1,6 @@
 //! Near- and far-field evaluation cost (RGB): the eight unscattered paths alone
-//! (`near_field/`, `far_field/`) and the full model with the scattered lobes (`*_full/`).
+//! (`near_field/`, `far_field/`) and the full model with the scattered lobes (`*_full/`); and
+//! the base colour inversion per call (`base_colour/`).
 //!
 //! Each iteration evaluates one query from a fixed, deterministic list spread over
 //! θ_i, θ_r ∈ ±80° and φ ∈ (−180°, 180°], so branch and cache behaviour is that of a renderer
@@ -106,9 +107,46 @@ fn bench_fast(c: &mut Criterion) {
 #[cfg(not(feature = "micromath"))]
 fn bench_fast(_: &mut Criterion) {}
 
+/// One base colour inverted per iteration (`Absorption::from_base_colour`, docs/model.md §14):
+/// 256 colours from a fixed list, each channel spread over [0, 1] (so over every cell of the
+/// table, and beyond its ends: clamped channels included), on the made-up table of the
+/// rustdoc example, c(σ) = 0.02 + 0.9/(1 + 4σ). The cost is a linear search through up to 23
+/// cells per channel and a square root's inverse, so it grows with σ (darker channels search
+/// further): the spread list gives the mean over the table.
+fn bench_base_colour(c: &mut Criterion) {
+    use bcsdf_core::colour::{coat_node, CoatColour};
+    use bcsdf_core::{Absorption, Rgb};
+    let coat = CoatColour::from_colours(core::array::from_fn(|k| {
+        0.02 + 0.9 / (1.0 + 4.0 * coat_node(k))
+    }))
+    .unwrap();
+    // Three incommensurate strides (the golden ratio's and two others) modulo 1.
+    let colours: Vec<Rgb> = (0..256)
+        .map(|i| {
+            let f = i as f32;
+            Rgb([
+                (f * 0.618_034).fract(),
+                (f * 0.414_214 + 0.3).fract(),
+                (f * 0.732_051 + 0.7).fract(),
+            ])
+        })
+        .collect();
+    let mut i = 0usize;
+    c.bench_function("base_colour/from_base_colour", |b| {
+        b.iter(|| {
+            let colour = colours[i % colours.len()];
+            i += 1;
+            black_box(Absorption::from_base_colour(
+                black_box(colour),
+                black_box(&coat),
+            ))
+        })
+    });
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default().sample_size(30).warm_up_time(std::time::Duration::from_millis(500)).measurement_time(std::time::Duration::from_secs(2));
-    targets = bench, bench_full, bench_fast
+    targets = bench, bench_full, bench_fast, bench_base_colour
 }
 criterion_main!(benches);

@@ -1580,6 +1580,55 @@ fn fur_eval_dual_dirs(wi: vec3<f32>, wr: vec3<f32>, u: vec3<f32>, fibers: f32, f
     return fur_eval_dual(a.theta_i, a.theta_r, a.phi, fibers, fibers_below, d_f, d_b, sigma_ca);
 }
 
+// Base colour -> absorption (docs/model.md §14, "Inverse"): the sigma_ca per channel whose
+// thick coat shows the linear colour `colour`, from a preset's coat colour table, as the CPU's
+// `Absorption::from_base_colour` does: per channel the smallest sigma_ca of the table's
+// interpolant (linear in the axis coordinate sqrt(sigma/(sigma + 1)) between nodes) with that
+// colour; a channel at or above the table's first node gives 0, below its last node 1000.
+// `table` is `CoatColour::colours()` (24 nodes, non-increasing), packed four to a vec4 (node k
+// in table[k / 4][k % 4]) so that the caller can keep it in a uniform or a storage buffer and
+// pass it by value. Validate colours on the host (`Absorption::from_base_colour` refuses NaN
+// and channels outside [0, 1]); here a NaN channel gives 1000.
+const FUR_COAT_NODES: u32 = 24u;
+// sqrt(1000 / 1001) rounded to f32: the axis coordinate of sigma_ca = 1000, bit for bit the
+// CPU's (computed there by libm's correctly rounded sqrtf).
+const FUR_COAT_AXIS_END: f32 = 0.999500394;
+
+// sigma_ca at axis coordinate x: x^2/(1 - x^2), in [0, 1000].
+fn fur_coat_sigma_at(x: f32) -> f32 {
+    let x2 = x * x;
+    return clamp(x2 / max(1.0 - x2, 1e-12), 0.0, FUR_SIGMA_CA_MAX);
+}
+
+fn fur_coat_sigma_for(table: array<vec4<f32>, 6>, c: f32) -> f32 {
+    // A function variable: indexed by a loop counter in every shading language.
+    var nodes = table;
+    if (c >= nodes[0].x) {
+        return 0.0;
+    }
+    for (var k = 0u; k < FUR_COAT_NODES - 1u; k = k + 1u) {
+        let hi = nodes[k / 4u][k % 4u];
+        let lo = nodes[(k + 1u) / 4u][(k + 1u) % 4u];
+        if (c >= lo) {
+            var t = 0.0;
+            if (hi > lo) {
+                t = (hi - c) / (hi - lo);
+            }
+            let x = (f32(k) + t) / f32(FUR_COAT_NODES - 1u) * FUR_COAT_AXIS_END;
+            return fur_coat_sigma_at(x);
+        }
+    }
+    return FUR_SIGMA_CA_MAX;
+}
+
+fn fur_absorption_from_colour(table: array<vec4<f32>, 6>, colour: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(
+        fur_coat_sigma_for(table, colour.x),
+        fur_coat_sigma_for(table, colour.y),
+        fur_coat_sigma_for(table, colour.z),
+    );
+}
+
 // ---- Entry points for the tests and `viewer probe --gpu` (bindings 1 and 2; 3 for dual) ----
 
 // Queries: two vec4 per evaluation, (theta_i, theta_r, phi, unused) and (sigma_ca, unused);
@@ -1696,4 +1745,24 @@ fn fur_dual_dirs_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let u = fur_queries[4u * q + 2u];
     let below = fur_queries[4u * q + 3u];
     fur_store_rgb(q, fur_eval_dual_dirs(wi.xyz, wr.xyz, u.xyz, wi.w, below.x, wr.w, u.w, below.yzw));
+}
+
+// Base colour queries (bindings 1 and 2): six vec4, the coat colour table (node k in
+// component k % 4 of vec4 k / 4), then one vec4 per colour (linear RGB, unused); results:
+// sigma_ca RGB in the first three of 16 floats, the rest 0.
+@compute @workgroup_size(64)
+fn fur_absorption_main(@builtin(global_invocation_id) id: vec3<u32>) {
+    let q = id.x;
+    if (6u + q >= arrayLength(&fur_queries)) {
+        return;
+    }
+    let table = array<vec4<f32>, 6>(
+        fur_queries[0],
+        fur_queries[1],
+        fur_queries[2],
+        fur_queries[3],
+        fur_queries[4],
+        fur_queries[5],
+    );
+    fur_store_rgb(q, fur_absorption_from_colour(table, fur_queries[6u + q].xyz));
 }

@@ -21,5 +21,10 @@ pub const ENTRY_SAMPLE: &str = "fur_sample_main";
 /// Entry point of the pdf of `(theta_i, theta_r, phi, _)` queries (first float per result).
 pub const ENTRY_PDF: &str = "fur_pdf_main";
 
+/// Entry point of `fur_absorption_from_colour` (docs/model.md §14, "Inverse"): six vec4 of
+/// the coat colour table, then one `(r, g, b, _)` colour per query; σ_ca RGB in the first
+/// three floats of each result.
+pub const ENTRY_ABSORPTION: &str = "fur_absorption_main";
+
 /// Floats per result: R, TT, TRT, scattered (RGB each), total (RGB), and one unused.
 pub const RESULT_FLOATS: usize = 16;

@@ -158,7 +158,7 @@ impl GpuDual {
         n: usize,
     ) -> Result<Vec<[f32; 3]>, GpuError> {
         let table = (DUAL_BINDING, &self.blob);
-        let rows = dispatch(&self.device, &self.queue, pipeline, table, queries, n)?;
+        let rows = dispatch(&self.device, &self.queue, pipeline, Some(table), queries, n)?;
         Ok(rows.iter().map(|r| [r[0], r[1], r[2]]).collect())
     }
 }

@@ -12,7 +12,9 @@
 //!   ([`GpuLut::eval_at`], ..., LUT format 5: docs/lut.md "The absorption axis");
 //! - [`GpuDual`]: the same for the dual-scattering term (docs/model.md §13): a validated
 //!   `.furdual` blob bound as its own storage buffer, batches of queries evaluated by the
-//!   shader's `fur_eval_dual` / `fur_eval_dual_dirs` ([`ENTRY_DUAL`], [`ENTRY_DUAL_DIRS`]).
+//!   shader's `fur_eval_dual` / `fur_eval_dual_dirs` ([`ENTRY_DUAL`], [`ENTRY_DUAL_DIRS`]);
+//! - [`GpuCoat`]: base colours to σ_ca through the shader's `fur_absorption_from_colour`
+//!   (docs/model.md §14, "Inverse"), the CPU's `Absorption::from_base_colour` on the GPU.
 
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::dual::DualError;
@@ -22,9 +24,11 @@ use bcsdf_core::shader::{
 };
 use std::fmt;
 
+mod colour;
 mod dual;
 pub mod translate;
 
+pub use colour::GpuCoat;
 pub use dual::{DualDirsQuery, DualQuery, GpuDual, ENTRY_DUAL, ENTRY_DUAL_DIRS};
 
 /// Why the GPU path is unavailable or failed.
@@ -322,7 +326,7 @@ impl GpuLut {
         n: usize,
     ) -> Result<Vec<GpuFamilies>, GpuError> {
         let table = (0, &self.lut);
-        let rows = dispatch(&self.device, &self.queue, pipeline, table, queries, n)?;
+        let rows = dispatch(&self.device, &self.queue, pipeline, Some(table), queries, n)?;
         Ok(rows
             .iter()
             .map(|r| core::array::from_fn(|k| r[k]))
@@ -330,13 +334,14 @@ impl GpuLut {
     }
 }
 
-/// Runs `pipeline` over `n` queries (`queries`: the query buffer's vec4s) with `table` bound
-/// at its binding, and reads back [`RESULT_FLOATS`] floats per query.
+/// Runs `pipeline` over `n` queries (`queries`: the query buffer's vec4s) with `table` (if
+/// any: an entry point that reads none has no binding for it) bound at its binding, and reads
+/// back [`RESULT_FLOATS`] floats per query.
 fn dispatch(
     d: &wgpu::Device,
     queue: &wgpu::Queue,
     pipeline: &wgpu::ComputePipeline,
-    table: (u32, &wgpu::Buffer),
+    table: Option<(u32, &wgpu::Buffer)>,
     queries: &[[f32; 4]],
     n: usize,
 ) -> Result<Vec<[f32; RESULT_FLOATS]>, GpuError> {
@@ -365,20 +370,23 @@ fn dispatch(
     let bind = d.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
         layout: &pipeline.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: table.0,
-                resource: table.1.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: input.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 2,
-                resource: output.as_entire_binding(),
-            },
-        ],
+        entries: &table
+            .map(|(binding, buffer)| wgpu::BindGroupEntry {
+                binding,
+                resource: buffer.as_entire_binding(),
+            })
+            .into_iter()
+            .chain([
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: input.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: output.as_entire_binding(),
+                },
+            ])
+            .collect::<Vec<_>>(),
     });
     let mut enc = d.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
     {

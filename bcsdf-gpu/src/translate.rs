@@ -4,7 +4,9 @@
 //! runs `spirv-val` and `glslangValidator` on them when those are installed.
 
 use crate::{ENTRY_DUAL, ENTRY_DUAL_DIRS};
-use bcsdf_core::shader::{ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_PDF, ENTRY_SAMPLE, FUR_BCSDF_WGSL};
+use bcsdf_core::shader::{
+    ENTRY_ABSORPTION, ENTRY_EVAL, ENTRY_EVAL_DIRS, ENTRY_PDF, ENTRY_SAMPLE, FUR_BCSDF_WGSL,
+};
 use naga::back::{glsl, hlsl, msl, spv};
 use naga::valid::{Capabilities, ValidationFlags, Validator};
 
@@ -83,6 +85,7 @@ pub fn translations() -> Result<Vec<Translation>, String> {
             ENTRY_PDF,
             ENTRY_DUAL,
             ENTRY_DUAL_DIRS,
+            ENTRY_ABSORPTION,
         ] {
             let mut text = String::new();
             let options = glsl::Options {

@@ -16,7 +16,8 @@
 //!   and samples with another.
 //! - [`strand`]: what a fiber scatters like at a hit ([`strand::FiberMaterial`]): any
 //!   scatterer (one colour), or a colour per strand from root to tip with a per-strand
-//!   variation ([`strand::Coloured`], docs/model.md §14).
+//!   variation ([`strand::Coloured`], docs/model.md §14); [`pattern`]: a colour per fiber
+//!   from where its root is on the body (stripes, an image).
 //! - [`method`]: `path`, and the engine approximations `single` and `dual` (dual scattering,
 //!   docs/model.md §13) judged against it.
 //! - [`coat`]: the thick coat slab under a white sky (docs/model.md §14) whose rendered mean is
@@ -54,6 +55,7 @@ pub mod integrator;
 pub mod light;
 pub mod method;
 pub mod output;
+pub mod pattern;
 pub mod sampler;
 pub mod scatter;
 pub mod scene;

@@ -92,6 +92,40 @@ pub struct SceneOptions {
     pub aspect: f32,
 }
 
+/// The ball scene's skin: a sphere of radius 1 around this point.
+const BALL_CENTER: Vector3<f32> = Vector3::new(0.0, 1.3, 0.0);
+
+/// The patch scene's skin: the square |x| ≤ 1, |z| ≤ 1 of the plane y = 0.
+const PATCH_HALF: f32 = 1.0;
+
+/// Where a fiber's root at `root` is on the body of scene `kind`, as texture coordinates
+/// (u, v) in [0, 1]² (docs/model.md §14, "Stripes and textures"): on the patch, u along x and
+/// v along z (u = (x + 1)/2, v = (z + 1)/2: an image laid on the skin with its top row at the
+/// far edge, z = −1, as the camera sees it); on the ball, the longitude and the colatitude of
+/// the root's direction from the centre (u = 1/2 + atan2(x, z)/(2π), 1/2 facing the camera;
+/// v = acos(y)/π, 0 at the top: an equirectangular map); the furnace's clump as the ball, from
+/// the clump's centre. A root at the centre itself reads as the top.
+#[must_use]
+pub fn body_uv(kind: SceneKind, root: &Vector3<f32>) -> [f32; 2] {
+    match kind {
+        SceneKind::Patch => [
+            ((root.x / PATCH_HALF + 1.0) * 0.5).clamp(0.0, 1.0),
+            ((root.z / PATCH_HALF + 1.0) * 0.5).clamp(0.0, 1.0),
+        ],
+        SceneKind::Ball | SceneKind::Furnace => {
+            let d = if kind == SceneKind::Ball {
+                root - BALL_CENTER
+            } else {
+                *root
+            };
+            let n = d.try_normalize(1e-12).unwrap_or_else(Vector3::y);
+            let u = 0.5 + n.x.atan2(n.z) / (2.0 * PI);
+            let v = n.y.clamp(-1.0, 1.0).acos() / PI;
+            [u.clamp(0.0, 1.0), v.clamp(0.0, 1.0)]
+        }
+    }
+}
+
 /// How one fiber grows.
 struct Growth {
     length: f32,
@@ -196,14 +230,18 @@ pub fn build(opts: &SceneOptions) -> Scene {
             };
             let comb = Vector3::new(1.0, 0.0, 0.3).normalize();
             for id in 0..fibers {
-                let root = Vector3::new(2.0 * rng.uniform() - 1.0, 0.0, 2.0 * rng.uniform() - 1.0);
+                let root = Vector3::new(
+                    PATCH_HALF * (2.0 * rng.uniform() - 1.0),
+                    0.0,
+                    PATCH_HALF * (2.0 * rng.uniform() - 1.0),
+                );
                 let dir = Vector3::y() + comb * 0.6 + uniform_sphere(&mut rng) * 0.25;
                 grow(id as u32, root, dir, comb, &g, &mut rng, &mut segments);
             }
             let skin = Surface {
                 shape: Shape::Square {
                     center: Vector3::zeros(),
-                    half: 1.0,
+                    half: PATCH_HALF,
                 },
                 albedo: [0.35, 0.25, 0.2],
             };
@@ -235,7 +273,7 @@ pub fn build(opts: &SceneOptions) -> Scene {
                 bend: 0.12,
                 jitter: 0.08,
             };
-            let center = Vector3::new(0.0, 1.3, 0.0);
+            let center = BALL_CENTER;
             for id in 0..fibers {
                 let n = uniform_sphere(&mut rng);
                 // Combed downward: gravity projected onto the tangent plane.

@@ -186,6 +186,17 @@ impl StrandColour {
         })
     }
 
+    /// A strand colour from parts its caller has checked (channels in [0, 1], `jitter` in
+    /// [0, [`StrandColour::MAX_JITTER`]]): [`crate::pattern::Patterned`]'s per-fiber roots.
+    pub(crate) fn checked_parts(root: Rgb, tip: Rgb, jitter: f32, seed: u64) -> Self {
+        StrandColour {
+            root,
+            tip,
+            jitter,
+            seed,
+        }
+    }
+
     /// The per-strand factor of fiber `fiber`: exactly 1 without variation.
     #[must_use]
     pub fn factor(&self, fiber: u32) -> f32 {

@@ -117,6 +117,10 @@ Examples:
   viewer render --scene ball --lut luts/bobcat.furlut --spp 16 --out ball-row-a
   viewer render --scene furnace --preset human-hair --set sigma_ca=0 --spp 32 --out furnace
   viewer render --scene patch --preset air-medulla --fibers 2000 --spp 8 --threads 2 --out patch
+  viewer render --scene ball --lut luts/bobcat.furlut --colour 0.35,0.2,0.1 \\
+      --colour-stripes 0.03,0.025,0.02:0.05 --spp 16 --out ball-striped
+  viewer render --scene patch --lut luts/cat.furlut --colour-texture coat.png --spp 16 \\
+      --out patch-textured
 
 Bad input (unknown scene, preset or key, --spp 0, a size or depth out of range, --lut with
 the analytic evaluator, a missing or corrupt LUT) prints one line starting with `error:` on
@@ -193,15 +197,35 @@ pub struct RenderArgs {
     #[arg(long, value_name = "R,G,B")]
     pub colour: Option<String>,
 
-    /// Colour at the tips: the colour goes linearly from --colour at the root to this at the
-    /// tip.
-    #[arg(long, value_name = "R,G,B", requires = "colour")]
+    /// Colour at the tips: the colour goes linearly from the root's (--colour, the stripes'
+    /// or the texture's) to this at the tip. Needs --colour or --colour-texture.
+    #[arg(long, value_name = "R,G,B")]
     pub tip_colour: Option<String>,
 
     /// Random per-strand variation of the colour's lightness, in percent (0 to 100): each
     /// strand's colour times 1 + P/100 x (2u - 1), u drawn from --seed and the fiber's index.
-    #[arg(long, value_name = "P", requires = "colour")]
+    /// Needs --colour or --colour-texture.
+    #[arg(long, value_name = "P")]
     pub colour_jitter: Option<f32>,
+
+    /// Stripes of a second colour over --colour across the body: bands of width WIDTH (a
+    /// fraction of the body's u coordinate, 0 < WIDTH <= 1, default 0.1: ten bands),
+    /// alternately --colour and R,G,B, chosen by where each fiber's root is: u is the patch's
+    /// x, the ball's longitude (docs/model.md §14). Needs --colour.
+    #[arg(
+        long,
+        value_name = "R,G,B[:WIDTH]",
+        requires = "colour",
+        conflicts_with = "colour_texture"
+    )]
+    pub colour_stripes: Option<String>,
+
+    /// Each fiber's root colour from an image (PNG, sRGB, decoded to linear), looked up at
+    /// the root's (u, v) on the body: the patch's (x, z) with the image's top row at the far
+    /// edge, the ball's longitude and colatitude (an equirectangular map). Instead of
+    /// --colour; needs a baked LUT like it.
+    #[arg(long, value_name = "FILE.png", conflicts_with = "colour")]
+    pub colour_texture: Option<PathBuf>,
 
     /// Dual scattering's forward density factor d_f (docs/model.md §13).
     #[arg(long, value_name = "D", default_value_t = bcsdf_core::dual::Density::DEFAULT.d_f)]

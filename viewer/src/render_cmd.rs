@@ -108,7 +108,7 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
         let r = match &strands {
             Some(req) => vec![(
                 args.method,
-                crate::strand_cmd::render(&scene, &baked, req, &settings, args.method)?,
+                crate::strand_cmd::render(&scene, kind, &baked, req, &settings, args.method)?,
             )],
             None => trace(&scene, &baked.at(&colour), stored, &settings, args)?,
         };
@@ -134,7 +134,14 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
                 match &strands {
                     Some(req) => vec![(
                         args.method,
-                        crate::strand_cmd::render(&scene, &baked, req, &settings, args.method)?,
+                        crate::strand_cmd::render(
+                            &scene,
+                            kind,
+                            &baked,
+                            req,
+                            &settings,
+                            args.method,
+                        )?,
                     )],
                     None => trace(&scene, &baked, None, &settings, args)?,
                 }
@@ -315,6 +322,8 @@ fn setup_report(
         "colour": args.colour,
         "tip_colour": args.tip_colour,
         "colour_jitter_percent": args.colour_jitter,
+        "colour_stripes": args.colour_stripes,
+        "colour_texture": args.colour_texture,
     }))
 }
 

@@ -170,6 +170,8 @@ static const float FUR_ERF_A3_ = 0.009270527;
 static const float FUR_ERF_A4_ = 0.0001520143;
 static const float FUR_ERF_A5_ = 0.0002765672;
 static const float FUR_ERF_A6_ = 4.30638e-5;
+static const uint FUR_COAT_NODES = 24u;
+static const float FUR_COAT_AXIS_END = 0.9995004;
 
 ByteAddressBuffer fur_lut : register(t0);
 ByteAddressBuffer fur_dual : register(t3);
@@ -255,8 +257,8 @@ float3 fur_pow2_neg(float3 y_in)
 {
     const bool3 _e9 = fur_is_nan3_(y_in);
     float3 y_3 = (_e9 ? (0.0).xxx : min(max(y_in, (0.0).xxx), (125.0).xxx));
-    float3 k_16 = round(y_3);
-    float3 f_6 = (k_16 - y_3);
+    float3 k_17 = round(y_3);
+    float3 f_6 = (k_17 - y_3);
     float3 f2_ = (f_6 * f_6);
     float3 f4_ = (f2_ * f2_);
     float3 p01_ = ((1.5252734e-5 * f_6) + (0.0001540353).xxx);
@@ -264,7 +266,7 @@ float3 fur_pow2_neg(float3 y_in)
     float3 p45_ = ((0.05550411 * f_6) + (0.2402265).xxx);
     float3 p67_ = ((0.6931472 * f_6) + (1.0).xxx);
     float3 p_4 = ((((p01_ * f2_) + p23_) * f4_) + ((p45_ * f2_) + p67_));
-    return ldexp(p_4, naga_neg(naga_f2i32(k_16)));
+    return ldexp(p_4, naga_neg(naga_f2i32(k_17)));
 }
 
 FurColour ConstructFurColour(uint3 arg0, float3 arg1, float3 arg2, float3 arg3) {
@@ -291,16 +293,16 @@ FurColour fur_locate_colour(float3 sigma_ca)
     const float3 _e23 = fur_pow2_neg(sqrt((s_1 * FUR_ROOT_RATE)));
     const float3 _e30 = fur_pow2_neg(((s_1 / (scale).xxx) * FUR_LOG2_E));
     float3 e = ((FUR_ROOT_SHARE * _e23) + (0.6 * _e30));
-    float3 x_15 = min(((1.0).xxx - e), (1.0).xxx);
-    float3 u_8 = clamp((x_15 * last_2), (0.0).xxx, (last_2).xxx);
-    uint3 k_17 = min(naga_f2u32(u_8), ((_e2 - 3u)).xxx);
-    float3 t_11 = (u_8 - float3(k_17));
-    float3 w0_ = ((0.5 * (t_11 - (1.0).xxx)) * (t_11 - (2.0).xxx));
-    float3 w1_ = (t_11 * ((2.0).xxx - t_11));
-    float3 w2_ = ((0.5 * t_11) * (t_11 - (1.0).xxx));
+    float3 x_16 = min(((1.0).xxx - e), (1.0).xxx);
+    float3 u_8 = clamp((x_16 * last_2), (0.0).xxx, (last_2).xxx);
+    uint3 k_18 = min(naga_f2u32(u_8), ((_e2 - 3u)).xxx);
+    float3 t_12 = (u_8 - float3(k_18));
+    float3 w0_ = ((0.5 * (t_12 - (1.0).xxx)) * (t_12 - (2.0).xxx));
+    float3 w1_ = (t_12 * ((2.0).xxx - t_12));
+    float3 w2_ = ((0.5 * t_12) * (t_12 - (1.0).xxx));
     const uint _e71 = fur_word(6u);
     const uint _e73 = fur_word(5u);
-    const FurColour furcolour = ConstructFurColour((k_17 * (_e71 * _e73)), w0_, w1_, w2_);
+    const FurColour furcolour = ConstructFurColour((k_18 * (_e71 * _e73)), w0_, w1_, w2_);
     return furcolour;
 }
 
@@ -509,9 +511,9 @@ FurDensity fur_density(uint d)
     uint _e71 = at;
     at = (_e71 + ((16u * _e4) * _e30));
     if ((d < 9u)) {
-        uint x_16 = (d - 7u);
+        uint x_17 = (d - 7u);
         uint _e80 = at;
-        const FurDensity furdensity_2 = ConstructFurDensity((_e80 + (((4u * x_16) * _e10) * _e32)), _e32, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_16);
+        const FurDensity furdensity_2 = ConstructFurDensity((_e80 + (((4u * x_17) * _e10) * _e32)), _e32, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_17);
         return furdensity_2;
     }
     uint _e94 = at;
@@ -963,9 +965,9 @@ float fur_atan2_(float y_1, float x_6)
     float ax_4 = abs(x_6);
     float ay = abs(y_1);
     float a_8 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_12 = (a_8 * a_8);
-    const float _e10 = fur_atan_poly(t_12);
-    r = (a_8 + (a_8 * (t_12 * _e10)));
+    float t_13 = (a_8 * a_8);
+    const float _e10 = fur_atan_poly(t_13);
+    r = (a_8 + (a_8 * (t_13 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -1041,8 +1043,8 @@ FurDirAngles fur_angles_from_dirs(float3 wi, float3 wr, float3 u)
     const float _e51 = fur_asin(clamp((a_9 * (1.0 / ni)), -1.0, 1.0));
     const float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_6 = dot(un, cross(wi, wr));
-    float x_17 = (dot(wi, wr) - (a_9 * b_3));
-    const float _e64 = fur_atan2_(y_6, x_17);
+    float x_18 = (dot(wi, wr) - (a_9 * b_3));
+    const float _e64 = fur_atan2_(y_6, x_18);
     const FurDirAngles furdirangles_2 = ConstructFurDirAngles(_e51, _e58, abs(_e64), true);
     return furdirangles_2;
 }
@@ -1454,15 +1456,15 @@ float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_3)
 {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
     const float _e7 = fur_unit(u_3);
-    float t_13 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    const float _e14 = fur_rows_invert(r_9, t_13);
+    float t_14 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    const float _e14 = fur_rows_invert(r_9, t_14);
     return _e14;
 }
 
 float fur_pole_keep(float cos_theta_i)
 {
-    float c_2 = max(cos_theta_i, 1e-6);
-    return min(((c_2 * c_2) * 10000.0), 1.0);
+    float c_3 = max(cos_theta_i, 1e-6);
+    return min(((c_3 * c_3) * 10000.0), 1.0);
 }
 
 float fur_sliver_keep(float s_in)
@@ -1497,7 +1499,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_14[3] = Constructarray3_float_(0.11270166, 0.5, 0.8872983);
+    float t_15[3] = Constructarray3_float_(0.11270166, 0.5, 0.8872983);
     float w_5[3] = Constructarray3_float_(0.2777778, 0.44444445, 0.2777778);
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_11 = true;
@@ -1516,7 +1518,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_14[min(uint(_e33), 2u)] * len_5);
+            float d_8 = (t_15[min(uint(_e33), 2u)] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             const float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -1730,18 +1732,18 @@ float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_4)
         return _e19.z;
     }
     float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
-    float t_15 = (t0_1 - g_2.s.y);
-    if (!((t_15 <= mid))) {
+    float t_16 = (t0_1 - g_2.s.y);
+    if (!((t_16 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        const float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_15, mid)));
+        const float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_16, mid)));
         return _e50;
     }
-    const float3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_15 - mid));
+    const float3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_16 - mid));
     return _e57.z;
 }
 
@@ -2158,9 +2160,9 @@ FurSample fur_sample_far(float theta_r_7, float3 u_5, float3 sigma_ca_5)
     }
     const FurFamilies _e189 = fur_assemble(_e176);
     float _e190 = theta_i_4;
-    float k_18 = (max(cos(_e190), 0.0) / _e179);
+    float k_19 = (max(cos(_e190), 0.0) / _e179);
     float _e195 = theta_i_4;
-    out_3 = ConstructFurSample(_e195, _e174, _e179, max((_e189.total * k_18), (0.0).xxx), family, true);
+    out_3 = ConstructFurSample(_e195, _e174, _e179, max((_e189.total * k_19), (0.0).xxx), family, true);
     FurSample _e203 = out_3;
     const FurSample fursample_3 = _e203;
     return fursample_3;
@@ -2254,9 +2256,9 @@ FurLoc fur_dual_theta(float theta)
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_19 = min(naga_f2u32(_e17), 62u);
+    uint k_20 = min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    const FurLoc furloc_1 = ConstructFurLoc(k_19, (_e21 - float(k_19)));
+    const FurLoc furloc_1 = ConstructFurLoc(k_20, (_e21 - float(k_20)));
     return furloc_1;
 }
 
@@ -2326,9 +2328,9 @@ float3 fur_exp_neg(float3 x_in)
 {
     float3 p_2 = (0.00019875693).xxx;
 
-    float3 x_18 = min(max(x_in, (0.0).xxx), (87.0).xxx);
-    float3 k_20 = round((x_18 * FUR_LOG2_E));
-    float3 r_16 = (((k_20 * FUR_LN2_HI) - x_18) + (k_20 * FUR_LN2_LO));
+    float3 x_19 = min(max(x_in, (0.0).xxx), (87.0).xxx);
+    float3 k_21 = round((x_19 * FUR_LOG2_E));
+    float3 r_16 = (((k_21 * FUR_LN2_HI) - x_19) + (k_21 * FUR_LN2_LO));
     float3 z_1 = (r_16 * r_16);
     float3 _e20 = p_2;
     p_2 = ((_e20 * r_16) + (0.0013981999).xxx);
@@ -2342,7 +2344,7 @@ float3 fur_exp_neg(float3 x_in)
     p_2 = ((_e40 * r_16) + (0.5).xxx);
     float3 _e45 = p_2;
     float3 e_1 = (((_e45 * z_1) + r_16) + (1.0).xxx);
-    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e_1, naga_neg(naga_f2i32(k_20))));
+    return ((x_in > (87.0).xxx) ? (0.0).xxx : ldexp(e_1, naga_neg(naga_f2i32(k_21))));
 }
 
 float3 fur_erf(float3 x_11)
@@ -2431,9 +2433,9 @@ FurCoat fur_dual_coat_node(uint3 n_1, uint k_13)
     float3 a_12 = clamp(_e5, (0.0).xxx, (1.0).xxx);
     const float3 _e12 = fur_dual_power(_e3, 1.0);
     const float3 _e16 = fur_rsqrt_newton(max(a_12, (1e-30).xxx));
-    float3 t_16 = (a_12 * _e16);
-    const float3 _e18 = fur_reflectance_squared(_e12, t_16);
-    const float3 _e19 = fur_reflection_product(_e12, t_16);
+    float3 t_17 = (a_12 * _e16);
+    const float3 _e18 = fur_reflectance_squared(_e12, t_17);
+    const float3 _e19 = fur_reflection_product(_e12, t_17);
     const FurCoat furcoat = ConstructFurCoat(_e18, _e19);
     return furcoat;
 }
@@ -2502,7 +2504,7 @@ float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fib
     const float _e16 = fur_dual_below(fibers_below);
     const float _e18 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
     const float _e20 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_19 = (theta_i_6 + theta_r_8);
+    float x_20 = (theta_i_6 + theta_r_8);
     const float _e22 = fur_cos_within_half_pi(theta_i_6);
     float inv_cos2_1 = (1.0 / max((_e22 * _e22), FUR_MIN_COS2_));
     float direct = clamp((1.0 - _e15), 0.0, 1.0);
@@ -2518,7 +2520,7 @@ float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fib
     float3 half_energy = (_e41 * _e52);
     const float3 _e55 = fur_dual_field(_e33, FUR_DUAL_SIGMA_B0_);
     const float3 _e57 = fur_dual_field(_e33, FUR_DUAL_DELTA_B);
-    float3 d_back = ((x_19).xxx - _e57);
+    float3 d_back = ((x_20).xxx - _e57);
     float3 s_b = (((1.0).xxx + (_e20 * _e45)) * _e55);
     float3 v_back = (s_b * s_b);
     float back_scale = ((_e20 * inv_cos2_1) / FUR_PI);
@@ -2571,7 +2573,7 @@ float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fib
                     const float3 _e133 = fur_dual_ng(_e132, _e33, at_phi);
                     float3 v_6 = ((_e131 * _e131) + s2f);
                     float3 _e136 = f_s;
-                    const float3 _e139 = fur_dual_gauss(((x_19).xxx - _e127), v_6, theta_i_6);
+                    const float3 _e139 = fur_dual_gauss(((x_20).xxx - _e127), v_6, theta_i_6);
                     f_s = (_e136 + (_e133 * _e139));
                 }
             }
@@ -2603,6 +2605,73 @@ float3 fur_eval_dual_dirs(float3 wi_2, float3 wr_2, float3 u_6, float fibers_1, 
     return _e16;
 }
 
+float fur_coat_sigma_at(float x_15)
+{
+    float x2_1 = (x_15 * x_15);
+    return clamp((x2_1 / max((1.0 - x2_1), 1e-12)), 0.0, FUR_SIGMA_CA_MAX);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+float fur_coat_sigma_for(float4 table[6], float c_2)
+{
+    float4 nodes_2[6] = (float4[6])0;
+    uint k_14 = 0u;
+    float t_11 = (float)0;
+
+    nodes_2 = table;
+    float _e5 = nodes_2[0].x;
+    if ((c_2 >= _e5)) {
+        return 0.0;
+    }
+    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+    bool loop_init_20 = true;
+    while(true) {
+        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e51 = k_14;
+            k_14 = (_e51 + 1u);
+        }
+        loop_init_20 = false;
+        uint _e10 = k_14;
+        if ((_e10 < 23u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = k_14;
+            uint _e17 = k_14;
+            float hi_4 = nodes_2[min(uint(naga_div(_e13, 4u)), 5u)][min(uint(naga_mod(_e17, 4u)), 3u)];
+            uint _e22 = k_14;
+            uint _e28 = k_14;
+            float lo_7 = nodes_2[min(uint(naga_div((_e22 + 1u), 4u)), 5u)][min(uint(naga_mod((_e28 + 1u), 4u)), 3u)];
+            if ((c_2 >= lo_7)) {
+                t_11 = 0.0;
+                if ((hi_4 > lo_7)) {
+                    t_11 = ((hi_4 - c_2) / (hi_4 - lo_7));
+                }
+                uint _e42 = k_14;
+                float _e44 = t_11;
+                float x_21 = (((float(_e42) + _e44) / 23.0) * FUR_COAT_AXIS_END);
+                const float _e50 = fur_coat_sigma_at(x_21);
+                return _e50;
+            }
+        }
+    }
+    return FUR_SIGMA_CA_MAX;
+}
+
+float3 fur_absorption_from_colour(float4 table_1[6], float3 colour)
+{
+    const float _e3 = fur_coat_sigma_for(table_1, colour.x);
+    const float _e5 = fur_coat_sigma_for(table_1, colour.y);
+    const float _e7 = fur_coat_sigma_for(table_1, colour.z);
+    return float3(_e3, _e5, _e7);
+}
+
 typedef float3 ret_Constructarray5_float3_[5];
 ret_Constructarray5_float3_ Constructarray5_float3_(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float3 arg4) {
     float3 ret[5] = { arg0, arg1, arg2, arg3, arg4 };
@@ -2611,34 +2680,34 @@ ret_Constructarray5_float3_ Constructarray5_float3_(float3 arg0, float3 arg1, fl
 
 void fur_store(uint q, FurFamilies f_5)
 {
-    uint k_14 = 0u;
+    uint k_15 = 0u;
 
     uint base_1 = (16u * q);
     float3 parts[5] = Constructarray5_float3_(f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total);
-    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
-    bool loop_init_20 = true;
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    bool loop_init_21 = true;
     while(true) {
-        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-        if (!loop_init_20) {
-            uint _e46 = k_14;
-            k_14 = (_e46 + 1u);
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_21) {
+            uint _e46 = k_15;
+            k_15 = (_e46 + 1u);
         }
-        loop_init_20 = false;
-        uint _e12 = k_14;
+        loop_init_21 = false;
+        uint _e12 = k_15;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_14;
-            uint _e21 = k_14;
+            uint _e17 = k_15;
+            uint _e21 = k_15;
             fur_results.Store((base_1 + (3u * _e17))*4, asuint(parts[min(uint(_e21), 4u)].x));
-            uint _e26 = k_14;
-            uint _e32 = k_14;
+            uint _e26 = k_15;
+            uint _e32 = k_15;
             fur_results.Store(((base_1 + (3u * _e26)) + 1u)*4, asuint(parts[min(uint(_e32), 4u)].y));
-            uint _e37 = k_14;
-            uint _e43 = k_14;
+            uint _e37 = k_15;
+            uint _e43 = k_15;
             fur_results.Store(((base_1 + (3u * _e37)) + 2u)*4, asuint(parts[min(uint(_e43), 4u)].z));
         }
     }
@@ -2648,29 +2717,29 @@ void fur_store(uint q, FurFamilies f_5)
 
 void fur_store_rgb(uint q_1, float3 v_2)
 {
-    uint k_15 = 3u;
+    uint k_16 = 3u;
 
     uint base_2 = (16u * q_1);
     fur_results.Store(base_2*4, asuint(v_2.x));
     fur_results.Store((base_2 + 1u)*4, asuint(v_2.y));
     fur_results.Store((base_2 + 2u)*4, asuint(v_2.z));
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_21 = true;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_22 = true;
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_21) {
-            uint _e27 = k_15;
-            k_15 = (_e27 + 1u);
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_22) {
+            uint _e27 = k_16;
+            k_16 = (_e27 + 1u);
         }
-        loop_init_21 = false;
-        uint _e19 = k_15;
+        loop_init_22 = false;
+        uint _e19 = k_16;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_15;
+            uint _e23 = k_16;
             fur_results.Store((base_2 + _e23)*4, asuint(0.0));
         }
     }
@@ -2777,5 +2846,31 @@ void fur_dual_dirs_main(uint3 id_5 : SV_DispatchThreadID)
     float4 below = asfloat(fur_queries.Load4(((4u * q_7) + 3u)*16));
     const float3 _e43 = fur_eval_dual_dirs(wi_4.xyz, wr_4.xyz, u_11.xyz, wi_4.w, below.x, wr_4.w, u_11.w, below.yzw);
     fur_store_rgb(q_7, _e43);
+    return;
+}
+
+typedef float4 ret_Constructarray6_float4_[6];
+ret_Constructarray6_float4_ Constructarray6_float4_(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5) {
+    float4 ret[6] = { arg0, arg1, arg2, arg3, arg4, arg5 };
+    return ret;
+}
+
+[numthreads(64, 1, 1)]
+void fur_absorption_main(uint3 id_6 : SV_DispatchThreadID)
+{
+    uint q_8 = id_6.x;
+    if (((6u + q_8) >= ((NagaBufferLength(fur_queries) - 0) / 16))) {
+        return;
+    }
+    float4 _e9 = asfloat(fur_queries.Load4(0));
+    float4 _e12 = asfloat(fur_queries.Load4(16));
+    float4 _e15 = asfloat(fur_queries.Load4(32));
+    float4 _e18 = asfloat(fur_queries.Load4(48));
+    float4 _e21 = asfloat(fur_queries.Load4(64));
+    float4 _e24 = asfloat(fur_queries.Load4(80));
+    float4 table_2[6] = Constructarray6_float4_(_e9, _e12, _e15, _e18, _e21, _e24);
+    float4 _e30 = asfloat(fur_queries.Load4((6u + q_8)*16));
+    const float3 _e32 = fur_absorption_from_colour(table_2, _e30.xyz);
+    fur_store_rgb(q_8, _e32);
     return;
 }

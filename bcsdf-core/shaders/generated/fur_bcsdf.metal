@@ -132,9 +132,12 @@ struct FurCoat {
     metal::float3 rho2_;
     metal::float3 r_rho;
 };
-typedef metal::float4 type_19[1];
-typedef float type_20[1];
-struct type_21 {
+struct type_19 {
+    metal::float4 inner[6];
+};
+typedef metal::float4 type_20[1];
+typedef float type_21[1];
+struct type_22 {
     metal::float3 inner[5];
 };
 constant float FUR_PI = 3.1415927;
@@ -187,6 +190,8 @@ constant float FUR_ERF_A3_ = 0.009270527;
 constant float FUR_ERF_A4_ = 0.0001520143;
 constant float FUR_ERF_A5_ = 0.0002765672;
 constant float FUR_ERF_A6_ = 0.0000430638;
+constant uint FUR_COAT_NODES = 24u;
+constant float FUR_COAT_AXIS_END = 0.9995004;
 
 FurAxis fur_axis(
     bool centred,
@@ -266,8 +271,8 @@ metal::float3 fur_pow2_neg(
 ) {
     metal::bool3 _e9 = fur_is_nan3_(y_in);
     metal::float3 y_3 = metal::select(metal::min(metal::max(y_in, metal::float3(0.0)), metal::float3(125.0)), metal::float3(0.0), _e9);
-    metal::float3 k_16 = metal::rint(y_3);
-    metal::float3 f_6 = k_16 - y_3;
+    metal::float3 k_17 = metal::rint(y_3);
+    metal::float3 f_6 = k_17 - y_3;
     metal::float3 f2_ = f_6 * f_6;
     metal::float3 f4_ = f2_ * f2_;
     metal::float3 p01_ = (0.000015252734 * f_6) + metal::float3(0.0001540353);
@@ -275,7 +280,7 @@ metal::float3 fur_pow2_neg(
     metal::float3 p45_ = (0.05550411 * f_6) + metal::float3(0.2402265);
     metal::float3 p67_ = (0.6931472 * f_6) + metal::float3(1.0);
     metal::float3 p_4 = (((p01_ * f2_) + p23_) * f4_) + ((p45_ * f2_) + p67_);
-    return metal::ldexp(p_4, naga_neg(naga_f2i32(k_16)));
+    return metal::ldexp(p_4, naga_neg(naga_f2i32(k_17)));
 }
 
 metal::uint3 naga_f2u32(metal::float3 value) {
@@ -296,16 +301,16 @@ FurColour fur_locate_colour(
     metal::float3 _e23 = fur_pow2_neg(metal::sqrt(s_1 * FUR_ROOT_RATE));
     metal::float3 _e30 = fur_pow2_neg((s_1 / metal::float3(scale)) * FUR_LOG2_E);
     metal::float3 e = (FUR_ROOT_SHARE * _e23) + (0.6 * _e30);
-    metal::float3 x_15 = metal::min(metal::float3(1.0) - e, metal::float3(1.0));
-    metal::float3 u_8 = metal::clamp(x_15 * last_2, metal::float3(0.0), metal::float3(last_2));
-    metal::uint3 k_17 = metal::min(naga_f2u32(u_8), metal::uint3(_e2 - 3u));
-    metal::float3 t_11 = u_8 - static_cast<metal::float3>(k_17);
-    metal::float3 w0_ = (0.5 * (t_11 - metal::float3(1.0))) * (t_11 - metal::float3(2.0));
-    metal::float3 w1_ = t_11 * (metal::float3(2.0) - t_11);
-    metal::float3 w2_ = (0.5 * t_11) * (t_11 - metal::float3(1.0));
+    metal::float3 x_16 = metal::min(metal::float3(1.0) - e, metal::float3(1.0));
+    metal::float3 u_8 = metal::clamp(x_16 * last_2, metal::float3(0.0), metal::float3(last_2));
+    metal::uint3 k_18 = metal::min(naga_f2u32(u_8), metal::uint3(_e2 - 3u));
+    metal::float3 t_12 = u_8 - static_cast<metal::float3>(k_18);
+    metal::float3 w0_ = (0.5 * (t_12 - metal::float3(1.0))) * (t_12 - metal::float3(2.0));
+    metal::float3 w1_ = t_12 * (metal::float3(2.0) - t_12);
+    metal::float3 w2_ = (0.5 * t_12) * (t_12 - metal::float3(1.0));
     uint _e71 = fur_word(6u, fur_lut, _buffer_sizes);
     uint _e73 = fur_word(5u, fur_lut, _buffer_sizes);
-    return FurColour {k_17 * (_e71 * _e73), w0_, w1_, w2_};
+    return FurColour {k_18 * (_e71 * _e73), w0_, w1_, w2_};
 }
 
 float fur_cos_within_half_pi(
@@ -494,9 +499,9 @@ FurDensity fur_density(
     uint _e71 = at;
     at = _e71 + ((16u * _e4) * _e30);
     if (d < 9u) {
-        uint x_16 = d - 7u;
+        uint x_17 = d - 7u;
         uint _e80 = at;
-        return FurDensity {_e80 + (((4u * x_16) * _e10) * _e32), _e32, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_16};
+        return FurDensity {_e80 + (((4u * x_17) * _e10) * _e32), _e32, _e8, _e10, FUR_PI / static_cast<float>(_e8 - 1u), 8u, 2u, x_17};
     }
     uint _e94 = at;
     at = _e94 + ((8u * _e10) * _e32);
@@ -934,9 +939,9 @@ float fur_atan2_(
     float ax_4 = metal::abs(x_6);
     float ay = metal::abs(y_1);
     float a_8 = metal::min(ax_4, ay) / metal::max(metal::max(ax_4, ay), 0.000000000000000000000000000000000000011754944);
-    float t_12 = a_8 * a_8;
-    float _e10 = fur_atan_poly(t_12);
-    r = a_8 + (a_8 * (t_12 * _e10));
+    float t_13 = a_8 * a_8;
+    float _e10 = fur_atan_poly(t_13);
+    r = a_8 + (a_8 * (t_13 * _e10));
     float _e15 = r;
     float _e17 = r;
     r = (ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15;
@@ -1003,8 +1008,8 @@ FurDirAngles fur_angles_from_dirs(
     float _e51 = fur_asin(metal::clamp(a_9 * (1.0 / ni), -1.0, 1.0));
     float _e58 = fur_asin(metal::clamp(b_3 * (1.0 / nr), -1.0, 1.0));
     float y_6 = metal::dot(un, metal::cross(wi, wr));
-    float x_17 = metal::dot(wi, wr) - (a_9 * b_3);
-    float _e64 = fur_atan2_(y_6, x_17);
+    float x_18 = metal::dot(wi, wr) - (a_9 * b_3);
+    float _e64 = fur_atan2_(y_6, x_18);
     return FurDirAngles {_e51, _e58, metal::abs(_e64), true};
 }
 
@@ -1467,16 +1472,16 @@ float fur_rows_invert_between(
 ) {
     float inset_2 = (t1_ - t0_) * 0.0000009536743;
     float _e7 = fur_unit(u_3);
-    float t_13 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
-    float _e14 = fur_rows_invert(r_9, t_13, fur_lut, _buffer_sizes);
+    float t_14 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
+    float _e14 = fur_rows_invert(r_9, t_14, fur_lut, _buffer_sizes);
     return _e14;
 }
 
 float fur_pole_keep(
     float cos_theta_i
 ) {
-    float c_2 = metal::max(cos_theta_i, 0.000001);
-    return metal::min((c_2 * c_2) * 10000.0, 1.0);
+    float c_3 = metal::max(cos_theta_i, 0.000001);
+    return metal::min((c_3 * c_3) * 10000.0, 1.0);
 }
 
 float fur_sliver_keep(
@@ -1511,7 +1516,7 @@ float fur_sliver_piece_mass(
         return 0.0;
     }
     float slope = (v1_6 - v0_6) / len0_;
-    type_7 t_14 = type_7 {{0.11270166, 0.5, 0.8872983}};
+    type_7 t_15 = type_7 {{0.11270166, 0.5, 0.8872983}};
     type_7 w_5 = type_7 {{0.2777778, 0.44444445, 0.2777778}};
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_11 = true;
@@ -1530,7 +1535,7 @@ float fur_sliver_piece_mass(
         }
         {
             uint _e33 = k_5;
-            float d_8 = t_14.inner[_e33] * len_5;
+            float d_8 = t_15.inner[_e33] * len_5;
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep((x0_ - pole) + d_8);
@@ -1759,18 +1764,18 @@ float fur_rows_invert_kept(
         return _e19.z;
     }
     float mid = metal::max((g_2.raw - g_2.s.x) - g_2.s.z, 0.0);
-    float t_15 = t0_1 - g_2.s.y;
-    if (!((t_15 <= mid))) {
+    float t_16 = t0_1 - g_2.s.y;
+    if (!((t_16 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_15, mid), fur_lut, _buffer_sizes);
+        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_16, mid), fur_lut, _buffer_sizes);
         return _e50;
     }
-    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_15 - mid, fur_lut, _buffer_sizes);
+    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_16 - mid, fur_lut, _buffer_sizes);
     return _e57.z;
 }
 
@@ -2180,9 +2185,9 @@ FurSample fur_sample_far(
     }
     FurFamilies _e189 = fur_assemble(_e176);
     float _e190 = theta_i_4;
-    float k_18 = metal::max(metal::cos(_e190), 0.0) / _e179;
+    float k_19 = metal::max(metal::cos(_e190), 0.0) / _e179;
     float _e195 = theta_i_4;
-    out_3 = FurSample {_e195, _e174, _e179, {}, metal::max(_e189.total * k_18, metal::float3(0.0)), family, true};
+    out_3 = FurSample {_e195, _e174, _e179, {}, metal::max(_e189.total * k_19, metal::float3(0.0)), family, true};
     FurSample _e203 = out_3;
     return _e203;
 }
@@ -2276,9 +2281,9 @@ FurLoc fur_dual_theta(
     float _e14 = t_8;
     t_8 = metal::min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_19 = metal::min(naga_f2u32(_e17), 62u);
+    uint k_20 = metal::min(naga_f2u32(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc {k_19, _e21 - static_cast<float>(k_19)};
+    return FurLoc {k_20, _e21 - static_cast<float>(k_20)};
 }
 
 metal::float3 fur_dual_node(
@@ -2369,9 +2374,9 @@ metal::float3 fur_exp_neg(
     metal::float3 x_in
 ) {
     metal::float3 p_2 = metal::float3(0.00019875693);
-    metal::float3 x_18 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
-    metal::float3 k_20 = metal::rint(x_18 * FUR_LOG2_E);
-    metal::float3 r_16 = ((k_20 * FUR_LN2_HI) - x_18) + (k_20 * FUR_LN2_LO);
+    metal::float3 x_19 = metal::min(metal::max(x_in, metal::float3(0.0)), metal::float3(87.0));
+    metal::float3 k_21 = metal::rint(x_19 * FUR_LOG2_E);
+    metal::float3 r_16 = ((k_21 * FUR_LN2_HI) - x_19) + (k_21 * FUR_LN2_LO);
     metal::float3 z_1 = r_16 * r_16;
     metal::float3 _e20 = p_2;
     p_2 = (_e20 * r_16) + metal::float3(0.0013981999);
@@ -2385,7 +2390,7 @@ metal::float3 fur_exp_neg(
     p_2 = (_e40 * r_16) + metal::float3(0.5);
     metal::float3 _e45 = p_2;
     metal::float3 e_1 = ((_e45 * z_1) + r_16) + metal::float3(1.0);
-    return metal::select(metal::ldexp(e_1, naga_neg(naga_f2i32(k_20))), metal::float3(0.0), x_in > metal::float3(87.0));
+    return metal::select(metal::ldexp(e_1, naga_neg(naga_f2i32(k_21))), metal::float3(0.0), x_in > metal::float3(87.0));
 }
 
 metal::float3 fur_erf(
@@ -2489,9 +2494,9 @@ FurCoat fur_dual_coat_node(
     metal::float3 a_12 = metal::clamp(_e5, metal::float3(0.0), metal::float3(1.0));
     metal::float3 _e12 = fur_dual_power(_e3, 1.0);
     metal::float3 _e16 = fur_rsqrt_newton(metal::max(a_12, metal::float3(0.000000000000000000000000000001)));
-    metal::float3 t_16 = a_12 * _e16;
-    metal::float3 _e18 = fur_reflectance_squared(_e12, t_16);
-    metal::float3 _e19 = fur_reflection_product(_e12, t_16);
+    metal::float3 t_17 = a_12 * _e16;
+    metal::float3 _e18 = fur_reflectance_squared(_e12, t_17);
+    metal::float3 _e19 = fur_reflection_product(_e12, t_17);
     return FurCoat {_e18, _e19};
 }
 
@@ -2573,7 +2578,7 @@ metal::float3 fur_eval_dual(
     float _e16 = fur_dual_below(fibers_below);
     float _e18 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
     float _e20 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_19 = theta_i_6 + theta_r_8;
+    float x_20 = theta_i_6 + theta_r_8;
     float _e22 = fur_cos_within_half_pi(theta_i_6);
     float inv_cos2_1 = 1.0 / metal::max(_e22 * _e22, FUR_MIN_COS2_);
     float direct = metal::clamp(1.0 - _e15, 0.0, 1.0);
@@ -2589,7 +2594,7 @@ metal::float3 fur_eval_dual(
     metal::float3 half_energy = _e41 * _e52;
     metal::float3 _e55 = fur_dual_field(_e33, FUR_DUAL_SIGMA_B0_, fur_dual, fur_dual_at, _buffer_sizes);
     metal::float3 _e57 = fur_dual_field(_e33, FUR_DUAL_DELTA_B, fur_dual, fur_dual_at, _buffer_sizes);
-    metal::float3 d_back = metal::float3(x_19) - _e57;
+    metal::float3 d_back = metal::float3(x_20) - _e57;
     metal::float3 s_b = (metal::float3(1.0) + (_e20 * _e45)) * _e55;
     metal::float3 v_back = s_b * s_b;
     float back_scale = (_e20 * inv_cos2_1) / FUR_PI;
@@ -2642,7 +2647,7 @@ metal::float3 fur_eval_dual(
                     metal::float3 _e133 = fur_dual_ng(_e132, _e33, at_phi, fur_dual, fur_dual_at, _buffer_sizes);
                     metal::float3 v_6 = (_e131 * _e131) + s2f;
                     metal::float3 _e136 = f_s;
-                    metal::float3 _e139 = fur_dual_gauss(metal::float3(x_19) - _e127, v_6, theta_i_6);
+                    metal::float3 _e139 = fur_dual_gauss(metal::float3(x_20) - _e127, v_6, theta_i_6);
                     f_s = _e136 + (_e133 * _e139);
                 }
             }
@@ -2685,39 +2690,110 @@ metal::float3 fur_eval_dual_dirs(
     return _e16;
 }
 
-void fur_store(
-    uint q,
-    FurFamilies f_5,
-    device type_20& fur_results,
-    constant _mslBufferSizes& _buffer_sizes
+float fur_coat_sigma_at(
+    float x_15
 ) {
+    float x2_1 = x_15 * x_15;
+    return metal::clamp(x2_1 / metal::max(1.0 - x2_1, 0.000000000001), 0.0, FUR_SIGMA_CA_MAX);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+float fur_coat_sigma_for(
+    type_19 table,
+    float c_2
+) {
+    type_19 nodes_2 = {};
     uint k_14 = 0u;
-    uint base_1 = 16u * q;
-    type_21 parts = type_21 {{f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total}};
+    float t_11 = {};
+    nodes_2 = table;
+    float _e5 = nodes_2.inner[0].x;
+    if (c_2 >= _e5) {
+        return 0.0;
+    }
     uint2 loop_bound_21 = uint2(4294967295u);
     bool loop_init_20 = true;
     while(true) {
         if (metal::all(loop_bound_21 == uint2(0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_20) {
-            uint _e46 = k_14;
-            k_14 = _e46 + 1u;
+            uint _e51 = k_14;
+            k_14 = _e51 + 1u;
         }
         loop_init_20 = false;
-        uint _e12 = k_14;
+        uint _e10 = k_14;
+        if (_e10 < 23u) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = k_14;
+            uint _e17 = k_14;
+            float hi_4 = nodes_2.inner[naga_div(_e13, 4u)][naga_mod(_e17, 4u)];
+            uint _e22 = k_14;
+            uint _e28 = k_14;
+            float lo_7 = nodes_2.inner[naga_div(_e22 + 1u, 4u)][naga_mod(_e28 + 1u, 4u)];
+            if (c_2 >= lo_7) {
+                t_11 = 0.0;
+                if (hi_4 > lo_7) {
+                    t_11 = (hi_4 - c_2) / (hi_4 - lo_7);
+                }
+                uint _e42 = k_14;
+                float _e44 = t_11;
+                float x_21 = ((static_cast<float>(_e42) + _e44) / 23.0) * FUR_COAT_AXIS_END;
+                float _e50 = fur_coat_sigma_at(x_21);
+                return _e50;
+            }
+        }
+    }
+    return FUR_SIGMA_CA_MAX;
+}
+
+metal::float3 fur_absorption_from_colour(
+    type_19 table_1,
+    metal::float3 colour
+) {
+    float _e3 = fur_coat_sigma_for(table_1, colour.x);
+    float _e5 = fur_coat_sigma_for(table_1, colour.y);
+    float _e7 = fur_coat_sigma_for(table_1, colour.z);
+    return metal::float3(_e3, _e5, _e7);
+}
+
+void fur_store(
+    uint q,
+    FurFamilies f_5,
+    device type_21& fur_results,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint k_15 = 0u;
+    uint base_1 = 16u * q;
+    type_22 parts = type_22 {{f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total}};
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_21 = true;
+    while(true) {
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_21) {
+            uint _e46 = k_15;
+            k_15 = _e46 + 1u;
+        }
+        loop_init_21 = false;
+        uint _e12 = k_15;
         if (_e12 < 5u) {
         } else {
             break;
         }
         {
-            uint _e17 = k_14;
-            uint _e21 = k_14;
+            uint _e17 = k_15;
+            uint _e21 = k_15;
             fur_results[base_1 + (3u * _e17)] = parts.inner[_e21].x;
-            uint _e26 = k_14;
-            uint _e32 = k_14;
+            uint _e26 = k_15;
+            uint _e32 = k_15;
             fur_results[(base_1 + (3u * _e26)) + 1u] = parts.inner[_e32].y;
-            uint _e37 = k_14;
-            uint _e43 = k_14;
+            uint _e37 = k_15;
+            uint _e43 = k_15;
             fur_results[(base_1 + (3u * _e37)) + 2u] = parts.inner[_e43].z;
         }
     }
@@ -2728,31 +2804,31 @@ void fur_store(
 void fur_store_rgb(
     uint q_1,
     metal::float3 v_2,
-    device type_20& fur_results,
+    device type_21& fur_results,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint k_15 = 3u;
+    uint k_16 = 3u;
     uint base_2 = 16u * q_1;
     fur_results[base_2] = v_2.x;
     fur_results[base_2 + 1u] = v_2.y;
     fur_results[base_2 + 2u] = v_2.z;
-    uint2 loop_bound_22 = uint2(4294967295u);
-    bool loop_init_21 = true;
+    uint2 loop_bound_23 = uint2(4294967295u);
+    bool loop_init_22 = true;
     while(true) {
-        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_21) {
-            uint _e27 = k_15;
-            k_15 = _e27 + 1u;
+        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_22) {
+            uint _e27 = k_16;
+            k_16 = _e27 + 1u;
         }
-        loop_init_21 = false;
-        uint _e19 = k_15;
+        loop_init_22 = false;
+        uint _e19 = k_16;
         if (_e19 < 16u) {
         } else {
             break;
         }
         {
-            uint _e23 = k_15;
+            uint _e23 = k_16;
             fur_results[base_2 + _e23] = 0.0;
         }
     }
@@ -2764,8 +2840,8 @@ struct fur_eval_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_eval_main(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_19 const& fur_queries [[user(fake0)]]
-, device type_20& fur_results [[user(fake0)]]
+, device type_20 const& fur_queries [[user(fake0)]]
+, device type_21& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_2 = id.x;
@@ -2785,8 +2861,8 @@ struct fur_eval_dirs_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_eval_dirs_main(
   metal::uint3 id_1 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_19 const& fur_queries [[user(fake0)]]
-, device type_20& fur_results [[user(fake0)]]
+, device type_20 const& fur_queries [[user(fake0)]]
+, device type_21& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_3 = id_1.x;
@@ -2807,8 +2883,8 @@ struct fur_sample_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_sample_main(
   metal::uint3 id_2 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_19 const& fur_queries [[user(fake0)]]
-, device type_20& fur_results [[user(fake0)]]
+, device type_20 const& fur_queries [[user(fake0)]]
+, device type_21& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_4 = id_2.x;
@@ -2836,8 +2912,8 @@ struct fur_pdf_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_pdf_main(
   metal::uint3 id_3 [[thread_position_in_grid]]
 , device type_1 const& fur_lut [[user(fake0)]]
-, device type_19 const& fur_queries [[user(fake0)]]
-, device type_20& fur_results [[user(fake0)]]
+, device type_20 const& fur_queries [[user(fake0)]]
+, device type_21& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint q_5 = id_3.x;
@@ -2857,8 +2933,8 @@ struct fur_dual_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_dual_main(
   metal::uint3 id_4 [[thread_position_in_grid]]
 , device type_1 const& fur_dual [[user(fake0)]]
-, device type_19 const& fur_queries [[user(fake0)]]
-, device type_20& fur_results [[user(fake0)]]
+, device type_20 const& fur_queries [[user(fake0)]]
+, device type_21& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     FurDualColour fur_dual_at = {};
@@ -2880,8 +2956,8 @@ struct fur_dual_dirs_mainInput {
 [[max_total_threads_per_threadgroup(64)]] kernel void fur_dual_dirs_main(
   metal::uint3 id_5 [[thread_position_in_grid]]
 , device type_1 const& fur_dual [[user(fake0)]]
-, device type_19 const& fur_queries [[user(fake0)]]
-, device type_20& fur_results [[user(fake0)]]
+, device type_20 const& fur_queries [[user(fake0)]]
+, device type_21& fur_results [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     FurDualColour fur_dual_at = {};
@@ -2895,5 +2971,31 @@ struct fur_dual_dirs_mainInput {
     metal::float4 below = fur_queries[(4u * q_7) + 3u];
     metal::float3 _e43 = fur_eval_dual_dirs(wi_4.xyz, wr_4.xyz, u_11.xyz, wi_4.w, below.x, wr_4.w, u_11.w, below.yzw, fur_dual, fur_dual_at, _buffer_sizes);
     fur_store_rgb(q_7, _e43, fur_results, _buffer_sizes);
+    return;
+}
+
+
+struct fur_absorption_mainInput {
+};
+[[max_total_threads_per_threadgroup(64)]] kernel void fur_absorption_main(
+  metal::uint3 id_6 [[thread_position_in_grid]]
+, device type_20 const& fur_queries [[user(fake0)]]
+, device type_21& fur_results [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    uint q_8 = id_6.x;
+    if ((6u + q_8) >= (1 + (_buffer_sizes.size3 - 0 - 16) / 16)) {
+        return;
+    }
+    metal::float4 _e9 = fur_queries[0];
+    metal::float4 _e12 = fur_queries[1];
+    metal::float4 _e15 = fur_queries[2];
+    metal::float4 _e18 = fur_queries[3];
+    metal::float4 _e21 = fur_queries[4];
+    metal::float4 _e24 = fur_queries[5];
+    type_19 table_2 = type_19 {{_e9, _e12, _e15, _e18, _e21, _e24}};
+    metal::float4 _e30 = fur_queries[6u + q_8];
+    metal::float3 _e32 = fur_absorption_from_colour(table_2, _e30.xyz);
+    fur_store_rgb(q_8, _e32, fur_results, _buffer_sizes);
     return;
 }

@@ -139,14 +139,16 @@ const float FUR_ERF_A3_ = 0.009270527;
 const float FUR_ERF_A4_ = 0.0001520143;
 const float FUR_ERF_A5_ = 0.0002765672;
 const float FUR_ERF_A6_ = 4.30638e-5;
+const uint FUR_COAT_NODES = 24u;
+const float FUR_COAT_AXIS_END = 0.9995004;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_3_cs[]; };
 
 FurDualColour fur_dual_at = FurDualColour(uvec3(0u), vec3(0.0));
 
-layout(std430) readonly buffer type_19_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_20_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_20_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_21_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -167,8 +169,8 @@ bvec3 fur_is_nan3_(vec3 x_1) {
 vec3 fur_pow2_neg(vec3 y_in) {
     bvec3 _e9 = fur_is_nan3_(y_in);
     vec3 y_3 = mix(min(max(y_in, vec3(0.0)), vec3(125.0)), vec3(0.0), _e9);
-    vec3 k_16 = roundEven(y_3);
-    vec3 f_6 = (k_16 - y_3);
+    vec3 k_17 = roundEven(y_3);
+    vec3 f_6 = (k_17 - y_3);
     vec3 f2_ = (f_6 * f_6);
     vec3 f4_ = (f2_ * f2_);
     vec3 p01_ = ((1.5252734e-5 * f_6) + vec3(0.0001540353));
@@ -176,7 +178,7 @@ vec3 fur_pow2_neg(vec3 y_in) {
     vec3 p45_ = ((0.05550411 * f_6) + vec3(0.2402265));
     vec3 p67_ = ((0.6931472 * f_6) + vec3(1.0));
     vec3 p_4 = ((((p01_ * f2_) + p23_) * f4_) + ((p45_ * f2_) + p67_));
-    return ldexp(p_4, -(ivec3(k_16)));
+    return ldexp(p_4, -(ivec3(k_17)));
 }
 
 float fur_cos_within_half_pi(float x_2) {
@@ -381,9 +383,9 @@ float fur_atan2_(float y_1, float x_6) {
     float ax_4 = abs(x_6);
     float ay = abs(y_1);
     float a_8 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_11 = (a_8 * a_8);
-    float _e10 = fur_atan_poly(t_11);
-    r = (a_8 + (a_8 * (t_11 * _e10)));
+    float t_12 = (a_8 * a_8);
+    float _e10 = fur_atan_poly(t_12);
+    r = (a_8 + (a_8 * (t_12 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -446,8 +448,8 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float _e51 = fur_asin(clamp((a_9 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_6 = dot(un, cross(wi, wr));
-    float x_15 = (dot(wi, wr) - (a_9 * b_3));
-    float _e64 = fur_atan2_(y_6, x_15);
+    float x_16 = (dot(wi, wr) - (a_9 * b_3));
+    float _e64 = fur_atan2_(y_6, x_16);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -650,8 +652,8 @@ float fur_unit(float u_2) {
 }
 
 float fur_pole_keep(float cos_theta_i) {
-    float c_2 = max(cos_theta_i, 1e-6);
-    return min(((c_2 * c_2) * 10000.0), 1.0);
+    float c_3 = max(cos_theta_i, 1e-6);
+    return min(((c_3 * c_3) * 10000.0), 1.0);
 }
 
 float fur_sliver_keep(float s_in) {
@@ -677,7 +679,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_12[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float t_13[3] = float[3](0.11270166, 0.5, 0.8872983);
     float w_4[3] = float[3](0.2777778, 0.44444445, 0.2777778);
     bool loop_init_2 = true;
     while(true) {
@@ -693,7 +695,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_12[_e33] * len_5);
+            float d_8 = (t_13[_e33] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -883,9 +885,9 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_17 = min(uint(_e17), 62u);
+    uint k_18 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_17, (_e21 - float(k_17)));
+    return FurLoc(k_18, (_e21 - float(k_18)));
 }
 
 vec3 fur_dual_node(uvec3 a_5, uint k_11, uint f_3) {
@@ -946,9 +948,9 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
 
 vec3 fur_exp_neg(vec3 x_in) {
     vec3 p_2 = vec3(0.00019875693);
-    vec3 x_16 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_18 = roundEven((x_16 * FUR_LOG2_E));
-    vec3 r_15 = (((k_18 * FUR_LN2_HI) - x_16) + (k_18 * FUR_LN2_LO));
+    vec3 x_17 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_19 = roundEven((x_17 * FUR_LOG2_E));
+    vec3 r_15 = (((k_19 * FUR_LN2_HI) - x_17) + (k_19 * FUR_LN2_LO));
     vec3 z_1 = (r_15 * r_15);
     vec3 _e20 = p_2;
     p_2 = ((_e20 * r_15) + vec3(0.0013981999));
@@ -962,7 +964,7 @@ vec3 fur_exp_neg(vec3 x_in) {
     p_2 = ((_e40 * r_15) + vec3(0.5));
     vec3 _e45 = p_2;
     vec3 e = (((_e45 * z_1) + r_15) + vec3(1.0));
-    return mix(ldexp(e, -(ivec3(k_18))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+    return mix(ldexp(e, -(ivec3(k_19))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
 vec3 fur_erf(vec3 x_11) {
@@ -1035,9 +1037,9 @@ FurCoat fur_dual_coat_node(uvec3 n_1, uint k_13) {
     vec3 a_11 = clamp(_e5, vec3(0.0), vec3(1.0));
     vec3 _e12 = fur_dual_power(_e3, 1.0);
     vec3 _e16 = fur_rsqrt_newton(max(a_11, vec3(1e-30)));
-    vec3 t_13 = (a_11 * _e16);
-    vec3 _e18 = fur_reflectance_squared(_e12, t_13);
-    vec3 _e19 = fur_reflection_product(_e12, t_13);
+    vec3 t_14 = (a_11 * _e16);
+    vec3 _e18 = fur_reflectance_squared(_e12, t_14);
+    vec3 _e19 = fur_reflection_product(_e12, t_14);
     return FurCoat(_e18, _e19);
 }
 
@@ -1097,7 +1099,7 @@ vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fiber
     float _e16 = fur_dual_below(fibers_below);
     float _e18 = fur_dual_clean(d_f_in, FUR_DUAL_MAX_DENSITY);
     float _e20 = fur_dual_clean(d_b_in, FUR_DUAL_MAX_DENSITY);
-    float x_17 = (theta_i_6 + theta_r_8);
+    float x_18 = (theta_i_6 + theta_r_8);
     float _e22 = fur_cos_within_half_pi(theta_i_6);
     float inv_cos2_ = (1.0 / max((_e22 * _e22), FUR_MIN_COS2_));
     float direct = clamp((1.0 - _e15), 0.0, 1.0);
@@ -1113,7 +1115,7 @@ vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fiber
     vec3 half_energy = (_e41 * _e52);
     vec3 _e55 = fur_dual_field(_e33, FUR_DUAL_SIGMA_B0_);
     vec3 _e57 = fur_dual_field(_e33, FUR_DUAL_DELTA_B);
-    vec3 d_back = (vec3(x_17) - _e57);
+    vec3 d_back = (vec3(x_18) - _e57);
     vec3 s_b = ((vec3(1.0) + (_e20 * _e45)) * _e55);
     vec3 v_back = (s_b * s_b);
     float back_scale = ((_e20 * inv_cos2_) / FUR_PI);
@@ -1163,7 +1165,7 @@ vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fiber
                     vec3 _e133 = fur_dual_ng(_e132, _e33, at_phi);
                     vec3 v_6 = ((_e131 * _e131) + s2f);
                     vec3 _e136 = f_s;
-                    vec3 _e139 = fur_dual_gauss((vec3(x_17) - _e127), v_6, theta_i_6);
+                    vec3 _e139 = fur_dual_gauss((vec3(x_18) - _e127), v_6, theta_i_6);
                     f_s = (_e136 + (_e133 * _e139));
                 }
             }
@@ -1194,31 +1196,87 @@ vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fi
     return _e16;
 }
 
-void fur_store(uint q, FurFamilies f_5) {
+float fur_coat_sigma_at(float x_15) {
+    float x2_1 = (x_15 * x_15);
+    return clamp((x2_1 / max((1.0 - x2_1), 1e-12)), 0.0, FUR_SIGMA_CA_MAX);
+}
+
+float fur_coat_sigma_for(vec4 table[6], float c_2) {
+    vec4 nodes_2[6] = vec4[6](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint k_14 = 0u;
-    uint base = (16u * q);
-    vec3 parts[5] = vec3[5](f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total);
+    float t_11 = 0.0;
+    nodes_2 = table;
+    float _e5 = nodes_2[0].x;
+    if ((c_2 >= _e5)) {
+        return 0.0;
+    }
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e46 = k_14;
-            k_14 = (_e46 + 1u);
+            uint _e51 = k_14;
+            k_14 = (_e51 + 1u);
         }
         loop_init_5 = false;
-        uint _e12 = k_14;
+        uint _e10 = k_14;
+        if ((_e10 < 23u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = k_14;
+            uint _e17 = k_14;
+            float hi_4 = nodes_2[(_e13 / 4u)][(_e17 % 4u)];
+            uint _e22 = k_14;
+            uint _e28 = k_14;
+            float lo_7 = nodes_2[((_e22 + 1u) / 4u)][((_e28 + 1u) % 4u)];
+            if ((c_2 >= lo_7)) {
+                t_11 = 0.0;
+                if ((hi_4 > lo_7)) {
+                    t_11 = ((hi_4 - c_2) / (hi_4 - lo_7));
+                }
+                uint _e42 = k_14;
+                float _e44 = t_11;
+                float x_19 = (((float(_e42) + _e44) / 23.0) * FUR_COAT_AXIS_END);
+                float _e50 = fur_coat_sigma_at(x_19);
+                return _e50;
+            }
+        }
+    }
+    return FUR_SIGMA_CA_MAX;
+}
+
+vec3 fur_absorption_from_colour(vec4 table_1[6], vec3 colour) {
+    float _e3 = fur_coat_sigma_for(table_1, colour.x);
+    float _e5 = fur_coat_sigma_for(table_1, colour.y);
+    float _e7 = fur_coat_sigma_for(table_1, colour.z);
+    return vec3(_e3, _e5, _e7);
+}
+
+void fur_store(uint q, FurFamilies f_5) {
+    uint k_15 = 0u;
+    uint base = (16u * q);
+    vec3 parts[5] = vec3[5](f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total);
+    bool loop_init_6 = true;
+    while(true) {
+        if (!loop_init_6) {
+            uint _e46 = k_15;
+            k_15 = (_e46 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e12 = k_15;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_14;
-            uint _e21 = k_14;
+            uint _e17 = k_15;
+            uint _e21 = k_15;
             _group_0_binding_2_cs[(base + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_14;
-            uint _e32 = k_14;
+            uint _e26 = k_15;
+            uint _e32 = k_15;
             _group_0_binding_2_cs[((base + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_14;
-            uint _e43 = k_14;
+            uint _e37 = k_15;
+            uint _e43 = k_15;
             _group_0_binding_2_cs[((base + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -1227,25 +1285,25 @@ void fur_store(uint q, FurFamilies f_5) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_15 = 3u;
+    uint k_16 = 3u;
     uint base_1 = (16u * q_1);
     _group_0_binding_2_cs[base_1] = v_2.x;
     _group_0_binding_2_cs[(base_1 + 1u)] = v_2.y;
     _group_0_binding_2_cs[(base_1 + 2u)] = v_2.z;
-    bool loop_init_6 = true;
+    bool loop_init_7 = true;
     while(true) {
-        if (!loop_init_6) {
-            uint _e27 = k_15;
-            k_15 = (_e27 + 1u);
+        if (!loop_init_7) {
+            uint _e27 = k_16;
+            k_16 = (_e27 + 1u);
         }
-        loop_init_6 = false;
-        uint _e19 = k_15;
+        loop_init_7 = false;
+        uint _e19 = k_16;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_15;
+            uint _e23 = k_16;
             _group_0_binding_2_cs[(base_1 + _e23)] = 0.0;
         }
     }

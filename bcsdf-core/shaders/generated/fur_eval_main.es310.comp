@@ -141,12 +141,14 @@ const float FUR_ERF_A3_ = 0.009270527;
 const float FUR_ERF_A4_ = 0.0001520143;
 const float FUR_ERF_A5_ = 0.0002765672;
 const float FUR_ERF_A6_ = 4.30638e-5;
+const uint FUR_COAT_NODES = 24u;
+const float FUR_COAT_AXIS_END = 0.9995004;
 
 layout(std430) readonly buffer type_1_block_0Compute { uint _group_0_binding_0_cs[]; };
 
-layout(std430) readonly buffer type_19_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_20_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_20_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) buffer type_21_block_2Compute { float _group_0_binding_2_cs[]; };
 
 
 FurAxis fur_axis(bool centred, float inv_span, uint nodes) {
@@ -189,8 +191,8 @@ bvec3 fur_is_nan3_(vec3 x_1) {
 vec3 fur_pow2_neg(vec3 y_in) {
     bvec3 _e9 = fur_is_nan3_(y_in);
     vec3 y_3 = mix(min(max(y_in, vec3(0.0)), vec3(125.0)), vec3(0.0), _e9);
-    vec3 k_16 = roundEven(y_3);
-    vec3 f_6 = (k_16 - y_3);
+    vec3 k_17 = roundEven(y_3);
+    vec3 f_6 = (k_17 - y_3);
     vec3 f2_ = (f_6 * f_6);
     vec3 f4_ = (f2_ * f2_);
     vec3 p01_ = ((1.5252734e-5 * f_6) + vec3(0.0001540353));
@@ -198,7 +200,7 @@ vec3 fur_pow2_neg(vec3 y_in) {
     vec3 p45_ = ((0.05550411 * f_6) + vec3(0.2402265));
     vec3 p67_ = ((0.6931472 * f_6) + vec3(1.0));
     vec3 p_4 = ((((p01_ * f2_) + p23_) * f4_) + ((p45_ * f2_) + p67_));
-    return ldexp(p_4, -(ivec3(k_16)));
+    return ldexp(p_4, -(ivec3(k_17)));
 }
 
 FurColour fur_locate_colour(vec3 sigma_ca) {
@@ -211,16 +213,16 @@ FurColour fur_locate_colour(vec3 sigma_ca) {
     vec3 _e23 = fur_pow2_neg(sqrt((s_1 * FUR_ROOT_RATE)));
     vec3 _e30 = fur_pow2_neg(((s_1 / vec3(scale)) * FUR_LOG2_E));
     vec3 e = ((FUR_ROOT_SHARE * _e23) + (0.6 * _e30));
-    vec3 x_15 = min((vec3(1.0) - e), vec3(1.0));
-    vec3 u_8 = clamp((x_15 * last_2), vec3(0.0), vec3(last_2));
-    uvec3 k_17 = min(uvec3(u_8), uvec3((_e2 - 3u)));
-    vec3 t_11 = (u_8 - vec3(k_17));
-    vec3 w0_ = ((0.5 * (t_11 - vec3(1.0))) * (t_11 - vec3(2.0)));
-    vec3 w1_ = (t_11 * (vec3(2.0) - t_11));
-    vec3 w2_ = ((0.5 * t_11) * (t_11 - vec3(1.0)));
+    vec3 x_16 = min((vec3(1.0) - e), vec3(1.0));
+    vec3 u_8 = clamp((x_16 * last_2), vec3(0.0), vec3(last_2));
+    uvec3 k_18 = min(uvec3(u_8), uvec3((_e2 - 3u)));
+    vec3 t_12 = (u_8 - vec3(k_18));
+    vec3 w0_ = ((0.5 * (t_12 - vec3(1.0))) * (t_12 - vec3(2.0)));
+    vec3 w1_ = (t_12 * (vec3(2.0) - t_12));
+    vec3 w2_ = ((0.5 * t_12) * (t_12 - vec3(1.0)));
     uint _e71 = fur_word(6u);
     uint _e73 = fur_word(5u);
-    return FurColour((k_17 * (_e71 * _e73)), w0_, w1_, w2_);
+    return FurColour((k_18 * (_e71 * _e73)), w0_, w1_, w2_);
 }
 
 float fur_cos_within_half_pi(float x_2) {
@@ -387,9 +389,9 @@ FurDensity fur_density(uint d) {
     uint _e71 = at;
     at = (_e71 + ((16u * _e4) * _e30));
     if ((d < 9u)) {
-        uint x_16 = (d - 7u);
+        uint x_17 = (d - 7u);
         uint _e80 = at;
-        return FurDensity((_e80 + (((4u * x_16) * _e10) * _e32)), _e32, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_16);
+        return FurDensity((_e80 + (((4u * x_17) * _e10) * _e32)), _e32, _e8, _e10, (FUR_PI / float((_e8 - 1u))), 8u, 2u, x_17);
     }
     uint _e94 = at;
     at = (_e94 + ((8u * _e10) * _e32));
@@ -766,9 +768,9 @@ float fur_atan2_(float y_1, float x_6) {
     float ax_4 = abs(x_6);
     float ay = abs(y_1);
     float a_8 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_12 = (a_8 * a_8);
-    float _e10 = fur_atan_poly(t_12);
-    r = (a_8 + (a_8 * (t_12 * _e10)));
+    float t_13 = (a_8 * a_8);
+    float _e10 = fur_atan_poly(t_13);
+    r = (a_8 + (a_8 * (t_13 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -831,8 +833,8 @@ FurDirAngles fur_angles_from_dirs(vec3 wi, vec3 wr, vec3 u) {
     float _e51 = fur_asin(clamp((a_9 * (1.0 / ni)), -1.0, 1.0));
     float _e58 = fur_asin(clamp((b_3 * (1.0 / nr)), -1.0, 1.0));
     float y_6 = dot(un, cross(wi, wr));
-    float x_17 = (dot(wi, wr) - (a_9 * b_3));
-    float _e64 = fur_atan2_(y_6, x_17);
+    float x_18 = (dot(wi, wr) - (a_9 * b_3));
+    float _e64 = fur_atan2_(y_6, x_18);
     return FurDirAngles(_e51, _e58, abs(_e64), true);
 }
 
@@ -1192,14 +1194,14 @@ float fur_rows_invert(FurRows r_8, float t_5) {
 float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_3) {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
     float _e7 = fur_unit(u_3);
-    float t_13 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    float _e14 = fur_rows_invert(r_9, t_13);
+    float t_14 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    float _e14 = fur_rows_invert(r_9, t_14);
     return _e14;
 }
 
 float fur_pole_keep(float cos_theta_i) {
-    float c_2 = max(cos_theta_i, 1e-6);
-    return min(((c_2 * c_2) * 10000.0), 1.0);
+    float c_3 = max(cos_theta_i, 1e-6);
+    return min(((c_3 * c_3) * 10000.0), 1.0);
 }
 
 float fur_sliver_keep(float s_in) {
@@ -1225,7 +1227,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_14[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float t_15[3] = float[3](0.11270166, 0.5, 0.8872983);
     float w_5[3] = float[3](0.2777778, 0.44444445, 0.2777778);
     bool loop_init_11 = true;
     while(true) {
@@ -1241,7 +1243,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_14[_e33] * len_5);
+            float d_8 = (t_15[_e33] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -1430,18 +1432,18 @@ float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_4) 
         return _e19.z;
     }
     float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
-    float t_15 = (t0_1 - g_2.s.y);
-    if (!((t_15 <= mid))) {
+    float t_16 = (t0_1 - g_2.s.y);
+    if (!((t_16 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_15, mid)));
+        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_16, mid)));
         return _e50;
     }
-    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_15 - mid));
+    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_16 - mid));
     return _e57.z;
 }
 
@@ -1789,9 +1791,9 @@ FurSample fur_sample_far(float theta_r_7, vec3 u_5, vec3 sigma_ca_5) {
     }
     FurFamilies _e189 = fur_assemble(_e176);
     float _e190 = theta_i_4;
-    float k_18 = (max(cos(_e190), 0.0) / _e179);
+    float k_19 = (max(cos(_e190), 0.0) / _e179);
     float _e195 = theta_i_4;
-    out_3 = FurSample(_e195, _e174, _e179, max((_e189.total * k_18), vec3(0.0)), family, true);
+    out_3 = FurSample(_e195, _e174, _e179, max((_e189.total * k_19), vec3(0.0)), family, true);
     FurSample _e203 = out_3;
     return _e203;
 }
@@ -1850,9 +1852,9 @@ FurLoc fur_dual_theta(float theta) {
     float _e14 = t_8;
     t_8 = min(_e14, 63.0);
     float _e17 = t_8;
-    uint k_19 = min(uint(_e17), 62u);
+    uint k_20 = min(uint(_e17), 62u);
     float _e21 = t_8;
-    return FurLoc(k_19, (_e21 - float(k_19)));
+    return FurLoc(k_20, (_e21 - float(k_20)));
 }
 
 vec3 fur_rsqrt_newton(vec3 v_1) {
@@ -1875,9 +1877,9 @@ vec3 fur_rsqrt_newton(vec3 v_1) {
 
 vec3 fur_exp_neg(vec3 x_in) {
     vec3 p_2 = vec3(0.00019875693);
-    vec3 x_18 = min(max(x_in, vec3(0.0)), vec3(87.0));
-    vec3 k_20 = roundEven((x_18 * FUR_LOG2_E));
-    vec3 r_16 = (((k_20 * FUR_LN2_HI) - x_18) + (k_20 * FUR_LN2_LO));
+    vec3 x_19 = min(max(x_in, vec3(0.0)), vec3(87.0));
+    vec3 k_21 = roundEven((x_19 * FUR_LOG2_E));
+    vec3 r_16 = (((k_21 * FUR_LN2_HI) - x_19) + (k_21 * FUR_LN2_LO));
     vec3 z_1 = (r_16 * r_16);
     vec3 _e20 = p_2;
     p_2 = ((_e20 * r_16) + vec3(0.0013981999));
@@ -1891,7 +1893,7 @@ vec3 fur_exp_neg(vec3 x_in) {
     p_2 = ((_e40 * r_16) + vec3(0.5));
     vec3 _e45 = p_2;
     vec3 e_1 = (((_e45 * z_1) + r_16) + vec3(1.0));
-    return mix(ldexp(e_1, -(ivec3(k_20))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
+    return mix(ldexp(e_1, -(ivec3(k_21))), vec3(0.0), greaterThan(x_in, vec3(87.0)));
 }
 
 vec3 fur_erf(vec3 x_11) {
@@ -1984,31 +1986,87 @@ float fur_dual_below(float x_14) {
     return (_e14 ? min(x_14, FUR_DUAL_MAX_FIBERS) : deep);
 }
 
-void fur_store(uint q, FurFamilies f_5) {
+float fur_coat_sigma_at(float x_15) {
+    float x2_1 = (x_15 * x_15);
+    return clamp((x2_1 / max((1.0 - x2_1), 1e-12)), 0.0, FUR_SIGMA_CA_MAX);
+}
+
+float fur_coat_sigma_for(vec4 table[6], float c_2) {
+    vec4 nodes_2[6] = vec4[6](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint k_14 = 0u;
-    uint base_1 = (16u * q);
-    vec3 parts[5] = vec3[5](f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total);
+    float t_11 = 0.0;
+    nodes_2 = table;
+    float _e5 = nodes_2[0].x;
+    if ((c_2 >= _e5)) {
+        return 0.0;
+    }
     bool loop_init_19 = true;
     while(true) {
         if (!loop_init_19) {
-            uint _e46 = k_14;
-            k_14 = (_e46 + 1u);
+            uint _e51 = k_14;
+            k_14 = (_e51 + 1u);
         }
         loop_init_19 = false;
-        uint _e12 = k_14;
+        uint _e10 = k_14;
+        if ((_e10 < 23u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = k_14;
+            uint _e17 = k_14;
+            float hi_4 = nodes_2[(_e13 / 4u)][(_e17 % 4u)];
+            uint _e22 = k_14;
+            uint _e28 = k_14;
+            float lo_5 = nodes_2[((_e22 + 1u) / 4u)][((_e28 + 1u) % 4u)];
+            if ((c_2 >= lo_5)) {
+                t_11 = 0.0;
+                if ((hi_4 > lo_5)) {
+                    t_11 = ((hi_4 - c_2) / (hi_4 - lo_5));
+                }
+                uint _e42 = k_14;
+                float _e44 = t_11;
+                float x_20 = (((float(_e42) + _e44) / 23.0) * FUR_COAT_AXIS_END);
+                float _e50 = fur_coat_sigma_at(x_20);
+                return _e50;
+            }
+        }
+    }
+    return FUR_SIGMA_CA_MAX;
+}
+
+vec3 fur_absorption_from_colour(vec4 table_1[6], vec3 colour) {
+    float _e3 = fur_coat_sigma_for(table_1, colour.x);
+    float _e5 = fur_coat_sigma_for(table_1, colour.y);
+    float _e7 = fur_coat_sigma_for(table_1, colour.z);
+    return vec3(_e3, _e5, _e7);
+}
+
+void fur_store(uint q, FurFamilies f_5) {
+    uint k_15 = 0u;
+    uint base_1 = (16u * q);
+    vec3 parts[5] = vec3[5](f_5.r, f_5.tt, f_5.trt, f_5.scattered, f_5.total);
+    bool loop_init_20 = true;
+    while(true) {
+        if (!loop_init_20) {
+            uint _e46 = k_15;
+            k_15 = (_e46 + 1u);
+        }
+        loop_init_20 = false;
+        uint _e12 = k_15;
         if ((_e12 < 5u)) {
         } else {
             break;
         }
         {
-            uint _e17 = k_14;
-            uint _e21 = k_14;
+            uint _e17 = k_15;
+            uint _e21 = k_15;
             _group_0_binding_2_cs[(base_1 + (3u * _e17))] = parts[_e21].x;
-            uint _e26 = k_14;
-            uint _e32 = k_14;
+            uint _e26 = k_15;
+            uint _e32 = k_15;
             _group_0_binding_2_cs[((base_1 + (3u * _e26)) + 1u)] = parts[_e32].y;
-            uint _e37 = k_14;
-            uint _e43 = k_14;
+            uint _e37 = k_15;
+            uint _e43 = k_15;
             _group_0_binding_2_cs[((base_1 + (3u * _e37)) + 2u)] = parts[_e43].z;
         }
     }
@@ -2017,25 +2075,25 @@ void fur_store(uint q, FurFamilies f_5) {
 }
 
 void fur_store_rgb(uint q_1, vec3 v_2) {
-    uint k_15 = 3u;
+    uint k_16 = 3u;
     uint base_2 = (16u * q_1);
     _group_0_binding_2_cs[base_2] = v_2.x;
     _group_0_binding_2_cs[(base_2 + 1u)] = v_2.y;
     _group_0_binding_2_cs[(base_2 + 2u)] = v_2.z;
-    bool loop_init_20 = true;
+    bool loop_init_21 = true;
     while(true) {
-        if (!loop_init_20) {
-            uint _e27 = k_15;
-            k_15 = (_e27 + 1u);
+        if (!loop_init_21) {
+            uint _e27 = k_16;
+            k_16 = (_e27 + 1u);
         }
-        loop_init_20 = false;
-        uint _e19 = k_15;
+        loop_init_21 = false;
+        uint _e19 = k_16;
         if ((_e19 < 16u)) {
         } else {
             break;
         }
         {
-            uint _e23 = k_15;
+            uint _e23 = k_16;
             _group_0_binding_2_cs[(base_2 + _e23)] = 0.0;
         }
     }

@@ -3,6 +3,7 @@
 //! build of the fixtures, and the harness runs the tests of different files side by side.
 
 mod agreement;
+mod colour;
 mod common;
 mod dual;
 mod translations;

@@ -3,6 +3,7 @@
 //! for a requested colour (`Absorption::from_base_colour`), and the thick coat slab rendered by
 //! the path tracer (`render::coat`, explicit fibers) at the σ_ca found: its mean colour within
 //! 5 % relative (or 0.01 absolute, whichever is larger) per channel of the colour asked for.
+//! And the species colour presets (`presets/colour/*.toml`) load and stay their species.
 //!
 //! The LUT is baked with the shipped profile budget into the profile cache `bake_budget` fills
 //! (the same folder), so in a whole test run its profiles and residual tables are generated
@@ -197,4 +198,58 @@ fn base_colour_table() {
         }
     }
     println!("{misses} of 24 outside 5 % / 0.01");
+}
+
+/// The species in a typical coat colour (`presets/colour/*.toml`, docs/model.md §14): every
+/// file loads with the preset-file parser `bake --presets` uses, holds one preset named as
+/// its file, given as a base colour (chosen, and saying so in its source), and is otherwise
+/// the built-in preset of that name bit for bit, so the files cannot drift from the presets
+/// nor rot.
+#[test]
+fn every_colour_preset_file_loads_and_is_its_species_in_a_base_colour() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../presets/colour");
+    let builtin = bake::presets::builtin().unwrap();
+    let mut names = Vec::new();
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().and_then(|e| e.to_str()) != Some("toml") {
+            continue;
+        }
+        let list = bake::presets::load_file(&path).unwrap_or_else(|e| panic!("{e}"));
+        let stem = path.file_stem().unwrap().to_str().unwrap().to_string();
+        assert_eq!(list.len(), 1, "{}", path.display());
+        let p = &list[0];
+        assert_eq!(p.name, stem, "{}", path.display());
+        assert!(p.source.contains("chosen, not measured"), "{}", p.source);
+        let bcsdf_core::Pigment::BaseColour(colour) = p.input.pigment else {
+            panic!(
+                "{}: not a base colour: {:?}",
+                path.display(),
+                p.input.pigment
+            );
+        };
+        assert!(colour.0.iter().all(|c| (0.0..=1.0).contains(c)));
+        let species = bake::presets::find(&builtin, &stem)
+            .unwrap_or_else(|| panic!("{stem}: no built-in preset of that name"));
+        let mut same = p.input;
+        same.pigment = species.input.pigment;
+        assert_eq!(same, species.input, "{stem}: not the built-in parameters");
+        names.push(stem);
+    }
+    names.sort();
+    assert_eq!(
+        names,
+        [
+            "bobcat",
+            "cat",
+            "deer",
+            "dog",
+            "human-fur",
+            "mouse",
+            "rabbit",
+            "raccoon",
+            "red-fox",
+            "springbok"
+        ]
+    );
 }

@@ -7,4 +7,5 @@ mod compare;
 mod every_path;
 mod render_cli;
 mod sampling_cli;
+mod strand;
 mod version;

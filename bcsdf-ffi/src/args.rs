@@ -36,6 +36,11 @@ impl Region {
         }
     }
 
+    /// `len` bytes at address `start` (a stored address: no pointer is made from it).
+    pub(crate) fn at(start: usize, len: usize) -> Region {
+        Region { start, len }
+    }
+
     /// Whether the two regions share a byte (empty regions share none).
     fn overlaps(self, other: Region) -> bool {
         self.len != 0

@@ -143,7 +143,7 @@ pub(crate) unsafe fn opened<'a>(lut: *const fur_lut) -> Result<Open<'a>, fur_sta
     let l = unsafe { (*o).lut.assume_init_ref() };
     Ok(Open {
         lut: l,
-        regions: [Region::of(lut, 1), Region::of(bytes as *const u8, len)],
+        regions: [Region::of(lut, 1), Region::at(bytes, len)],
     })
 }
 

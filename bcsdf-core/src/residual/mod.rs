@@ -36,6 +36,8 @@
 //! cross-section simulation ([`sim`]), below `model`; the generation of a table, which calls a
 //! model's lobes for E_model, is `crate::residual_gen`, above it.
 
+mod events;
+mod flatland;
 pub mod sim;
 mod table;
 

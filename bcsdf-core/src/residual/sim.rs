@@ -1,7 +1,3 @@
-// One file past 600 lines on purpose: it is one concern, the photon walk and the per-cell
-// bookkeeping that shares its random stream (common random numbers across colours); split,
-// the stream's order would be spread over two files.
-
 //! The model's own cross-section simulation at one (θ_r, h) cell (docs/model.md §12,
 //! "Residual"): the flatland problem of §3 — outer circle of radius 1 with the layered cuticle
 //! Fresnel at η'_c, medulla circle κ at η'_m, cortex absorption σ_ca/cos θ_tc, medulla
@@ -39,6 +35,8 @@ use crate::rng::Pcg32;
 use crate::spectrum::Rgb;
 use crate::unscattered::{cortex_leg, transmittance, Extinction};
 
+use super::flatland::{dot, entry_distance, exit_distance, normal, reflect, refract};
+
 /// A beam that would carry less than this without cortex absorption is dropped; its weight
 /// is tallied as [`CellTally::dropped`].
 pub const BEAM_CUTOFF: f32 = 1e-7;
@@ -51,87 +49,9 @@ pub const BEAM_STACK: usize = 1024;
 /// dropped); never reached for the presets.
 pub const MAX_PHOTON_EVENTS: u32 = 10_000;
 
-/// The event letters of docs/model.md §3: uppercase at the cuticle, lowercase at the medulla.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u32)]
-pub enum Event {
-    /// Transmission through the cuticle (in or out).
-    T = 0,
-    /// Reflection at the cuticle (outside or inside).
-    R = 1,
-    /// Transmission through the medulla boundary (either way).
-    Tm = 2,
-    /// Reflection at the medulla boundary (either side, total reflection included).
-    Rm = 3,
-}
-
-/// An event string, two bits per event; strings longer than 15 events are only "long".
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub struct Events {
-    code: u32,
-    len: u8,
-}
-
-impl Events {
-    /// The empty string.
-    pub const EMPTY: Events = Events { code: 0, len: 0 };
-
-    /// The string of `s`, written with T, R, t, r (docs/model.md §3).
-    #[must_use]
-    pub const fn parse(s: &[u8]) -> Events {
-        let mut e = Events::EMPTY;
-        let mut k = 0;
-        while k < s.len() {
-            let ev = match s[k] {
-                b'T' => Event::T,
-                b'R' => Event::R,
-                b't' => Event::Tm,
-                _ => Event::Rm,
-            };
-            e = e.push(ev);
-            k += 1;
-        }
-        e
-    }
-
-    /// This string followed by `event`.
-    #[must_use]
-    pub const fn push(self, event: Event) -> Events {
-        if self.len >= 15 {
-            return Events {
-                code: self.code,
-                len: 16,
-            };
-        }
-        Events {
-            code: self.code | ((event as u32) << (2 * self.len as u32)),
-            len: self.len + 1,
-        }
-    }
-}
-
-/// The eight unscattered paths of docs/model.md §3.
-pub const MODELLED_UNSCATTERED: [Events; 8] = [
-    Events::parse(b"R"),
-    Events::parse(b"TT"),
-    Events::parse(b"TRT"),
-    Events::parse(b"TrT"),
-    Events::parse(b"TttT"),
-    Events::parse(b"TtrtT"),
-    Events::parse(b"TrRrT"),
-    Events::parse(b"TttRttT"),
-];
-
-/// The strings before the scattering chord of the three scattered lobes (docs/model.md §6).
-pub const MODELLED_BEFORE_SCATTERING: [Events; 3] = [
-    Events::parse(b"Tt"),
-    Events::parse(b"Ttr"),
-    Events::parse(b"TttRt"),
-];
-
-/// The only string after the last… first scattering the model's scattered lobes carry: leave
-/// the medulla, leave the cuticle.
-pub const MODELLED_AFTER_SCATTERING: Events = Events::parse(b"tT");
+pub use super::events::{
+    Event, Events, MODELLED_AFTER_SCATTERING, MODELLED_BEFORE_SCATTERING, MODELLED_UNSCATTERED,
+};
 
 /// The cross-section at one θ_r and the coefficients of its regions, per 2D length.
 #[derive(Clone, Copy, Debug)]
@@ -507,62 +427,6 @@ fn bin(hist: &mut [[f64; 3]], phi: f32, w: Rgb) {
     }
 }
 
-/// A 2D vector.
-type V2 = [f32; 2];
-
-fn dot(p: V2, q: V2) -> f32 {
-    p[0] * q[0] + p[1] * q[1]
-}
-
-/// Distance along unit `d` from `p` to the circle of radius `r`, leaving it from inside
-/// (the far intersection).
-fn exit_distance(p: V2, d: V2, r: f32) -> f32 {
-    let pd = dot(p, d);
-    let disc = (pd * pd + r * r - dot(p, p)).max(0.0);
-    (-pd + libm::sqrtf(disc)).max(0.0)
-}
-
-/// Distance along unit `d` from `p` (outside the circle of radius `r`) to where it enters
-/// the circle, if it does.
-fn entry_distance(p: V2, d: V2, r: f32) -> Option<f32> {
-    let pd = dot(p, d);
-    if pd >= 0.0 {
-        return None;
-    }
-    let disc = pd * pd + r * r - dot(p, p);
-    if disc <= 0.0 {
-        return None;
-    }
-    let t = -pd - libm::sqrtf(disc);
-    (t >= 0.0).then_some(t)
-}
-
-/// Reflects `d` about the unit normal `n`.
-fn reflect(d: V2, n: V2) -> V2 {
-    let k = 2.0 * dot(d, n);
-    [d[0] - k * n[0], d[1] - k * n[1]]
-}
-
-/// Refracts unit `d` through a boundary with unit normal `n` (either orientation), relative
-/// index `eta` = n_from/n_to; `None` under total internal reflection.
-fn refract(d: V2, n: V2, eta: f32) -> Option<V2> {
-    let mut n = n;
-    let mut cos_i = -dot(d, n);
-    if cos_i < 0.0 {
-        n = [-n[0], -n[1]];
-        cos_i = -cos_i;
-    }
-    let sin2_t = eta * eta * (1.0 - cos_i * cos_i).max(0.0);
-    if sin2_t >= 1.0 {
-        return None;
-    }
-    let cos_t = libm::sqrtf(1.0 - sin2_t);
-    let k = eta * cos_i - cos_t;
-    let out = [eta * d[0] + k * n[0], eta * d[1] + k * n[1]];
-    let len = libm::sqrtf(dot(out, out));
-    Some([out[0] / len, out[1] / len])
-}
-
 /// Region of a photon.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Region {
@@ -721,10 +585,4 @@ impl<const P: usize> Scatter<'_, P> {
             }
         }
     }
-}
-
-/// The outward unit normal at `p` (on a circle about the origin).
-fn normal(p: V2) -> V2 {
-    let r = libm::sqrtf(dot(p, p)).max(1e-30);
-    [p[0] / r, p[1] / r]
 }

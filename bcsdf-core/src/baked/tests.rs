@@ -227,23 +227,23 @@ fn colours_are_located_on_the_absorption_axis() {
         let s = lut::absorption_node(k, RES.n_abs, scale);
         let at = lut.locate_colour(Rgb::splat(s));
         let first = at.plane[0] / plane;
-        for (j, &w) in at.w[0].iter().enumerate() {
+        for (j, &w) in at.weights(0).iter().enumerate() {
             let want = if first + j == k { 1.0 } else { 0.0 };
             assert!(
                 (w - want).abs() < 1e-5,
                 "node {k} (σ {s}): first plane {first}, weights {:?}",
-                at.w[0]
+                at.weights(0)
             );
         }
-        assert!((at.w[0].iter().sum::<f32>() - 1.0).abs() < 1e-6);
+        assert!((at.weights(0).iter().sum::<f32>() - 1.0).abs() < 1e-6);
     }
     assert_eq!(lut::absorption_node(0, RES.n_abs, scale), 0.0);
     assert_eq!(lut::absorption_node(3, RES.n_abs, scale), lut::SIGMA_CA_MAX);
     // Out of the domain: NaN and negatives at the lossless node, beyond 1000 at the last.
     let at = lut.locate_colour(Rgb([f32::NAN, -3.0, f32::INFINITY]));
-    assert_eq!((at.plane[0], at.w[0]), (0, [1.0, 0.0, 0.0]));
-    assert_eq!((at.plane[1], at.w[1]), (0, [1.0, 0.0, 0.0]));
-    assert_eq!((at.plane[2], at.w[2]), (plane, [0.0, 0.0, 1.0]));
+    assert_eq!((at.plane[0], at.weights(0)), (0, [1.0, 0.0, 0.0]));
+    assert_eq!((at.plane[1], at.weights(1)), (0, [1.0, 0.0, 0.0]));
+    assert_eq!((at.plane[2], at.weights(2)), (plane, [0.0, 0.0, 1.0]));
     // The coordinate is monotone and maps [0, 1000] onto [0, 1].
     let mut prev = -1.0;
     for k in 0..=2000 {

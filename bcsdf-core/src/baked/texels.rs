@@ -43,9 +43,11 @@ pub(crate) trait NKernel: Copy {
 pub struct ColourAt {
     /// Texel offset k·(n_phi·n_theta_r) of plane k, the first of each channel's three nodes.
     pub(crate) plane: [usize; 3],
-    /// Weights of planes k, k + 1, k + 2 per channel (quadratic Lagrange weights; they sum
-    /// to 1).
-    pub(crate) w: [[f32; 3]; 3],
+    /// Weights of planes k, k + 1, k + 2, plane-major: `w[j][c]` is plane k + j's weight for
+    /// channel c (quadratic Lagrange weights; a channel's three sum to 1); lane 3 is unused.
+    /// Plane-major, so that the lane loop that computes them stores them without a
+    /// transposition.
+    pub(crate) w: [[f32; 4]; 3],
     /// Texels per plane (the distance from plane k to plane k + 1).
     pub(crate) stride: usize,
 }
@@ -93,7 +95,11 @@ impl ColourAt {
                 w[j][c] = wc[j];
             }
         }
-        ColourAt::from_nodes([k[0], k[1], k[2]], |c, j| w[j][c], plane)
+        ColourAt {
+            plane: core::array::from_fn(|c| k[c] as usize * plane),
+            w,
+            stride: plane,
+        }
     }
 
     /// The colour whose channel c reads planes `k[c]`, `k[c]` + 1, `k[c]` + 2 with weights
@@ -106,9 +112,17 @@ impl ColourAt {
     ) -> ColourAt {
         ColourAt {
             plane: core::array::from_fn(|c| k[c] as usize * plane),
-            w: core::array::from_fn(|c| [w(c, 0), w(c, 1), w(c, 2)]),
+            w: core::array::from_fn(|j| [w(0, j), w(1, j), w(2, j), 0.0]),
             stride: plane,
         }
+    }
+}
+
+impl ColourAt {
+    /// Channel `c`'s weights of its planes k, k + 1, k + 2.
+    #[inline(always)]
+    pub(crate) fn weights(&self, c: usize) -> [f32; 3] {
+        [self.w[0][c], self.w[1][c], self.w[2][c]]
     }
 }
 
@@ -242,7 +256,7 @@ pub(crate) fn n_at_colour(
             t0 + 2 * at.stride + width,
         ]
         .map(|t| F4::halves8(bytes::<16>(data, 8 * t)));
-        let (l, r) = plane_weights(w, at.w[c]);
+        let (l, r) = plane_weights(w, at.weights(c));
         let side = |s: usize, k: [f32; 6]| {
             let mut acc = rows[0][s].mul(F4::splat(k[0]));
             for i in 1..6 {
@@ -353,7 +367,7 @@ impl NKernel for Avx2F16c {
                 t0 + 2 * at.stride + width,
             ]
             .map(|t| bytes::<16>(data, 8 * t));
-            let (l, r) = plane_weights(w, at.w[c]);
+            let (l, r) = plane_weights(w, at.weights(c));
             let mut v = [0.0f32; 4];
             // SAFETY: `self` exists, so `detect` found AVX, AVX2 and F16C on this CPU and OS
             // (the intrinsics' target features); each load reads one 16-byte texel pair

@@ -503,7 +503,7 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         wr: Vec3,
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
-        self.dispatch(EvalDirs(wi, wr, tangent, &self.colour))
+        self.dispatch(EvalDirs(&wi, &wr, &tangent, &self.colour))
     }
 
     /// The baked evaluator's one direction-to-angle conversion (docs/model.md §1), behind
@@ -553,11 +553,13 @@ fn families_at<M: Math, K: NKernel>(
     BakedBcsdf::<M>::assemble(&lut.gather_with(kernel, &place, colour))
 }
 
-/// [`BakedBcsdf::try_eval_far_dirs`]'s work: ω_i, ω_r, tangent, colour.
+/// [`BakedBcsdf::try_eval_far_dirs`]'s work: ω_i, ω_r, tangent, colour. By reference, as
+/// [`EvalAt`]: by value, the op's nine floats reached the AVX2 side copied in wider moves,
+/// which stalled store forwarding (docs/benchmarks.md "Baked evaluation").
 pub(crate) struct EvalDirs<'s>(
-    pub(crate) Vec3,
-    pub(crate) Vec3,
-    pub(crate) Vec3,
+    pub(crate) &'s Vec3,
+    pub(crate) &'s Vec3,
+    pub(crate) &'s Vec3,
     pub(crate) &'s ColourAt,
 );
 
@@ -566,7 +568,7 @@ impl<M: Math> KernelOp<M> for EvalDirs<'_> {
     #[inline(always)]
     fn run<K: NKernel>(self, lut: &BakedBcsdf<'_, M>, kernel: K) -> Self::Output {
         let EvalDirs(wi, wr, tangent, colour) = self;
-        let [ti, tr, phi] = polynomial_angles::<M>(wi, wr, tangent)?;
+        let [ti, tr, phi] = polynomial_angles::<M>(*wi, *wr, *tangent)?;
         Ok(families_at(lut, kernel, ti, tr, phi.abs(), colour))
     }
 }

@@ -112,8 +112,9 @@ The image is the same bits for any --threads.
 
 Examples:
   viewer render --scene ball --preset human-hair --spp 64 --out ball-hair
-  viewer render --scene ball --preset raccoon --evaluator baked --spp 64 --max-depth 32 \\
+  viewer render --scene ball --preset raccoon --spp 64 --max-depth 32 \\
       --width 320 --height 240 --out ball-row-c
+  viewer render --scene ball --preset raccoon --evaluator analytic --spp 16 --out ball-analytic
   viewer render --scene ball --lut luts/bobcat.furlut --spp 16 --out ball-row-a
   viewer render --scene furnace --preset human-hair --set sigma_ca=0 --spp 32 --out furnace
   viewer render --scene patch --preset air-medulla --fibers 2000 --spp 8 --threads 2 --out patch
@@ -174,8 +175,9 @@ pub struct RenderArgs {
     #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "presets"])]
     pub lut: Option<PathBuf>,
 
-    /// The evaluator: analytic (default with --preset) or baked (default with --lut; with
-    /// --preset the LUT is baked in memory first).
+    /// The evaluator: baked (the default: the LUT of --lut, or with --preset the preset's
+    /// LUT baked in memory first, at the default resolution) or analytic (--preset only).
+    /// The summary line says which one rendered.
     #[arg(long, value_enum)]
     pub evaluator: Option<Evaluator>,
 
@@ -192,8 +194,8 @@ pub struct RenderArgs {
 
     /// Colour of the strands (at the root, with --tip-colour): a linear base colour R,G,B
     /// (or one grey), each in [0, 1], turned into sigma_ca per query through the coat colour
-    /// table measured from the LUT (docs/model.md §14). Needs a baked LUT (--lut, or
-    /// --evaluator baked) and --method path or single.
+    /// table measured from the LUT (docs/model.md §14). Needs the baked evaluator (the
+    /// default) and --method path or single.
     #[arg(long, value_name = "R,G,B")]
     pub colour: Option<String>,
 

@@ -77,8 +77,9 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
             ))
         }
         (Some(e), _) => e,
-        (None, Some(_)) => Evaluator::Baked,
-        (None, None) => Evaluator::Analytic,
+        // With --preset too: the preset baked in memory (about 10x the analytic model's rays
+        // per second, docs/benchmarks.md "Path tracing"), unless --evaluator analytic.
+        (None, _) => Evaluator::Baked,
     };
     let strands = crate::strand_cmd::request(args, evaluator == Evaluator::Baked)?;
     fsutil::prepare_dir(&args.out).map_err(|e| Error::Failure(e.to_string()))?;
@@ -181,12 +182,13 @@ pub fn run(args: &RenderArgs) -> Result<(), Error> {
     }
     let _ = writeln!(
         std::io::stdout().lock(),
-        "{} {} {}x{} {} spp: {:.2} s, {:.3} M rays/s, mean radiance [{:.4}, {:.4}, {:.4}] -> {}",
+        "{} {} {}x{} {} spp, {}: {:.2} s, {:.3} M rays/s, mean radiance [{:.4}, {:.4}, {:.4}] -> {}",
         kind.name(),
         method_name(args.method),
         args.width,
         args.height,
         args.spp,
+        evaluator_said(evaluator, args.lut.is_some()),
         r.seconds,
         r.rays as f64 / r.seconds.max(1e-9) / 1e6,
         whole.mean[0],
@@ -339,6 +341,16 @@ fn evaluator_name(e: Evaluator) -> &'static str {
     match e {
         Evaluator::Analytic => "analytic",
         Evaluator::Baked => "baked",
+    }
+}
+
+/// The evaluator as the summary line names it: the analytic model, the LUT read from
+/// --lut, or the preset's tables baked in memory.
+fn evaluator_said(e: Evaluator, from_file: bool) -> &'static str {
+    match (e, from_file) {
+        (Evaluator::Analytic, _) => "analytic evaluator",
+        (Evaluator::Baked, true) => "baked evaluator (--lut)",
+        (Evaluator::Baked, false) => "baked evaluator (the preset baked in memory)",
     }
 }
 

@@ -77,7 +77,7 @@ pub fn request(args: &RenderArgs, baked: bool) -> Result<Option<StrandRequest>, 
     if !baked {
         return Err(Error::input(
             "--colour, --tip-colour, --colour-jitter, --colour-stripes and --colour-texture \
-             need a baked LUT (--lut FILE, or --evaluator baked to bake the preset in memory): \
+             need the baked evaluator (the default; not --evaluator analytic): \
              a base colour becomes sigma_ca through the coat colour table measured from the \
              LUT. The analytic evaluator renders one colour, given as --set sigma_ca=R,G,B or \
              the melanin keys",

@@ -95,6 +95,7 @@ impl<'l, 'a, M: Math> BakedAt<'l, 'a, M> {
         wr: Vec3,
         tangent: Vec3,
     ) -> Result<Families, AngleError> {
-        self.lut.dispatch(EvalDirs(&wi, &wr, &tangent, &self.colour))
+        self.lut
+            .dispatch(EvalDirs(&wi, &wr, &tangent, &self.colour))
     }
 }

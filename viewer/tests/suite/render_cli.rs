@@ -21,7 +21,11 @@ const SMALL_PATCH: [&str; 10] = [
     "--scene", "patch", "--fibers", "300", "--spp", "2", "--width", "16", "--height", "12",
 ];
 
+/// Renders into `out` with the profile cache in `out`'s parent folder (a test's temporary
+/// folder): the first render of a test generates the preset's profiles and residuals for the
+/// LUT it bakes in memory, the second reads them.
 fn render_with(out: &Path, threads: &str, extra: &[&str]) -> Output {
+    let cache = out.parent().unwrap().join("cache");
     let mut args = vec!["render", "--preset", "human-hair"];
     args.extend_from_slice(&SMALL_PATCH);
     args.extend_from_slice(&[
@@ -29,7 +33,8 @@ fn render_with(out: &Path, threads: &str, extra: &[&str]) -> Output {
         "6",
         "--threads",
         threads,
-        "--no-cache",
+        "--cache-dir",
+        cache.to_str().unwrap(),
         "--out",
         out.to_str().unwrap(),
     ]);
@@ -117,7 +122,14 @@ fn writes_exr_png_and_json_inside_out_and_nothing_else() {
     let report: serde_json::Value =
         serde_json::from_slice(&std::fs::read(a.join("render.json")).unwrap()).unwrap();
     assert_eq!(report["scene"], "patch");
-    assert_eq!(report["evaluator"], "analytic");
+    // --preset renders with the preset baked in memory unless --evaluator analytic, and
+    // says so.
+    assert_eq!(report["evaluator"], "baked");
+    let said = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        said.contains("baked evaluator (the preset baked in memory)"),
+        "{said}"
+    );
     assert_eq!(report["spp"], 2);
     assert_eq!(report["paths"], 16 * 12 * 2);
     assert!(report["rays_per_second"].as_f64().unwrap() > 0.0);

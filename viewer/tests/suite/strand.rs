@@ -321,12 +321,14 @@ fn bad_strand_patterns_exit_2_with_one_error_line() {
             vec![
                 "--preset",
                 "human-hair",
+                "--evaluator",
+                "analytic",
                 "--colour",
                 "0.3",
                 "--colour-stripes",
                 "0.1",
             ],
-            "baked LUT",
+            "need the baked evaluator",
         ),
     ];
     for (extra, needle) in cases {

@@ -105,13 +105,7 @@ fn ok(args: &[&str], stdin: Option<&str>) -> String {
 #[track_caller]
 fn bad_input(args: &[&str], stdin: Option<&str>, needles: &[&str]) -> Output {
     let o = viewer(args, stdin);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "viewer {args:?}: {err}");
-    assert!(err.starts_with("error: "), "{err:?}");
-    assert_eq!(err.lines().count(), 1, "one line expected: {err:?}");
-    for needle in needles {
-        assert!(err.contains(needle), "{err:?} should contain {needle:?}");
-    }
+    crate::assert_refused(&o, &args, needles);
     o
 }
 

@@ -179,13 +179,7 @@ fn bad_input_exits_2_with_one_error_line() {
         let mut args = base.to_vec();
         args.extend(extra.iter().copied());
         let o = viewer(&args);
-        let stderr = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
-        assert!(
-            stderr.starts_with("error: ") && stderr.contains(needle),
-            "{args:?}: {stderr}"
-        );
+        crate::assert_refused(&o, &args, &[needle]);
     }
     // --lut with the analytic evaluator, and a missing LUT.
     for (args, needle) in [
@@ -221,12 +215,7 @@ fn bad_input_exits_2_with_one_error_line() {
         ),
     ] {
         let o = viewer(&args);
-        let stderr = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
-        assert!(
-            stderr.starts_with("error: ") && stderr.contains(needle),
-            "{args:?}: {stderr}"
-        );
+        crate::assert_refused(&o, &args, &[needle]);
     }
     // Nothing was rendered into the folder.
     assert!(!Path::new(out).join("render.exr").exists());
@@ -289,13 +278,7 @@ fn dual_reads_the_furdual_beside_the_lut_only_if_it_was_computed_from_it() {
     for source in [baked.checksum() ^ 1, 0] {
         std::fs::write(&dual_path, encode(&tables, Attenuation::Coat, source)).unwrap();
         let (o, exr) = render(&format!("refused-{source}"));
-        let stderr = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{stderr}");
-        assert!(
-            stderr.starts_with("error: ") && stderr.contains("hair.furdual"),
-            "{stderr}"
-        );
+        crate::assert_refused(&o, &source, &["hair.furdual"]);
         assert!(!exr.exists());
     }
 }

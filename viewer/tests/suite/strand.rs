@@ -335,13 +335,7 @@ fn bad_strand_patterns_exit_2_with_one_error_line() {
         let mut args = vec!["render", "--scene", "patch", "--spp", "1", "--out", out];
         args.extend(extra);
         let o = viewer(&args);
-        let stderr = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
-        assert!(
-            stderr.starts_with("error: ") && stderr.contains(needle),
-            "{args:?}: {stderr}"
-        );
+        crate::assert_refused(&o, &args, &[needle]);
     }
     assert!(!Path::new(out).join("render.exr").exists());
 }

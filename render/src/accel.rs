@@ -1,6 +1,7 @@
 //! Ray queries against the fiber segments through the `bvh` crate's SAH BVH (docs/model.md §11).
 //!
-//! The crate builds the tree; the queries walk its node array (`Bvh::nodes`) front to back:
+//! The crate builds the tree; the queries walk it front to back, read as compact inner nodes
+//! ([`Inner`]: both children's boxes axis by axis, leaves marked in the child reference):
 //! at an inner node both children's boxes are clipped against the ray's current interval,
 //! the nearer child is visited first and a child whose box starts beyond the closest hit so
 //! far is never opened. A closest hit in a dense coat then opens a few dozen nodes instead of
@@ -51,6 +52,31 @@ impl SegmentQuery {
     }
 }
 
+impl SegmentQuery {
+    /// [`SegmentQuery::entry`] for both children of `node` at once, the same operations per
+    /// child (lane c is child c), so that the two boxes' slabs are one pair of vector
+    /// operations per axis.
+    #[inline]
+    fn entries(&self, node: &Inner) -> [Option<f32>; 2] {
+        let mut lo = [0.0f32; 2];
+        let mut hi = [self.t_max.get(); 2];
+        for k in 0..3 {
+            for c in 0..2 {
+                let t0 = (node.lo[k][c] - self.origin[k]) * self.inv_dir[k];
+                let t1 = (node.hi[k][c] - self.origin[k]) * self.inv_dir[k];
+                let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+                if near > lo[c] {
+                    lo[c] = near;
+                }
+                if far < hi[c] {
+                    hi[c] = far;
+                }
+            }
+        }
+        [0, 1].map(|c| (lo[c] <= hi[c]).then_some(lo[c]))
+    }
+}
+
 impl IntersectsAabb<f32, 3> for SegmentQuery {
     fn intersects_aabb(&self, aabb: &Aabb<f32, 3>) -> bool {
         self.entry(aabb).is_some()
@@ -74,8 +100,77 @@ enum Visit {
 pub struct FiberAccel {
     segments: Vec<FiberSegment>,
     bvh: Bvh<f32, 3>,
+    /// The crate's tree as the walk reads it ([`Inner`]); the root is `root`.
+    inner: Vec<Inner>,
+    root: u32,
     /// Whether every root-to-leaf path fits the walk's fixed stack ([`STACK`]).
     shallow: bool,
+}
+
+/// A child reference of the walk's tree: an index into [`FiberAccel::inner`], or, with this
+/// bit set, a segment index (a leaf: the crate's leaves hold one segment each).
+const LEAF: u32 = 1 << 31;
+
+/// One inner node of the crate's tree in the form the walk reads: its two children's boxes,
+/// axis by axis (`lo[k][c]`, `hi[k][c]` for child c = 0 left, 1 right), and the children's
+/// references ([`LEAF`]). 56 bytes against the crate's 80-byte node, and a child that is a
+/// leaf is known from its reference, without reading its node.
+#[derive(Clone, Copy, Debug)]
+struct Inner {
+    lo: [[f32; 2]; 3],
+    hi: [[f32; 2]; 3],
+    child: [u32; 2],
+}
+
+/// The crate's tree as [`Inner`] nodes, depth first with each left child right after its
+/// parent, and the root's reference; `None` if an index does not fit the references.
+fn flatten(bvh: &Bvh<f32, 3>) -> Option<(Vec<Inner>, u32)> {
+    let nodes = &bvh.nodes;
+    let reference =
+        |index: usize, inner: &mut Vec<Inner>, pending: &mut Vec<(usize, usize)>| match nodes
+            .get(index)?
+        {
+            BvhNode::Leaf { shape_index, .. } => {
+                let i = u32::try_from(*shape_index).ok().filter(|i| i & LEAF == 0)?;
+                Some(i | LEAF)
+            }
+            BvhNode::Node { .. } => {
+                let at = inner.len();
+                inner.push(Inner {
+                    lo: [[0.0; 2]; 3],
+                    hi: [[0.0; 2]; 3],
+                    child: [0; 2],
+                });
+                pending.push((index, at));
+                u32::try_from(at).ok().filter(|i| i & LEAF == 0)
+            }
+        };
+    let mut inner = Vec::with_capacity(nodes.len() / 2);
+    let mut pending = Vec::new();
+    let root = reference(0, &mut inner, &mut pending)?;
+    while let Some((index, at)) = pending.pop() {
+        let BvhNode::Node {
+            child_l_index,
+            child_l_aabb,
+            child_r_index,
+            child_r_aabb,
+            ..
+        } = &nodes[index]
+        else {
+            return None;
+        };
+        // Right first onto `pending`, so that the left child is flattened next, after its
+        // parent.
+        let r = reference(*child_r_index, &mut inner, &mut pending)?;
+        let l = reference(*child_l_index, &mut inner, &mut pending)?;
+        let boxes = [child_l_aabb, child_r_aabb];
+        inner[at] = Inner {
+            lo: core::array::from_fn(|k| [boxes[0].min[k], boxes[1].min[k]]),
+            hi: core::array::from_fn(|k| [boxes[0].max[k], boxes[1].max[k]]),
+            child: [l, r],
+        };
+    }
+    Some((inner, root))
 }
 
 /// Which nearby hits to ignore: those on fiber `fiber` closer than `dist` (a ray leaving a
@@ -102,10 +197,18 @@ impl FiberAccel {
     #[must_use]
     pub fn new(mut segments: Vec<FiberSegment>) -> FiberAccel {
         let bvh = Bvh::build(&mut segments);
-        let shallow = depth(&bvh) < STACK;
+        let flat = if segments.is_empty() {
+            None
+        } else {
+            flatten(&bvh)
+        };
+        let shallow = flat.is_some() && depth(&bvh) < STACK;
+        let (inner, root) = flat.unwrap_or_default();
         FiberAccel {
             segments,
             bvh,
+            inner,
+            root,
             shallow,
         }
     }
@@ -209,41 +312,34 @@ impl FiberAccel {
             }
             return;
         }
-        let nodes = &self.bvh.nodes;
-        // Pending nodes and where the ray enters their box.
-        let mut stack = [(0usize, 0.0f32); STACK];
+        // Pending nodes (references, [`LEAF`]) and where the ray enters their box.
+        let mut stack = [(0u32, 0.0f32); STACK];
+        stack[0] = (self.root, 0.0);
         let mut len = 1;
         while len > 0 {
             len -= 1;
-            let (index, enter) = stack[len];
+            let (reference, enter) = stack[len];
             if enter > query.t_max.get() {
                 continue;
             }
-            match &nodes[index] {
-                BvhNode::Leaf { shape_index, .. } => {
-                    if let Visit::Stop = leaf(&self.segments[*shape_index]) {
-                        return;
-                    }
+            if reference & LEAF != 0 {
+                if let Visit::Stop = leaf(&self.segments[(reference & !LEAF) as usize]) {
+                    return;
                 }
-                BvhNode::Node {
-                    child_l_index,
-                    child_l_aabb,
-                    child_r_index,
-                    child_r_aabb,
-                    ..
-                } => {
-                    let l = query.entry(child_l_aabb).map(|t| (*child_l_index, t));
-                    let r = query.entry(child_r_aabb).map(|t| (*child_r_index, t));
-                    // Pushed far first, so the near child is popped next.
-                    let (first, second) = match (l, r) {
-                        (Some(a), Some(b)) if a.1 > b.1 => (Some(a), Some(b)),
-                        (a, b) => (b, a),
-                    };
-                    for child in [first, second].into_iter().flatten() {
-                        stack[len] = child;
-                        len += 1;
-                    }
-                }
+                continue;
+            }
+            let node = &self.inner[reference as usize];
+            let [l, r] = query.entries(node);
+            let l = l.map(|t| (node.child[0], t));
+            let r = r.map(|t| (node.child[1], t));
+            // Pushed far first, so the near child is popped next.
+            let (first, second) = match (l, r) {
+                (Some(a), Some(b)) if a.1 > b.1 => (Some(a), Some(b)),
+                (a, b) => (b, a),
+            };
+            for child in [first, second].into_iter().flatten() {
+                stack[len] = child;
+                len += 1;
             }
         }
     }

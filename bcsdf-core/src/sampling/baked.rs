@@ -36,11 +36,14 @@ use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
 use crate::lut::cdf::Density;
 use crate::math::{Math, PI};
+use crate::model::POLE_SLIVER;
 use rows::{Range, Rows};
+use slivers::sliver_masses;
 pub use view::BakedView;
 
 mod at;
 mod rows;
+mod slivers;
 mod view;
 
 impl<'a, M: Math> BakedBcsdf<'a, M> {
@@ -98,16 +101,43 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             nu_s - mu_s,
             mu_s,
         ];
+        // The pole slivers at both ends of every range (docs/model.md §10): the three M_g
+        // from one texel pair per node, the two halves of M^s from their blended rows, each
+        // piece's node weights computed once for the rows of its axis.
+        let m_step = self.densities[0].step;
+        let pair = |j: usize| {
+            let v = self.nodes.m_pair(j);
+            ([v[0], v[1], v[2]], [v[3], v[4], v[5]])
+        };
+        let m_low = sliver_masses(&self.sum, m_step, (lo, lo + POLE_SLIVER), lo, pair);
+        let m_high = sliver_masses(&self.sum, m_step, (hi - POLE_SLIVER, hi), hi, pair);
+        let ms = [self.ms_rows(0, theta_r), self.ms_rows(1, theta_r)];
+        let halves = |j: usize| {
+            (
+                [ms[0].value(j), ms[1].value(j)],
+                [ms[0].value(j + 1), ms[1].value(j + 1)],
+            )
+        };
+        let (p0, p1) = (-PI / 2.0, PI / 2.0);
+        let ms_low = sliver_masses(&self.ms_i, ms[0].step, (p0, p0 + POLE_SLIVER), p0, halves);
+        let ms_high = sliver_masses(&self.ms_i, ms[0].step, (p1 - POLE_SLIVER, p1), p1, halves);
         let ranges: [Range; 5] = core::array::from_fn(|c| {
-            // A part whose azimuthal row is empty has weight 0 whatever its θ_i range holds
-            // (and is never drawn): its range, pole slivers included, is not computed.
-            if !(n[c] > 0.0) {
-                Range::default()
-            } else if c < 3 {
-                self.m_rows(c).range(lo, hi, m[c].1, m[c].0)
+            if c < 3 {
+                Range {
+                    lo,
+                    hi,
+                    start: m[c].1,
+                    raw: m[c].0,
+                    slivers: [m_low[c], m_high[c]],
+                }
             } else {
-                let rows = self.ms_rows(c - 3, theta_r);
-                rows.range(-PI / 2.0, PI / 2.0, 0.0, rows.total())
+                Range {
+                    lo: p0,
+                    hi: p1,
+                    start: 0.0,
+                    raw: ms[c - 3].total(),
+                    slivers: [ms_low[c - 3], ms_high[c - 3]],
+                }
             }
         });
         // The mass of the evaluated M_g: the tabulated one times the closure's factor.

@@ -18,7 +18,8 @@
 //! m_g = ∫ M_g·g over the restricted range (in the energy closure M_g is multiplied by the
 //! LUT's 1/Z_g, docs/model.md §12) and s_x = ∫ M^s_x·g dθ_i: exact integrals of the
 //! interpolants, from the LUT's prefix sums outside the pole slivers and in closed form
-//! within them (`rows::Range`, [`super::sliver`]). The two scattered parts are the two separable
+//! within them (`rows::Range`, `slivers`: node weights per piece shared by the rows of an
+//! axis, [`super::sliver`]). The two scattered parts are the two separable
 //! products of the exact blend M^s = (1 − |φ|/π)·M^s_back + (|φ|/π)·M^s_front. The mixture
 //! density per unit solid angle is then
 //!
@@ -26,7 +27,8 @@
 //!
 //! the mean channel of S·cos θ_i over W: for a grey fiber the weight S·cos θ_i/p_ω is W at
 //! every direction, and W is the directional albedo ρ(θ_r). It costs one evaluation's lookups
-//! plus seven prefix reads, and per view the ten slivers' pieces.
+//! plus seven prefix reads, and per view the slivers' pieces (one set of node weights per
+//! piece for the three M_g, one for the two M^s halves).
 
 use super::choose;
 use super::sliver::pole_keep;

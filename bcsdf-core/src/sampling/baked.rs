@@ -123,25 +123,22 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
         let (p0, p1) = (-PI / 2.0, PI / 2.0);
         let ms_low = sliver_masses(&self.ms_i, ms[0].step, (p0, p0 + POLE_SLIVER), p0, halves);
         let ms_high = sliver_masses(&self.ms_i, ms[0].step, (p1 - POLE_SLIVER, p1), p1, halves);
-        let ranges: [Range; 5] = core::array::from_fn(|c| {
-            if c < 3 {
-                Range {
-                    lo,
-                    hi,
-                    start: m[c].1,
-                    raw: m[c].0,
-                    slivers: [m_low[c], m_high[c]],
-                }
-            } else {
-                Range {
-                    lo: p0,
-                    hi: p1,
-                    start: 0.0,
-                    raw: ms[c - 3].total(),
-                    slivers: [ms_low[c - 3], ms_high[c - 3]],
-                }
-            }
-        });
+        // Written out (not `array::from_fn`, whose closure stayed a call per part).
+        let m_range = |g: usize| Range {
+            lo,
+            hi,
+            start: m[g].1,
+            raw: m[g].0,
+            slivers: [m_low[g], m_high[g]],
+        };
+        let ms_range = |x: usize| Range {
+            lo: p0,
+            hi: p1,
+            start: 0.0,
+            raw: ms[x].total(),
+            slivers: [ms_low[x], ms_high[x]],
+        };
+        let ranges = [m_range(0), m_range(1), m_range(2), ms_range(0), ms_range(1)];
         // The mass of the evaluated M_g: the tabulated one times the closure's factor.
         let norm = self.sphere_norms(self.norm.locate(theta_r));
         let mass = |g: usize| ranges[g].kept() * norm[g];

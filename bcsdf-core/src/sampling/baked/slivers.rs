@@ -13,15 +13,7 @@
 
 use super::rows::Sliver;
 use crate::baked::Axis;
-use crate::sampling::sliver::sliver_keep;
-
-/// Three-point Gauss–Legendre on [0, 1]: abscissae and weights (summing to 1); exact for
-/// polynomials of degree 5 (k·v: degree 4 times degree 1).
-const GAUSS3: [(f32, f32); 3] = [
-    (0.112_701_66, 5.0 / 18.0),
-    (0.5, 8.0 / 18.0),
-    (0.887_298_3, 5.0 / 18.0),
-];
+use crate::sampling::sliver::{sliver_keep, GAUSS3};
 
 /// One piece of a sliver: segment `j` of the axis from node weight `w0` to `w1`, starting
 /// `off` after the sliver's start, `len` long.

@@ -1,4 +1,6 @@
 //! Tight loop over the baked sampler and pdf (for profiling: `perf stat`, callgrind).
+//! `FUR_LUT=<file>` reads a baked LUT instead of baking bobcat; `FUR_LUT_SAVE=<file>` writes
+//! the one it uses (so that a profiler's run skips the bake).
 use bake::profiles::{build_model, scale_budget, ProfileOptions};
 use bcsdf_core::baked::BakedBcsdf;
 use bcsdf_core::bench_support::{QueryStream, QUERY_COUNT};
@@ -22,6 +24,9 @@ fn main() {
             bake::tables::bake(&model, &preset.input, LutResolution::DEFAULT)
         }
     };
+    if let Some(path) = std::env::var_os("FUR_LUT_SAVE") {
+        std::fs::write(path, &blob).expect("FUR_LUT_SAVE names a writable file");
+    }
     let lut = BakedBcsdf::from_bytes(&blob).unwrap();
     let mut stream = QueryStream::new();
     let xs: Vec<(f32, [f32; 3])> = (0..QUERY_COUNT).map(|_| stream.sample_input()).collect();

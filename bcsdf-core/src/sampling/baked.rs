@@ -18,7 +18,8 @@
 //! m_g = ∫ M_g·g over the restricted range (in the energy closure M_g is multiplied by the
 //! LUT's 1/Z_g, docs/model.md §12) and s_x = ∫ M^s_x·g dθ_i: exact integrals of the
 //! interpolants, from the LUT's prefix sums outside the pole slivers and in closed form
-//! within them (`rows::Range`, [`super::sliver`]). The two scattered parts are the two separable
+//! within them (`rows::Range`, `slivers`: node weights per piece shared by the rows of an
+//! axis, [`super::sliver`]). The two scattered parts are the two separable
 //! products of the exact blend M^s = (1 − |φ|/π)·M^s_back + (|φ|/π)·M^s_front. The mixture
 //! density per unit solid angle is then
 //!
@@ -26,7 +27,8 @@
 //!
 //! the mean channel of S·cos θ_i over W: for a grey fiber the weight S·cos θ_i/p_ω is W at
 //! every direction, and W is the directional albedo ρ(θ_r). It costs one evaluation's lookups
-//! plus seven prefix reads, and per view the ten slivers' pieces.
+//! plus seven prefix reads, and per view the slivers' pieces (one set of node weights per
+//! piece for the three M_g, one for the two M^s halves).
 
 use super::choose;
 use super::sliver::pole_keep;
@@ -36,11 +38,14 @@ use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
 use crate::lut::cdf::Density;
 use crate::math::{Math, PI};
+use crate::model::POLE_SLIVER;
 use rows::{Range, Rows};
+use slivers::sliver_masses;
 pub use view::BakedView;
 
 mod at;
 mod rows;
+mod slivers;
 mod view;
 
 impl<'a, M: Math> BakedBcsdf<'a, M> {
@@ -98,18 +103,42 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             nu_s - mu_s,
             mu_s,
         ];
-        let ranges: [Range; 5] = core::array::from_fn(|c| {
-            // A part whose azimuthal row is empty has weight 0 whatever its θ_i range holds
-            // (and is never drawn): its range, pole slivers included, is not computed.
-            if !(n[c] > 0.0) {
-                Range::default()
-            } else if c < 3 {
-                self.m_rows(c).range(lo, hi, m[c].1, m[c].0)
-            } else {
-                let rows = self.ms_rows(c - 3, theta_r);
-                rows.range(-PI / 2.0, PI / 2.0, 0.0, rows.total())
-            }
-        });
+        // The pole slivers at both ends of every range (docs/model.md §10): the three M_g
+        // from one texel pair per node, the two halves of M^s from their blended rows, each
+        // piece's node weights computed once for the rows of its axis.
+        let m_step = self.densities[0].step;
+        let pair = |j: usize| {
+            let v = self.nodes.m_pair(j);
+            ([v[0], v[1], v[2]], [v[3], v[4], v[5]])
+        };
+        let m_low = sliver_masses(&self.sum, m_step, (lo, lo + POLE_SLIVER), lo, pair);
+        let m_high = sliver_masses(&self.sum, m_step, (hi - POLE_SLIVER, hi), hi, pair);
+        let ms = [self.ms_rows(0, theta_r), self.ms_rows(1, theta_r)];
+        let halves = |j: usize| {
+            (
+                [ms[0].value(j), ms[1].value(j)],
+                [ms[0].value(j + 1), ms[1].value(j + 1)],
+            )
+        };
+        let (p0, p1) = (-PI / 2.0, PI / 2.0);
+        let ms_low = sliver_masses(&self.ms_i, ms[0].step, (p0, p0 + POLE_SLIVER), p0, halves);
+        let ms_high = sliver_masses(&self.ms_i, ms[0].step, (p1 - POLE_SLIVER, p1), p1, halves);
+        // Written out (not `array::from_fn`, whose closure stayed a call per part).
+        let m_range = |g: usize| Range {
+            lo,
+            hi,
+            start: m[g].1,
+            raw: m[g].0,
+            slivers: [m_low[g], m_high[g]],
+        };
+        let ms_range = |x: usize| Range {
+            lo: p0,
+            hi: p1,
+            start: 0.0,
+            raw: ms[x].total(),
+            slivers: [ms_low[x], ms_high[x]],
+        };
+        let ranges = [m_range(0), m_range(1), m_range(2), ms_range(0), ms_range(1)];
         // The mass of the evaluated M_g: the tabulated one times the closure's factor.
         let norm = self.sphere_norms(self.norm.locate(theta_r));
         let mass = |g: usize| ranges[g].kept() * norm[g];

@@ -53,8 +53,9 @@ pub fn sliver_keep(s: f32) -> f32 {
 }
 
 /// Three-point Gauss–Legendre on [0, 1]: abscissae and weights (summing to 1); exact for
-/// polynomials of degree 5.
-const GAUSS3: [(f32, f32); 3] = [
+/// polynomials of degree 5 (a linear density times k). The one rule of the pole slivers:
+/// [`sliver_piece_mass`] and the baked sampler's node weights (`baked::slivers`) use it.
+pub(crate) const GAUSS3: [(f32, f32); 3] = [
     (0.112_701_66, 5.0 / 18.0),
     (0.5, 8.0 / 18.0),
     (0.887_298_3, 5.0 / 18.0),

@@ -2,8 +2,9 @@
 //! §10, docs/lut.md "Sampling data"): the rows of the baked sampler's parts, including the
 //! scattered family's |φ| rows weighted by the back/front blend of M^s.
 
-use super::super::sliver::{invert_sliver_piece, sliver_piece_mass};
+use super::super::sliver::invert_sliver_piece;
 use super::super::{invert_linear, invert_weighted_linear, linear_mass, unit};
+use super::slivers::{pieces, Piece};
 use crate::baked::{Axis, BakedBcsdf};
 use crate::lut::cdf::{front_weights, Density, NodeRow};
 use crate::math::Math;
@@ -215,73 +216,29 @@ impl<'a> Rows<'a> {
         invert_weighted_linear(v0, v1, a, b, self.step, t)
     }
 
-    /// Calls `f(offset from a, length, value at the start, value at the end)` on the pieces
-    /// of [a, b] between the rows' nodes, in axis order, until it returns true. The pieces
-    /// are found where `eval` finds them: by the axis's own location of a and b
-    /// ([`Axis::locate`], which the WGSL twin forms with the same roundings), lengths as
-    /// differences of node weights times the node spacing (no division).
-    #[inline(always)]
-    fn pieces(&self, a: f32, b: f32, mut f: impl FnMut(f32, f32, f32, f32) -> bool) {
-        let ((ja, wa), (jb, wb)) = (self.axis.locate(a), self.axis.locate(b));
-        let mut off = 0.0;
-        for j in ja..=jb {
-            let w0 = if j == ja { wa } else { 0.0 };
-            let w1 = if j == jb { wb } else { 1.0 };
-            if w1 > w0 {
-                let (v0, v1) = (self.value(j), self.value(j + 1));
-                let len = (w1 - w0) * self.step;
-                if f(off, len, v0 + (v1 - v0) * w0, v0 + (v1 - v0) * w1) {
-                    return;
-                }
-                off += len;
-            }
-        }
-    }
-
-    /// The sliver [a, b] (one end at `pole`, a or b): its raw mass and its mass times g (the
-    /// pieces between the nodes, [`sliver_piece_mass`], at distances (a − pole) + offset).
-    #[inline]
-    pub(super) fn sliver(&self, a: f32, b: f32, pole: f32) -> Sliver {
-        let mut out = Sliver::default();
-        let at = a - pole;
-        self.pieces(a, b, |off, len, v0, v1| {
-            out.raw += linear_mass(v0, v1, len);
-            out.kept += sliver_piece_mass(v0, v1, len, at + off, 0.0, len);
-            false
-        });
-        out
-    }
-
     /// The position in the sliver [a, b] (one end at `pole`) where its running mass times g
-    /// from a reaches t (b if t is past its mass).
+    /// from a reaches t (b if t is past its mass): the pieces' masses from the same node
+    /// weights as the view's ([`super::slivers`]), so that they add up to its
+    /// [`Sliver::kept`] bit for bit, then [`invert_sliver_piece`] inside the piece.
     fn invert_sliver(&self, a: f32, b: f32, pole: f32, t: f32) -> f32 {
         let (mut acc, mut out) = (0.0, b);
         let at = a - pole;
-        self.pieces(a, b, |off, len, v0, v1| {
-            let m = sliver_piece_mass(v0, v1, len, at + off, 0.0, len);
+        pieces(&self.axis, self.step, a, b, |p| {
+            let (v0, v1) = (self.value(p.j), self.value(p.j + 1));
+            if v0 == 0.0 && v1 == 0.0 {
+                return false;
+            }
+            let m = Piece::masses(&p.weights(at + p.off), v0, v1).kept;
             if m > 0.0 && t - acc <= m {
-                out = a + (off + invert_sliver_piece(v0, v1, len, at + off, 0.0, t - acc));
+                let (s, e) = (v0 + (v1 - v0) * p.w0, v0 + (v1 - v0) * p.w1);
+                let d = invert_sliver_piece(s, e, p.len, at + p.off, 0.0, t - acc);
+                out = a + (p.off + d);
                 return true;
             }
             acc += m;
             false
         });
         out
-    }
-
-    /// The range's masses ([`Range`]), given the running integral at its start.
-    #[inline]
-    pub(super) fn range(&self, lo: f32, hi: f32, start: f32, raw: f32) -> Range {
-        Range {
-            lo,
-            hi,
-            start,
-            raw,
-            slivers: [
-                self.sliver(lo, lo + POLE_SLIVER, lo),
-                self.sliver(hi - POLE_SLIVER, hi, hi),
-            ],
-        }
     }
 
     /// The position in `r` where the running mass times g (docs/model.md §10) reaches the

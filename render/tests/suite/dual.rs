@@ -451,10 +451,13 @@ fn diagnose_the_curved_coat() {
         .map(|v| v.split(',').map(str::to_string).collect())
         .unwrap_or_else(|_| vec!["cat".into(), "deer".into()]);
     let key_axis = nalgebra::Vector3::new(0.6f32, 0.9, 0.8).normalize();
-    let key = || -> Box<dyn Light> {
-        Box::new(DistantDisc::with_irradiance(key_axis, 4.0, [2.5; 3]))
+    let key =
+        || -> Box<dyn Light> { Box::new(DistantDisc::with_irradiance(key_axis, 4.0, [2.5; 3])) };
+    let sky = || -> Box<dyn Light> {
+        Box::new(UniformEnvironment {
+            radiance: [0.08; 3],
+        })
     };
-    let sky = || -> Box<dyn Light> { Box::new(UniformEnvironment { radiance: [0.08; 3] }) };
     let fur_mean = |img: &Image, mask: &[bool]| -> f64 {
         img.mean
             .iter()
@@ -490,8 +493,7 @@ fn diagnose_the_curved_coat() {
                     let mask = compare::fur_mask(&s, SIDE, SIDE);
                     let path = render_method(&s, &fiber, &settings(64), &Method::Path).unwrap();
                     let dual = render_method(&s, &fiber, &settings(32), &method).unwrap();
-                    let single =
-                        render_method(&s, &fiber, &settings(32), &Method::Single).unwrap();
+                    let single = render_method(&s, &fiber, &settings(32), &Method::Single).unwrap();
                     let p = fur_mean(&path.image, &mask);
                     println!(
                         "DIAG {preset} lights {label:4} surfaces {}: fur path {:.3}, dual {:+.1} %, single {:+.1} %",
@@ -520,13 +522,9 @@ fn diagnose_the_curved_coat() {
                         };
                         let mut by_n = [[0.0f64; 3]; 5];
                         let mut by_cos = [[0.0f64; 3]; 4];
-                        for i in 0..(SIDE * SIDE) as usize {
-                            if !mask[i] {
-                                continue;
-                            }
+                        for (i, _) in mask.iter().enumerate().filter(|(_, &m)| m) {
                             let (x, y) = (i as u32 % SIDE, i as u32 / SIDE);
-                            let (o, d) =
-                                s.camera.ray(x as f32 + 0.5, y as f32 + 0.5, SIDE, SIDE);
+                            let (o, d) = s.camera.ray(x as f32 + 0.5, y as f32 + 0.5, SIDE, SIDE);
                             let Some(h) = s.intersect(&o, &d, None) else {
                                 continue;
                             };

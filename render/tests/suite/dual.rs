@@ -223,14 +223,17 @@ fn dual_scattering_is_within_the_bounds_of_the_path_tracer_deer() {
     within_the_bounds("deer", false);
 }
 
-/// The table of docs/accuracy.md ("Dual scattering"): every preset, `ball` and `patch`,
-/// `path` at 32 spp. `cargo test -p render --test suite dual:: -- --ignored --nocapture every_preset`.
+/// The table of docs/accuracy.md ("Dual scattering"): every preset (or those named in
+/// `DUAL_PRESETS`, comma-separated), `ball` and `patch`, `path` at 32 spp.
+/// `cargo test --release -p render --test suite -- --ignored --nocapture every_preset`.
 #[test]
 #[ignore = "every preset, minutes; its table is in docs/accuracy.md"]
 fn every_preset_against_the_path_tracer() {
+    let only = std::env::var("DUAL_PRESETS").ok();
     let names: Vec<&'static str> = bcsdf_core::presets::PRESETS
         .iter()
         .map(|p| p.name)
+        .filter(|n| only.as_ref().is_none_or(|o| o.split(',').any(|x| x == *n)))
         .collect();
     let rows = rows(&names, &[SceneKind::Ball, SceneKind::Patch], 32);
     let worst = rows

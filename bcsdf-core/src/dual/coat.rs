@@ -122,9 +122,9 @@ pub fn node_coat(log2_mu: f32, a_f2: f32) -> (f32, f32) {
 /// the point is a single sample of the coat around it (Poisson, with the neighbourhood's mean
 /// count m̄), while the light that comes back up to the point was scattered through that
 /// neighbourhood; the sample's posterior mean of m̄ (a flat prior) is m + 1. Without it a
-/// point whose line happens to cross no fiber below (m = 0, about a fifth of the surface
-/// fibers on a coat two fibers deep) is treated as lying on bare skin and gets no local
-/// backscatter at all.
+/// point whose line happens to cross no fiber below (m = 0: e^(−m̄) of the points, 14 % where
+/// the coat below holds two fibers on average) is treated as lying on bare skin and gets no
+/// local backscatter at all.
 pub const LINE_SAMPLE_OFFSET: f32 = 1.0;
 
 /// The layers of the coat below the term uses for a caller's count `below`

@@ -1168,6 +1168,8 @@ const FUR_DUAL_PHI_SCALE: f32 = 9.86760616;
 const FUR_DUAL_MAX_FIBERS: f32 = 1.0e6;
 const FUR_DUAL_MAX_DENSITY: f32 = 4.0;
 const FUR_DUAL_MIN_VARIANCE: f32 = 3.0e-6;
+// dual::coat::LINE_SAMPLE_OFFSET: the coat below a point is its line's count + 1 layers.
+const FUR_DUAL_LINE_SAMPLE_OFFSET: f32 = 1.0;
 // The smallest mass a Gaussian is divided by (dual::eval's MIN_REACHABLE_MASS): a lobe
 // centred far outside the reachable range is not blown up.
 const FUR_DUAL_MIN_MASS: f32 = 0.05;
@@ -1458,11 +1460,13 @@ fn fur_dual_clean(x: f32, top: f32) -> f32 {
     return select(0.0, min(x, top), !fur_is_nan(x) && x > 0.0);
 }
 
-// The fibers below the point as dual::Fibers takes them: values < 0 give 0 (the point lies
-// on the skin); NaN, +inf and values above 1e6 give 1e6 (a semi-infinite coat).
+// The layers of the coat below the term uses (dual::coat::coat_below_layers): a count
+// x >= 0 along the light's line is one sample of the neighbourhood's coat, x + 1 layers
+// (FUR_DUAL_LINE_SAMPLE_OFFSET), at most 1e6; values < 0 give 0 (the point lies on the skin);
+// NaN and +inf give 1e6 (a semi-infinite coat).
 fn fur_dual_below(x: f32) -> f32 {
     let deep = select(0.0, FUR_DUAL_MAX_FIBERS, fur_is_nan(x));
-    return select(deep, min(x, FUR_DUAL_MAX_FIBERS), !fur_is_nan(x) && x >= 0.0);
+    return select(deep, min(x + FUR_DUAL_LINE_SAMPLE_OFFSET, FUR_DUAL_MAX_FIBERS), !fur_is_nan(x) && x >= 0.0);
 }
 
 // The dual-scattering term to add to single scattering (DualLut::eval, docs/model.md §13),

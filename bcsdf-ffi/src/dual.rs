@@ -263,8 +263,10 @@ fn density(d_f: f32, d_b: f32) -> Density {
 /// fine): NaN or negative is 0 (unoccluded), above 10^6 (or +infinity) is 10^6.
 /// `fibers_below` is m, the number of fibers beyond the shading point on the line from the
 /// light through it (along -wi, away from the light), up to the skin or out of the coat: the
-/// coat below, which sends light back up (fractional values are fine). Negative is 0 (the point lies on the
-/// skin); NaN, +infinity and anything above 10^6 is 10^6, a semi-infinite coat: pass
+/// coat below, which sends light back up (fractional values are fine). Pass it as counted:
+/// the term takes a count m >= 0 as the coat around the point, m + 1 layers (one line's
+/// count is a sample of it, docs/model.md §13 "The coat below"). Negative is no coat (the
+/// point lies on the skin); NaN, +infinity and anything above 10^6 is 10^6, a semi-infinite coat: pass
 /// INFINITY when the depth is not known. That is the coat of the previous version of this
 /// function, which had no `fibers_below`; its values changed anyway, since every Gaussian
 /// is now normalised over the angles the caller can reach. `d_f` and `d_b` are the forward

@@ -177,6 +177,7 @@ constant float FUR_DUAL_PHI_SCALE = 9.867606;
 constant float FUR_DUAL_MAX_FIBERS = 1000000.0;
 constant float FUR_DUAL_MAX_DENSITY = 4.0;
 constant float FUR_DUAL_MIN_VARIANCE = 0.000003;
+constant float FUR_DUAL_LINE_SAMPLE_OFFSET = 1.0;
 constant float FUR_DUAL_MIN_MASS = 0.05;
 constant float FUR_DUAL_TINY = 0.000001;
 constant float FUR_LN2_ = 0.6931472;
@@ -2540,14 +2541,14 @@ float fur_dual_below(
     bool local_28 = {};
     bool _e2 = fur_is_nan(x_14);
     float deep = _e2 ? FUR_DUAL_MAX_FIBERS : 0.0;
-    bool _e7 = fur_is_nan(x_14);
-    if (!(_e7)) {
+    bool _e9 = fur_is_nan(x_14);
+    if (!(_e9)) {
         local_28 = x_14 >= 0.0;
     } else {
         local_28 = false;
     }
-    bool _e14 = local_28;
-    return _e14 ? metal::min(x_14, FUR_DUAL_MAX_FIBERS) : deep;
+    bool _e16 = local_28;
+    return _e16 ? metal::min(x_14 + FUR_DUAL_LINE_SAMPLE_OFFSET, FUR_DUAL_MAX_FIBERS) : deep;
 }
 
 metal::float3 fur_eval_dual(

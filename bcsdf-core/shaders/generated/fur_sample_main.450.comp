@@ -126,6 +126,7 @@ const float FUR_DUAL_PHI_SCALE = 9.867606;
 const float FUR_DUAL_MAX_FIBERS = 1000000.0;
 const float FUR_DUAL_MAX_DENSITY = 4.0;
 const float FUR_DUAL_MIN_VARIANCE = 3e-6;
+const float FUR_DUAL_LINE_SAMPLE_OFFSET = 1.0;
 const float FUR_DUAL_MIN_MASS = 0.05;
 const float FUR_DUAL_TINY = 1e-6;
 const float FUR_LN2_ = 0.6931472;
@@ -1974,14 +1975,14 @@ float fur_dual_below(float x_14) {
     bool local_28 = false;
     bool _e2 = fur_is_nan(x_14);
     float deep = (_e2 ? FUR_DUAL_MAX_FIBERS : 0.0);
-    bool _e7 = fur_is_nan(x_14);
-    if (!(_e7)) {
+    bool _e9 = fur_is_nan(x_14);
+    if (!(_e9)) {
         local_28 = (x_14 >= 0.0);
     } else {
         local_28 = false;
     }
-    bool _e14 = local_28;
-    return (_e14 ? min(x_14, FUR_DUAL_MAX_FIBERS) : deep);
+    bool _e16 = local_28;
+    return (_e16 ? min((x_14 + FUR_DUAL_LINE_SAMPLE_OFFSET), FUR_DUAL_MAX_FIBERS) : deep);
 }
 
 float fur_coat_sigma_at(float x_15) {

@@ -16,6 +16,7 @@
 //! blob is decoded, and [`crate::dual::DualLut::eval`] interpolates them linearly between
 //! nodes like the stored fields (the shader derives them at both nodes and interpolates).
 
+use super::MAX_FIBERS;
 use crate::math::{exp_neg_saturating, rsqrt_newton};
 use core::f32::consts::LN_2;
 
@@ -114,4 +115,31 @@ pub fn node_coat(log2_mu: f32, a_f2: f32) -> (f32, f32) {
     let a = a_f2.clamp(0.0, 1.0);
     let t = a * rsqrt_newton(a.max(1e-30));
     (reflectance_squared(mu, t), reflection_product(mu, t))
+}
+
+/// What the term adds to a caller's count of the fibers below a point that lies in the coat
+/// (docs/model.md §13 "The coat below"): the count m along the one line from the light through
+/// the point is a single sample of the coat around it (Poisson, with the neighbourhood's mean
+/// count m̄), while the light that comes back up to the point was scattered through that
+/// neighbourhood; the sample's posterior mean of m̄ (a flat prior) is m + 1. Without it a
+/// point whose line happens to cross no fiber below (m = 0: e^(−m̄) of the points, 14 % where
+/// the coat below holds two fibers on average) is treated as lying on bare skin and gets no
+/// local backscatter at all.
+pub const LINE_SAMPLE_OFFSET: f32 = 1.0;
+
+/// The layers of the coat below the term uses for a caller's count `below`
+/// ([`crate::dual::Fibers::below`]): `below` + [`LINE_SAMPLE_OFFSET`] for a count ≥ 0,
+/// at most [`MAX_FIBERS`]; 0 for a negative count (the point lies on the skin: no coat);
+/// [`MAX_FIBERS`] (a semi-infinite coat) for NaN and +∞. The shader's `fur_dual_below`
+/// repeats it.
+#[inline(always)]
+#[must_use]
+pub fn coat_below_layers(below: f32) -> f32 {
+    if below >= 0.0 {
+        (below + LINE_SAMPLE_OFFSET).min(MAX_FIBERS)
+    } else if below < 0.0 {
+        0.0
+    } else {
+        MAX_FIBERS // NaN
+    }
 }

@@ -136,7 +136,9 @@ impl DualLut {
     ///
     /// `fibers` holds n, the fibers between the shading point and the light (the shadow ray's
     /// count, or an engine's deep-opacity-map count; fractional values are allowed), and m,
-    /// the fibers beyond the point along −ω_i (the coat below). With V = clamp(1 − n, 0, 1)
+    /// the fibers beyond the point along −ω_i (the coat below), which the term takes as the
+    /// neighbourhood's m + 1 layers ([`super::coat::coat_below_layers`]; m in the formulas
+    /// below is those layers). With V = clamp(1 − n, 0, 1)
     /// the fraction of direct light (what a shadow ray gives), the shading is S·V + this
     /// term, which is
     ///

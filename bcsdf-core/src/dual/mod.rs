@@ -162,9 +162,11 @@ pub struct Fibers {
     /// below 0 is 0 (unoccluded), above [`MAX_FIBERS`] (or +∞) is [`MAX_FIBERS`].
     pub to_light: f32,
     /// m: the fibers beyond the shading point, on the line from the light through it (along
-    /// −ω_i), up to the skin or out of the coat: the coat below, which sends light back up.
-    /// Below 0 is 0 (the point lies on the skin); NaN, +∞ and anything above [`MAX_FIBERS`]
-    /// is [`MAX_FIBERS`], a semi-infinite coat ([`Fibers::deep`]).
+    /// −ω_i), up to the skin or out of the coat: one line's sample of the coat below, which
+    /// sends light back up. The term sees the neighbourhood's coat below, m +
+    /// [`coat::LINE_SAMPLE_OFFSET`] layers (docs/model.md §13 "The coat below").
+    /// Below 0 is no coat at all (the point lies on the skin: 0 layers); NaN, +∞ and anything
+    /// above [`MAX_FIBERS`] is [`MAX_FIBERS`], a semi-infinite coat ([`Fibers::deep`]).
     pub below: f32,
 }
 
@@ -185,21 +187,15 @@ impl Fibers {
         }
     }
 
-    /// (n, m) in [0, [`MAX_FIBERS`]] by the contract of the fields.
+    /// (n, m̄) by the contract of the fields: n in [0, [`MAX_FIBERS`]], m̄ the layers of the
+    /// coat below the term uses ([`coat::coat_below_layers`]).
     fn sanitized(self) -> (f32, f32) {
         let n = if self.to_light > 0.0 {
             self.to_light.min(MAX_FIBERS)
         } else {
             0.0
         };
-        let m = if self.below >= 0.0 {
-            self.below.min(MAX_FIBERS)
-        } else if self.below < 0.0 {
-            0.0
-        } else {
-            MAX_FIBERS // NaN
-        };
-        (n, m)
+        (n, coat::coat_below_layers(self.below))
     }
 }
 

@@ -223,14 +223,17 @@ fn dual_scattering_is_within_the_bounds_of_the_path_tracer_deer() {
     within_the_bounds("deer", false);
 }
 
-/// The table of docs/accuracy.md ("Dual scattering"): every preset, `ball` and `patch`,
-/// `path` at 32 spp. `cargo test -p render --test suite dual:: -- --ignored --nocapture every_preset`.
+/// The table of docs/accuracy.md ("Dual scattering"): every preset (or those named in
+/// `DUAL_PRESETS`, comma-separated), `ball` and `patch`, `path` at 32 spp.
+/// `cargo test --release -p render --test suite -- --ignored --nocapture every_preset`.
 #[test]
 #[ignore = "every preset, minutes; its table is in docs/accuracy.md"]
 fn every_preset_against_the_path_tracer() {
+    let only = std::env::var("DUAL_PRESETS").ok();
     let names: Vec<&'static str> = bcsdf_core::presets::PRESETS
         .iter()
         .map(|p| p.name)
+        .filter(|n| only.as_ref().is_none_or(|o| o.split(',').any(|x| x == *n)))
         .collect();
     let rows = rows(&names, &[SceneKind::Ball, SceneKind::Patch], 32);
     let worst = rows
@@ -431,4 +434,163 @@ fn dual_at_a_colour_between_the_nodes_is_within_the_bounds_of_the_path_tracer() 
         }
     }
     assert!(failures.is_empty(), "{failures:?}");
+}
+
+/// Where `dual` misses light on `ball` (docs/accuracy.md "Dual scattering", the curved coat):
+/// for the presets in `DUAL_DIAGNOSE_PRESETS` (default cat, deer), `path`, `dual` and `single`
+/// over the fur's pixels with both lights, the key alone and the sky alone, with the skin and
+/// ground as they are and black; with the key alone and black surfaces (the fur's light is
+/// then fiber light only) `path`'s light by path depth; and `dual`/`path` over the fur's
+/// pixels grouped by the fibers toward the key from the pixel centre's first fiber and by the
+/// key's incidence on the coat (cos between the key and the ball's normal there).
+/// `cargo test --release -p render --test suite dual:: -- --ignored --nocapture diagnose`.
+#[test]
+#[ignore = "a diagnostic, minutes; its findings are in docs/accuracy.md"]
+fn diagnose_the_curved_coat() {
+    use render::compare::luminance;
+    use render::light::{DistantDisc, Light, Lights, UniformEnvironment};
+    use render::surface::Shape;
+    let presets: Vec<String> = std::env::var("DUAL_DIAGNOSE_PRESETS")
+        .map(|v| v.split(',').map(str::to_string).collect())
+        .unwrap_or_else(|_| vec!["cat".into(), "deer".into()]);
+    let key_axis = nalgebra::Vector3::new(0.6f32, 0.9, 0.8).normalize();
+    let key =
+        || -> Box<dyn Light> { Box::new(DistantDisc::with_irradiance(key_axis, 4.0, [2.5; 3])) };
+    let sky = || -> Box<dyn Light> {
+        Box::new(UniformEnvironment {
+            radiance: [0.08; 3],
+        })
+    };
+    let fur_mean = |img: &Image, mask: &[bool]| -> f64 {
+        img.mean
+            .iter()
+            .zip(mask)
+            .filter(|(_, &m)| m)
+            .map(|(p, _)| luminance(p))
+            .sum::<f64>()
+    };
+    for preset in &presets {
+        with_tables(preset, |model, lut| {
+            let fiber = One(model);
+            let settings = |spp| Settings {
+                seed: 23,
+                ..Settings::new(SIDE, SIDE, spp)
+            };
+            let method = Method::Dual {
+                lut,
+                density: SHIPPED.0,
+            };
+            for (lights, label) in [(0u8, "both"), (1, "key"), (2, "sky")] {
+                for black in [false, true] {
+                    let mut s = scene(SceneKind::Ball);
+                    s.lights = match lights {
+                        0 => Lights::new(vec![(key(), 0.8), (sky(), 0.2)]),
+                        1 => Lights::new(vec![(key(), 1.0)]),
+                        _ => Lights::new(vec![(sky(), 1.0)]),
+                    };
+                    if black {
+                        for surf in &mut s.surfaces {
+                            surf.albedo = [0.0; 3];
+                        }
+                    }
+                    let mask = compare::fur_mask(&s, SIDE, SIDE);
+                    let path = render_method(&s, &fiber, &settings(64), &Method::Path).unwrap();
+                    let dual = render_method(&s, &fiber, &settings(32), &method).unwrap();
+                    let single = render_method(&s, &fiber, &settings(32), &Method::Single).unwrap();
+                    let p = fur_mean(&path.image, &mask);
+                    println!(
+                        "DIAG {preset} lights {label:4} surfaces {}: fur path {:.3}, dual {:+.1} %, single {:+.1} %",
+                        if black { "black" } else { "as is" },
+                        p / mask.iter().filter(|&&m| m).count().max(1) as f64,
+                        100.0 * (fur_mean(&dual.image, &mask) / p - 1.0),
+                        100.0 * (fur_mean(&single.image, &mask) / p - 1.0)
+                    );
+                    if lights == 1 && black {
+                        let total: f64 = path.orders.iter().map(luminance_f64).sum();
+                        let shares: Vec<String> = path
+                            .orders
+                            .iter()
+                            .take(8)
+                            .map(|o| format!("{:.3}", luminance_f64(o) / total))
+                            .collect();
+                        println!("DIAG {preset} key, black: path light by depth 0.. {shares:?}");
+                    }
+                    if lights != 2 {
+                        // Groups: fibers toward the key (0, 1-2, 3-9, ≥ 10, blocked by a
+                        // surface) and the key's incidence cos on the coat (< 0.2, 0.2-0.5,
+                        // 0.5-0.8, ≥ 0.8).
+                        let centre = match s.surfaces[0].shape {
+                            Shape::Sphere { center, .. } => center,
+                            _ => unreachable!("ball's skin is a sphere"),
+                        };
+                        let mut by_n = [[0.0f64; 3]; 5];
+                        let mut by_cos = [[0.0f64; 3]; 4];
+                        for (i, _) in mask.iter().enumerate().filter(|(_, &m)| m) {
+                            let (x, y) = (i as u32 % SIDE, i as u32 / SIDE);
+                            let (o, d) = s.camera.ray(x as f32 + 0.5, y as f32 + 0.5, SIDE, SIDE);
+                            let Some(h) = s.intersect(&o, &d, None) else {
+                                continue;
+                            };
+                            let HitKind::Fiber { fiber: id, .. } = h.kind else {
+                                continue;
+                            };
+                            let gn = match s.fibers_crossed(&h.point, &key_axis, Some(id)) {
+                                None => 4,
+                                Some(0) => 0,
+                                Some(1..=2) => 1,
+                                Some(3..=9) => 2,
+                                Some(_) => 3,
+                            };
+                            let c = (h.point - centre).normalize().dot(&key_axis);
+                            let gc = if c < 0.2 {
+                                0
+                            } else if c < 0.5 {
+                                1
+                            } else if c < 0.8 {
+                                2
+                            } else {
+                                3
+                            };
+                            let v = [
+                                luminance(&path.image.mean[i]),
+                                luminance(&dual.image.mean[i]),
+                                1.0,
+                            ];
+                            for k in 0..3 {
+                                by_n[gn][k] += v[k];
+                                by_cos[gc][k] += v[k];
+                            }
+                        }
+                        let fmt = |g: &[[f64; 3]]| -> Vec<String> {
+                            let tot: f64 = g.iter().map(|r| r[0]).sum();
+                            g.iter()
+                                .map(|r| {
+                                    format!(
+                                        "{:.0} px, {:.0} % of light, dual {:+.1} %",
+                                        r[2],
+                                        100.0 * r[0] / tot,
+                                        100.0 * (r[1] / r[0] - 1.0)
+                                    )
+                                })
+                                .collect()
+                        };
+                        println!(
+                            "DIAG {preset} {label} {}: by n (0, 1-2, 3-9, >=10, surface) {:?}",
+                            if black { "black" } else { "as is" },
+                            fmt(&by_n)
+                        );
+                        println!(
+                            "DIAG {preset} {label} {}: by key cos (<0.2, 0.2-0.5, 0.5-0.8, >=0.8) {:?}",
+                            if black { "black" } else { "as is" },
+                            fmt(&by_cos)
+                        );
+                    }
+                }
+            }
+        });
+    }
+}
+
+fn luminance_f64(o: &[f64; 3]) -> f64 {
+    0.2126 * o[0] + 0.7152 * o[1] + 0.0722 * o[2]
 }

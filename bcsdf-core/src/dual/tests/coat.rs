@@ -147,13 +147,25 @@ fn each_gaussian_keeps_its_mass_over_the_reachable_range() {
 
 #[test]
 fn the_coat_below_lights_the_point() {
-    // Through the evaluator: with no fibers below the point (m = 0, bare skin) nothing comes
-    // back up, so unoccluded light gets no local backscatter; more fibers below give more.
+    // Through the evaluator: on bare skin (a negative count below: no coat) nothing comes
+    // back up, so unoccluded light gets no local backscatter; a line that crosses no fiber
+    // below a point in the coat (m = 0) sees the neighbourhood's coat, m + 1 layers
+    // (`coat::coat_below_layers`), exactly what one layer below gives; more fibers below
+    // give more.
     let t = absorbing_tables();
     let lut = lut_of(&t, Attenuation::Coat);
     let a = Angles::new(0.3, -0.2, 0.4).unwrap();
     let d = Density::DEFAULT;
-    assert_eq!(lut.eval(&a, Fibers::new(0.0, 0.0), d), Rgb::ZERO);
+    assert_eq!(lut.eval(&a, Fibers::new(0.0, -1.0), d), Rgb::ZERO);
+    let line_clear = lut.eval(&a, Fibers::new(0.0, 0.0), d);
+    assert!(line_clear.0.iter().all(|&v| v > 0.0), "{line_clear:?}");
+    assert_eq!(line_clear, lut.eval(&a, Fibers::new(0.0, -0.0), d));
+    assert!(line_clear[0] < lut.eval(&a, Fibers::new(0.0, 1.0), d)[0]);
+    assert_eq!(crate::dual::coat::coat_below_layers(0.0), 1.0);
+    assert_eq!(crate::dual::coat::coat_below_layers(2.5), 3.5);
+    assert_eq!(crate::dual::coat::coat_below_layers(-3.0), 0.0);
+    assert_eq!(crate::dual::coat::coat_below_layers(f32::NAN), 1.0e6);
+    assert_eq!(crate::dual::coat::coat_below_layers(f32::INFINITY), 1.0e6);
     for n in [0.0f32, 2.0] {
         let first = lut.eval(&a, Fibers::new(n, 0.5), d);
         assert!(first.0.iter().all(|&v| v > 0.0), "{first:?}");
@@ -165,7 +177,12 @@ fn the_coat_below_lights_the_point() {
             }
             last = v;
         }
-        assert!(last[0] > 1.2 * first[0], "{last:?} vs {first:?}");
+        // Against bare skin (no coat below: 0 layers) the deep coat is far brighter.
+        let skin = lut.eval(&a, Fibers::new(n, -1.0), d);
+        assert!(
+            last[0] > 1.2 * skin[0] && last[0] > 0.0,
+            "{last:?} vs {skin:?}"
+        );
         // NaN below is the deep coat.
         assert_eq!(lut.eval(&a, Fibers::new(n, f32::NAN), d), last);
         assert_eq!(lut.eval(&a, Fibers::deep(n), d), last);

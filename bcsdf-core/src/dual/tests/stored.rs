@@ -202,7 +202,10 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
     for c in 0..3 {
         let x = f64::from(ti + tr);
         let inv = 1.0 / f64::from(ti).cos().powi(2);
-        // Light reaching the point: n layers above, m below over a black floor.
+        // Light reaching the point: n layers above, and below it over a black floor the
+        // neighbourhood's coat, one layer more than the line's count m
+        // (`coat::coat_below_layers`).
+        let m = m + 1;
         let (t_a, r_a) = layer(-ti, c);
         let (r_n, t_n) = stack(t_a, r_a, n);
         let (r_m, _) = stack(t_a, r_a, m);

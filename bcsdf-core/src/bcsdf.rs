@@ -45,6 +45,20 @@ pub struct Sample {
     pub family: LobeFamily,
 }
 
+/// A direction evaluated at a path vertex ([`Bcsdf::eval_and_sample_dirs`]): its angles, S
+/// and the sampling density, as [`Bcsdf::angles_from_dirs`] and [`Bcsdf::eval_with_pdf`]
+/// give them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[must_use]
+pub struct Evaluated {
+    /// θ_i, θ_r, φ of the direction.
+    pub angles: Angles,
+    /// S(ω_i, ω_r) per family.
+    pub value: Families,
+    /// Density per unit solid angle with which [`Bcsdf::sample`] draws the direction.
+    pub pdf: f32,
+}
+
 /// A sampled direction before evaluation: angles, and the family it came from.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[must_use]
@@ -171,6 +185,64 @@ pub trait Bcsdf {
             ..s
         })
     }
+
+    /// What a path tracer asks at one vertex, all at the same ω_r and tangent (docs/model.md
+    /// §10, §11): S and the density of the light's direction `wl` (next-event estimation,
+    /// [`Bcsdf::eval_with_pdf`] at [`Bcsdf::angles_from_dirs`]; `None` for an invalid `wl`),
+    /// and a sampled continuation ([`Bcsdf::sample_dirs`]). The same bits as those calls
+    /// made apart; the baked evaluator builds its per-view context ([`crate::BakedView`])
+    /// once for both.
+    fn eval_and_sample_dirs(
+        &self,
+        wl: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+        u: [f32; 3],
+    ) -> (Option<Evaluated>, Option<Sample>) {
+        let light = self.angles_from_dirs(wl, wr, tangent).ok().map(|angles| {
+            let (value, pdf) = self.eval_with_pdf(&angles);
+            Evaluated { angles, value, pdf }
+        });
+        (light, self.sample_dirs(wr, tangent, u))
+    }
+}
+
+/// [`Bcsdf::eval_and_sample_dirs`] of an evaluator with a per-view context (docs/model.md
+/// §10): `view` builds it at θ_r, `eval` gives S and the density of a direction at it,
+/// `sample` draws at it. θ_r is the light's angles' (it depends on ω_r and the tangent
+/// alone), or ω_r's own when the light's direction has no angles.
+#[inline]
+pub(crate) fn at_one_view<B: Bcsdf + ?Sized, V>(
+    b: &B,
+    (wl, wr, tangent): (Vec3, Vec3, Vec3),
+    u: [f32; 3],
+    view: impl FnOnce(f32) -> Option<V>,
+    eval: impl FnOnce(&V, &Angles) -> (Families, f32),
+    sample: impl FnOnce(&V, [f32; 3]) -> Option<Sample>,
+) -> (Option<Evaluated>, Option<Sample>) {
+    let light = b.angles_from_dirs(wl, wr, tangent);
+    let theta_r = match &light {
+        Ok(a) => a.theta_r(),
+        Err(_) => match b.angles_from_dirs(wr, wr, tangent) {
+            Ok(a) => a.theta_r(),
+            Err(_) => return (None, None),
+        },
+    };
+    let Some(v) = view(theta_r) else {
+        return (None, None);
+    };
+    let light = light.ok().map(|angles| {
+        let (value, pdf) = eval(&v, &angles);
+        Evaluated { angles, value, pdf }
+    });
+    let sample = Frame::from_view::<B::Math>(wr, tangent).and_then(|frame| {
+        let s = sample(&v, u)?;
+        Some(Sample {
+            wi: Some(frame.to_world(&s.angles)),
+            ..s
+        })
+    });
+    (light, sample)
 }
 
 /// Assembles a [`Sample`]: weight = S·cos θ_i / pdf; `None` unless the density is positive
@@ -295,6 +367,18 @@ mod tests {
             let s = bcsdf.sample_dirs(wr, t, u);
             let plain = bcsdf.sample(a.theta_r(), u);
             assert_eq!(s.map(|s| Sample { wi: None, ..s }), plain, "{a:?}");
+            // A vertex's light direction and continuation at once: the calls made apart.
+            let (value, pdf) = bcsdf.eval_with_pdf(&a);
+            let (light, vertex_sample) = bcsdf.eval_and_sample_dirs(wi, wr, t, u);
+            let light = light.expect("a valid light direction is evaluated");
+            assert_eq!(bits(&light.angles), bits(&a));
+            assert_eq!(family_bits(&light.value), family_bits(&value), "{a:?}");
+            assert_eq!(light.pdf.to_bits(), pdf.to_bits(), "{a:?}");
+            assert_eq!(vertex_sample, s, "{a:?}");
+            // A zero light direction has no angles; the continuation is still drawn.
+            assert!(bcsdf.angles_from_dirs([0.0; 3], wr, t).is_err());
+            let (none, still) = bcsdf.eval_and_sample_dirs([0.0; 3], wr, t, u);
+            assert_eq!((none, still), (None, s), "{a:?}");
         }
         assert!(checked * 10 >= queries * 9, "{checked} of {queries}");
     }
@@ -304,6 +388,14 @@ mod tests {
         let b = crate::baked::tests::random();
         let lut = BakedBcsdf::from_bytes(b).unwrap();
         check_one_conversion(&lut, 2000);
+    }
+
+    #[test]
+    fn dirs_methods_share_one_conversion_baked_at_a_colour() {
+        let b = crate::baked::tests::random();
+        let lut = BakedBcsdf::from_bytes(b).unwrap();
+        let colour = crate::Absorption::from_sigma(Rgb([0.4, 1.3, 7.0])).unwrap();
+        check_one_conversion(&lut.at(&colour), 500);
     }
 
     #[test]

@@ -134,7 +134,7 @@ pub mod unscattered;
 
 pub use absorption::{Absorption, AbsorptionError};
 pub use baked::{BakedAt, BakedBcsdf, BatchLengthError, ColourAt, Kernel};
-pub use bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection, MIN_COS_THETA_PDF};
+pub use bcsdf::{solid_angle_pdf, Bcsdf, Evaluated, Sample, SampledDirection, MIN_COS_THETA_PDF};
 pub use colour::{BaseColour, BaseColourError, CoatColour};
 pub use frame::{AngleError, Angles, Frame, Vec3};
 pub use lobes::{

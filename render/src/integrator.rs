@@ -26,7 +26,6 @@ use crate::strand::{FiberMaterial, StrandPoint};
 use crate::surface::{cosine_pdf, lambert_f, sample_cosine};
 use core::fmt;
 use indicatif::{ProgressBar, ProgressStyle};
-use nalgebra::Vector3;
 use rayon::prelude::*;
 use std::io::IsTerminal;
 use std::time::Instant;
@@ -375,21 +374,6 @@ fn trace<S: FiberMaterial>(
                 (hit.point + normal * scene.epsilon, None)
             }
         };
-        let eval = |wi: &Vector3<f32>| -> ([f32; 3], f32) {
-            match (hit.kind, &strand) {
-                (HitKind::Fiber { tangent, .. }, Some(s)) => s.eval(wi, &wr, &tangent),
-                (HitKind::Fiber { .. }, None) => ([0.0; 3], 0.0),
-                (HitKind::Surface { normal, albedo }, _) => {
-                    let cos = normal.dot(wi);
-                    if cos > 0.0 {
-                        (lambert_f(albedo).map(|f| f * cos), cosine_pdf(cos))
-                    } else {
-                        ([0.0; 3], 0.0)
-                    }
-                }
-            }
-        };
-
         // `single` and `dual` at a fiber: light sampling with a counted shadow ray; the path
         // goes on only through the fibers to a surface (crate::method).
         let approximated = if let (HitKind::Fiber { tangent, .. }, Some(s), true) =
@@ -413,48 +397,67 @@ fn trace<S: FiberMaterial>(
             None
         };
 
-        // 1. Next-event estimation.
-        if settings.strategy != Strategy::Bcsdf && approximated.is_none() {
-            if let Some(wl) = lights.sample(u_pick, u_light) {
-                let p_light = lights.pdf(&wl);
-                let (f_cos, p_scatter) = eval(&wl);
-                if p_light > 0.0 && f_cos.iter().any(|&v| v > 0.0) {
-                    row.rays += 1;
-                    if scene.escapes(&next_origin, &wl, next_from) {
-                        let le = lights.radiance(&wl);
-                        let weight = if settings.strategy == Strategy::Mis {
-                            power_heuristic(p_light, p_scatter)
-                        } else {
-                            1.0
-                        };
-                        let value: [f32; 3] = core::array::from_fn(|c| f_cos[c] * le[c]);
-                        add(
-                            &mut l,
-                            &mut row.orders,
-                            order,
-                            &beta,
-                            &value,
-                            weight / p_light,
-                        );
+        // The light's direction for next-event estimation, and the vertex's two questions
+        // about it and the continuation: at a fiber in one call, so that a baked BCSDF
+        // builds its per-view context once (`Scatterer::eval_and_sample`).
+        let light = if settings.strategy != Strategy::Bcsdf && approximated.is_none() {
+            lights.sample(u_pick, u_light)
+        } else {
+            None
+        };
+        let (light_value, scattered) = match (hit.kind, &strand) {
+            (HitKind::Fiber { tangent, .. }, Some(s)) => match &light {
+                Some(wl) => s.eval_and_sample(wl, &wr, &tangent, u_scatter),
+                None => (([0.0; 3], 0.0), s.sample(&wr, &tangent, u_scatter)),
+            },
+            (HitKind::Fiber { .. }, None) => (([0.0; 3], 0.0), None),
+            (HitKind::Surface { normal, albedo }, _) => {
+                let value = light.as_ref().map_or(([0.0; 3], 0.0), |wl| {
+                    let cos = normal.dot(wl);
+                    if cos > 0.0 {
+                        (lambert_f(albedo).map(|f| f * cos), cosine_pdf(cos))
+                    } else {
+                        ([0.0; 3], 0.0)
                     }
+                });
+                let wi = sample_cosine(&normal, [u_scatter[0], u_scatter[1]]);
+                let pdf = cosine_pdf(normal.dot(&wi));
+                let sampled = (pdf > 0.0).then_some(crate::scatter::Scattered {
+                    wi,
+                    weight: albedo,
+                    pdf,
+                });
+                (value, sampled)
+            }
+        };
+
+        // 1. Next-event estimation.
+        if let Some(wl) = light {
+            let p_light = lights.pdf(&wl);
+            let (f_cos, p_scatter) = light_value;
+            if p_light > 0.0 && f_cos.iter().any(|&v| v > 0.0) {
+                row.rays += 1;
+                if scene.escapes(&next_origin, &wl, next_from) {
+                    let le = lights.radiance(&wl);
+                    let weight = if settings.strategy == Strategy::Mis {
+                        power_heuristic(p_light, p_scatter)
+                    } else {
+                        1.0
+                    };
+                    let value: [f32; 3] = core::array::from_fn(|c| f_cos[c] * le[c]);
+                    add(
+                        &mut l,
+                        &mut row.orders,
+                        order,
+                        &beta,
+                        &value,
+                        weight / p_light,
+                    );
                 }
             }
         }
 
         // 2. The scattered direction.
-        let scattered = match (hit.kind, &strand) {
-            (HitKind::Fiber { tangent, .. }, Some(s)) => s.sample(&wr, &tangent, u_scatter),
-            (HitKind::Fiber { .. }, None) => None,
-            (HitKind::Surface { normal, albedo }, _) => {
-                let wi = sample_cosine(&normal, [u_scatter[0], u_scatter[1]]);
-                let pdf = cosine_pdf(normal.dot(&wi));
-                (pdf > 0.0).then_some(crate::scatter::Scattered {
-                    wi,
-                    weight: albedo,
-                    pdf,
-                })
-            }
-        };
         let Some(s) = scattered else { break };
         let weight = match approximated {
             None => s.weight,

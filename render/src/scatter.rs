@@ -7,7 +7,7 @@
 //! paths (the guide's), so what differs between the two images is the evaluator, not the
 //! noise. Either is unbiased wherever the guide's density is positive where S is.
 
-use bcsdf_core::{Angles, Bcsdf, Frame};
+use bcsdf_core::{Angles, Bcsdf, Evaluated, Frame, Sample};
 use nalgebra::Vector3;
 
 /// A scattering direction drawn at a fiber.
@@ -31,6 +31,19 @@ pub trait Scatterer: Sync {
     /// Draws ω_i given ω_r = `wr` from three uniform numbers; `None` when nothing can be
     /// sampled.
     fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered>;
+
+    /// A vertex's two questions at once: [`Scatterer::eval`] of the light's direction `wl`
+    /// and [`Scatterer::sample`], with the same values; a BCSDF with a per-view context
+    /// builds it once ([`Bcsdf::eval_and_sample_dirs`]).
+    fn eval_and_sample(
+        &self,
+        wl: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+        u: [f32; 3],
+    ) -> (([f32; 3], f32), Option<Scattered>) {
+        (self.eval(wl, wr, tangent), self.sample(wr, tangent, u))
+    }
 }
 
 /// S·cos θ_i, RGB, with negative or non-finite channels as 0.
@@ -61,22 +74,51 @@ impl<S: Scatterer + ?Sized> Scatterer for &S {
     fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered> {
         (**self).sample(wr, tangent, u)
     }
+
+    fn eval_and_sample(
+        &self,
+        wl: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+        u: [f32; 3],
+    ) -> (([f32; 3], f32), Option<Scattered>) {
+        (**self).eval_and_sample(wl, wr, tangent, u)
+    }
 }
 
-/// S·cos θ_i and the density of one BCSDF ([`One`], [`Owned`]).
+/// S·cos θ_i and the density of an evaluated direction, or zeros.
+fn light_value(e: Option<Evaluated>) -> ([f32; 3], f32) {
+    e.map_or(([0.0; 3], 0.0), |e| {
+        (s_cos(e.value.total(), &e.angles), e.pdf)
+    })
+}
+
+/// A BCSDF's sample as the integrator takes it (it needs the world-space direction).
+fn scattered(s: Option<Sample>) -> Option<Scattered> {
+    let s = s?;
+    Some(Scattered {
+        wi: Vector3::from(s.wi?),
+        weight: s.weight.0,
+        pdf: s.pdf,
+    })
+}
+
+/// S·cos θ_i and the density of one BCSDF ([`One`], [`Owned`]), at the BCSDF's own
+/// direction-to-angle conversion ([`Bcsdf::angles_from_dirs`]).
 fn eval_one<B: Bcsdf>(
     b: &B,
     wi: &Vector3<f32>,
     wr: &Vector3<f32>,
     tangent: &Vector3<f32>,
 ) -> ([f32; 3], f32) {
-    match Angles::from_directions::<B::Math>((*wi).into(), (*wr).into(), (*tangent).into()) {
-        Ok(a) => {
-            let (value, pdf) = b.eval_with_pdf(&a);
-            (s_cos(value.total(), &a), pdf)
-        }
-        Err(_) => ([0.0; 3], 0.0),
-    }
+    light_value(
+        b.angles_from_dirs((*wi).into(), (*wr).into(), (*tangent).into())
+            .ok()
+            .map(|angles| {
+                let (value, pdf) = b.eval_with_pdf(&angles);
+                Evaluated { angles, value, pdf }
+            }),
+    )
 }
 
 /// A direction drawn from one BCSDF's sampler ([`One`], [`Owned`]).
@@ -86,13 +128,19 @@ fn sample_one<B: Bcsdf>(
     tangent: &Vector3<f32>,
     u: [f32; 3],
 ) -> Option<Scattered> {
-    let s = b.sample_dirs((*wr).into(), (*tangent).into(), u)?;
-    let wi = Vector3::from(s.wi?);
-    Some(Scattered {
-        wi,
-        weight: s.weight.0,
-        pdf: s.pdf,
-    })
+    scattered(b.sample_dirs((*wr).into(), (*tangent).into(), u))
+}
+
+/// Both at one vertex ([`Bcsdf::eval_and_sample_dirs`]).
+fn eval_and_sample_one<B: Bcsdf>(
+    b: &B,
+    wl: &Vector3<f32>,
+    wr: &Vector3<f32>,
+    tangent: &Vector3<f32>,
+    u: [f32; 3],
+) -> (([f32; 3], f32), Option<Scattered>) {
+    let (light, s) = b.eval_and_sample_dirs((*wl).into(), (*wr).into(), (*tangent).into(), u);
+    (light_value(light), scattered(s))
 }
 
 /// One BCSDF evaluates and samples.
@@ -110,6 +158,16 @@ impl<B: Bcsdf + Sync> Scatterer for One<'_, B> {
 
     fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered> {
         sample_one(self.0, wr, tangent, u)
+    }
+
+    fn eval_and_sample(
+        &self,
+        wl: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+        u: [f32; 3],
+    ) -> (([f32; 3], f32), Option<Scattered>) {
+        eval_and_sample_one(self.0, wl, wr, tangent, u)
     }
 }
 
@@ -129,6 +187,16 @@ impl<B: Bcsdf + Sync> Scatterer for Owned<B> {
 
     fn sample(&self, wr: &Vector3<f32>, tangent: &Vector3<f32>, u: [f32; 3]) -> Option<Scattered> {
         sample_one(&self.0, wr, tangent, u)
+    }
+
+    fn eval_and_sample(
+        &self,
+        wl: &Vector3<f32>,
+        wr: &Vector3<f32>,
+        tangent: &Vector3<f32>,
+        u: [f32; 3],
+    ) -> (([f32; 3], f32), Option<Scattered>) {
+        eval_and_sample_one(&self.0, wl, wr, tangent, u)
     }
 }
 

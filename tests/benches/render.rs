@@ -2,9 +2,9 @@
 //! on `ball` (64 spp, max depth 32, the baked evaluator of human-hair, two threads; the
 //! image scaled down to 24×18 so one iteration takes about a second), and the parts a
 //! path vertex spends its time in, timed alone: the BVH (closest hit of a scattered ray in
-//! the ball), the BCSDF (one baked eval+pdf and one baked sample, what a fiber vertex does)
-//! and the sampler (the seven uniform numbers a vertex draws). docs/benchmarks.md turns
-//! them into shares.
+//! the ball), the BCSDF (one baked eval+pdf and one baked sample, made apart and at one
+//! per-view context as a fiber vertex makes them) and the sampler (the seven uniform numbers
+//! a vertex draws). docs/benchmarks.md turns them into shares.
 
 use bake::profiles::{build_model, ProfileOptions};
 use bcsdf_core::lut::LutResolution;
@@ -89,6 +89,14 @@ fn bench(c: &mut Criterion) {
             let e = fiber.eval(wi, wr, &tangent);
             let s = fiber.sample(wr, &tangent, [0.3, 0.6, 0.9]);
             black_box((e, s))
+        })
+    });
+    // What a fiber vertex does since the two share the per-view context.
+    parts.bench_function("bcsdf_eval_and_sample_baked_one_view", |b| {
+        b.iter(|| {
+            k = (k + 1) & 255;
+            let (wr, wi) = (&rays[k].1, &rays[(k + 7) & 255].1);
+            black_box(fiber.eval_and_sample(wi, wr, &tangent, [0.3, 0.6, 0.9]))
         })
     });
     let mut sampler = Sampler::for_pixel(1, 1);

@@ -33,7 +33,7 @@
 use super::choose;
 use super::sliver::pole_keep;
 use crate::baked::{BakedBcsdf, Lookups};
-use crate::bcsdf::{solid_angle_pdf, Bcsdf, Sample, SampledDirection};
+use crate::bcsdf::{solid_angle_pdf, Bcsdf, Evaluated, Sample, SampledDirection};
 use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::{Families, LobeFamily};
 use crate::lut::cdf::Density;
@@ -252,6 +252,17 @@ impl<M: Math> Bcsdf for BakedBcsdf<'_, M> {
     /// [`BakedView::sample`]: the mixture weights of the draw serve the density too.
     fn sample(&self, theta_r: f32, u: [f32; 3]) -> Option<Sample> {
         self.view(theta_r)?.sample(u)
+    }
+
+    /// One [`BakedView`] for the light's direction and the sample.
+    fn eval_and_sample_dirs(
+        &self,
+        wl: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+        u: [f32; 3],
+    ) -> (Option<Evaluated>, Option<Sample>) {
+        self.eval_and_sample_dirs_with(self.default_colour(), wl, wr, tangent, u)
     }
 }
 

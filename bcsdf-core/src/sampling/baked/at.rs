@@ -3,7 +3,7 @@
 //! the LUT's view with that colour's values.
 
 use crate::baked::BakedAt;
-use crate::bcsdf::{Bcsdf, Sample, SampledDirection};
+use crate::bcsdf::{Bcsdf, Evaluated, Sample, SampledDirection};
 use crate::frame::{AngleError, Angles, Vec3};
 use crate::lobes::Families;
 use crate::math::Math;
@@ -55,5 +55,17 @@ impl<M: Math> Bcsdf for BakedAt<'_, '_, M> {
 
     fn sample(&self, theta_r: f32, u: [f32; 3]) -> Option<Sample> {
         self.view(theta_r)?.sample(u)
+    }
+
+    /// One [`BakedView`] at this colour for the light's direction and the sample.
+    fn eval_and_sample_dirs(
+        &self,
+        wl: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+        u: [f32; 3],
+    ) -> (Option<Evaluated>, Option<Sample>) {
+        self.lut()
+            .eval_and_sample_dirs_with(self.colour(), wl, wr, tangent, u)
     }
 }

@@ -10,8 +10,8 @@
 
 use super::rows::Range;
 use crate::baked::{BakedBcsdf, ColourAt};
-use crate::bcsdf::{finish, Sample, SampledDirection};
-use crate::frame::Angles;
+use crate::bcsdf::{at_one_view, finish, Evaluated, Sample, SampledDirection};
+use crate::frame::{Angles, Vec3};
 use crate::lobes::Families;
 use crate::math::{cos_within_half_pi, Math, PI};
 
@@ -73,6 +73,26 @@ impl<'a, M: Math> BakedBcsdf<'a, M> {
             total_weight: a + b + c + d + e,
             colour,
         })
+    }
+
+    /// [`Bcsdf::eval_and_sample_dirs`](crate::Bcsdf::eval_and_sample_dirs) at `colour`: one
+    /// view for the light's direction and the sample.
+    pub(crate) fn eval_and_sample_dirs_with(
+        &self,
+        colour: ColourAt,
+        wl: Vec3,
+        wr: Vec3,
+        tangent: Vec3,
+        u: [f32; 3],
+    ) -> (Option<Evaluated>, Option<Sample>) {
+        at_one_view(
+            self,
+            (wl, wr, tangent),
+            u,
+            |theta_r| self.view_with(theta_r, colour),
+            |v, a| v.eval_with_pdf_at(a),
+            |v, u| v.sample(u),
+        )
     }
 }
 

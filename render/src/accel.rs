@@ -1,16 +1,20 @@
 //! Ray queries against the fiber segments through the `bvh` crate's SAH BVH (docs/model.md §11).
 //!
-//! The crate builds the tree; the queries walk it front to back, read as compact inner nodes
-//! (`Inner`: both children's boxes axis by axis, leaves marked in the child reference):
-//! at an inner node both children's boxes are clipped against the ray's current interval,
-//! the nearer child is visited first and a child whose box starts beyond the closest hit so
-//! far is never opened. A closest hit in a dense coat then opens a few dozen nodes instead of
-//! every node the ray's whole length crosses (the crate's own iterator has no order and no
-//! shrinking interval: 12 500 instructions per closest hit in `ball`, 80 % of a render).
+//! The crate builds the tree; the queries walk it front to back, collapsed into four-wide
+//! nodes ([`tree`]: four children's boxes axis by axis, leaves marked in the child
+//! reference): at a node the four boxes are clipped against the ray's current interval, the
+//! children the ray enters are visited nearest first, and a child whose box starts beyond the
+//! closest hit so far is never opened. A closest hit in a dense coat then opens a few dozen
+//! nodes instead of every node the ray's whole length crosses (the crate's own iterator has
+//! no order and no shrinking interval: 12 500 instructions per closest hit in `ball`, 80 % of
+//! a render).
 
 use crate::fiber::{FiberSegment, SegmentHit};
 use bvh::aabb::{Aabb, IntersectsAabb};
-use bvh::bvh::{Bvh, BvhNode};
+use bvh::bvh::Bvh;
+use tree::{collapse, depth, Wide, EMPTY, LEAF};
+
+mod tree;
 use core::cell::Cell;
 use nalgebra::Vector3;
 
@@ -53,15 +57,16 @@ impl SegmentQuery {
 }
 
 impl SegmentQuery {
-    /// [`SegmentQuery::entry`] for both children of `node` at once, the same operations per
-    /// child (lane c is child c), so that the two boxes' slabs are one pair of vector
-    /// operations per axis.
+    /// [`SegmentQuery::entry`] for the four child slots of `node` at once, the same
+    /// operations per slot (lane c is slot c), so that the four boxes' slabs are one set of
+    /// 4-wide vector operations per axis; `INFINITY` for a box the ray misses. An empty
+    /// slot's lane is meaningless ([`EMPTY`]).
     #[inline]
-    fn entries(&self, node: &Inner) -> [Option<f32>; 2] {
-        let mut lo = [0.0f32; 2];
-        let mut hi = [self.t_max.get(); 2];
+    fn entries(&self, node: &Wide) -> [f32; 4] {
+        let mut lo = [0.0f32; 4];
+        let mut hi = [self.t_max.get(); 4];
         for k in 0..3 {
-            for c in 0..2 {
+            for c in 0..4 {
                 let t0 = (node.lo[k][c] - self.origin[k]) * self.inv_dir[k];
                 let t1 = (node.hi[k][c] - self.origin[k]) * self.inv_dir[k];
                 let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
@@ -73,7 +78,7 @@ impl SegmentQuery {
                 }
             }
         }
-        [0, 1].map(|c| (lo[c] <= hi[c]).then_some(lo[c]))
+        core::array::from_fn(|c| if lo[c] <= hi[c] { lo[c] } else { f32::INFINITY })
     }
 }
 
@@ -83,10 +88,10 @@ impl IntersectsAabb<f32, 3> for SegmentQuery {
     }
 }
 
-/// Nodes a front-to-back walk keeps pending at most: one per level of the tree. Deeper trees
-/// (never seen: a SAH tree over 10⁵ segments is about 40 levels deep) are walked with the
-/// crate's unordered iterator instead.
-const STACK: usize = 96;
+/// Nodes a front-to-back walk keeps pending at most: three per level of the tree. Deeper
+/// trees (never seen: a SAH tree over 10⁵ segments is about 40 levels deep) are walked with
+/// the crate's unordered iterator instead.
+const STACK: usize = 192;
 
 /// What a walk does at a leaf.
 enum Visit {
@@ -100,77 +105,11 @@ enum Visit {
 pub struct FiberAccel {
     segments: Vec<FiberSegment>,
     bvh: Bvh<f32, 3>,
-    /// The crate's tree as the walk reads it ([`Inner`]); the root is `root`.
-    inner: Vec<Inner>,
+    /// The crate's tree collapsed to four children per node ([`Wide`]); the root is `root`.
+    wide: Vec<Wide>,
     root: u32,
-    /// Whether every root-to-leaf path fits the walk's fixed stack ([`STACK`]).
+    /// Whether every walk fits the fixed stack ([`STACK`]).
     shallow: bool,
-}
-
-/// A child reference of the walk's tree: an index into [`FiberAccel::inner`], or, with this
-/// bit set, a segment index (a leaf: the crate's leaves hold one segment each).
-const LEAF: u32 = 1 << 31;
-
-/// One inner node of the crate's tree in the form the walk reads: its two children's boxes,
-/// axis by axis (`lo[k][c]`, `hi[k][c]` for child c = 0 left, 1 right), and the children's
-/// references ([`LEAF`]). 56 bytes against the crate's 80-byte node, and a child that is a
-/// leaf is known from its reference, without reading its node.
-#[derive(Clone, Copy, Debug)]
-struct Inner {
-    lo: [[f32; 2]; 3],
-    hi: [[f32; 2]; 3],
-    child: [u32; 2],
-}
-
-/// The crate's tree as [`Inner`] nodes, depth first with each left child right after its
-/// parent, and the root's reference; `None` if an index does not fit the references.
-fn flatten(bvh: &Bvh<f32, 3>) -> Option<(Vec<Inner>, u32)> {
-    let nodes = &bvh.nodes;
-    let reference =
-        |index: usize, inner: &mut Vec<Inner>, pending: &mut Vec<(usize, usize)>| match nodes
-            .get(index)?
-        {
-            BvhNode::Leaf { shape_index, .. } => {
-                let i = u32::try_from(*shape_index).ok().filter(|i| i & LEAF == 0)?;
-                Some(i | LEAF)
-            }
-            BvhNode::Node { .. } => {
-                let at = inner.len();
-                inner.push(Inner {
-                    lo: [[0.0; 2]; 3],
-                    hi: [[0.0; 2]; 3],
-                    child: [0; 2],
-                });
-                pending.push((index, at));
-                u32::try_from(at).ok().filter(|i| i & LEAF == 0)
-            }
-        };
-    let mut inner = Vec::with_capacity(nodes.len() / 2);
-    let mut pending = Vec::new();
-    let root = reference(0, &mut inner, &mut pending)?;
-    while let Some((index, at)) = pending.pop() {
-        let BvhNode::Node {
-            child_l_index,
-            child_l_aabb,
-            child_r_index,
-            child_r_aabb,
-            ..
-        } = &nodes[index]
-        else {
-            return None;
-        };
-        // Right first onto `pending`, so that the left child is flattened next, after its
-        // parent.
-        let r = reference(*child_r_index, &mut inner, &mut pending)?;
-        let l = reference(*child_l_index, &mut inner, &mut pending)?;
-        let boxes = [child_l_aabb, child_r_aabb];
-        inner[at] = Inner {
-            lo: core::array::from_fn(|k| [boxes[0].min[k], boxes[1].min[k]]),
-            hi: core::array::from_fn(|k| [boxes[0].max[k], boxes[1].max[k]]),
-            child: [l, r],
-        };
-    }
-    Some((inner, root))
 }
 
 /// Which nearby hits to ignore: those on fiber `fiber` closer than `dist` (a ray leaving a
@@ -200,14 +139,16 @@ impl FiberAccel {
         let flat = if segments.is_empty() {
             None
         } else {
-            flatten(&bvh)
+            collapse(&bvh)
         };
-        let shallow = flat.is_some() && depth(&bvh) < STACK;
-        let (inner, root) = flat.unwrap_or_default();
+        // A wide node on the path holds at most three pending siblings; the crate's depth
+        // bounds the wide tree's.
+        let shallow = flat.is_some() && 3 * depth(&bvh) + 1 < STACK;
+        let (wide, root) = flat.unwrap_or_default();
         FiberAccel {
             segments,
             bvh,
-            inner,
+            wide,
             root,
             shallow,
         }
@@ -328,40 +269,26 @@ impl FiberAccel {
                 }
                 continue;
             }
-            let node = &self.inner[reference as usize];
-            let [l, r] = query.entries(node);
-            let l = l.map(|t| (node.child[0], t));
-            let r = r.map(|t| (node.child[1], t));
-            // Pushed far first, so the near child is popped next.
-            let (first, second) = match (l, r) {
-                (Some(a), Some(b)) if a.1 > b.1 => (Some(a), Some(b)),
-                (a, b) => (b, a),
-            };
-            for child in [first, second].into_iter().flatten() {
-                stack[len] = child;
+            let node = &self.wide[reference as usize];
+            let entries = query.entries(node);
+            // The children the ray enters, pushed far first so that the nearest is popped
+            // next (insertion by entry distance; equal distances keep the slot order).
+            let base = len;
+            for (c, &enter) in entries.iter().enumerate() {
+                let child = node.child[c];
+                if child == EMPTY || enter == f32::INFINITY {
+                    continue;
+                }
+                let mut at = len;
+                while at > base && stack[at - 1].1 <= enter {
+                    stack[at] = stack[at - 1];
+                    at -= 1;
+                }
+                stack[at] = (child, enter);
                 len += 1;
             }
         }
     }
-}
-
-/// The number of nodes on the tree's longest root-to-leaf path.
-fn depth(bvh: &Bvh<f32, 3>) -> usize {
-    let mut deepest = 0;
-    let mut pending = vec![(0usize, 1usize)];
-    while let Some((index, d)) = pending.pop() {
-        deepest = deepest.max(d);
-        if let Some(BvhNode::Node {
-            child_l_index,
-            child_r_index,
-            ..
-        }) = bvh.nodes.get(index)
-        {
-            pending.push((*child_l_index, d + 1));
-            pending.push((*child_r_index, d + 1));
-        }
-    }
-    deepest
 }
 
 /// The fibers a shadow ray met, kept on the stack while they fit (no allocation per ray) and
@@ -410,6 +337,7 @@ impl<const N: usize> FiberSet<N> {
 mod tests {
     use super::*;
     use bcsdf_core::rng::Pcg32;
+    use bvh::aabb::Bounded;
 
     /// A random unit vector from two uniforms.
     fn direction(rng: &mut Pcg32) -> Vector3<f32> {
@@ -488,6 +416,59 @@ mod tests {
             );
         }
         assert!(hits > 500 && misses > 500, "{hits} hits, {misses} misses");
+    }
+
+    /// The collapsed tree references every segment exactly once, each slot's box holds its
+    /// subtree, and a node with an empty slot has nothing left to open (every child a leaf).
+    #[test]
+    fn collapsed_nodes_hold_four_children_and_every_segment_once() {
+        let mut rng = Pcg32::new(3, 17);
+        let segments = coat(&mut rng);
+        let accel = FiberAccel::new(segments.clone());
+        let mut seen = vec![0u32; segments.len()];
+        let (mut slots, mut nodes) = (0, 0);
+        // (reference, the box its parent holds for it)
+        let mut pending = vec![(accel.root, None::<([f32; 3], [f32; 3])>)];
+        while let Some((reference, bounds)) = pending.pop() {
+            let inside = |lo: [f32; 3], hi: [f32; 3]| {
+                bounds.is_none_or(|(blo, bhi)| (0..3).all(|k| blo[k] <= lo[k] && hi[k] <= bhi[k]))
+            };
+            if reference & LEAF != 0 {
+                let seg = &segments[(reference & !LEAF) as usize];
+                let b = seg.aabb();
+                assert!(inside(
+                    [b.min.x, b.min.y, b.min.z],
+                    [b.max.x, b.max.y, b.max.z]
+                ));
+                seen[(reference & !LEAF) as usize] += 1;
+                continue;
+            }
+            let node = &accel.wide[reference as usize];
+            nodes += 1;
+            if node.child.contains(&EMPTY) {
+                assert!(
+                    node.child.iter().all(|&c| c == EMPTY || c & LEAF != 0),
+                    "a node with an empty slot and an inner child: {:?}",
+                    node.child
+                );
+            }
+            for c in 0..4 {
+                if node.child[c] == EMPTY {
+                    continue;
+                }
+                slots += 1;
+                let lo = [0, 1, 2].map(|k| node.lo[k][c]);
+                let hi = [0, 1, 2].map(|k| node.hi[k][c]);
+                assert!(inside(lo, hi), "a child's box outside its parent's");
+                pending.push((node.child[c], Some((lo, hi))));
+            }
+        }
+        assert!(seen.iter().all(|&n| n == 1), "every segment once");
+        // Against the binary tree's two per node (3000 segments: 4446 slots in 1447 nodes).
+        assert!(
+            slots as f64 / nodes as f64 > 3.0,
+            "{slots} slots in {nodes} nodes"
+        );
     }
 
     /// `FiberSet` counts distinct fibers on the stack and after spilling to the heap (a

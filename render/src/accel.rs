@@ -1,7 +1,7 @@
 //! Ray queries against the fiber segments through the `bvh` crate's SAH BVH (docs/model.md §11).
 //!
 //! The crate builds the tree; the queries walk it front to back, collapsed into four-wide
-//! nodes ([`tree`]: four children's boxes axis by axis, leaves marked in the child
+//! nodes (`tree`: four children's boxes axis by axis, leaves marked in the child
 //! reference): at a node the four boxes are clipped against the ray's current interval, the
 //! children the ray enters are visited nearest first, and a child whose box starts beyond the
 //! closest hit so far is never opened. A closest hit in a dense coat then opens a few dozen

@@ -66,16 +66,16 @@ impl SegmentQuery {
         let mut lo = [0.0f32; 4];
         let mut hi = [self.t_max.get(); 4];
         for k in 0..3 {
+            let (o, inv) = (self.origin[k], self.inv_dir[k]);
+            let t0: [f32; 4] = core::array::from_fn(|c| (node.lo[k][c] - o) * inv);
+            let t1: [f32; 4] = core::array::from_fn(|c| (node.hi[k][c] - o) * inv);
+            // Selects, not branches, lane by lane: one vector compare and blend each.
             for c in 0..4 {
-                let t0 = (node.lo[k][c] - self.origin[k]) * self.inv_dir[k];
-                let t1 = (node.hi[k][c] - self.origin[k]) * self.inv_dir[k];
-                let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
-                if near > lo[c] {
-                    lo[c] = near;
-                }
-                if far < hi[c] {
-                    hi[c] = far;
-                }
+                let ordered = t0[c] <= t1[c];
+                let near = if ordered { t0[c] } else { t1[c] };
+                let far = if ordered { t1[c] } else { t0[c] };
+                lo[c] = if near > lo[c] { near } else { lo[c] };
+                hi[c] = if far < hi[c] { far } else { hi[c] };
             }
         }
         core::array::from_fn(|c| if lo[c] <= hi[c] { lo[c] } else { f32::INFINITY })

@@ -1,5 +1,5 @@
 //! `cargo bench -p fur-tests --bench render`: rays per second of the path tracer
-//! on `ball` (64 spp, max depth 32, the baked evaluator of human-hair, two threads; the
+//! on `ball` (64 spp, max depth 32, the baked evaluator of human-hair, two threads and one; the
 //! image scaled down to 24×18 so one iteration takes about a second), and the parts a
 //! path vertex spends its time in, timed alone: the BVH (closest hit of a scattered ray in
 //! the ball), the BCSDF (one baked eval+pdf and one baked sample, made apart and at one
@@ -57,6 +57,14 @@ fn bench(c: &mut Criterion) {
     g.throughput(Throughput::Elements(probe.rays));
     g.bench_function("ball_64spp_depth32_baked_2threads", |b| {
         b.iter(|| integrator::render(&scene, &One(&baked), black_box(&settings)).unwrap())
+    });
+    // Per core without the two threads' share of 18 rows: the same render on one thread.
+    let one = Settings {
+        threads: Some(1),
+        ..settings
+    };
+    g.bench_function("ball_64spp_depth32_baked_1thread", |b| {
+        b.iter(|| integrator::render(&scene, &One(&baked), black_box(&one)).unwrap())
     });
     g.finish();
 

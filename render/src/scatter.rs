@@ -243,3 +243,52 @@ impl<E: Bcsdf + Sync, G: Bcsdf + Sync> Scatterer for Guided<'_, E, G> {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use bcsdf_core::rng::Pcg32;
+    use bcsdf_core::{presets, FurBcsdf, FurParams, Libm};
+
+    fn random_direction(rng: &mut Pcg32) -> Vector3<f32> {
+        Vector3::new(
+            2.0 * rng.uniform() - 1.0,
+            2.0 * rng.uniform() - 1.0,
+            2.0 * rng.uniform() - 1.0,
+        )
+    }
+
+    /// A vertex's call answers what `eval` and `sample` answer apart, bit for bit, through
+    /// `One`, `Owned` and a reference.
+    #[test]
+    fn eval_and_sample_is_eval_then_sample() {
+        let params = FurParams::new(&presets::find("human-hair").unwrap().input).unwrap();
+        let hair: FurBcsdf<'static, Libm> = FurBcsdf::unscattered(params);
+        let one = One(&hair);
+        let owned = Owned(FurBcsdf::<'static, Libm>::unscattered(params));
+        let mut rng = Pcg32::new(4, 21);
+        let mut sampled = 0;
+        for _ in 0..60 {
+            let (wl, wr, t) = (
+                random_direction(&mut rng),
+                random_direction(&mut rng),
+                random_direction(&mut rng),
+            );
+            let u = [rng.uniform(), rng.uniform(), rng.uniform()];
+            let apart = (one.eval(&wl, &wr, &t), one.sample(&wr, &t, u));
+            let bits = |r: &(([f32; 3], f32), Option<Scattered>)| {
+                let ((v, p), s) = r;
+                (
+                    v.map(f32::to_bits),
+                    p.to_bits(),
+                    s.map(|s| (s.wi.map(f32::to_bits), s.weight.map(f32::to_bits), s.pdf)),
+                )
+            };
+            sampled += usize::from(apart.1.is_some());
+            assert_eq!(bits(&one.eval_and_sample(&wl, &wr, &t, u)), bits(&apart));
+            assert_eq!(bits(&owned.eval_and_sample(&wl, &wr, &t, u)), bits(&apart));
+            assert_eq!(bits(&(&one).eval_and_sample(&wl, &wr, &t, u)), bits(&apart));
+        }
+        assert!(sampled > 40, "{sampled} of 60 sampled");
+    }
+}

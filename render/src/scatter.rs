@@ -259,7 +259,7 @@ mod tests {
     }
 
     /// A vertex's call answers what `eval` and `sample` answer apart, bit for bit, through
-    /// `One`, `Owned` and a reference.
+    /// `One`, `Owned` and a trait object.
     #[test]
     fn eval_and_sample_is_eval_then_sample() {
         let params = FurParams::new(&presets::find("human-hair").unwrap().input).unwrap();
@@ -287,7 +287,8 @@ mod tests {
             sampled += usize::from(apart.1.is_some());
             assert_eq!(bits(&one.eval_and_sample(&wl, &wr, &t, u)), bits(&apart));
             assert_eq!(bits(&owned.eval_and_sample(&wl, &wr, &t, u)), bits(&apart));
-            assert_eq!(bits(&(&one).eval_and_sample(&wl, &wr, &t, u)), bits(&apart));
+            let by_ref: &dyn Scatterer = &one;
+            assert_eq!(bits(&by_ref.eval_and_sample(&wl, &wr, &t, u)), bits(&apart));
         }
         assert!(sampled > 40, "{sampled} of 60 sampled");
     }

@@ -1469,6 +1469,23 @@ fn fur_dual_below(x: f32) -> f32 {
     return select(deep, min(x + FUR_DUAL_LINE_SAMPLE_OFFSET, FUR_DUAL_MAX_FIBERS), !fur_is_nan(x) && x >= 0.0);
 }
 
+// The two-stream diffusivity factor (dual::coat::DIFFUSIVITY, docs/model.md §13 "The light's
+// incidence on the coat").
+const FUR_DUAL_DIFFUSIVITY: f32 = 2.0;
+
+// The count of the coat below to pass as fur_eval_dual's fibers_below when the skin normal
+// under the strand is known (dual::coat::below_at_incidence): count_on_line counted along the
+// light's line, cos_to_skin the cosine between the direction toward the light and the skin
+// normal; the term then uses 2 |cos_to_skin| (count_on_line + 1) layers, at least 1.
+// count_on_line < 0, NaN or >= 1e6 (the skin, a semi-infinite coat) and a NaN cos_to_skin
+// (the normal unknown) return count_on_line unchanged.
+fn fur_dual_below_at_incidence(count_on_line: f32, cos_to_skin: f32) -> f32 {
+    let skin_layers = FUR_DUAL_DIFFUSIVITY * min(abs(cos_to_skin), 1.0) * (count_on_line + FUR_DUAL_LINE_SAMPLE_OFFSET);
+    let as_count = max(skin_layers - FUR_DUAL_LINE_SAMPLE_OFFSET, 0.0);
+    let known = !fur_is_nan(count_on_line) && count_on_line >= 0.0 && count_on_line < FUR_DUAL_MAX_FIBERS && !fur_is_nan(cos_to_skin);
+    return select(count_on_line, as_count, known);
+}
+
 // The dual-scattering term to add to single scattering (DualLut::eval, docs/model.md §13),
 // RGB, in S's units (the caller multiplies by cos theta_i and the light's radiance like S).
 // `fibers` is n, the number of fibers between the shading point and the light (fractional

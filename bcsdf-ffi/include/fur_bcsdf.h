@@ -481,6 +481,19 @@ enum fur_status fur_eval_dual_dirs(const struct fur_dual *FUR_RESTRICT dual,
                                    float *FUR_RESTRICT out_rgb);
 
 /**
+ * The `fibers_below` to pass to `fur_eval_dual` / `fur_eval_dual_dirs` when the engine
+ * knows the skin normal under the strand (the groom's root normal; docs/model.md §13 "The
+ * light's incidence on the coat", docs/engines.md): `fibers_below` is m as counted along the
+ * light's line (as those functions take it without the normal) and `cos_to_normal` the
+ * cosine between the direction toward the light and that normal. The term then uses
+ * 2 |cos| (m + 1) layers of coat below, at least 1: the coat's normal depth crossed twice by
+ * the diffuse light it returns, not the light's chord. A negative, NaN or infinite
+ * `fibers_below` (or one of 10^6 and more) and a NaN `cos_to_normal` (the normal unknown)
+ * are returned unchanged. `bcsdf_core::dual::coat::below_at_incidence`, bit for bit.
+ */
+float fur_dual_below_at_incidence(float fibers_below, float cos_to_normal);
+
+/**
  * Far-field S(omega_i, omega_r), RGB, into `out_rgb[3]` (0 and `FUR_ERR_ANGLE` for invalid
  * angles). `out_rgb` must not overlap `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
  *

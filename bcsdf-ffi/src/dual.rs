@@ -410,6 +410,20 @@ pub unsafe extern "C" fn fur_eval_dual_dirs(
     status
 }
 
+/// The `fibers_below` to pass to `fur_eval_dual` / `fur_eval_dual_dirs` when the engine
+/// knows the skin normal under the strand (the groom's root normal; docs/model.md §13 "The
+/// light's incidence on the coat", docs/engines.md): `fibers_below` is m as counted along the
+/// light's line (as those functions take it without the normal) and `cos_to_normal` the
+/// cosine between the direction toward the light and that normal. The term then uses
+/// 2 |cos| (m + 1) layers of coat below, at least 1: the coat's normal depth crossed twice by
+/// the diffuse light it returns, not the light's chord. A negative, NaN or infinite
+/// `fibers_below` (or one of 10^6 and more) and a NaN `cos_to_normal` (the normal unknown)
+/// are returned unchanged. `bcsdf_core::dual::coat::below_at_incidence`, bit for bit.
+#[no_mangle]
+pub extern "C" fn fur_dual_below_at_incidence(fibers_below: f32, cos_to_normal: f32) -> f32 {
+    bcsdf_core::dual::coat::below_at_incidence(fibers_below, cos_to_normal)
+}
+
 #[cfg(test)]
 #[path = "dual_tests.rs"]
 mod tests;

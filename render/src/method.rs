@@ -20,7 +20,8 @@
 //! drawn per vertex are those of `path`, so a render is the same bits for any thread count.
 
 use crate::scatter::Scatterer;
-use bcsdf_core::dual::{Density, DualLut, Fibers};
+use crate::scene::CoatBelow;
+use bcsdf_core::dual::{coat, Density, DualLut, Fibers};
 use bcsdf_core::{Angles, Libm};
 use core::fmt;
 use core::str::FromStr;
@@ -99,8 +100,11 @@ impl Method<'_> {
 
     /// What a fiber returns toward `wr` for unit radiance from `wi` when the ray toward the
     /// light (or surface) crossed `fibers` fibers: S·cos θ_i·V, plus D·cos θ_i for `dual`
-    /// (RGB, ≥ 0, finite), whose coat below the point `below` counts (called for `dual`
-    /// only: [`crate::scene::Scene::fibers_below`] casts one more ray).
+    /// (RGB, ≥ 0, finite), whose coat below the point `below` finds (called for `dual`
+    /// only: [`crate::scene::Scene::fibers_below`] casts one more ray): its count along the
+    /// light's line and the light's incidence on the skin under the fiber, turned into the
+    /// term's count by [`bcsdf_core::dual::coat::below_at_incidence`] (docs/model.md §13,
+    /// "The light's incidence on the coat").
     pub(crate) fn fiber_light<S: Scatterer>(
         &self,
         fiber: &S,
@@ -108,7 +112,7 @@ impl Method<'_> {
         wr: &Vector3<f32>,
         tangent: &Vector3<f32>,
         fibers: u32,
-        below: impl FnOnce() -> u32,
+        below: impl FnOnce() -> CoatBelow,
     ) -> [f32; 3] {
         let mut value = if fibers == 0 {
             fiber.eval(wi, wr, tangent).0
@@ -120,7 +124,12 @@ impl Method<'_> {
                 Angles::from_directions::<Libm>((*wi).into(), (*wr).into(), (*tangent).into())
             {
                 let cos = a.theta_i().cos().max(0.0);
-                let counts = Fibers::new(fibers as f32, below() as f32);
+                // The coat below as the light scattered inside the coat sees it: the count
+                // along the light's line, rescaled by the light's incidence on the skin under
+                // the fiber where the scene knows it (docs/model.md §13).
+                let below = below();
+                let m = coat::below_at_incidence(below.count as f32, below.incidence);
+                let counts = Fibers::new(fibers as f32, m);
                 let d = lut.eval(&a, counts, *density);
                 for c in 0..3 {
                     let v = d[c] * cos;

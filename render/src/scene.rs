@@ -54,6 +54,23 @@ pub struct Scene {
     pub epsilon: f32,
     /// Distance within which a ray leaving a fiber ignores that same fiber (a few radii).
     pub self_distance: f32,
+    /// The unit skin normal at each fiber's root, by fiber index (what an engine's groom
+    /// carries per strand); empty when the scene has no skin under its fibers. The `dual`
+    /// method gives the term the light's incidence on the coat from it ([`CoatBelow`]).
+    pub root_normals: Vec<Vector3<f32>>,
+}
+
+/// The coat below a fiber's shading point toward one light (docs/model.md §13, "The coat
+/// below", "The light's incidence on the coat"): what [`Scene::fibers_below`] finds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CoatBelow {
+    /// The fibers beyond the point on the line from the light through it, up to the first
+    /// surface or out of the scene (m of [`bcsdf_core::dual::Fibers`]).
+    pub count: u32,
+    /// cos ι between the direction toward the light and the skin normal at the fiber's root
+    /// ([`bcsdf_core::dual::Fibers::incidence`]); NaN when the scene has no root normal for
+    /// the fiber.
+    pub incidence: f32,
 }
 
 impl Scene {
@@ -76,7 +93,16 @@ impl Scene {
             camera,
             epsilon: 1e-4,
             self_distance: 4.0 * r_max,
+            root_normals: Vec::new(),
         }
+    }
+
+    /// The scene with `normals[i]` the unit skin normal at fiber i's root
+    /// ([`Scene::root_normals`]).
+    #[must_use]
+    pub fn with_root_normals(mut self, normals: Vec<Vector3<f32>>) -> Scene {
+        self.root_normals = normals;
+        self
     }
 
     /// Number of fiber segments.
@@ -171,22 +197,29 @@ impl Scene {
         Some(self.count_fibers(origin, dir, from, f32::INFINITY))
     }
 
-    /// The fibers beyond `origin` (other than `from`) on the line from a light through it:
-    /// along −`toward_light` up to the first surface (skin, ground) or out of the scene. The
-    /// coat below the shading point, m of [`bcsdf_core::dual::Fibers`] (docs/model.md §13,
-    /// "The coat below").
+    /// The coat below a point of fiber `from` toward a light in direction `toward_light`
+    /// (unit): the fibers beyond `origin` (other than `from`) on the line from the light
+    /// through it, along −`toward_light` up to the first surface (skin, ground) or out of the
+    /// scene, and the light's incidence on the skin under the fiber (docs/model.md §13, "The
+    /// coat below", "The light's incidence on the coat").
     #[must_use]
     pub fn fibers_below(
         &self,
         origin: &Vector3<f32>,
         toward_light: &Vector3<f32>,
         from: Option<u32>,
-    ) -> u32 {
+    ) -> CoatBelow {
         let away = -toward_light;
         let t_max = self
             .intersect_surfaces(origin, &away)
             .map_or(f32::INFINITY, |s| s.t);
-        self.count_fibers(origin, &away, from, t_max)
+        let incidence = from
+            .and_then(|id| self.root_normals.get(id as usize))
+            .map_or(f32::NAN, |n| n.dot(toward_light));
+        CoatBelow {
+            count: self.count_fibers(origin, &away, from, t_max),
+            incidence,
+        }
     }
 
     /// The distinct fibers (other than `from`) on the unit ray before distance `t_max`.

@@ -263,6 +263,7 @@ pub fn build(opts: &SceneOptions) -> Scene {
                 Lights::new(vec![(rim, 0.7), (env, 0.3)]),
                 camera,
             )
+            .with_root_normals(vec![Vector3::y(); fibers])
         }
         SceneKind::Ball => {
             let g = Growth {
@@ -274,8 +275,10 @@ pub fn build(opts: &SceneOptions) -> Scene {
                 jitter: 0.08,
             };
             let center = BALL_CENTER;
+            let mut normals = Vec::with_capacity(fibers);
             for id in 0..fibers {
                 let n = uniform_sphere(&mut rng);
+                normals.push(n);
                 // Combed downward: gravity projected onto the tangent plane.
                 let down = Vector3::new(0.0, -1.0, 0.0);
                 let mut comb = down - n * n.dot(&down);
@@ -328,6 +331,7 @@ pub fn build(opts: &SceneOptions) -> Scene {
                 Lights::new(vec![(key, 0.8), (env, 0.2)]),
                 camera,
             )
+            .with_root_normals(normals)
         }
     }
 }

@@ -191,6 +191,7 @@ constant float FUR_ERF_A3_ = 0.009270527;
 constant float FUR_ERF_A4_ = 0.0001520143;
 constant float FUR_ERF_A5_ = 0.0002765672;
 constant float FUR_ERF_A6_ = 0.0000430638;
+constant float FUR_DUAL_DIFFUSIVITY = 2.0;
 constant uint FUR_COAT_NODES = 24u;
 constant float FUR_COAT_AXIS_END = 0.9995004;
 
@@ -2549,6 +2550,38 @@ float fur_dual_below(
     }
     bool _e16 = local_28;
     return _e16 ? metal::min(x_14 + FUR_DUAL_LINE_SAMPLE_OFFSET, FUR_DUAL_MAX_FIBERS) : deep;
+}
+
+float fur_dual_below_at_incidence(
+    float count_on_line,
+    float cos_to_skin
+) {
+    bool local_29 = {};
+    bool local_30 = {};
+    bool local_31 = {};
+    float skin_layers = (FUR_DUAL_DIFFUSIVITY * metal::min(metal::abs(cos_to_skin), 1.0)) * (count_on_line + FUR_DUAL_LINE_SAMPLE_OFFSET);
+    float as_count = metal::max(skin_layers - FUR_DUAL_LINE_SAMPLE_OFFSET, 0.0);
+    bool _e14 = fur_is_nan(count_on_line);
+    if (!(_e14)) {
+        local_29 = count_on_line >= 0.0;
+    } else {
+        local_29 = false;
+    }
+    bool _e21 = local_29;
+    if (_e21) {
+        local_30 = count_on_line < FUR_DUAL_MAX_FIBERS;
+    } else {
+        local_30 = false;
+    }
+    bool _e27 = local_30;
+    if (_e27) {
+        bool _e30 = fur_is_nan(cos_to_skin);
+        local_31 = !(_e30);
+    } else {
+        local_31 = false;
+    }
+    bool known = local_31;
+    return known ? as_count : count_on_line;
 }
 
 metal::float3 fur_eval_dual(

@@ -140,6 +140,7 @@ const float FUR_ERF_A3_ = 0.009270527;
 const float FUR_ERF_A4_ = 0.0001520143;
 const float FUR_ERF_A5_ = 0.0002765672;
 const float FUR_ERF_A6_ = 4.30638e-5;
+const float FUR_DUAL_DIFFUSIVITY = 2.0;
 const uint FUR_COAT_NODES = 24u;
 const float FUR_COAT_AXIS_END = 0.9995004;
 
@@ -1082,6 +1083,35 @@ float fur_dual_below(float x_14) {
     }
     bool _e16 = local_28;
     return (_e16 ? min((x_14 + FUR_DUAL_LINE_SAMPLE_OFFSET), FUR_DUAL_MAX_FIBERS) : deep);
+}
+
+float fur_dual_below_at_incidence(float count_on_line, float cos_to_skin) {
+    bool local_29 = false;
+    bool local_30 = false;
+    bool local_31 = false;
+    float skin_layers = ((FUR_DUAL_DIFFUSIVITY * min(abs(cos_to_skin), 1.0)) * (count_on_line + FUR_DUAL_LINE_SAMPLE_OFFSET));
+    float as_count = max((skin_layers - FUR_DUAL_LINE_SAMPLE_OFFSET), 0.0);
+    bool _e14 = fur_is_nan(count_on_line);
+    if (!(_e14)) {
+        local_29 = (count_on_line >= 0.0);
+    } else {
+        local_29 = false;
+    }
+    bool _e21 = local_29;
+    if (_e21) {
+        local_30 = (count_on_line < FUR_DUAL_MAX_FIBERS);
+    } else {
+        local_30 = false;
+    }
+    bool _e27 = local_30;
+    if (_e27) {
+        bool _e30 = fur_is_nan(cos_to_skin);
+        local_31 = !(_e30);
+    } else {
+        local_31 = false;
+    }
+    bool known = local_31;
+    return (known ? as_count : count_on_line);
 }
 
 vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fibers, float fibers_below, float d_f_in, float d_b_in, vec3 sigma_ca_6) {

@@ -143,3 +143,35 @@ pub fn coat_below_layers(below: f32) -> f32 {
         MAX_FIBERS // NaN
     }
 }
+
+/// The two-stream diffusivity factor 1/μ̄ (docs/model.md §13 "The light's incidence on the
+/// coat"): light scattered inside a coat crosses a plane of it as a diffuse flux; for
+/// radiance isotropic over the hemisphere the crossing directions' cosines μ are distributed
+/// as 2μ dμ, so its mean path through a layer of normal depth d is d·E[1/μ] = 2d. (The
+/// atmospheric two-stream practice's 1.66 was measured too: §13.)
+pub const DIFFUSIVITY: f32 = 2.0;
+
+/// The count of the coat below to pass as [`crate::dual::Fibers::below`] when the caller
+/// knows the light's incidence on the coat (docs/model.md §13 "The light's incidence on the
+/// coat"): `line_count` is m counted along the light's line (what [`Fibers::below`] takes
+/// without the normal) and `cos_to_normal` = cos ι between the direction toward the light
+/// and the skin normal under the strand (the strand's root normal). A flat coat's chord along
+/// the light is its normal depth over |cos ι|, and the light the coat returns to the point
+/// is diffuse, crossing [`DIFFUSIVITY`] normal depths; so the layers the term uses are
+/// [`DIFFUSIVITY`]·|cos ι|·(m + [`LINE_SAMPLE_OFFSET`]), at least [`LINE_SAMPLE_OFFSET`]
+/// (the point lies in the coat), returned as the count that [`coat_below_layers`] maps to
+/// them. |cos ι| is clamped to 1. A negative, NaN or infinite `line_count` (the skin, the
+/// semi-infinite coat) and a NaN `cos_to_normal` (the normal unknown) return `line_count`
+/// unchanged: the behaviour without the normal. The shader's `fur_dual_below_at_incidence`
+/// repeats it.
+///
+/// [`Fibers::below`]: crate::dual::Fibers::below
+#[inline(always)]
+#[must_use]
+pub fn below_at_incidence(line_count: f32, cos_to_normal: f32) -> f32 {
+    if !(0.0..MAX_FIBERS).contains(&line_count) || cos_to_normal.is_nan() {
+        return line_count;
+    }
+    let layers = DIFFUSIVITY * cos_to_normal.abs().min(1.0) * (line_count + LINE_SAMPLE_OFFSET);
+    (layers - LINE_SAMPLE_OFFSET).max(0.0)
+}

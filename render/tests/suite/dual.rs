@@ -594,3 +594,6 @@ fn diagnose_the_curved_coat() {
 fn luminance_f64(o: &[f64; 3]) -> f64 {
     0.2126 * o[0] + 0.7152 * o[1] + 0.0722 * o[2]
 }
+
+#[path = "dual_incidence.rs"]
+mod incidence;

@@ -188,3 +188,52 @@ fn the_coat_below_lights_the_point() {
         assert_eq!(lut.eval(&a, Fibers::deep(n), d), last);
     }
 }
+
+#[test]
+fn the_light_s_incidence_turns_the_line_into_the_coat_s_normal_depth() {
+    use crate::dual::coat::{below_at_incidence, coat_below_layers, DIFFUSIVITY};
+    // The layers the term uses: DIFFUSIVITY·|cos ι|·(m + 1), at least 1, whatever the sign
+    // of cos ι; at |cos ι| = 1/DIFFUSIVITY the line's count is the coat's.
+    for m in [0.0f32, 0.5, 2.0, 7.0, 40.0] {
+        for c in [1.0f32, 0.8, 0.5, 0.3, 0.1, 0.0] {
+            let want = (2.0 * c * (m + 1.0)).max(1.0);
+            for s in [c, -c] {
+                let got = coat_below_layers(below_at_incidence(m, s));
+                assert!(
+                    (got - want).abs() <= 1e-5 * want,
+                    "m {m} cos {s}: {got} layers, want {want}"
+                );
+            }
+        }
+        assert_eq!(below_at_incidence(m, 1.0 / DIFFUSIVITY), m);
+        // |cos ι| above 1 (a caller's rounding) is 1.
+        assert_eq!(below_at_incidence(m, 1.5), below_at_incidence(m, 1.0));
+    }
+    // The normal unknown (NaN), the skin (negative), the semi-infinite coat (NaN, ∞, ≥ 10⁶):
+    // the count as given, bit for bit.
+    for m in [0.0f32, 3.0, -1.0, -0.0, f32::INFINITY, 2.0e6] {
+        assert_eq!(below_at_incidence(m, f32::NAN).to_bits(), m.to_bits());
+    }
+    for m in [-1.0f32, f32::INFINITY, 2.0e6] {
+        assert_eq!(below_at_incidence(m, 0.7).to_bits(), m.to_bits());
+    }
+    // −0 is a count of 0 (coat_below_layers: a point in the coat), not the skin.
+    assert_eq!(below_at_incidence(-0.0, 0.7), below_at_incidence(0.0, 0.7));
+    assert!(below_at_incidence(f32::NAN, 0.7).is_nan());
+    // Through the evaluator: at normal incidence the unoccluded point sees a deeper coat
+    // below than the line's (more local backscatter), at grazing incidence a shallower one.
+    let t = absorbing_tables();
+    let lut = lut_of(&t, Attenuation::Coat);
+    let a = Angles::new(0.3, -0.2, 0.4).unwrap();
+    let d = Density::DEFAULT;
+    let line = lut.eval(&a, Fibers::new(0.0, 2.0), d);
+    let normal = lut.eval(&a, Fibers::new(0.0, below_at_incidence(2.0, 1.0)), d);
+    let grazing = lut.eval(&a, Fibers::new(0.0, below_at_incidence(2.0, 0.1)), d);
+    for c in 0..3 {
+        assert!(
+            normal[c] > line[c] && grazing[c] < line[c],
+            "{normal:?} {line:?} {grazing:?}"
+        );
+    }
+    assert_eq!(normal, lut.eval(&a, Fibers::new(0.0, 5.0), d));
+}

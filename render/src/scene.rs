@@ -68,8 +68,8 @@ pub struct CoatBelow {
     /// surface or out of the scene (m of [`bcsdf_core::dual::Fibers`]).
     pub count: u32,
     /// cos ι between the direction toward the light and the skin normal at the fiber's root
-    /// ([`bcsdf_core::dual::Fibers::incidence`]); NaN when the scene has no root normal for
-    /// the fiber.
+    /// (what [`bcsdf_core::dual::coat::below_at_incidence`] takes); NaN when the scene has no
+    /// root normal for the fiber.
     pub incidence: f32,
 }
 

@@ -249,14 +249,7 @@ fn dual_renders_are_deterministic() {
     let mut input = presets::find("human-hair").unwrap().input;
     input.closure = Closure::Energy;
     common::with_model(&input, |model| {
-        let mut tables = Box::new(DualTables::ZERO);
-        tables.compute(
-            model,
-            Quadrature {
-                theta_steps: 32,
-                phi_steps: 16,
-            },
-        );
+        let tables = common::coarse_dual_tables(model);
         let scene = scenes::build(&SceneOptions {
             kind: SceneKind::Patch,
             fibers: Some(800),

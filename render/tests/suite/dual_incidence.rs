@@ -204,14 +204,7 @@ fn dual_sees_the_coat_below_along_the_skin_normal() {
     let mut input = presets::find("dog").unwrap().input;
     input.closure = Closure::Energy;
     common::with_model(&input, |model| {
-        let mut tables = Box::new(DualTables::ZERO);
-        tables.compute(
-            model,
-            Quadrature {
-                theta_steps: 32,
-                phi_steps: 16,
-            },
-        );
+        let tables = common::coarse_dual_tables(model);
         let lut = lut_of(&tables, SHIPPED.1);
         let mut s = scenes::build(&SceneOptions {
             kind: SceneKind::Ball,

@@ -1,7 +1,9 @@
 //! Shared by render's tests: the analytic model of a preset (profiles generated in memory
-//! with a small photon budget), the presets the tests use, and the statistics.
+//! with a small photon budget), the presets the tests use, the statistics, and coarse
+//! dual-scattering tables.
 #![allow(dead_code)]
 
+use bcsdf_core::dual::{DualTables, Quadrature};
 use bcsdf_core::medulla::{generate_cm_row, generate_cn_cell};
 use bcsdf_core::presets::{Preset, PRESETS};
 use bcsdf_core::residual::{ResidualLayout, ResidualTable};
@@ -110,4 +112,18 @@ pub fn z(a: &Estimate, b: &Estimate) -> f64 {
             }
         })
         .fold(0.0, f64::max)
+}
+
+/// A preset's dual-scattering tables at a coarse quadrature (32 θ × 16 |φ|): for tests that need a term, not its
+/// accuracy.
+pub fn coarse_dual_tables(model: &FurBcsdf<'_>) -> Box<DualTables> {
+    let mut tables = Box::new(DualTables::ZERO);
+    tables.compute(
+        model,
+        Quadrature {
+            theta_steps: 32,
+            phi_steps: 16,
+        },
+    );
+    tables
 }

@@ -10,7 +10,6 @@
 //! a render).
 
 use crate::fiber::{FiberSegment, SegmentHit};
-use bvh::aabb::{Aabb, IntersectsAabb};
 use bvh::bvh::Bvh;
 use tree::{collapse, depth, Wide, EMPTY, LEAF};
 
@@ -33,34 +32,15 @@ impl SegmentQuery {
             t_max: Cell::new(t_max),
         }
     }
-
-    /// The slab test: the ray's t-interval inside each axis' slab, intersected with
-    /// [0, t_max]; the interval's start if it is not empty.
-    #[inline]
-    fn entry(&self, aabb: &Aabb<f32, 3>) -> Option<f32> {
-        let mut lo = 0.0f32;
-        let mut hi = self.t_max.get();
-        for k in 0..3 {
-            let t0 = (aabb.min[k] - self.origin[k]) * self.inv_dir[k];
-            let t1 = (aabb.max[k] - self.origin[k]) * self.inv_dir[k];
-            // NaN (origin on a slab face, direction parallel to it) counts as inside.
-            let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
-            if near > lo {
-                lo = near;
-            }
-            if far < hi {
-                hi = far;
-            }
-        }
-        (lo <= hi).then_some(lo)
-    }
 }
 
 impl SegmentQuery {
-    /// [`SegmentQuery::entry`] for the four child slots of `node` at once, the same
-    /// operations per slot (lane c is slot c), so that the four boxes' slabs are one set of
-    /// 4-wide vector operations per axis; `INFINITY` for a box the ray misses. An empty
-    /// slot's lane is meaningless ([`EMPTY`]).
+    /// The slab test for the four child slots of `node` at once: per slot, the ray's
+    /// t-interval inside each axis' slab, intersected with [0, t_max], and the interval's
+    /// start if it is not empty, `INFINITY` for a box the ray misses. The same operations per
+    /// slot (lane c is slot c), so that the four boxes' slabs are one set of 4-wide vector
+    /// operations per axis. NaN (origin on a slab face, direction parallel to it) counts as
+    /// inside. An empty slot's lane is meaningless ([`EMPTY`]).
     #[inline]
     fn entries(&self, node: &Wide) -> [f32; 4] {
         let mut lo = [0.0f32; 4];
@@ -82,15 +62,9 @@ impl SegmentQuery {
     }
 }
 
-impl IntersectsAabb<f32, 3> for SegmentQuery {
-    fn intersects_aabb(&self, aabb: &Aabb<f32, 3>) -> bool {
-        self.entry(aabb).is_some()
-    }
-}
-
-/// Nodes a front-to-back walk keeps pending at most: three per level of the tree. Deeper
-/// trees (never seen: a SAH tree over 10⁵ segments is about 40 levels deep) are walked with
-/// the crate's unordered iterator instead.
+/// Nodes a front-to-back walk keeps pending on its fixed stack: three per level of the tree,
+/// for trees up to 63 levels deep (a SAH tree over 10⁵ segments is about 40). A deeper tree's
+/// walk allocates its stack.
 const STACK: usize = 192;
 
 /// What a walk does at a leaf.
@@ -104,12 +78,13 @@ enum Visit {
 /// The fiber segments and their BVH.
 pub struct FiberAccel {
     segments: Vec<FiberSegment>,
-    bvh: Bvh<f32, 3>,
-    /// The crate's tree collapsed to four children per node ([`Wide`]); the root is `root`.
+    /// The crate's tree collapsed to four children per node ([`Wide`]); the root is `root`,
+    /// `None` when there is no tree (no segments, or more than the references can index:
+    /// every segment is then tested).
     wide: Vec<Wide>,
-    root: u32,
-    /// Whether every walk fits the fixed stack ([`STACK`]).
-    shallow: bool,
+    root: Option<u32>,
+    /// The most nodes a walk keeps pending (three per level, and the root).
+    stack: usize,
 }
 
 /// Which nearby hits to ignore: those on fiber `fiber` closer than `dist` (a ray leaving a
@@ -143,14 +118,13 @@ impl FiberAccel {
         };
         // A wide node on the path holds at most three pending siblings; the crate's depth
         // bounds the wide tree's.
-        let shallow = flat.is_some() && 3 * depth(&bvh) + 1 < STACK;
-        let (wide, root) = flat.unwrap_or_default();
+        let stack = 3 * depth(&bvh) + 1;
+        let (wide, root) = flat.map_or((Vec::new(), None), |(w, r)| (w, Some(r)));
         FiberAccel {
             segments,
-            bvh,
             wide,
             root,
-            shallow,
+            stack,
         }
     }
 
@@ -245,17 +219,24 @@ impl FiberAccel {
     /// Calls `leaf` for the segments whose leaves the ray reaches within the query's
     /// (shrinking) t_max, nearer subtrees first; the order is fixed by the tree and the ray.
     fn walk<'a>(&'a self, query: &SegmentQuery, mut leaf: impl FnMut(&'a FiberSegment) -> Visit) {
-        if !self.shallow {
-            for seg in self.bvh.traverse_iterator(query, &self.segments) {
+        let Some(root) = self.root else {
+            for seg in &self.segments {
                 if let Visit::Stop = leaf(seg) {
                     return;
                 }
             }
             return;
-        }
+        };
         // Pending nodes (references, [`LEAF`]) and where the ray enters their box.
-        let mut stack = [(0u32, 0.0f32); STACK];
-        stack[0] = (self.root, 0.0);
+        let mut fixed = [(0u32, 0.0f32); STACK];
+        let mut deep = Vec::new();
+        let stack: &mut [(u32, f32)] = if self.stack <= STACK {
+            &mut fixed
+        } else {
+            deep.resize(self.stack, (0u32, 0.0f32));
+            &mut deep
+        };
+        stack[0] = (root, 0.0);
         let mut len = 1;
         while len > 0 {
             len -= 1;
@@ -371,13 +352,25 @@ mod tests {
     }
 
     /// The front-to-back walk finds what testing every segment finds: the same closest t
-    /// (a different segment only on an exact tie) and the same answer to "any hit".
+    /// (a different segment only on an exact tie) and the same answer to "any hit", on the
+    /// fixed stack, on a stack of a deeper tree's (allocated), and without a tree.
     #[test]
     fn ordered_walk_agrees_with_testing_every_segment() {
         let mut rng = Pcg32::new(7, 11);
         let segments = coat(&mut rng);
-        let accel = FiberAccel::new(segments.clone());
-        assert!(accel.shallow, "a 3000-segment tree fits the walk's stack");
+        let mut accel = FiberAccel::new(segments.clone());
+        assert!(
+            accel.stack <= STACK,
+            "a 3000-segment tree fits the fixed stack"
+        );
+        agrees_with_every_segment(&accel, &segments, &mut rng);
+        accel.stack = STACK + 1;
+        agrees_with_every_segment(&accel, &segments, &mut rng);
+        accel.root = None;
+        agrees_with_every_segment(&accel, &segments, &mut rng);
+    }
+
+    fn agrees_with_every_segment(accel: &FiberAccel, segments: &[FiberSegment], rng: &mut Pcg32) {
         let (mut hits, mut misses) = (0, 0);
         for i in 0..4000 {
             let origin = Vector3::new(
@@ -385,7 +378,7 @@ mod tests {
                 1.4 * rng.uniform() - 0.2,
                 1.4 * rng.uniform() - 0.2,
             );
-            let dir = direction(&mut rng);
+            let dir = direction(rng);
             let t_max = if i % 2 == 0 { f32::INFINITY } else { 0.3 };
             let skip = Skip {
                 fiber: (i % 3 == 0).then_some(i % 200),
@@ -428,7 +421,7 @@ mod tests {
         let mut seen = vec![0u32; segments.len()];
         let (mut slots, mut nodes) = (0, 0);
         // (reference, the box its parent holds for it)
-        let mut pending = vec![(accel.root, None::<([f32; 3], [f32; 3])>)];
+        let mut pending = vec![(accel.root.expect("a tree"), None::<([f32; 3], [f32; 3])>)];
         while let Some((reference, bounds)) = pending.pop() {
             let inside = |lo: [f32; 3], hi: [f32; 3]| {
                 bounds.is_none_or(|(blo, bhi)| (0..3).all(|k| blo[k] <= lo[k] && hi[k] <= bhi[k]))

@@ -161,6 +161,14 @@ pub trait Bcsdf {
         }
     }
 
+    /// [`Bcsdf::eval_with_pdf`] from world-space directions, at the angles of
+    /// [`Bcsdf::angles_from_dirs`], with those angles; `None` for invalid directions.
+    fn eval_with_pdf_dirs(&self, wi: Vec3, wr: Vec3, tangent: Vec3) -> Option<Evaluated> {
+        let angles = self.angles_from_dirs(wi, wr, tangent).ok()?;
+        let (value, pdf) = self.eval_with_pdf(&angles);
+        Some(Evaluated { angles, value, pdf })
+    }
+
     /// [`Bcsdf::pdf`] from world-space directions, at the angles of
     /// [`Bcsdf::angles_from_dirs`]; zero for invalid directions.
     #[must_use]
@@ -188,7 +196,7 @@ pub trait Bcsdf {
 
     /// What a path tracer asks at one vertex, all at the same ω_r and tangent (docs/model.md
     /// §10, §11): S and the density of the light's direction `wl` (next-event estimation,
-    /// [`Bcsdf::eval_with_pdf`] at [`Bcsdf::angles_from_dirs`]; `None` for an invalid `wl`),
+    /// [`Bcsdf::eval_with_pdf_dirs`]; `None` for an invalid `wl`),
     /// and a sampled continuation ([`Bcsdf::sample_dirs`]). The same bits as those calls
     /// made apart; the baked evaluator builds its per-view context ([`crate::BakedView`])
     /// once for both.
@@ -199,11 +207,10 @@ pub trait Bcsdf {
         tangent: Vec3,
         u: [f32; 3],
     ) -> (Option<Evaluated>, Option<Sample>) {
-        let light = self.angles_from_dirs(wl, wr, tangent).ok().map(|angles| {
-            let (value, pdf) = self.eval_with_pdf(&angles);
-            Evaluated { angles, value, pdf }
-        });
-        (light, self.sample_dirs(wr, tangent, u))
+        (
+            self.eval_with_pdf_dirs(wl, wr, tangent),
+            self.sample_dirs(wr, tangent, u),
+        )
     }
 }
 
@@ -369,6 +376,12 @@ mod tests {
             assert_eq!(s.map(|s| Sample { wi: None, ..s }), plain, "{a:?}");
             // A vertex's light direction and continuation at once: the calls made apart.
             let (value, pdf) = bcsdf.eval_with_pdf(&a);
+            let apart = bcsdf
+                .eval_with_pdf_dirs(wi, wr, t)
+                .expect("valid directions");
+            assert_eq!(bits(&apart.angles), bits(&a));
+            assert_eq!(family_bits(&apart.value), family_bits(&value), "{a:?}");
+            assert_eq!(apart.pdf.to_bits(), pdf.to_bits(), "{a:?}");
             let (light, vertex_sample) = bcsdf.eval_and_sample_dirs(wi, wr, t, u);
             let light = light.expect("a valid light direction is evaluated");
             assert_eq!(bits(&light.angles), bits(&a));

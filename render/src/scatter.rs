@@ -104,21 +104,14 @@ fn scattered(s: Option<Sample>) -> Option<Scattered> {
 }
 
 /// S·cos θ_i and the density of one BCSDF ([`One`], [`Owned`]), at the BCSDF's own
-/// direction-to-angle conversion ([`Bcsdf::angles_from_dirs`]).
+/// direction-to-angle conversion ([`Bcsdf::eval_with_pdf_dirs`]).
 fn eval_one<B: Bcsdf>(
     b: &B,
     wi: &Vector3<f32>,
     wr: &Vector3<f32>,
     tangent: &Vector3<f32>,
 ) -> ([f32; 3], f32) {
-    light_value(
-        b.angles_from_dirs((*wi).into(), (*wr).into(), (*tangent).into())
-            .ok()
-            .map(|angles| {
-                let (value, pdf) = b.eval_with_pdf(&angles);
-                Evaluated { angles, value, pdf }
-            }),
-    )
+    light_value(b.eval_with_pdf_dirs((*wi).into(), (*wr).into(), (*tangent).into()))
 }
 
 /// A direction drawn from one BCSDF's sampler ([`One`], [`Owned`]).

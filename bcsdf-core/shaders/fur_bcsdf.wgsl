@@ -1400,58 +1400,41 @@ fn fur_downward_flux(mu_n: vec3<f32>, mu_2m: vec3<f32>, rho2: vec3<f32>) -> vec3
     return select(mu_n, fur_dual_between(d, mu_n), den > vec3<f32>(FUR_DUAL_TINY));
 }
 
-// r rho = 1 - t/mu, one layer's reflectance times the semi-infinite stack's, from
-// mu(1 - r rho) = t, kept in [0, 1] (NaN 0) (dual::coat::reflection_product).
-fn fur_reflection_product(mu: vec3<f32>, t: vec3<f32>) -> vec3<f32> {
-    return fur_dual_between(1.0 - t / max(mu, vec3<f32>(FUR_DUAL_TINY)), vec3<f32>(1.0));
-}
-
-// The local backscatter's energy with m layers below instead of the semi-infinite coat, as
-// a factor on the stored energy: with g = (1 - mu^2m)/(1 - rho^2 mu^2m) (R_m = rho g),
-//   k_m = g (1 - r rho)/(1 - r rho g),
-// kept in [0, 1] (NaN 0); 1 when either denominator is at or below 1e-6
-// (dual::coat::backscatter_factor). 1 for an infinite m, 0 for m = 0.
-fn fur_backscatter_factor(r_rho: vec3<f32>, rho2: vec3<f32>, mu_2m: vec3<f32>) -> vec3<f32> {
+// The local backscatter's energy with m layers below, as a factor on the stored energy (the
+// deep stack's light through one more layer, U_inf = rho mu): the coat below the point's
+// neighbourhood returns R_m = rho g, g = (1 - mu^2m)/(1 - rho^2 mu^2m) kept in [0, 1] (NaN 0;
+// 1 when its denominator is at or below 1e-6), so k_m = g/mu, mu kept at or above 1e-6
+// (dual::coat::backscatter_factor). 1/mu for an infinite m, 0 for m = 0.
+fn fur_backscatter_factor(rho2: vec3<f32>, mu: vec3<f32>, mu_2m: vec3<f32>) -> vec3<f32> {
     let tiny = vec3<f32>(FUR_DUAL_TINY);
     let g_den = 1.0 - rho2 * mu_2m;
-    let g = (1.0 - mu_2m) / max(g_den, tiny);
-    let den = 1.0 - r_rho * g;
-    let f = fur_dual_between(g * (1.0 - r_rho) / max(den, tiny), vec3<f32>(1.0));
-    return select(vec3<f32>(1.0), f, (g_den > tiny) & (den > tiny));
+    let g = fur_dual_between((1.0 - mu_2m) / max(g_den, tiny), vec3<f32>(1.0));
+    return select(vec3<f32>(1.0), g, g_den > tiny) / max(mu, tiny);
 }
 
-// rho^2 and r rho of the coat at theta node k (dual::coat::node_coat, what DualLut::decode
-// derives per node): mu = 2^(log2 mu) (fur_dual_power) and t = a_f = a_f^2/sqrt(a_f^2)
-// (a_f^2 kept in [0, 1], fur_rsqrt_newton), then fur_reflectance_squared and
-// fur_reflection_product.
-struct FurCoat {
-    rho2: vec3<f32>,
-    r_rho: vec3<f32>,
-}
-
-fn fur_dual_coat_node(n: vec3<u32>, k: u32) -> FurCoat {
+// rho^2 of the coat at theta node k (dual::coat::node_coat, what DualLut::decode derives per
+// node): mu = 2^(log2 mu) (fur_dual_power) and t = a_f = a_f^2/sqrt(a_f^2) (a_f^2 kept in
+// [0, 1], fur_rsqrt_newton), then fur_reflectance_squared.
+fn fur_dual_coat_node(n: vec3<u32>, k: u32) -> vec3<f32> {
     let log2_mu = fur_dual_node(n, k, FUR_DUAL_LOG2_DECAY);
     let a = clamp(fur_dual_node(n, k, FUR_DUAL_A_F2), vec3<f32>(0.0), vec3<f32>(1.0));
     let mu = fur_dual_power(log2_mu, 1.0);
     let t = a * fur_rsqrt_newton(max(a, vec3<f32>(1e-30)));
-    return FurCoat(fur_reflectance_squared(mu, t), fur_reflection_product(mu, t));
+    return fur_reflectance_squared(mu, t);
 }
 
-// rho^2 and r rho at theta: each derived at the two nodes, then linear between them, a + (b - a) w
+// rho^2 at theta: derived at the two nodes, then linear between them, a + (b - a) w
 // (DualLut::eval's coat lookup).
-// (At each channel's two absorption nodes, then linear between them, as DualLut::coat.)
-fn fur_dual_coat(l: FurLoc) -> FurCoat {
+// (At each channel's two absorption nodes, then linear between them, as DualLut::rho2.)
+fn fur_dual_coat(l: FurLoc) -> vec3<f32> {
     let lo = fur_dual_at.node;
     let a0 = fur_dual_coat_node(lo, l.i);
     let b0 = fur_dual_coat_node(lo, l.i + 1u);
     let a1 = fur_dual_coat_node(lo + 1u, l.i);
     let b1 = fur_dual_coat_node(lo + 1u, l.i + 1u);
-    let w = fur_dual_at.w;
-    let rho0 = a0.rho2 + (b0.rho2 - a0.rho2) * l.w;
-    let rho1 = a1.rho2 + (b1.rho2 - a1.rho2) * l.w;
-    let rr0 = a0.r_rho + (b0.r_rho - a0.r_rho) * l.w;
-    let rr1 = a1.r_rho + (b1.r_rho - a1.r_rho) * l.w;
-    return FurCoat(rho0 + (rho1 - rho0) * w, rr0 + (rr1 - rr0) * w);
+    let rho0 = a0 + (b0 - a0) * l.w;
+    let rho1 = a1 + (b1 - a1) * l.w;
+    return rho0 + (rho1 - rho0) * fur_dual_at.w;
 }
 
 // A fiber count or density factor as the CPU's contract takes it: NaN and values <= 0 give
@@ -1486,12 +1469,21 @@ fn fur_dual_below_at_incidence(count_on_line: f32, cos_to_skin: f32) -> f32 {
     return select(count_on_line, as_count, known);
 }
 
+// The forward density factor to pass as fur_eval_dual's d_f when the skin normal under the
+// strand is known (dual::coat::forward_density_at_incidence): d_f 2 |cos_to_skin|
+// (|cos_to_skin| clamped to 1), the diffuse flux the light scattered through the fibers above
+// brings per unit of coat area; a NaN cos_to_skin (the normal unknown) returns d_f unchanged.
+fn fur_dual_forward_density_at_incidence(d_f: f32, cos_to_skin: f32) -> f32 {
+    let scaled = d_f * FUR_DUAL_DIFFUSIVITY * min(abs(cos_to_skin), 1.0);
+    return select(scaled, d_f, fur_is_nan(cos_to_skin));
+}
+
 // The dual-scattering term to add to single scattering (DualLut::eval, docs/model.md §13),
 // RGB, in S's units (the caller multiplies by cos theta_i and the light's radiance like S).
 // `fibers` is n, the number of fibers between the shading point and the light (fractional
 // allowed); `fibers_below` is m, the fibers beyond the point along -omega_i, down to the skin
 // or out of the coat (the coat below, which sends light back up; +inf for a semi-infinite
-// coat); d_f, d_b the density factors (dual::Density; 1 and 1 by default). With
+// coat); d_f, d_b the density factors (dual::Density; 1 and 0.7 by default). With
 // V = clamp(1 - n, 0, 1) the direct fraction (what a shadow ray gives), the shading is
 // S V + this term:
 //
@@ -1534,13 +1526,13 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, fibers_be
     let abs_phi = abs(fur_wrap_angle(phi_in));
     // The local backscatter at theta_r: the stored energy (back half for |phi| < pi/2, else
     // front) times k_m for the m layers below instead of the semi-infinite stack, from the
-    // interpolated rho^2 and r rho (fur_dual_coat) and mu^2m.
+    // interpolated rho^2 (fur_dual_coat), mu and mu^2m.
     let stored = fur_dual_field(here, select(FUR_DUAL_FRONT, FUR_DUAL_BACK, abs_phi < FUR_HALF_PI));
     let log2_mu_here = fur_dual_field(here, FUR_DUAL_LOG2_DECAY);
     let a_f2 = fur_dual_field(here, FUR_DUAL_A_F2);
-    let coat_here = fur_dual_coat(here);
+    let mu_here = fur_dual_power(log2_mu_here, 1.0);
     let mu_2m_here = fur_dual_power(log2_mu_here, 2.0 * m);
-    let half_energy = stored * fur_backscatter_factor(coat_here.r_rho, coat_here.rho2, mu_2m_here);
+    let half_energy = stored * fur_backscatter_factor(fur_dual_coat(here), mu_here, mu_2m_here);
     // Delta_b and sigma_b^2 = ((1 + d_b a_f^2) sigma_b0)^2.
     let sigma_b0 = fur_dual_field(here, FUR_DUAL_SIGMA_B0);
     let delta = fur_dual_field(here, FUR_DUAL_DELTA_B);
@@ -1562,7 +1554,7 @@ fn fur_eval_dual(theta_i: f32, theta_r: f32, phi_in: f32, fibers: f32, fibers_be
         let beta_f = fur_dual_field(along, FUR_DUAL_BETA_F);
         let mu_n = fur_dual_power(log2_mu, n);
         let mu_2m = fur_dual_power(log2_mu, 2.0 * m);
-        let t_f = fur_downward_flux(mu_n, mu_2m, fur_dual_coat(along).rho2);
+        let t_f = fur_downward_flux(mu_n, mu_2m, fur_dual_coat(along));
         let spread = max(t_f - direct, zero) * d_f;
         if (any(spread > zero)) {
             let s2f = n * beta_f * beta_f;

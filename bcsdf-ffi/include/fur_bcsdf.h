@@ -494,6 +494,17 @@ enum fur_status fur_eval_dual_dirs(const struct fur_dual *FUR_RESTRICT dual,
 float fur_dual_below_at_incidence(float fibers_below, float cos_to_normal);
 
 /**
+ * The `d_f` to pass to `fur_eval_dual` / `fur_eval_dual_dirs` when the engine knows the
+ * skin normal under the strand (docs/model.md §13 "The light's incidence on the coat",
+ * docs/engines.md): `d_f` times 2 |cos_to_normal| (clamped to 1), `cos_to_normal` the cosine
+ * between the direction toward the light and that normal. The light that reaches the point
+ * through fibers is a diffuse flux set by the light the coat takes in per unit of its area.
+ * A NaN `cos_to_normal` (the normal unknown) returns `d_f` unchanged.
+ * `bcsdf_core::dual::coat::forward_density_at_incidence`, bit for bit.
+ */
+float fur_dual_forward_density_at_incidence(float d_f, float cos_to_normal);
+
+/**
  * Far-field S(omega_i, omega_r), RGB, into `out_rgb[3]` (0 and `FUR_ERR_ANGLE` for invalid
  * angles). `out_rgb` must not overlap `*lut` or the LUT bytes (`FUR_ERR_OVERLAP`).
  *

@@ -424,6 +424,18 @@ pub extern "C" fn fur_dual_below_at_incidence(fibers_below: f32, cos_to_normal: 
     bcsdf_core::dual::coat::below_at_incidence(fibers_below, cos_to_normal)
 }
 
+/// The `d_f` to pass to `fur_eval_dual` / `fur_eval_dual_dirs` when the engine knows the
+/// skin normal under the strand (docs/model.md §13 "The light's incidence on the coat",
+/// docs/engines.md): `d_f` times 2 |cos_to_normal| (clamped to 1), `cos_to_normal` the cosine
+/// between the direction toward the light and that normal. The light that reaches the point
+/// through fibers is a diffuse flux set by the light the coat takes in per unit of its area.
+/// A NaN `cos_to_normal` (the normal unknown) returns `d_f` unchanged.
+/// `bcsdf_core::dual::coat::forward_density_at_incidence`, bit for bit.
+#[no_mangle]
+pub extern "C" fn fur_dual_forward_density_at_incidence(d_f: f32, cos_to_normal: f32) -> f32 {
+    bcsdf_core::dual::coat::forward_density_at_incidence(d_f, cos_to_normal)
+}
+
 #[cfg(test)]
 #[path = "dual_tests.rs"]
 mod tests;

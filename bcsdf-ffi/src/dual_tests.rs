@@ -87,7 +87,9 @@ fn opens_evaluates_like_the_core_refuses_and_closes() {
                     fur_status::FUR_OK
                 );
                 if let Some(want) = &want {
-                    let w = want.eval(&a, Fibers::new(n, m), Density::DEFAULT).0;
+                    let w = want
+                        .eval(&a, Fibers::new(n, m), Density { d_f: 1.0, d_b: 1.0 })
+                        .0;
                     assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
                 }
             }
@@ -102,7 +104,12 @@ fn opens_evaluates_like_the_core_refuses_and_closes() {
             if let Some(want) = &want {
                 let colour = Absorption::from_sigma(Rgb(sigma)).unwrap();
                 let w = want
-                    .eval_at(&a, Fibers::new(2.0, 1.5), Density::DEFAULT, &colour)
+                    .eval_at(
+                        &a,
+                        Fibers::new(2.0, 1.5),
+                        Density { d_f: 1.0, d_b: 1.0 },
+                        &colour,
+                    )
                     .0;
                 assert_eq!(rgb.map(f32::to_bits), w.map(f32::to_bits));
             }

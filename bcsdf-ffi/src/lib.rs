@@ -59,7 +59,8 @@ mod sample;
 pub use coat::{fur_absorption_from_colour, fur_coat, fur_coat_measure, FUR_COAT_NODES};
 pub use colour::{fur_lut_sigma_ca, fur_sigma_from_melanin};
 pub use dual::{
-    fur_dual_below_at_incidence, fur_dual_close, fur_dual_open, fur_eval_dual, fur_eval_dual_dirs,
+    fur_dual_below_at_incidence, fur_dual_close, fur_dual_forward_density_at_incidence,
+    fur_dual_open, fur_eval_dual, fur_eval_dual_dirs,
 };
 pub use eval::{
     fur_eval_far, fur_eval_far_at, fur_eval_far_batch, fur_eval_far_batch_at, fur_eval_far_dirs,

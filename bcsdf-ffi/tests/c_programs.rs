@@ -293,6 +293,8 @@ const DUAL_FIBERS: [f32; 9] = [
 // The fibers below the point: on the skin, fractional, finite, semi-infinite (+inf and NaN),
 // negative (0), above MAX_FIBERS.
 const DUAL_BELOW: [f32; 7] = [0.0, 2.5, 7.0, f32::INFINITY, f32::NAN, -2.0, 1.0e7];
+/// d_f = d_b = 1, what the C programs pass where they do not vary the density factors.
+const UNIT_DENSITY: Density = Density { d_f: 1.0, d_b: 1.0 };
 const DUAL_DENSITY: [(f32, f32); 4] = [(1.0, 1.0), (0.5, 2.0), (f32::NAN, -1.0), (10.0, 10.0)];
 type Dirs = ([f32; 3], [f32; 3], [f32; 3]);
 const DUAL_DIRS: [Dirs; 7] = [
@@ -396,9 +398,7 @@ fn expected_dual(blob: &[u8]) -> Vec<String> {
         };
         for (f, &n) in DUAL_DIR_FIBERS.iter().enumerate() {
             for (b, &m) in DUAL_DIR_BELOW.iter().enumerate() {
-                let v = d
-                    .eval_dirs(wi, wr, t, Fibers::new(n, m), Density::DEFAULT)
-                    .0;
+                let v = d.eval_dirs(wi, wr, t, Fibers::new(n, m), UNIT_DENSITY).0;
                 out.push(rgb_line(format!("dualdirs {i} {f} {b}"), st, v));
             }
         }
@@ -421,7 +421,7 @@ fn expected_dual_cpp(blob: &[u8]) -> Vec<String> {
                     DUAL_TR[i],
                     DUAL_PH[i],
                     Fibers::new(n, m),
-                    Density::DEFAULT,
+                    UNIT_DENSITY,
                 );
                 out.push(rgb_line(format!("cppdual {i} {f} {b}"), st, v));
             }

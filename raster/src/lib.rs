@@ -113,7 +113,8 @@ pub const MAX_SIDE: u32 = 8192;
 
 impl Settings {
     /// The defaults for a `width` × `height` image: a 2048² light map, layers ending 0.02,
-    /// 0.06 and 0.15 behind the first fiber, a bias of one radius, d_f = d_b = 1.
+    /// 0.06 and 0.15 behind the first fiber, a bias of one radius, the term's default density
+    /// factors (`bcsdf_core::dual::Density::DEFAULT`).
     #[must_use]
     pub fn new(width: u32, height: u32) -> Settings {
         Settings {
@@ -123,7 +124,10 @@ impl Settings {
             layer_ends: [0.02, 0.06, 0.15],
             bias_radii: 1.0,
             shadow_bias: 0.01,
-            density: [1.0, 1.0],
+            density: [
+                bcsdf_core::dual::Density::DEFAULT.d_f,
+                bcsdf_core::dual::Density::DEFAULT.d_b,
+            ],
             output: Output::Radiance,
         }
     }

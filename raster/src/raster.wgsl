@@ -277,10 +277,14 @@ fn ras_fiber_shade(in: RasFiberOut) -> @location(0) vec4<f32> {
     }
     if (l.lit > 0.0) {
         let s = fur_eval_far_dirs(wi, wr, t, in.colour);
-        // The coat below as the light scattered inside the coat sees it: the count along the
-        // key's line rescaled by the key's incidence on the skin under the strand.
-        let m = fur_dual_below_at_incidence(below, dot(wi, normalize(in.skin)));
-        let d = fur_eval_dual_dirs(wi, wr, t, l.above, m, ras.dual.x, ras.dual.y, in.colour);
+        // The coat below as the light scattered inside the coat sees it (the count along the
+        // key's line rescaled by the key's incidence on the skin under the strand), and the
+        // light scattered through the fibers above as the diffuse flux the coat takes in
+        // per unit of its area (d_f rescaled by the same incidence).
+        let cos_skin = dot(wi, normalize(in.skin));
+        let m = fur_dual_below_at_incidence(below, cos_skin);
+        let d_f = fur_dual_forward_density_at_incidence(ras.dual.x, cos_skin);
+        let d = fur_eval_dual_dirs(wi, wr, t, l.above, m, d_f, ras.dual.y, in.colour);
         let ct = dot(wi, t);
         let cos_i = sqrt(max(1.0 - ct * ct, 0.0));
         rgb = ras.key.rgb * (s.total * clamp(1.0 - l.above, 0.0, 1.0) + d) * cos_i;

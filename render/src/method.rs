@@ -130,7 +130,11 @@ impl Method<'_> {
                 let below = below();
                 let m = coat::below_at_incidence(below.count as f32, below.incidence);
                 let counts = Fibers::new(fibers as f32, m);
-                let d = lut.eval(&a, counts, *density);
+                let density = Density {
+                    d_f: coat::forward_density_at_incidence(density.d_f, below.incidence),
+                    ..*density
+                };
+                let d = lut.eval(&a, counts, density);
                 for c in 0..3 {
                     let v = d[c] * cos;
                     if v.is_finite() && v > 0.0 {

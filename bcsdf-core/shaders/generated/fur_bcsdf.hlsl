@@ -113,13 +113,6 @@ struct FurDualColour {
     int _end_pad_0;
 };
 
-struct FurCoat {
-    float3 rho2_;
-    int _pad1_0;
-    float3 r_rho;
-    int _end_pad_0;
-};
-
 static const float FUR_PI = 3.1415927;
 static const float FUR_HALF_PI = 1.5707964;
 static const float FUR_TAU = 6.2831855;
@@ -298,10 +291,10 @@ FurColour fur_locate_colour(float3 sigma_ca)
     float3 x_16 = min(((1.0).xxx - e), (1.0).xxx);
     float3 u_8 = clamp((x_16 * last_2), (0.0).xxx, (last_2).xxx);
     uint3 k_18 = min(naga_f2u32(u_8), ((_e2 - 3u)).xxx);
-    float3 t_12 = (u_8 - float3(k_18));
-    float3 w0_ = ((0.5 * (t_12 - (1.0).xxx)) * (t_12 - (2.0).xxx));
-    float3 w1_ = (t_12 * ((2.0).xxx - t_12));
-    float3 w2_ = ((0.5 * t_12) * (t_12 - (1.0).xxx));
+    float3 t_11 = (u_8 - float3(k_18));
+    float3 w0_ = ((0.5 * (t_11 - (1.0).xxx)) * (t_11 - (2.0).xxx));
+    float3 w1_ = (t_11 * ((2.0).xxx - t_11));
+    float3 w2_ = ((0.5 * t_11) * (t_11 - (1.0).xxx));
     const uint _e71 = fur_word(6u);
     const uint _e73 = fur_word(5u);
     const FurColour furcolour = ConstructFurColour((k_18 * (_e71 * _e73)), w0_, w1_, w2_);
@@ -967,9 +960,9 @@ float fur_atan2_(float y_1, float x_6)
     float ax_4 = abs(x_6);
     float ay = abs(y_1);
     float a_8 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_13 = (a_8 * a_8);
-    const float _e10 = fur_atan_poly(t_13);
-    r = (a_8 + (a_8 * (t_13 * _e10)));
+    float t_12 = (a_8 * a_8);
+    const float _e10 = fur_atan_poly(t_12);
+    r = (a_8 + (a_8 * (t_12 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -1458,8 +1451,8 @@ float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_3)
 {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
     const float _e7 = fur_unit(u_3);
-    float t_14 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    const float _e14 = fur_rows_invert(r_9, t_14);
+    float t_13 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    const float _e14 = fur_rows_invert(r_9, t_13);
     return _e14;
 }
 
@@ -1501,7 +1494,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_15[3] = Constructarray3_float_(0.11270166, 0.5, 0.8872983);
+    float t_14[3] = Constructarray3_float_(0.11270166, 0.5, 0.8872983);
     float w_5[3] = Constructarray3_float_(0.2777778, 0.44444445, 0.2777778);
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_11 = true;
@@ -1520,7 +1513,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_15[min(uint(_e33), 2u)] * len_5);
+            float d_8 = (t_14[min(uint(_e33), 2u)] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             const float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -1734,18 +1727,18 @@ float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_4)
         return _e19.z;
     }
     float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
-    float t_16 = (t0_1 - g_2.s.y);
-    if (!((t_16 <= mid))) {
+    float t_15 = (t0_1 - g_2.s.y);
+    if (!((t_15 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        const float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_16, mid)));
+        const float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_15, mid)));
         return _e50;
     }
-    const float3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_16 - mid));
+    const float3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_15 - mid));
     return _e57.z;
 }
 
@@ -2405,57 +2398,37 @@ float3 fur_downward_flux(float3 mu_n, float3 mu_2m, float3 rho2_)
     return ((den_2 > (1e-6).xxx) ? _e18 : mu_n);
 }
 
-float3 fur_reflection_product(float3 mu_1, float3 t_10)
-{
-    const float3 _e11 = fur_dual_between(((1.0).xxx - (t_10 / max(mu_1, (1e-6).xxx))), (1.0).xxx);
-    return _e11;
-}
-
-float3 fur_backscatter_factor(float3 r_rho, float3 rho2_1, float3 mu_2m_1)
+float3 fur_backscatter_factor(float3 rho2_1, float3 mu_1, float3 mu_2m_1)
 {
     float3 tiny = (1e-6).xxx;
     float3 g_den = ((1.0).xxx - (rho2_1 * mu_2m_1));
-    float3 g_9 = (((1.0).xxx - mu_2m_1) / max(g_den, tiny));
-    float3 den_3 = ((1.0).xxx - (r_rho * g_9));
-    const float3 _e26 = fur_dual_between(((g_9 * ((1.0).xxx - r_rho)) / max(den_3, tiny)), (1.0).xxx);
-    return (((g_den > tiny) & (den_3 > tiny)) ? _e26 : (1.0).xxx);
+    const float3 _e16 = fur_dual_between((((1.0).xxx - mu_2m_1) / max(g_den, tiny)), (1.0).xxx);
+    return (((g_den > tiny) ? _e16 : (1.0).xxx) / max(mu_1, tiny));
 }
 
-FurCoat ConstructFurCoat(float3 arg0, float3 arg1) {
-    FurCoat ret = (FurCoat)0;
-    ret.rho2_ = arg0;
-    ret.r_rho = arg1;
-    return ret;
-}
-
-FurCoat fur_dual_coat_node(uint3 n_1, uint k_13)
+float3 fur_dual_coat_node(uint3 n_1, uint k_13)
 {
     const float3 _e3 = fur_dual_node(n_1, k_13, FUR_DUAL_LOG2_DECAY);
     const float3 _e5 = fur_dual_node(n_1, k_13, FUR_DUAL_A_F2_);
     float3 a_12 = clamp(_e5, (0.0).xxx, (1.0).xxx);
     const float3 _e12 = fur_dual_power(_e3, 1.0);
     const float3 _e16 = fur_rsqrt_newton(max(a_12, (1e-30).xxx));
-    float3 t_17 = (a_12 * _e16);
-    const float3 _e18 = fur_reflectance_squared(_e12, t_17);
-    const float3 _e19 = fur_reflection_product(_e12, t_17);
-    const FurCoat furcoat = ConstructFurCoat(_e18, _e19);
-    return furcoat;
+    float3 t_16 = (a_12 * _e16);
+    const float3 _e18 = fur_reflectance_squared(_e12, t_16);
+    return _e18;
 }
 
-FurCoat fur_dual_coat(FurLoc l_7)
+float3 fur_dual_coat(FurLoc l_7)
 {
     uint3 lo_6 = fur_dual_at.node;
-    const FurCoat _e5 = fur_dual_coat_node(lo_6, l_7.i);
-    const FurCoat _e9 = fur_dual_coat_node(lo_6, (l_7.i + 1u));
-    const FurCoat _e14 = fur_dual_coat_node((lo_6 + (1u).xxx), l_7.i);
-    const FurCoat _e21 = fur_dual_coat_node((lo_6 + (1u).xxx), (l_7.i + 1u));
-    float3 w_8 = fur_dual_at.w;
-    float3 rho0_ = (_e5.rho2_ + ((_e9.rho2_ - _e5.rho2_) * l_7.w));
-    float3 rho1_ = (_e14.rho2_ + ((_e21.rho2_ - _e14.rho2_) * l_7.w));
-    float3 rr0_ = (_e5.r_rho + ((_e9.r_rho - _e5.r_rho) * l_7.w));
-    float3 rr1_ = (_e14.r_rho + ((_e21.r_rho - _e14.r_rho) * l_7.w));
-    const FurCoat furcoat_1 = ConstructFurCoat((rho0_ + ((rho1_ - rho0_) * w_8)), (rr0_ + ((rr1_ - rr0_) * w_8)));
-    return furcoat_1;
+    const float3 _e5 = fur_dual_coat_node(lo_6, l_7.i);
+    const float3 _e9 = fur_dual_coat_node(lo_6, (l_7.i + 1u));
+    const float3 _e14 = fur_dual_coat_node((lo_6 + (1u).xxx), l_7.i);
+    const float3 _e21 = fur_dual_coat_node((lo_6 + (1u).xxx), (l_7.i + 1u));
+    float3 rho0_ = (_e5 + ((_e9 - _e5) * l_7.w));
+    float3 rho1_ = (_e14 + ((_e21 - _e14) * l_7.w));
+    float3 _e33 = fur_dual_at.w;
+    return (rho0_ + ((rho1_ - rho0_) * _e33));
 }
 
 float fur_dual_clean(float x_13, float top_1)
@@ -2519,6 +2492,13 @@ float fur_dual_below_at_incidence(float count_on_line, float cos_to_skin)
     return (known ? as_count : count_on_line);
 }
 
+float fur_dual_forward_density_at_incidence(float d_f, float cos_to_skin_1)
+{
+    float scaled = ((d_f * FUR_DUAL_DIFFUSIVITY) * min(abs(cos_to_skin_1), 1.0));
+    const bool _e8 = fur_is_nan(cos_to_skin_1);
+    return (_e8 ? d_f : scaled);
+}
+
 float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fibers, float fibers_below, float d_f_in, float d_b_in, float3 sigma_ca_6)
 {
     float3 out_4 = (float3)0;
@@ -2547,9 +2527,10 @@ float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fib
     const float3 _e41 = fur_dual_field(_e33, ((abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
     const float3 _e43 = fur_dual_field(_e33, FUR_DUAL_LOG2_DECAY);
     const float3 _e45 = fur_dual_field(_e33, FUR_DUAL_A_F2_);
-    const FurCoat _e46 = fur_dual_coat(_e33);
-    const float3 _e49 = fur_dual_power(_e43, (2.0 * _e16));
-    const float3 _e52 = fur_backscatter_factor(_e46.r_rho, _e46.rho2_, _e49);
+    const float3 _e47 = fur_dual_power(_e43, 1.0);
+    const float3 _e50 = fur_dual_power(_e43, (2.0 * _e16));
+    const float3 _e51 = fur_dual_coat(_e33);
+    const float3 _e52 = fur_backscatter_factor(_e51, _e47, _e50);
     float3 half_energy = (_e41 * _e52);
     const float3 _e55 = fur_dual_field(_e33, FUR_DUAL_SIGMA_B0_);
     const float3 _e57 = fur_dual_field(_e33, FUR_DUAL_DELTA_B);
@@ -2568,19 +2549,19 @@ float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fib
         const float3 _e83 = fur_dual_field(_e79, FUR_DUAL_BETA_F);
         const float3 _e84 = fur_dual_power(_e81, _e15);
         const float3 _e87 = fur_dual_power(_e81, (2.0 * _e16));
-        const FurCoat _e88 = fur_dual_coat(_e79);
-        const float3 _e90 = fur_downward_flux(_e84, _e87, _e88.rho2_);
-        float3 spread = (max((_e90 - (direct).xxx), zero) * _e18);
+        const float3 _e88 = fur_dual_coat(_e79);
+        const float3 _e89 = fur_downward_flux(_e84, _e87, _e88);
+        float3 spread = (max((_e89 - (direct).xxx), zero) * _e18);
         if (any((spread > zero))) {
             float3 s2f = ((_e15 * _e83) * _e83);
             p_3 = (abs_phi_2 * FUR_DUAL_PHI_SCALE);
-            float _e102 = p_3;
-            float _e105 = p_3;
-            p_3 = ((_e105 > 0.0) ? min(_e102, 31.0) : 0.0);
-            float _e110 = p_3;
-            uint j_7 = min(naga_f2u32(_e110), 30u);
-            float _e114 = p_3;
-            FurLoc at_phi = ConstructFurLoc(j_7, (_e114 - float(j_7)));
+            float _e101 = p_3;
+            float _e104 = p_3;
+            p_3 = ((_e104 > 0.0) ? min(_e101, 31.0) : 0.0);
+            float _e109 = p_3;
+            uint j_7 = min(naga_f2u32(_e109), 30u);
+            float _e113 = p_3;
+            FurLoc at_phi = ConstructFurLoc(j_7, (_e113 - float(j_7)));
             f_s = zero;
             uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
             bool loop_init_19 = true;
@@ -2588,53 +2569,53 @@ float3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fib
                 if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
                 loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
                 if (!loop_init_19) {
-                    uint _e142 = g_7;
-                    g_7 = (_e142 + 1u);
+                    uint _e141 = g_7;
+                    g_7 = (_e141 + 1u);
                 }
                 loop_init_19 = false;
-                uint _e121 = g_7;
-                if ((_e121 < 4u)) {
+                uint _e120 = g_7;
+                if ((_e120 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e125 = g_7;
-                    const float3 _e127 = fur_dual_field(_e33, (FUR_DUAL_MEAN + _e125));
-                    uint _e129 = g_7;
-                    const float3 _e131 = fur_dual_field(_e33, (FUR_DUAL_SD + _e129));
-                    uint _e132 = g_7;
-                    const float3 _e133 = fur_dual_ng(_e132, _e33, at_phi);
-                    float3 v_6 = ((_e131 * _e131) + s2f);
-                    float3 _e136 = f_s;
-                    const float3 _e139 = fur_dual_gauss(((x_20).xxx - _e127), v_6, theta_i_6);
-                    f_s = (_e136 + (_e133 * _e139));
+                    uint _e124 = g_7;
+                    const float3 _e126 = fur_dual_field(_e33, (FUR_DUAL_MEAN + _e124));
+                    uint _e128 = g_7;
+                    const float3 _e130 = fur_dual_field(_e33, (FUR_DUAL_SD + _e128));
+                    uint _e131 = g_7;
+                    const float3 _e132 = fur_dual_ng(_e131, _e33, at_phi);
+                    float3 v_6 = ((_e130 * _e130) + s2f);
+                    float3 _e135 = f_s;
+                    const float3 _e138 = fur_dual_gauss(((x_20).xxx - _e126), v_6, theta_i_6);
+                    f_s = (_e135 + (_e132 * _e138));
                 }
             }
-            const float3 _e146 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
-            float3 _e147 = out_4;
-            float3 _e148 = f_s;
-            out_4 = (_e147 + (spread * ((_e148 * inv_cos2_1) + ((back_scale * half_energy) * _e146))));
+            const float3 _e145 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
+            float3 _e146 = out_4;
+            float3 _e147 = f_s;
+            out_4 = (_e146 + (spread * ((_e147 * inv_cos2_1) + ((back_scale * half_energy) * _e145))));
         }
     }
-    float _e156 = out_4.x;
-    const bool _e157 = fur_finite(_e156);
-    float _e159 = out_4.y;
-    const bool _e160 = fur_finite(_e159);
-    float _e162 = out_4.z;
-    const bool _e163 = fur_finite(_e162);
-    bool3 finite = bool3(_e157, _e160, _e163);
+    float _e155 = out_4.x;
+    const bool _e156 = fur_finite(_e155);
+    float _e158 = out_4.y;
+    const bool _e159 = fur_finite(_e158);
+    float _e161 = out_4.z;
+    const bool _e162 = fur_finite(_e161);
+    bool3 finite = bool3(_e156, _e159, _e162);
+    float3 _e164 = out_4;
     float3 _e165 = out_4;
-    float3 _e166 = out_4;
-    return ((finite & (_e166 > zero)) ? _e165 : zero);
+    return ((finite & (_e165 > zero)) ? _e164 : zero);
 }
 
-float3 fur_eval_dual_dirs(float3 wi_2, float3 wr_2, float3 u_6, float fibers_1, float fibers_below_1, float d_f, float d_b, float3 sigma_ca_7)
+float3 fur_eval_dual_dirs(float3 wi_2, float3 wr_2, float3 u_6, float fibers_1, float fibers_below_1, float d_f_1, float d_b, float3 sigma_ca_7)
 {
     const FurDirAngles _e8 = fur_angles_from_dirs(wi_2, wr_2, u_6);
     if (!(_e8.ok)) {
         return (0.0).xxx;
     }
-    const float3 _e16 = fur_eval_dual(_e8.theta_i, _e8.theta_r, _e8.phi, fibers_1, fibers_below_1, d_f, d_b, sigma_ca_7);
+    const float3 _e16 = fur_eval_dual(_e8.theta_i, _e8.theta_r, _e8.phi, fibers_1, fibers_below_1, d_f_1, d_b, sigma_ca_7);
     return _e16;
 }
 
@@ -2652,7 +2633,7 @@ float fur_coat_sigma_for(float4 table[6], float c_2)
 {
     float4 nodes_2[6] = (float4[6])0;
     uint k_14 = 0u;
-    float t_11 = (float)0;
+    float t_10 = (float)0;
 
     nodes_2 = table;
     float _e5 = nodes_2[0].x;
@@ -2682,12 +2663,12 @@ float fur_coat_sigma_for(float4 table[6], float c_2)
             uint _e28 = k_14;
             float lo_7 = nodes_2[min(uint(naga_div((_e22 + 1u), 4u)), 5u)][min(uint(naga_mod((_e28 + 1u), 4u)), 3u)];
             if ((c_2 >= lo_7)) {
-                t_11 = 0.0;
+                t_10 = 0.0;
                 if ((hi_4 > lo_7)) {
-                    t_11 = ((hi_4 - c_2) / (hi_4 - lo_7));
+                    t_10 = ((hi_4 - c_2) / (hi_4 - lo_7));
                 }
                 uint _e42 = k_14;
-                float _e44 = t_11;
+                float _e44 = t_10;
                 float x_21 = (((float(_e42) + _e44) / 23.0) * FUR_COAT_AXIS_END);
                 const float _e50 = fur_coat_sigma_at(x_21);
                 return _e50;

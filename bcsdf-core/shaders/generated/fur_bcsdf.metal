@@ -128,10 +128,6 @@ struct FurDualColour {
     metal::uint3 node;
     metal::float3 w;
 };
-struct FurCoat {
-    metal::float3 rho2_;
-    metal::float3 r_rho;
-};
 struct type_19 {
     metal::float4 inner[6];
 };
@@ -306,10 +302,10 @@ FurColour fur_locate_colour(
     metal::float3 x_16 = metal::min(metal::float3(1.0) - e, metal::float3(1.0));
     metal::float3 u_8 = metal::clamp(x_16 * last_2, metal::float3(0.0), metal::float3(last_2));
     metal::uint3 k_18 = metal::min(naga_f2u32(u_8), metal::uint3(_e2 - 3u));
-    metal::float3 t_12 = u_8 - static_cast<metal::float3>(k_18);
-    metal::float3 w0_ = (0.5 * (t_12 - metal::float3(1.0))) * (t_12 - metal::float3(2.0));
-    metal::float3 w1_ = t_12 * (metal::float3(2.0) - t_12);
-    metal::float3 w2_ = (0.5 * t_12) * (t_12 - metal::float3(1.0));
+    metal::float3 t_11 = u_8 - static_cast<metal::float3>(k_18);
+    metal::float3 w0_ = (0.5 * (t_11 - metal::float3(1.0))) * (t_11 - metal::float3(2.0));
+    metal::float3 w1_ = t_11 * (metal::float3(2.0) - t_11);
+    metal::float3 w2_ = (0.5 * t_11) * (t_11 - metal::float3(1.0));
     uint _e71 = fur_word(6u, fur_lut, _buffer_sizes);
     uint _e73 = fur_word(5u, fur_lut, _buffer_sizes);
     return FurColour {k_18 * (_e71 * _e73), w0_, w1_, w2_};
@@ -941,9 +937,9 @@ float fur_atan2_(
     float ax_4 = metal::abs(x_6);
     float ay = metal::abs(y_1);
     float a_8 = metal::min(ax_4, ay) / metal::max(metal::max(ax_4, ay), 0.000000000000000000000000000000000000011754944);
-    float t_13 = a_8 * a_8;
-    float _e10 = fur_atan_poly(t_13);
-    r = a_8 + (a_8 * (t_13 * _e10));
+    float t_12 = a_8 * a_8;
+    float _e10 = fur_atan_poly(t_12);
+    r = a_8 + (a_8 * (t_12 * _e10));
     float _e15 = r;
     float _e17 = r;
     r = (ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15;
@@ -1474,8 +1470,8 @@ float fur_rows_invert_between(
 ) {
     float inset_2 = (t1_ - t0_) * 0.0000009536743;
     float _e7 = fur_unit(u_3);
-    float t_14 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
-    float _e14 = fur_rows_invert(r_9, t_14, fur_lut, _buffer_sizes);
+    float t_13 = metal::clamp(t0_ + (_e7 * (t1_ - t0_)), t0_ + inset_2, t1_ - inset_2);
+    float _e14 = fur_rows_invert(r_9, t_13, fur_lut, _buffer_sizes);
     return _e14;
 }
 
@@ -1518,7 +1514,7 @@ float fur_sliver_piece_mass(
         return 0.0;
     }
     float slope = (v1_6 - v0_6) / len0_;
-    type_7 t_15 = type_7 {{0.11270166, 0.5, 0.8872983}};
+    type_7 t_14 = type_7 {{0.11270166, 0.5, 0.8872983}};
     type_7 w_5 = type_7 {{0.2777778, 0.44444445, 0.2777778}};
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_11 = true;
@@ -1537,7 +1533,7 @@ float fur_sliver_piece_mass(
         }
         {
             uint _e33 = k_5;
-            float d_8 = t_15.inner[_e33] * len_5;
+            float d_8 = t_14.inner[_e33] * len_5;
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep((x0_ - pole) + d_8);
@@ -1766,18 +1762,18 @@ float fur_rows_invert_kept(
         return _e19.z;
     }
     float mid = metal::max((g_2.raw - g_2.s.x) - g_2.s.z, 0.0);
-    float t_16 = t0_1 - g_2.s.y;
-    if (!((t_16 <= mid))) {
+    float t_15 = t0_1 - g_2.s.y;
+    if (!((t_15 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_16, mid), fur_lut, _buffer_sizes);
+        float _e50 = fur_rows_invert(r_12, (g_2.start + g_2.s.x) + metal::min(t_15, mid), fur_lut, _buffer_sizes);
         return _e50;
     }
-    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_16 - mid, fur_lut, _buffer_sizes);
+    metal::float3 _e57 = fur_rows_sliver(r_12, ax_2, g_2.hi - FUR_POLE_SLIVER, g_2.hi, g_2.hi, t_15 - mid, fur_lut, _buffer_sizes);
     return _e57.z;
 }
 
@@ -2464,28 +2460,18 @@ metal::float3 fur_downward_flux(
     return metal::select(mu_n, _e18, den_2 > metal::float3(0.000001));
 }
 
-metal::float3 fur_reflection_product(
-    metal::float3 mu_1,
-    metal::float3 t_10
-) {
-    metal::float3 _e11 = fur_dual_between(metal::float3(1.0) - (t_10 / metal::max(mu_1, metal::float3(0.000001))), metal::float3(1.0));
-    return _e11;
-}
-
 metal::float3 fur_backscatter_factor(
-    metal::float3 r_rho,
     metal::float3 rho2_1,
+    metal::float3 mu_1,
     metal::float3 mu_2m_1
 ) {
     metal::float3 tiny = metal::float3(0.000001);
     metal::float3 g_den = metal::float3(1.0) - (rho2_1 * mu_2m_1);
-    metal::float3 g_9 = (metal::float3(1.0) - mu_2m_1) / metal::max(g_den, tiny);
-    metal::float3 den_3 = metal::float3(1.0) - (r_rho * g_9);
-    metal::float3 _e26 = fur_dual_between((g_9 * (metal::float3(1.0) - r_rho)) / metal::max(den_3, tiny), metal::float3(1.0));
-    return metal::select(metal::float3(1.0), _e26, (g_den > tiny) & (den_3 > tiny));
+    metal::float3 _e16 = fur_dual_between((metal::float3(1.0) - mu_2m_1) / metal::max(g_den, tiny), metal::float3(1.0));
+    return metal::select(metal::float3(1.0), _e16, g_den > tiny) / metal::max(mu_1, tiny);
 }
 
-FurCoat fur_dual_coat_node(
+metal::float3 fur_dual_coat_node(
     metal::uint3 n_1,
     uint k_13,
     device type_1 const& fur_dual,
@@ -2496,29 +2482,26 @@ FurCoat fur_dual_coat_node(
     metal::float3 a_12 = metal::clamp(_e5, metal::float3(0.0), metal::float3(1.0));
     metal::float3 _e12 = fur_dual_power(_e3, 1.0);
     metal::float3 _e16 = fur_rsqrt_newton(metal::max(a_12, metal::float3(0.000000000000000000000000000001)));
-    metal::float3 t_17 = a_12 * _e16;
-    metal::float3 _e18 = fur_reflectance_squared(_e12, t_17);
-    metal::float3 _e19 = fur_reflection_product(_e12, t_17);
-    return FurCoat {_e18, _e19};
+    metal::float3 t_16 = a_12 * _e16;
+    metal::float3 _e18 = fur_reflectance_squared(_e12, t_16);
+    return _e18;
 }
 
-FurCoat fur_dual_coat(
+metal::float3 fur_dual_coat(
     FurLoc l_7,
     device type_1 const& fur_dual,
     thread FurDualColour& fur_dual_at,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::uint3 lo_6 = fur_dual_at.node;
-    FurCoat _e5 = fur_dual_coat_node(lo_6, l_7.i, fur_dual, _buffer_sizes);
-    FurCoat _e9 = fur_dual_coat_node(lo_6, l_7.i + 1u, fur_dual, _buffer_sizes);
-    FurCoat _e14 = fur_dual_coat_node(lo_6 + metal::uint3(1u), l_7.i, fur_dual, _buffer_sizes);
-    FurCoat _e21 = fur_dual_coat_node(lo_6 + metal::uint3(1u), l_7.i + 1u, fur_dual, _buffer_sizes);
-    metal::float3 w_8 = fur_dual_at.w;
-    metal::float3 rho0_ = _e5.rho2_ + ((_e9.rho2_ - _e5.rho2_) * l_7.w);
-    metal::float3 rho1_ = _e14.rho2_ + ((_e21.rho2_ - _e14.rho2_) * l_7.w);
-    metal::float3 rr0_ = _e5.r_rho + ((_e9.r_rho - _e5.r_rho) * l_7.w);
-    metal::float3 rr1_ = _e14.r_rho + ((_e21.r_rho - _e14.r_rho) * l_7.w);
-    return FurCoat {rho0_ + ((rho1_ - rho0_) * w_8), rr0_ + ((rr1_ - rr0_) * w_8)};
+    metal::float3 _e5 = fur_dual_coat_node(lo_6, l_7.i, fur_dual, _buffer_sizes);
+    metal::float3 _e9 = fur_dual_coat_node(lo_6, l_7.i + 1u, fur_dual, _buffer_sizes);
+    metal::float3 _e14 = fur_dual_coat_node(lo_6 + metal::uint3(1u), l_7.i, fur_dual, _buffer_sizes);
+    metal::float3 _e21 = fur_dual_coat_node(lo_6 + metal::uint3(1u), l_7.i + 1u, fur_dual, _buffer_sizes);
+    metal::float3 rho0_ = _e5 + ((_e9 - _e5) * l_7.w);
+    metal::float3 rho1_ = _e14 + ((_e21 - _e14) * l_7.w);
+    metal::float3 _e33 = fur_dual_at.w;
+    return rho0_ + ((rho1_ - rho0_) * _e33);
 }
 
 float fur_dual_clean(
@@ -2584,6 +2567,15 @@ float fur_dual_below_at_incidence(
     return known ? as_count : count_on_line;
 }
 
+float fur_dual_forward_density_at_incidence(
+    float d_f,
+    float cos_to_skin_1
+) {
+    float scaled = (d_f * FUR_DUAL_DIFFUSIVITY) * metal::min(metal::abs(cos_to_skin_1), 1.0);
+    bool _e8 = fur_is_nan(cos_to_skin_1);
+    return _e8 ? d_f : scaled;
+}
+
 metal::float3 fur_eval_dual(
     float theta_i_6,
     float theta_r_8,
@@ -2622,9 +2614,10 @@ metal::float3 fur_eval_dual(
     metal::float3 _e41 = fur_dual_field(_e33, (abs_phi_2 < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT, fur_dual, fur_dual_at, _buffer_sizes);
     metal::float3 _e43 = fur_dual_field(_e33, FUR_DUAL_LOG2_DECAY, fur_dual, fur_dual_at, _buffer_sizes);
     metal::float3 _e45 = fur_dual_field(_e33, FUR_DUAL_A_F2_, fur_dual, fur_dual_at, _buffer_sizes);
-    FurCoat _e46 = fur_dual_coat(_e33, fur_dual, fur_dual_at, _buffer_sizes);
-    metal::float3 _e49 = fur_dual_power(_e43, 2.0 * _e16);
-    metal::float3 _e52 = fur_backscatter_factor(_e46.r_rho, _e46.rho2_, _e49);
+    metal::float3 _e47 = fur_dual_power(_e43, 1.0);
+    metal::float3 _e50 = fur_dual_power(_e43, 2.0 * _e16);
+    metal::float3 _e51 = fur_dual_coat(_e33, fur_dual, fur_dual_at, _buffer_sizes);
+    metal::float3 _e52 = fur_backscatter_factor(_e51, _e47, _e50);
     metal::float3 half_energy = _e41 * _e52;
     metal::float3 _e55 = fur_dual_field(_e33, FUR_DUAL_SIGMA_B0_, fur_dual, fur_dual_at, _buffer_sizes);
     metal::float3 _e57 = fur_dual_field(_e33, FUR_DUAL_DELTA_B, fur_dual, fur_dual_at, _buffer_sizes);
@@ -2643,19 +2636,19 @@ metal::float3 fur_eval_dual(
         metal::float3 _e83 = fur_dual_field(_e79, FUR_DUAL_BETA_F, fur_dual, fur_dual_at, _buffer_sizes);
         metal::float3 _e84 = fur_dual_power(_e81, _e15);
         metal::float3 _e87 = fur_dual_power(_e81, 2.0 * _e16);
-        FurCoat _e88 = fur_dual_coat(_e79, fur_dual, fur_dual_at, _buffer_sizes);
-        metal::float3 _e90 = fur_downward_flux(_e84, _e87, _e88.rho2_);
-        metal::float3 spread = metal::max(_e90 - metal::float3(direct), zero) * _e18;
+        metal::float3 _e88 = fur_dual_coat(_e79, fur_dual, fur_dual_at, _buffer_sizes);
+        metal::float3 _e89 = fur_downward_flux(_e84, _e87, _e88);
+        metal::float3 spread = metal::max(_e89 - metal::float3(direct), zero) * _e18;
         if (metal::any(spread > zero)) {
             metal::float3 s2f = (_e15 * _e83) * _e83;
             p_3 = abs_phi_2 * FUR_DUAL_PHI_SCALE;
-            float _e102 = p_3;
-            float _e105 = p_3;
-            p_3 = (_e105 > 0.0) ? metal::min(_e102, 31.0) : 0.0;
-            float _e110 = p_3;
-            uint j_7 = metal::min(naga_f2u32(_e110), 30u);
-            float _e114 = p_3;
-            FurLoc at_phi = FurLoc {j_7, _e114 - static_cast<float>(j_7)};
+            float _e101 = p_3;
+            float _e104 = p_3;
+            p_3 = (_e104 > 0.0) ? metal::min(_e101, 31.0) : 0.0;
+            float _e109 = p_3;
+            uint j_7 = metal::min(naga_f2u32(_e109), 30u);
+            float _e113 = p_3;
+            FurLoc at_phi = FurLoc {j_7, _e113 - static_cast<float>(j_7)};
             f_s = zero;
             uint2 loop_bound_20 = uint2(4294967295u);
             bool loop_init_19 = true;
@@ -2663,44 +2656,44 @@ metal::float3 fur_eval_dual(
                 if (metal::all(loop_bound_20 == uint2(0u))) { break; }
                 loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
                 if (!loop_init_19) {
-                    uint _e142 = g_7;
-                    g_7 = _e142 + 1u;
+                    uint _e141 = g_7;
+                    g_7 = _e141 + 1u;
                 }
                 loop_init_19 = false;
-                uint _e121 = g_7;
-                if (_e121 < 4u) {
+                uint _e120 = g_7;
+                if (_e120 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e125 = g_7;
-                    metal::float3 _e127 = fur_dual_field(_e33, FUR_DUAL_MEAN + _e125, fur_dual, fur_dual_at, _buffer_sizes);
-                    uint _e129 = g_7;
-                    metal::float3 _e131 = fur_dual_field(_e33, FUR_DUAL_SD + _e129, fur_dual, fur_dual_at, _buffer_sizes);
-                    uint _e132 = g_7;
-                    metal::float3 _e133 = fur_dual_ng(_e132, _e33, at_phi, fur_dual, fur_dual_at, _buffer_sizes);
-                    metal::float3 v_6 = (_e131 * _e131) + s2f;
-                    metal::float3 _e136 = f_s;
-                    metal::float3 _e139 = fur_dual_gauss(metal::float3(x_20) - _e127, v_6, theta_i_6);
-                    f_s = _e136 + (_e133 * _e139);
+                    uint _e124 = g_7;
+                    metal::float3 _e126 = fur_dual_field(_e33, FUR_DUAL_MEAN + _e124, fur_dual, fur_dual_at, _buffer_sizes);
+                    uint _e128 = g_7;
+                    metal::float3 _e130 = fur_dual_field(_e33, FUR_DUAL_SD + _e128, fur_dual, fur_dual_at, _buffer_sizes);
+                    uint _e131 = g_7;
+                    metal::float3 _e132 = fur_dual_ng(_e131, _e33, at_phi, fur_dual, fur_dual_at, _buffer_sizes);
+                    metal::float3 v_6 = (_e130 * _e130) + s2f;
+                    metal::float3 _e135 = f_s;
+                    metal::float3 _e138 = fur_dual_gauss(metal::float3(x_20) - _e126, v_6, theta_i_6);
+                    f_s = _e135 + (_e132 * _e138);
                 }
             }
-            metal::float3 _e146 = fur_dual_gauss(d_back, v_back + s2f, theta_i_6);
-            metal::float3 _e147 = out_4;
-            metal::float3 _e148 = f_s;
-            out_4 = _e147 + (spread * ((_e148 * inv_cos2_1) + ((back_scale * half_energy) * _e146)));
+            metal::float3 _e145 = fur_dual_gauss(d_back, v_back + s2f, theta_i_6);
+            metal::float3 _e146 = out_4;
+            metal::float3 _e147 = f_s;
+            out_4 = _e146 + (spread * ((_e147 * inv_cos2_1) + ((back_scale * half_energy) * _e145)));
         }
     }
-    float _e156 = out_4.x;
-    bool _e157 = fur_finite(_e156);
-    float _e159 = out_4.y;
-    bool _e160 = fur_finite(_e159);
-    float _e162 = out_4.z;
-    bool _e163 = fur_finite(_e162);
-    metal::bool3 finite = metal::bool3(_e157, _e160, _e163);
+    float _e155 = out_4.x;
+    bool _e156 = fur_finite(_e155);
+    float _e158 = out_4.y;
+    bool _e159 = fur_finite(_e158);
+    float _e161 = out_4.z;
+    bool _e162 = fur_finite(_e161);
+    metal::bool3 finite = metal::bool3(_e156, _e159, _e162);
+    metal::float3 _e164 = out_4;
     metal::float3 _e165 = out_4;
-    metal::float3 _e166 = out_4;
-    return metal::select(zero, _e165, finite & (_e166 > zero));
+    return metal::select(zero, _e164, finite & (_e165 > zero));
 }
 
 metal::float3 fur_eval_dual_dirs(
@@ -2709,7 +2702,7 @@ metal::float3 fur_eval_dual_dirs(
     metal::float3 u_6,
     float fibers_1,
     float fibers_below_1,
-    float d_f,
+    float d_f_1,
     float d_b,
     metal::float3 sigma_ca_7,
     device type_1 const& fur_dual,
@@ -2720,7 +2713,7 @@ metal::float3 fur_eval_dual_dirs(
     if (!(_e8.ok)) {
         return metal::float3(0.0);
     }
-    metal::float3 _e16 = fur_eval_dual(_e8.theta_i, _e8.theta_r, _e8.phi, fibers_1, fibers_below_1, d_f, d_b, sigma_ca_7, fur_dual, fur_dual_at, _buffer_sizes);
+    metal::float3 _e16 = fur_eval_dual(_e8.theta_i, _e8.theta_r, _e8.phi, fibers_1, fibers_below_1, d_f_1, d_b, sigma_ca_7, fur_dual, fur_dual_at, _buffer_sizes);
     return _e16;
 }
 
@@ -2741,7 +2734,7 @@ float fur_coat_sigma_for(
 ) {
     type_19 nodes_2 = {};
     uint k_14 = 0u;
-    float t_11 = {};
+    float t_10 = {};
     nodes_2 = table;
     float _e5 = nodes_2.inner[0].x;
     if (c_2 >= _e5) {
@@ -2770,12 +2763,12 @@ float fur_coat_sigma_for(
             uint _e28 = k_14;
             float lo_7 = nodes_2.inner[naga_div(_e22 + 1u, 4u)][naga_mod(_e28 + 1u, 4u)];
             if (c_2 >= lo_7) {
-                t_11 = 0.0;
+                t_10 = 0.0;
                 if (hi_4 > lo_7) {
-                    t_11 = (hi_4 - c_2) / (hi_4 - lo_7);
+                    t_10 = (hi_4 - c_2) / (hi_4 - lo_7);
                 }
                 uint _e42 = k_14;
-                float _e44 = t_11;
+                float _e44 = t_10;
                 float x_21 = ((static_cast<float>(_e42) + _e44) / 23.0) * FUR_COAT_AXIS_END;
                 float _e50 = fur_coat_sigma_at(x_21);
                 return _e50;

@@ -87,10 +87,6 @@ struct FurDualColour {
     uvec3 node;
     vec3 w;
 };
-struct FurCoat {
-    vec3 rho2_;
-    vec3 r_rho;
-};
 const float FUR_PI = 3.1415927;
 const float FUR_HALF_PI = 1.5707964;
 const float FUR_TAU = 6.2831855;
@@ -387,9 +383,9 @@ float fur_atan2_(float y_1, float x_6) {
     float ax_4 = abs(x_6);
     float ay = abs(y_1);
     float a_8 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_12 = (a_8 * a_8);
-    float _e10 = fur_atan_poly(t_12);
-    r = (a_8 + (a_8 * (t_12 * _e10)));
+    float t_11 = (a_8 * a_8);
+    float _e10 = fur_atan_poly(t_11);
+    r = (a_8 + (a_8 * (t_11 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -683,7 +679,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_13[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float t_12[3] = float[3](0.11270166, 0.5, 0.8872983);
     float w_4[3] = float[3](0.2777778, 0.44444445, 0.2777778);
     bool loop_init_2 = true;
     while(true) {
@@ -699,7 +695,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_13[_e33] * len_5);
+            float d_8 = (t_12[_e33] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -1021,44 +1017,34 @@ vec3 fur_downward_flux(vec3 mu_n, vec3 mu_2m, vec3 rho2_) {
     return mix(mu_n, _e18, greaterThan(den_2, vec3(1e-6)));
 }
 
-vec3 fur_reflection_product(vec3 mu_1, vec3 t_10) {
-    vec3 _e11 = fur_dual_between((vec3(1.0) - (t_10 / max(mu_1, vec3(1e-6)))), vec3(1.0));
-    return _e11;
-}
-
-vec3 fur_backscatter_factor(vec3 r_rho, vec3 rho2_1, vec3 mu_2m_1) {
+vec3 fur_backscatter_factor(vec3 rho2_1, vec3 mu_1, vec3 mu_2m_1) {
     vec3 tiny = vec3(1e-6);
     vec3 g_den = (vec3(1.0) - (rho2_1 * mu_2m_1));
-    vec3 g_9 = ((vec3(1.0) - mu_2m_1) / max(g_den, tiny));
-    vec3 den_3 = (vec3(1.0) - (r_rho * g_9));
-    vec3 _e26 = fur_dual_between(((g_9 * (vec3(1.0) - r_rho)) / max(den_3, tiny)), vec3(1.0));
-    return mix(vec3(1.0), _e26, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
+    vec3 _e16 = fur_dual_between(((vec3(1.0) - mu_2m_1) / max(g_den, tiny)), vec3(1.0));
+    return (mix(vec3(1.0), _e16, greaterThan(g_den, tiny)) / max(mu_1, tiny));
 }
 
-FurCoat fur_dual_coat_node(uvec3 n_1, uint k_13) {
+vec3 fur_dual_coat_node(uvec3 n_1, uint k_13) {
     vec3 _e3 = fur_dual_node(n_1, k_13, FUR_DUAL_LOG2_DECAY);
     vec3 _e5 = fur_dual_node(n_1, k_13, FUR_DUAL_A_F2_);
     vec3 a_11 = clamp(_e5, vec3(0.0), vec3(1.0));
     vec3 _e12 = fur_dual_power(_e3, 1.0);
     vec3 _e16 = fur_rsqrt_newton(max(a_11, vec3(1e-30)));
-    vec3 t_14 = (a_11 * _e16);
-    vec3 _e18 = fur_reflectance_squared(_e12, t_14);
-    vec3 _e19 = fur_reflection_product(_e12, t_14);
-    return FurCoat(_e18, _e19);
+    vec3 t_13 = (a_11 * _e16);
+    vec3 _e18 = fur_reflectance_squared(_e12, t_13);
+    return _e18;
 }
 
-FurCoat fur_dual_coat(FurLoc l_7) {
+vec3 fur_dual_coat(FurLoc l_7) {
     uvec3 lo_6 = fur_dual_at.node;
-    FurCoat _e5 = fur_dual_coat_node(lo_6, l_7.i);
-    FurCoat _e9 = fur_dual_coat_node(lo_6, (l_7.i + 1u));
-    FurCoat _e14 = fur_dual_coat_node((lo_6 + uvec3(1u)), l_7.i);
-    FurCoat _e21 = fur_dual_coat_node((lo_6 + uvec3(1u)), (l_7.i + 1u));
-    vec3 w_6 = fur_dual_at.w;
-    vec3 rho0_ = (_e5.rho2_ + ((_e9.rho2_ - _e5.rho2_) * l_7.w));
-    vec3 rho1_ = (_e14.rho2_ + ((_e21.rho2_ - _e14.rho2_) * l_7.w));
-    vec3 rr0_ = (_e5.r_rho + ((_e9.r_rho - _e5.r_rho) * l_7.w));
-    vec3 rr1_ = (_e14.r_rho + ((_e21.r_rho - _e14.r_rho) * l_7.w));
-    return FurCoat((rho0_ + ((rho1_ - rho0_) * w_6)), (rr0_ + ((rr1_ - rr0_) * w_6)));
+    vec3 _e5 = fur_dual_coat_node(lo_6, l_7.i);
+    vec3 _e9 = fur_dual_coat_node(lo_6, (l_7.i + 1u));
+    vec3 _e14 = fur_dual_coat_node((lo_6 + uvec3(1u)), l_7.i);
+    vec3 _e21 = fur_dual_coat_node((lo_6 + uvec3(1u)), (l_7.i + 1u));
+    vec3 rho0_ = (_e5 + ((_e9 - _e5) * l_7.w));
+    vec3 rho1_ = (_e14 + ((_e21 - _e14) * l_7.w));
+    vec3 _e33 = fur_dual_at.w;
+    return (rho0_ + ((rho1_ - rho0_) * _e33));
 }
 
 float fur_dual_clean(float x_13, float top_1) {
@@ -1116,6 +1102,12 @@ float fur_dual_below_at_incidence(float count_on_line, float cos_to_skin) {
     return (known ? as_count : count_on_line);
 }
 
+float fur_dual_forward_density_at_incidence(float d_f, float cos_to_skin_1) {
+    float scaled = ((d_f * FUR_DUAL_DIFFUSIVITY) * min(abs(cos_to_skin_1), 1.0));
+    bool _e8 = fur_is_nan(cos_to_skin_1);
+    return (_e8 ? d_f : scaled);
+}
+
 vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fibers, float fibers_below, float d_f_in, float d_b_in, vec3 sigma_ca_6) {
     vec3 out_4 = vec3(0.0);
     float p_3 = 0.0;
@@ -1142,9 +1134,10 @@ vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fiber
     vec3 _e41 = fur_dual_field(_e33, ((abs_phi < FUR_HALF_PI) ? FUR_DUAL_BACK : FUR_DUAL_FRONT));
     vec3 _e43 = fur_dual_field(_e33, FUR_DUAL_LOG2_DECAY);
     vec3 _e45 = fur_dual_field(_e33, FUR_DUAL_A_F2_);
-    FurCoat _e46 = fur_dual_coat(_e33);
-    vec3 _e49 = fur_dual_power(_e43, (2.0 * _e16));
-    vec3 _e52 = fur_backscatter_factor(_e46.r_rho, _e46.rho2_, _e49);
+    vec3 _e47 = fur_dual_power(_e43, 1.0);
+    vec3 _e50 = fur_dual_power(_e43, (2.0 * _e16));
+    vec3 _e51 = fur_dual_coat(_e33);
+    vec3 _e52 = fur_backscatter_factor(_e51, _e47, _e50);
     vec3 half_energy = (_e41 * _e52);
     vec3 _e55 = fur_dual_field(_e33, FUR_DUAL_SIGMA_B0_);
     vec3 _e57 = fur_dual_field(_e33, FUR_DUAL_DELTA_B);
@@ -1163,69 +1156,69 @@ vec3 fur_eval_dual(float theta_i_6, float theta_r_8, float phi_in_1, float fiber
         vec3 _e83 = fur_dual_field(_e79, FUR_DUAL_BETA_F);
         vec3 _e84 = fur_dual_power(_e81, _e15);
         vec3 _e87 = fur_dual_power(_e81, (2.0 * _e16));
-        FurCoat _e88 = fur_dual_coat(_e79);
-        vec3 _e90 = fur_downward_flux(_e84, _e87, _e88.rho2_);
-        vec3 spread = (max((_e90 - vec3(direct)), zero) * _e18);
+        vec3 _e88 = fur_dual_coat(_e79);
+        vec3 _e89 = fur_downward_flux(_e84, _e87, _e88);
+        vec3 spread = (max((_e89 - vec3(direct)), zero) * _e18);
         if (any(greaterThan(spread, zero))) {
             vec3 s2f = ((_e15 * _e83) * _e83);
             p_3 = (abs_phi * FUR_DUAL_PHI_SCALE);
-            float _e102 = p_3;
-            float _e105 = p_3;
-            p_3 = ((_e105 > 0.0) ? min(_e102, 31.0) : 0.0);
-            float _e110 = p_3;
-            uint j_7 = min(uint(_e110), 30u);
-            float _e114 = p_3;
-            FurLoc at_phi = FurLoc(j_7, (_e114 - float(j_7)));
+            float _e101 = p_3;
+            float _e104 = p_3;
+            p_3 = ((_e104 > 0.0) ? min(_e101, 31.0) : 0.0);
+            float _e109 = p_3;
+            uint j_7 = min(uint(_e109), 30u);
+            float _e113 = p_3;
+            FurLoc at_phi = FurLoc(j_7, (_e113 - float(j_7)));
             f_s = zero;
             bool loop_init_4 = true;
             while(true) {
                 if (!loop_init_4) {
-                    uint _e142 = g_7;
-                    g_7 = (_e142 + 1u);
+                    uint _e141 = g_7;
+                    g_7 = (_e141 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e121 = g_7;
-                if ((_e121 < 4u)) {
+                uint _e120 = g_7;
+                if ((_e120 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e125 = g_7;
-                    vec3 _e127 = fur_dual_field(_e33, (FUR_DUAL_MEAN + _e125));
-                    uint _e129 = g_7;
-                    vec3 _e131 = fur_dual_field(_e33, (FUR_DUAL_SD + _e129));
-                    uint _e132 = g_7;
-                    vec3 _e133 = fur_dual_ng(_e132, _e33, at_phi);
-                    vec3 v_6 = ((_e131 * _e131) + s2f);
-                    vec3 _e136 = f_s;
-                    vec3 _e139 = fur_dual_gauss((vec3(x_18) - _e127), v_6, theta_i_6);
-                    f_s = (_e136 + (_e133 * _e139));
+                    uint _e124 = g_7;
+                    vec3 _e126 = fur_dual_field(_e33, (FUR_DUAL_MEAN + _e124));
+                    uint _e128 = g_7;
+                    vec3 _e130 = fur_dual_field(_e33, (FUR_DUAL_SD + _e128));
+                    uint _e131 = g_7;
+                    vec3 _e132 = fur_dual_ng(_e131, _e33, at_phi);
+                    vec3 v_6 = ((_e130 * _e130) + s2f);
+                    vec3 _e135 = f_s;
+                    vec3 _e138 = fur_dual_gauss((vec3(x_18) - _e126), v_6, theta_i_6);
+                    f_s = (_e135 + (_e132 * _e138));
                 }
             }
-            vec3 _e146 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
-            vec3 _e147 = out_4;
-            vec3 _e148 = f_s;
-            out_4 = (_e147 + (spread * ((_e148 * inv_cos2_) + ((back_scale * half_energy) * _e146))));
+            vec3 _e145 = fur_dual_gauss(d_back, (v_back + s2f), theta_i_6);
+            vec3 _e146 = out_4;
+            vec3 _e147 = f_s;
+            out_4 = (_e146 + (spread * ((_e147 * inv_cos2_) + ((back_scale * half_energy) * _e145))));
         }
     }
-    float _e156 = out_4.x;
-    bool _e157 = fur_finite(_e156);
-    float _e159 = out_4.y;
-    bool _e160 = fur_finite(_e159);
-    float _e162 = out_4.z;
-    bool _e163 = fur_finite(_e162);
-    bvec3 finite = bvec3(_e157, _e160, _e163);
+    float _e155 = out_4.x;
+    bool _e156 = fur_finite(_e155);
+    float _e158 = out_4.y;
+    bool _e159 = fur_finite(_e158);
+    float _e161 = out_4.z;
+    bool _e162 = fur_finite(_e161);
+    bvec3 finite = bvec3(_e156, _e159, _e162);
+    vec3 _e164 = out_4;
     vec3 _e165 = out_4;
-    vec3 _e166 = out_4;
-    return mix(zero, _e165, bvec3(finite.x && greaterThan(_e166, zero).x, finite.y && greaterThan(_e166, zero).y, finite.z && greaterThan(_e166, zero).z));
+    return mix(zero, _e164, bvec3(finite.x && greaterThan(_e165, zero).x, finite.y && greaterThan(_e165, zero).y, finite.z && greaterThan(_e165, zero).z));
 }
 
-vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fibers_below_1, float d_f, float d_b, vec3 sigma_ca_7) {
+vec3 fur_eval_dual_dirs(vec3 wi_2, vec3 wr_2, vec3 u_6, float fibers_1, float fibers_below_1, float d_f_1, float d_b, vec3 sigma_ca_7) {
     FurDirAngles _e8 = fur_angles_from_dirs(wi_2, wr_2, u_6);
     if (!(_e8.ok)) {
         return vec3(0.0);
     }
-    vec3 _e16 = fur_eval_dual(_e8.theta_i, _e8.theta_r, _e8.phi, fibers_1, fibers_below_1, d_f, d_b, sigma_ca_7);
+    vec3 _e16 = fur_eval_dual(_e8.theta_i, _e8.theta_r, _e8.phi, fibers_1, fibers_below_1, d_f_1, d_b, sigma_ca_7);
     return _e16;
 }
 
@@ -1237,7 +1230,7 @@ float fur_coat_sigma_at(float x_15) {
 float fur_coat_sigma_for(vec4 table[6], float c_2) {
     vec4 nodes_2[6] = vec4[6](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint k_14 = 0u;
-    float t_11 = 0.0;
+    float t_10 = 0.0;
     nodes_2 = table;
     float _e5 = nodes_2[0].x;
     if ((c_2 >= _e5)) {
@@ -1263,12 +1256,12 @@ float fur_coat_sigma_for(vec4 table[6], float c_2) {
             uint _e28 = k_14;
             float lo_7 = nodes_2[((_e22 + 1u) / 4u)][((_e28 + 1u) % 4u)];
             if ((c_2 >= lo_7)) {
-                t_11 = 0.0;
+                t_10 = 0.0;
                 if ((hi_4 > lo_7)) {
-                    t_11 = ((hi_4 - c_2) / (hi_4 - lo_7));
+                    t_10 = ((hi_4 - c_2) / (hi_4 - lo_7));
                 }
                 uint _e42 = k_14;
-                float _e44 = t_11;
+                float _e44 = t_10;
                 float x_19 = (((float(_e42) + _e44) / 23.0) * FUR_COAT_AXIS_END);
                 float _e50 = fur_coat_sigma_at(x_19);
                 return _e50;

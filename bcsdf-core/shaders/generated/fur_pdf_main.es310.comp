@@ -87,10 +87,6 @@ struct FurDualColour {
     uvec3 node;
     vec3 w;
 };
-struct FurCoat {
-    vec3 rho2_;
-    vec3 r_rho;
-};
 const float FUR_PI = 3.1415927;
 const float FUR_HALF_PI = 1.5707964;
 const float FUR_TAU = 6.2831855;
@@ -218,10 +214,10 @@ FurColour fur_locate_colour(vec3 sigma_ca) {
     vec3 x_16 = min((vec3(1.0) - e), vec3(1.0));
     vec3 u_8 = clamp((x_16 * last_2), vec3(0.0), vec3(last_2));
     uvec3 k_18 = min(uvec3(u_8), uvec3((_e2 - 3u)));
-    vec3 t_12 = (u_8 - vec3(k_18));
-    vec3 w0_ = ((0.5 * (t_12 - vec3(1.0))) * (t_12 - vec3(2.0)));
-    vec3 w1_ = (t_12 * (vec3(2.0) - t_12));
-    vec3 w2_ = ((0.5 * t_12) * (t_12 - vec3(1.0)));
+    vec3 t_11 = (u_8 - vec3(k_18));
+    vec3 w0_ = ((0.5 * (t_11 - vec3(1.0))) * (t_11 - vec3(2.0)));
+    vec3 w1_ = (t_11 * (vec3(2.0) - t_11));
+    vec3 w2_ = ((0.5 * t_11) * (t_11 - vec3(1.0)));
     uint _e71 = fur_word(6u);
     uint _e73 = fur_word(5u);
     return FurColour((k_18 * (_e71 * _e73)), w0_, w1_, w2_);
@@ -770,9 +766,9 @@ float fur_atan2_(float y_1, float x_6) {
     float ax_4 = abs(x_6);
     float ay = abs(y_1);
     float a_8 = (min(ax_4, ay) / max(max(ax_4, ay), 1.1754944e-38));
-    float t_13 = (a_8 * a_8);
-    float _e10 = fur_atan_poly(t_13);
-    r = (a_8 + (a_8 * (t_13 * _e10)));
+    float t_12 = (a_8 * a_8);
+    float _e10 = fur_atan_poly(t_12);
+    r = (a_8 + (a_8 * (t_12 * _e10)));
     float _e15 = r;
     float _e17 = r;
     r = ((ay > ax_4) ? (FUR_HALF_PI - _e17) : _e15);
@@ -1196,8 +1192,8 @@ float fur_rows_invert(FurRows r_8, float t_5) {
 float fur_rows_invert_between(FurRows r_9, float t0_, float t1_, float u_3) {
     float inset_2 = ((t1_ - t0_) * 9.536743e-7);
     float _e7 = fur_unit(u_3);
-    float t_14 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
-    float _e14 = fur_rows_invert(r_9, t_14);
+    float t_13 = clamp((t0_ + (_e7 * (t1_ - t0_))), (t0_ + inset_2), (t1_ - inset_2));
+    float _e14 = fur_rows_invert(r_9, t_13);
     return _e14;
 }
 
@@ -1229,7 +1225,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         return 0.0;
     }
     float slope = ((v1_6 - v0_6) / len0_);
-    float t_15[3] = float[3](0.11270166, 0.5, 0.8872983);
+    float t_14[3] = float[3](0.11270166, 0.5, 0.8872983);
     float w_5[3] = float[3](0.2777778, 0.44444445, 0.2777778);
     bool loop_init_11 = true;
     while(true) {
@@ -1245,7 +1241,7 @@ float fur_sliver_piece_mass(float v0_6, float v1_6, float len0_, float x0_, floa
         }
         {
             uint _e33 = k_5;
-            float d_8 = (t_15[_e33] * len_5);
+            float d_8 = (t_14[_e33] * len_5);
             float _e36 = acc_3;
             uint _e37 = k_5;
             float _e44 = fur_sliver_keep(((x0_ - pole) + d_8));
@@ -1434,18 +1430,18 @@ float fur_rows_invert_kept(FurRows r_12, FurAxis ax_2, FurRange g_2, float u_4) 
         return _e19.z;
     }
     float mid = max(((g_2.raw - g_2.s.x) - g_2.s.z), 0.0);
-    float t_16 = (t0_1 - g_2.s.y);
-    if (!((t_16 <= mid))) {
+    float t_15 = (t0_1 - g_2.s.y);
+    if (!((t_15 <= mid))) {
         local_23 = !((g_2.s.w > 0.0));
     } else {
         local_23 = true;
     }
     bool _e43 = local_23;
     if (_e43) {
-        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_16, mid)));
+        float _e50 = fur_rows_invert(r_12, ((g_2.start + g_2.s.x) + min(t_15, mid)));
         return _e50;
     }
-    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_16 - mid));
+    vec3 _e57 = fur_rows_sliver(r_12, ax_2, (g_2.hi - FUR_POLE_SLIVER), g_2.hi, g_2.hi, (t_15 - mid));
     return _e57.z;
 }
 
@@ -1948,18 +1944,11 @@ vec3 fur_downward_flux(vec3 mu_n, vec3 mu_2m, vec3 rho2_) {
     return mix(mu_n, _e18, greaterThan(den_2, vec3(1e-6)));
 }
 
-vec3 fur_reflection_product(vec3 mu_1, vec3 t_10) {
-    vec3 _e11 = fur_dual_between((vec3(1.0) - (t_10 / max(mu_1, vec3(1e-6)))), vec3(1.0));
-    return _e11;
-}
-
-vec3 fur_backscatter_factor(vec3 r_rho, vec3 rho2_1, vec3 mu_2m_1) {
+vec3 fur_backscatter_factor(vec3 rho2_1, vec3 mu_1, vec3 mu_2m_1) {
     vec3 tiny = vec3(1e-6);
     vec3 g_den = (vec3(1.0) - (rho2_1 * mu_2m_1));
-    vec3 g_9 = ((vec3(1.0) - mu_2m_1) / max(g_den, tiny));
-    vec3 den_3 = (vec3(1.0) - (r_rho * g_9));
-    vec3 _e26 = fur_dual_between(((g_9 * (vec3(1.0) - r_rho)) / max(den_3, tiny)), vec3(1.0));
-    return mix(vec3(1.0), _e26, bvec3(greaterThan(g_den, tiny).x && greaterThan(den_3, tiny).x, greaterThan(g_den, tiny).y && greaterThan(den_3, tiny).y, greaterThan(g_den, tiny).z && greaterThan(den_3, tiny).z));
+    vec3 _e16 = fur_dual_between(((vec3(1.0) - mu_2m_1) / max(g_den, tiny)), vec3(1.0));
+    return (mix(vec3(1.0), _e16, greaterThan(g_den, tiny)) / max(mu_1, tiny));
 }
 
 float fur_dual_clean(float x_13, float top_1) {
@@ -2017,6 +2006,12 @@ float fur_dual_below_at_incidence(float count_on_line, float cos_to_skin) {
     return (known ? as_count : count_on_line);
 }
 
+float fur_dual_forward_density_at_incidence(float d_f, float cos_to_skin_1) {
+    float scaled = ((d_f * FUR_DUAL_DIFFUSIVITY) * min(abs(cos_to_skin_1), 1.0));
+    bool _e8 = fur_is_nan(cos_to_skin_1);
+    return (_e8 ? d_f : scaled);
+}
+
 float fur_coat_sigma_at(float x_15) {
     float x2_1 = (x_15 * x_15);
     return clamp((x2_1 / max((1.0 - x2_1), 1e-12)), 0.0, FUR_SIGMA_CA_MAX);
@@ -2025,7 +2020,7 @@ float fur_coat_sigma_at(float x_15) {
 float fur_coat_sigma_for(vec4 table[6], float c_2) {
     vec4 nodes_2[6] = vec4[6](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     uint k_14 = 0u;
-    float t_11 = 0.0;
+    float t_10 = 0.0;
     nodes_2 = table;
     float _e5 = nodes_2[0].x;
     if ((c_2 >= _e5)) {
@@ -2051,12 +2046,12 @@ float fur_coat_sigma_for(vec4 table[6], float c_2) {
             uint _e28 = k_14;
             float lo_5 = nodes_2[((_e22 + 1u) / 4u)][((_e28 + 1u) % 4u)];
             if ((c_2 >= lo_5)) {
-                t_11 = 0.0;
+                t_10 = 0.0;
                 if ((hi_4 > lo_5)) {
-                    t_11 = ((hi_4 - c_2) / (hi_4 - lo_5));
+                    t_10 = ((hi_4 - c_2) / (hi_4 - lo_5));
                 }
                 uint _e42 = k_14;
-                float _e44 = t_11;
+                float _e44 = t_10;
                 float x_20 = (((float(_e42) + _e44) / 23.0) * FUR_COAT_AXIS_END);
                 float _e50 = fur_coat_sigma_at(x_20);
                 return _e50;

@@ -99,9 +99,6 @@ pub(super) const SIGMA_B0: usize = 5;
 pub(super) const A_F2: usize = 6;
 pub(super) const MEAN: usize = 7;
 pub(super) const SD: usize = 7 + FAMILY_COUNT;
-/// Indices within a node of [`DualLut`]'s derived coat quantities: ρ² and rρ.
-pub(super) const RHO2: usize = 0;
-pub(super) const R_RHO: usize = 1;
 
 /// Smallest stored log₂ μ: a fiber letting through less than 2⁻²⁴ of the light.
 const MIN_LOG2_DECAY: f32 = -24.0;
@@ -196,9 +193,9 @@ pub struct DualLut {
     pub(super) nodes: [[[f32; FIELDS]; THETA_NODES]; ABS_NODES],
     /// [absorption node][family][θ node][φ node].
     pub(super) n_g: [[[[f32; PHI_NODES]; THETA_NODES]; FAMILY_COUNT]; ABS_NODES],
-    /// (ρ², rρ) of the coat at each absorption and θ node ([`super::coat::node_coat`]),
+    /// ρ² of the coat at each absorption and θ node ([`super::coat::node_coat`]),
     /// derived at decode.
-    pub(super) coat: [[[f32; 2]; THETA_NODES]; ABS_NODES],
+    pub(super) coat: [[f32; THETA_NODES]; ABS_NODES],
 }
 
 /// A colour located on a `.furdual` blob's absorption axis ([`DualLut::locate`]): per RGB
@@ -429,7 +426,7 @@ impl DualLut {
         sqrt_nodes: [0.0; ABS_NODES],
         nodes: [[[0.0; FIELDS]; THETA_NODES]; ABS_NODES],
         n_g: [[[[0.0; PHI_NODES]; THETA_NODES]; FAMILY_COUNT]; ABS_NODES],
-        coat: [[[0.0; 2]; THETA_NODES]; ABS_NODES],
+        coat: [[0.0; THETA_NODES]; ABS_NODES],
     };
 
     /// Reads a `.furdual` blob into `self` after checking all of it: length, magic, format and
@@ -530,9 +527,7 @@ impl DualLut {
                 }
             }
             for (node, coat) in self.nodes[a].iter().zip(self.coat[a].iter_mut()) {
-                let (rho2, r_rho) = node_coat(node[LOG2_DECAY], node[A_F2]);
-                coat[RHO2] = rho2;
-                coat[R_RHO] = r_rho;
+                *coat = node_coat(node[LOG2_DECAY], node[A_F2]);
             }
             for family in self.n_g[a].iter_mut() {
                 for row in family.iter_mut() {

@@ -12,9 +12,9 @@
 //! For n layers, R_n = ρ(1 − μ²ⁿ)/(1 − ρ²μ²ⁿ) and T_n = μⁿ(1 − ρ²)/(1 − ρ²μ²ⁿ) (the
 //! adding recursion's closed form); over a black floor the m layers below reflect R_m.
 //!
-//! ρ² and rρ depend on the node alone: [`node_coat`] derives them once per θ node when a
-//! blob is decoded, and [`crate::dual::DualLut::eval`] interpolates them linearly between
-//! nodes like the stored fields (the shader derives them at both nodes and interpolates).
+//! ρ² depends on the node alone: [`node_coat`] derives it once per θ node when a blob is
+//! decoded, and [`crate::dual::DualLut::eval`] interpolates it linearly between nodes like
+//! the stored fields (the shader derives it at both nodes and interpolates).
 
 use super::MAX_FIBERS;
 use crate::math::{exp_neg_saturating, rsqrt_newton};
@@ -62,37 +62,26 @@ pub fn downward_flux(mu_n: f32, mu_2m: f32, rho2: f32) -> f32 {
     }
 }
 
-/// rρ = 1 − t/μ, the product of one layer's reflectance and the semi-infinite stack's, from
-/// its decay `mu` = μ and the layer's forward fraction `t` (μ(1 − rρ) = t), kept in [0, 1];
-/// 1 when μ is below 1e-6.
+/// The local backscatter's energy with m layers below, as a factor on the stored energy
+/// (docs/model.md §13, "The coat below"). The stored energy holds the semi-infinite layer
+/// stack's U_∞ = ρt/(1 − rρ) = ρμ, the light a coat returns through one more layer, the
+/// shading fiber's own. But the light that comes back up to the point was reflected by the
+/// coat below its neighbourhood, which the downward flux reaches beside the fiber, not
+/// through it: the fiber is a point of its layer, not the whole layer. So the coat below
+/// returns U_m = R_m = ρ·g per unit of the downward flux, g = (1 − μ²ᵐ)/(1 − ρ²μ²ᵐ), and the
+/// factor is U_m/U_∞ = g/μ. From `rho2` = ρ², `mu` = μ and `mu_2m` = μ²ᵐ: 1/μ for an
+/// infinite m, 0 for m = 0; g is kept in [0, 1] and μ at or above 1e-6. A denominator of g
+/// below 1e-6 (a lossless layer, whose closed form degenerates) gives g = 1.
 #[inline(always)]
 #[must_use]
-// max/min, not clamp: NaN becomes 0.
-#[allow(clippy::manual_clamp)]
-pub fn reflection_product(mu: f32, t: f32) -> f32 {
-    (1.0 - t / mu.max(TINY)).max(0.0).min(1.0)
-}
-
-/// The local backscatter's energy with m layers below instead of the semi-infinite coat, as
-/// a factor on the stored energy (docs/model.md §13): the light the coat below sends up,
-/// U = R t/(1 − rR), with R_m = ρ·g, g = (1 − μ²ᵐ)/(1 − ρ²μ²ᵐ), in place of ρ:
-/// U_m/U_∞ = g(1 − rρ)/(1 − rρ·g). From `r_rho` = rρ ([`reflection_product`]), `rho2` = ρ²
-/// and `mu_2m` = μ²ᵐ: 1 for an infinite m, 0 for m = 0; in [0, 1]. A denominator below 1e-6
-/// (a lossless layer at m = 0, or no transmission) gives 1.
-#[inline(always)]
-#[must_use]
-pub fn backscatter_factor(r_rho: f32, rho2: f32, mu_2m: f32) -> f32 {
+pub fn backscatter_factor(rho2: f32, mu: f32, mu_2m: f32) -> f32 {
     let g_den = 1.0 - rho2 * mu_2m;
     let g = (1.0 - mu_2m) / g_den.max(TINY);
-    let den = 1.0 - r_rho * g;
-    let f = g * (1.0 - r_rho) / den.max(TINY);
+    // max/min, not clamp: NaN becomes 0.
     #[allow(clippy::manual_clamp)]
-    let f = f.max(0.0).min(1.0);
-    if g_den > TINY && den > TINY {
-        f
-    } else {
-        1.0
-    }
+    let g = g.max(0.0).min(1.0);
+    let g = if g_den > TINY { g } else { 1.0 };
+    g / mu.max(TINY)
 }
 
 /// μᵏ = e^(−k·ln 2·(−log₂ μ)) for k ≥ 0 from the stored log₂ μ ≤ 0
@@ -103,18 +92,18 @@ pub fn power_of_decay(log2_mu: f32, k: f32) -> f32 {
     exp_neg_saturating(-k * LN_2 * log2_mu)
 }
 
-/// (ρ², rρ) of one channel at one θ node from its stored fields: μ = 2^(log₂ μ)
+/// ρ² of one channel at one θ node from its stored fields: μ = 2^(log₂ μ)
 /// ([`power_of_decay`]) and t = ā_f = √(ā_f²) (ā_f² kept in [0, 1]; ā_f²/√(ā_f²) by
-/// [`rsqrt_newton`]), then [`reflectance_squared`] and [`reflection_product`]. What
+/// [`rsqrt_newton`]), then [`reflectance_squared`]. What
 /// [`crate::dual::DualLut::decode`] derives per node and the shader's `fur_dual_coat_node`
 /// repeats.
 #[inline(always)]
 #[must_use]
-pub fn node_coat(log2_mu: f32, a_f2: f32) -> (f32, f32) {
+pub fn node_coat(log2_mu: f32, a_f2: f32) -> f32 {
     let mu = power_of_decay(log2_mu, 1.0);
     let a = a_f2.clamp(0.0, 1.0);
     let t = a * rsqrt_newton(a.max(1e-30));
-    (reflectance_squared(mu, t), reflection_product(mu, t))
+    reflectance_squared(mu, t)
 }
 
 /// What the term adds to a caller's count of the fibers below a point that lies in the coat
@@ -174,4 +163,25 @@ pub fn below_at_incidence(line_count: f32, cos_to_normal: f32) -> f32 {
     }
     let layers = DIFFUSIVITY * cos_to_normal.abs().min(1.0) * (line_count + LINE_SAMPLE_OFFSET);
     (layers - LINE_SAMPLE_OFFSET).max(0.0)
+}
+
+/// The forward density factor d_f to pass in [`crate::dual::Density`] when the caller knows
+/// the light's incidence on the coat (docs/model.md §13 "The light's incidence on the
+/// coat"): `d_f`·[`DIFFUSIVITY`]·|cos ι|, `cos_to_normal` = cos ι between the direction
+/// toward the light and the skin normal under the strand, |cos ι| clamped to 1. The light
+/// that reaches the point through the n fibers above (the spread term, which d_f scales) has
+/// been scattered inside the coat: a diffuse flux, set by the light the coat takes in per
+/// unit of its area, |cos ι| times the beam's irradiance, and crossing a fiber's layer along
+/// [`DIFFUSIVITY`] times its normal depth, so a fiber in it intercepts [`DIFFUSIVITY`] times
+/// the flux. The term's layer stack counts along the light's line in the beam's units, as
+/// if the light fell along the normal; this is the factor between the two. A NaN
+/// `cos_to_normal` (the normal unknown) returns `d_f` unchanged: the behaviour without the
+/// normal. The shader's `fur_dual_forward_density_at_incidence` repeats it.
+#[inline(always)]
+#[must_use]
+pub fn forward_density_at_incidence(d_f: f32, cos_to_normal: f32) -> f32 {
+    if cos_to_normal.is_nan() {
+        return d_f;
+    }
+    d_f * DIFFUSIVITY * cos_to_normal.abs().min(1.0)
 }

@@ -3,9 +3,7 @@
 //! (lerps, the six Gaussians) runs as straight-line lane loops.
 
 use super::blob::DualColour;
-use super::blob::{
-    A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, RHO2, R_RHO, SD, SIGMA_B0,
-};
+use super::blob::{A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, SD, SIGMA_B0};
 use super::coat::{backscatter_factor, downward_flux, power_of_decay};
 use super::{theta_position, Density, DualLut, Fibers, MIN_VARIANCE, PHI_NODES, THETA_NODES};
 use crate::absorption::Absorption;
@@ -77,17 +75,17 @@ impl DualLut {
         out
     }
 
-    /// Derived coat quantity `q` ([`RHO2`] or [`R_RHO`]) at θ and the colour, interpolated
-    /// like [`DualLut::field`].
+    /// The coat's ρ² at θ and the colour ([`super::coat::node_coat`], derived per node at
+    /// decode), interpolated like [`DualLut::field`].
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
-    fn coat(&self, col: &DualColour, (k, w): (usize, f32), q: usize) -> Lanes {
+    fn rho2(&self, col: &DualColour, (k, w): (usize, f32)) -> Lanes {
         let mut out = [0.0f32; 4];
         for c in 0..3 {
             let (a, wa) = (col.node[c], col.w[c]);
             let (lo, hi) = (&self.coat[a], &self.coat[a + 1]);
-            let v0 = lo[k][q] + (lo[k + 1][q] - lo[k][q]) * w;
-            let v1 = hi[k][q] + (hi[k + 1][q] - hi[k][q]) * w;
+            let v0 = lo[k] + (lo[k + 1] - lo[k]) * w;
+            let v1 = hi[k] + (hi[k + 1] - hi[k]) * w;
             out[c] = v0 + (v1 - v0) * wa;
         }
         out
@@ -151,8 +149,8 @@ impl DualLut {
     /// - f_s^scatter(s²) = Σ_g N^G_g(θ_r, φ)·Ĝ(x − mean_g; sd_g² + s²)/cos²θ_i, x = θ_i + θ_r;
     /// - f_back(s²) = A·k_m·Ĝ(x − Δ_b; σ_b² + s²)/(π cos²θ_i), σ_b = (1 + d_b ā_f²)·σ_b0, A the
     ///   stored back-half or front-half energy of the local backscatter at θ_r and k_m its
-    ///   factor for m fibers below ([`super::coat::backscatter_factor`], from ρ² and rρ
-    ///   interpolated like T_f's ρ²);
+    ///   factor for the m fibers below the point's neighbourhood ([`super::coat::backscatter_factor`],
+    ///   from ρ² interpolated like T_f's and μ at θ_r);
     /// - Ĝ a Gaussian divided by its mass over the x the caller can reach at this θ_r
     ///   (θ_i ∈ [−π/2, π/2]; the mass kept at or above 0.05), so that each lobe returns its
     ///   stored energy.
@@ -186,13 +184,13 @@ impl DualLut {
         // The coat below at θ_r: m layers instead of the semi-infinite stack.
         let log2_mu_here = self.field(col, here, LOG2_DECAY);
         let a_f2 = self.field(col, here, A_F2);
-        let rho2_here = self.coat(col, here, RHO2);
-        let r_rho_here = self.coat(col, here, R_RHO);
+        let rho2_here = self.rho2(col, here);
         // Lane loops, not `array::from_fn` closures: those were left as calls per lane.
         let mut half = [0.0f32; 4];
         for c in 0..4 {
+            let mu = power_of_decay(log2_mu_here[c], 1.0);
             let mu_2m = power_of_decay(log2_mu_here[c], 2.0 * m);
-            half[c] = stored[c] * backscatter_factor(r_rho_here[c], rho2_here[c], mu_2m);
+            half[c] = stored[c] * backscatter_factor(rho2_here[c], mu, mu_2m);
         }
         let sigma_b0 = self.field(col, here, SIGMA_B0);
         let delta = self.field(col, here, DELTA_B);
@@ -213,7 +211,7 @@ impl DualLut {
         if n > 0.0 {
             let along = theta_position(-ti);
             let log2_mu = self.field(col, along, LOG2_DECAY);
-            let rho2 = self.coat(col, along, RHO2);
+            let rho2 = self.rho2(col, along);
             let beta_f = self.field(col, along, BETA_F);
             let mut spread = [0.0f32; 4];
             for c in 0..4 {

@@ -211,11 +211,12 @@ pub struct Density {
 }
 
 impl Density {
-    /// The default shipped, with [`Attenuation::Coat`]: d_f = d_b = 1, Zinke's values for a
-    /// coat whose fibers are as dense as the counted ones (no fit): within the accuracy bounds
-    /// of the path tracer for dog and deer on both scenes (docs/model.md §13,
-    /// docs/accuracy.md).
-    pub const DEFAULT: Density = Density { d_f: 1.0, d_b: 1.0 };
+    /// The default shipped, with [`Attenuation::Coat`]: d_f = 1 (the counted fibers are the
+    /// coat's; a caller that knows the light's incidence on the coat scales it by
+    /// [`coat::forward_density_at_incidence`]) and d_b = 0.7, Zinke et al.'s value, which is
+    /// also where the path tracer's means over the fur come closest (docs/model.md §13
+    /// "Status", docs/accuracy.md).
+    pub const DEFAULT: Density = Density { d_f: 1.0, d_b: 0.7 };
 
     fn sanitized(self) -> (f32, f32) {
         let clean = |d: f32| {

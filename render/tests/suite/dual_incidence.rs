@@ -62,6 +62,7 @@ fn the_coat_below_knows_the_skin_under_the_fiber() {
 /// scaled by k/2 (the diffusivity factor k in place of [`bcsdf_core::dual::coat::DIFFUSIVITY`]).
 /// `DUAL_SWEEP_KEYONLY=1`: the key light alone, skin and ground black (its fiber→fiber light);
 /// `DUAL_SWEEP_BY_N=1`: group the points with cos ≥ 0.8 by the key's count n instead.
+/// `DUAL_SWEEP_DENSITY=d_f/d_b`: density factors other than the shipped ones.
 /// `cargo test --release -p render --test suite -- --ignored --nocapture sweep_the_diffusivity`.
 #[test]
 #[ignore = "minutes; its numbers are in docs/accuracy.md"]
@@ -80,6 +81,14 @@ fn sweep_the_diffusivity() {
         .split(',')
         .map(|s| s.parse().unwrap())
         .collect();
+    // `DUAL_SWEEP_DENSITY=d_f/d_b`: other density factors than the shipped ones.
+    let density = std::env::var("DUAL_SWEEP_DENSITY").map_or(SHIPPED.0, |v| {
+        let d: Vec<f32> = v.split('/').map(|x| x.parse().unwrap()).collect();
+        bcsdf_core::dual::Density {
+            d_f: d[0],
+            d_b: d[1],
+        }
+    });
     for preset in &presets {
         with_tables(preset, |model, lut| {
             let fiber = One(model);
@@ -150,16 +159,9 @@ fn sweep_the_diffusivity() {
                     if k == 0.0 {
                         s.root_normals.clear();
                     }
-                    let dual = render_method(
-                        &s,
-                        &fiber,
-                        &settings(32),
-                        &Method::Dual {
-                            lut,
-                            density: SHIPPED.0,
-                        },
-                    )
-                    .unwrap();
+                    let dual =
+                        render_method(&s, &fiber, &settings(32), &Method::Dual { lut, density })
+                            .unwrap();
                     let all = compare::metrics(&dual.image, &path.image, TILE_GRID, None);
                     let fur = compare::metrics(&dual.image, &path.image, TILE_GRID, Some(&mask));
                     let mut by = [[0.0f64; 3]; 4];

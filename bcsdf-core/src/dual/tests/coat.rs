@@ -1,9 +1,7 @@
 //! The finite coat's closed forms ([`crate::dual::coat`]) against the adding recursion of
 //! two-stream layers, and the reachable-range normalisation of the term's Gaussians.
 
-use super::super::coat::{
-    backscatter_factor, downward_flux, reflectance_squared, reflection_product,
-};
+use super::super::coat::{backscatter_factor, downward_flux, reflectance_squared};
 use super::super::eval::gauss_reachable;
 use super::*;
 
@@ -51,8 +49,10 @@ fn the_closed_forms_are_the_adding_recursion() {
                     "(t, r) = ({t}, {r}), n = {n}, m = {m}: D {got} vs {want}"
                 );
                 if r > 0.0 {
-                    let want = up(r_m) / up(r_inf);
-                    let got = backscatter_factor(reflection_product(mu, t), rho2, mu_2m);
+                    // The coat below the neighbourhood returns R_m per unit of the downward
+                    // flux; the stored energy holds the stack's U_∞ (through the fiber).
+                    let want = r_m / up(r_inf);
+                    let got = backscatter_factor(rho2, mu, mu_2m);
                     assert!(
                         (f64::from(got) - want).abs() < 1e-4,
                         "(t, r) = ({t}, {r}), m = {m}: factor {got} vs {want}"
@@ -82,14 +82,9 @@ fn the_limits_are_the_deep_coat_and_the_bare_skin() {
                 last = d;
             }
         }
-        assert_eq!(
-            backscatter_factor(reflection_product(mu, t), rho2, 0.0),
-            1.0
-        );
-        assert_eq!(
-            backscatter_factor(reflection_product(mu, t), rho2, 1.0),
-            0.0
-        );
+        // m = ∞: the semi-infinite coat's R_∞ over U_∞ = R_∞μ; m = 0: nothing below.
+        assert_eq!(backscatter_factor(rho2, mu, 0.0), 1.0 / mu);
+        assert_eq!(backscatter_factor(rho2, mu, 1.0), 0.0);
     }
     // Degenerate layers: lossless (μ = 1), opaque (t = 0), NaN: finite, in range.
     for (mu, t) in [
@@ -104,9 +99,9 @@ fn the_limits_are_the_deep_coat_and_the_bare_skin() {
         for q in [0.0f32, 0.5, 1.0] {
             let mu_n = if mu.is_nan() { 0.0 } else { mu.clamp(0.0, 1.0) };
             let d = downward_flux(mu_n, q, rho2);
-            let k = backscatter_factor(reflection_product(mu, t), rho2, q);
+            let k = backscatter_factor(rho2, mu, q);
             assert!(
-                d.is_finite() && (0.0..=1.0).contains(&k),
+                d.is_finite() && (0.0..=1.0e6).contains(&k) && !(k * mu > 1.0),
                 "μ {mu} t {t} q {q}: {d} {k}"
             );
         }
@@ -236,4 +231,53 @@ fn the_light_s_incidence_turns_the_line_into_the_coat_s_normal_depth() {
         );
     }
     assert_eq!(normal, lut.eval(&a, Fibers::new(0.0, 5.0), d));
+}
+
+#[test]
+fn the_light_s_incidence_sets_the_scattered_flux_through_the_fibers_above() {
+    use crate::dual::coat::{forward_density_at_incidence, DIFFUSIVITY};
+    // d_f·DIFFUSIVITY·|cos ι|: the diffuse flux per unit of coat area, intercepted along
+    // twice the normal depth; |cos ι| clamped to 1, the sign ignored, NaN d_f unchanged.
+    for d in [1.0f32, 0.7, 2.5] {
+        for c in [1.0f32, 0.8, 0.5, 0.3, 0.1, 0.0] {
+            let want = d * 2.0 * c;
+            for s in [c, -c] {
+                let got = forward_density_at_incidence(d, s);
+                assert!(
+                    (got - want).abs() <= 1e-6 * want,
+                    "d {d} cos {s}: {got}, want {want}"
+                );
+            }
+        }
+        assert_eq!(forward_density_at_incidence(d, 1.0 / DIFFUSIVITY), d);
+        assert_eq!(
+            forward_density_at_incidence(d, 1.5),
+            forward_density_at_incidence(d, 1.0)
+        );
+        assert_eq!(
+            forward_density_at_incidence(d, f32::NAN).to_bits(),
+            d.to_bits()
+        );
+    }
+    // Through the evaluator: behind fibers, the light falling along the normal gives more
+    // than the line's count alone, grazing light less; the unoccluded point (no spread term)
+    // is unchanged.
+    let t = absorbing_tables();
+    let lut = lut_of(&t, Attenuation::Coat);
+    let a = Angles::new(0.3, -0.2, 0.4).unwrap();
+    let at = |n: f32, c: f32| {
+        let d = Density {
+            d_f: forward_density_at_incidence(Density::DEFAULT.d_f, c),
+            ..Density::DEFAULT
+        };
+        lut.eval(&a, Fibers::new(n, 2.0), d)
+    };
+    let (line, normal, grazing) = (at(2.0, f32::NAN), at(2.0, 1.0), at(2.0, 0.1));
+    for c in 0..3 {
+        assert!(
+            normal[c] > 1.5 * line[c] && grazing[c] < 0.5 * line[c],
+            "{normal:?} {line:?} {grazing:?}"
+        );
+    }
+    assert_eq!(at(0.0, 1.0), at(0.0, f32::NAN));
 }

@@ -158,7 +158,7 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
     // code: Gaussians normalised over the reachable x by f64 erf, and the finite coat by the
     // adding recursion of layers (t, r), r recovered from μ + 1/μ = (1 + t² − r²)/t. Back
     // half, n = 3 above (and n = 0), m = 2 below, default density. The evaluator
-    // interpolates the coat's ρ² and rρ between θ nodes where this recovers the layer from
+    // interpolates the coat's ρ² between θ nodes where this recovers the layer from
     // interpolated fields: at these angles the two differ by 2e-7 (relative), far inside
     // the bound.
     let t = absorbing_tables();
@@ -210,13 +210,18 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
         let (r_n, t_n) = stack(t_a, r_a, n);
         let (r_m, _) = stack(t_a, r_a, m);
         let d_flux = t_n / (1.0 - r_n * r_m);
-        // The local backscatter's energy with m layers below instead of the deep coat.
+        // The local backscatter's energy: the stored one is the deep stack's light through
+        // one more layer, U_∞ = R_∞t/(1 − rR_∞); the point gets the m layers' R_m.
         let (t_h, r_h) = layer(tr, c);
         let up = |rr: f64| rr * t_h / (1.0 - r_h * rr);
-        let factor = up(stack(t_h, r_h, m).0) / up(stack(t_h, r_h, 20_000).0);
+        let factor = stack(t_h, r_h, m).0 / up(stack(t_h, r_h, 20_000).0);
         let s2 = f64::from(n) * lerp_at(-ti, blob::BETA_F, c).powi(2);
-        let sb = (1.0 + lerp_at(tr, blob::A_F2, c)) * lerp_at(tr, blob::SIGMA_B0, c);
-        let back = lerp_at(tr, blob::BACK, c) * factor;
+        let (d_f, d_b) = (
+            f64::from(Density::DEFAULT.d_f),
+            f64::from(Density::DEFAULT.d_b),
+        );
+        let sb = (1.0 + d_b * lerp_at(tr, blob::A_F2, c)) * lerp_at(tr, blob::SIGMA_B0, c);
+        let back = d_b * lerp_at(tr, blob::BACK, c) * factor;
         let db = x - lerp_at(tr, blob::DELTA_B, c);
         let mut fs = 0.0;
         for fam in 0..FAMILY_COUNT {
@@ -231,7 +236,7 @@ fn the_evaluator_is_allocation_free_and_matches_the_stored_formula() {
             let sd = lerp_at(tr, blob::SD + fam, c);
             fs += ng * g_hat(x - mean, sd * sd + s2);
         }
-        let want = d_flux * (fs * inv + back * g_hat(db, sb * sb + s2) * inv / pi);
+        let want = d_f * d_flux * (fs * inv + back * g_hat(db, sb * sb + s2) * inv / pi);
         let err = (f64::from(got[c]) - want).abs() / want;
         assert!(err < 1e-4, "channel {c}: {} vs {want} ({err:e})", got[c]);
         // Unoccluded (n = 0): the local backscatter alone, its k_m for the m layers below.

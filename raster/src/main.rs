@@ -84,11 +84,11 @@ struct Args {
     layers: Option<Vec<f32>>,
 
     /// Dual scattering's forward density factor d_f.
-    #[arg(long, value_name = "D", default_value_t = 1.0)]
+    #[arg(long, value_name = "D", default_value_t = Density::DEFAULT.d_f)]
     d_f: f32,
 
     /// Dual scattering's backward density factor d_b.
-    #[arg(long, value_name = "D", default_value_t = 1.0)]
+    #[arg(long, value_name = "D", default_value_t = Density::DEFAULT.d_b)]
     d_b: f32,
 
     /// Exposure of the PNG's tone curve.

@@ -1483,7 +1483,7 @@ fn fur_dual_forward_density_at_incidence(d_f: f32, cos_to_skin: f32) -> f32 {
 // `fibers` is n, the number of fibers between the shading point and the light (fractional
 // allowed); `fibers_below` is m, the fibers beyond the point along -omega_i, down to the skin
 // or out of the coat (the coat below, which sends light back up; +inf for a semi-infinite
-// coat); d_f, d_b the density factors (dual::Density; 1 and 0.7 by default). With
+// coat); d_f, d_b the density factors (dual::Density; 1 and 0.8 by default). With
 // V = clamp(1 - n, 0, 1) the direct fraction (what a shadow ray gives), the shading is
 // S V + this term:
 //

@@ -1,32 +1,42 @@
-//! The shader's `fur_dual_below_at_incidence` (the raster fragment's coat below, docs/model.md
-//! §13 "The light's incidence on the coat") against `dual::coat::below_at_incidence` on a
-//! real Vulkan device: counts and cosines over the contract's cases (the floor, |cos| above
-//! 1, both signs, NaN, the skin's negative count, the semi-infinite coat), each result within
-//! 1e-6 relative (or bit for bit where the contract returns the count unchanged); and the same
-//! check catches the shader's diffusivity changed to 1.66.
+//! The shader's `fur_dual_below_at_incidence` and `fur_dual_forward_density_at_incidence` (the
+//! raster fragment's coat below and forward density, docs/model.md §13 "The light's incidence
+//! on the coat") against `dual::coat`'s functions on a real Vulkan device: counts (density
+//! factors) and cosines over the contract's cases (the floor, |cos| above 1, both signs, NaN,
+//! the skin's negative count, the semi-infinite coat), each result within 1e-6 relative (or
+//! bit for bit where the contract returns the input unchanged); and the same check catches the
+//! shader's diffusivity changed to 1.66.
 //!
 //! Without an adapter the test prints "skipped: no GPU adapter" and passes, unless
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`).
 
-use bcsdf_core::dual::coat::below_at_incidence;
+use bcsdf_core::dual::coat::{below_at_incidence, forward_density_at_incidence};
 use bcsdf_core::shader::FUR_BCSDF_WGSL;
 
-/// A compute entry point over (count, cos) pairs, bound beside the shader's own bindings.
-const ENTRY: &str = r#"
+/// The two shader functions checked.
+const BELOW: &str = "fur_dual_below_at_incidence";
+const FORWARD: &str = "fur_dual_forward_density_at_incidence";
+
+/// A compute entry point calling the shader's `function(x, cos)` over (x, cos) pairs, bound
+/// beside the shader's own bindings.
+fn entry(function: &str) -> String {
+    format!(
+        r#"
 @group(0) @binding(10) var<storage, read> ras_test_in: array<vec2<f32>>;
 @group(0) @binding(11) var<storage, read_write> ras_test_out: array<f32>;
 
 @compute @workgroup_size(64)
-fn ras_test_below(@builtin(global_invocation_id) id: vec3<u32>) {
-    if (id.x < arrayLength(&ras_test_in)) {
+fn ras_test_call(@builtin(global_invocation_id) id: vec3<u32>) {{
+    if (id.x < arrayLength(&ras_test_in)) {{
         let q = ras_test_in[id.x];
-        ras_test_out[id.x] = fur_dual_below_at_incidence(q.x, q.y);
-    }
+        ras_test_out[id.x] = {function}(q.x, q.y);
+    }}
+}}
+"#
+    )
 }
-"#;
 
-/// The shader's value for every pair, or `None` (after printing why) without an adapter.
-fn gpu_below(wgsl: &str, pairs: &[[f32; 2]]) -> Option<Vec<f32>> {
+/// The shader's `function` at every pair, or `None` (after printing why) without an adapter.
+fn gpu_call(wgsl: &str, function: &str, pairs: &[[f32; 2]]) -> Option<Vec<f32>> {
     use wgpu::util::DeviceExt;
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
     let adapter = match pollster::block_on(instance.request_adapter(&Default::default())) {
@@ -43,13 +53,13 @@ fn gpu_below(wgsl: &str, pairs: &[[f32; 2]]) -> Option<Vec<f32>> {
         pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default())).unwrap();
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("incidence"),
-        source: wgpu::ShaderSource::Wgsl(format!("{wgsl}\n{ENTRY}").into()),
+        source: wgpu::ShaderSource::Wgsl(format!("{wgsl}\n{}", entry(function)).into()),
     });
     let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("ras_test_below"),
+        label: Some("ras_test_call"),
         layout: None,
         module: &module,
-        entry_point: Some("ras_test_below"),
+        entry_point: Some("ras_test_call"),
         compilation_options: Default::default(),
         cache: None,
     });
@@ -143,12 +153,12 @@ fn pairs() -> Vec<[f32; 2]> {
         .collect()
 }
 
-/// The worst disagreement of the shader's values with the Rust function's: relative to
+/// The worst disagreement of the shader's values with the Rust function `cpu`'s: relative to
 /// max(|cpu|, 1), NaN against a number or a different infinity counting as infinite.
-fn worst(pairs: &[[f32; 2]], gpu: &[f32]) -> f32 {
+fn worst(pairs: &[[f32; 2]], gpu: &[f32], cpu: fn(f32, f32) -> f32) -> f32 {
     let mut worst = 0.0f32;
     for (p, g) in pairs.iter().zip(gpu) {
-        let c = below_at_incidence(p[0], p[1]);
+        let c = cpu(p[0], p[1]);
         let e = if c.is_nan() || g.is_nan() || c.is_infinite() || g.is_infinite() {
             if c.to_bits() == g.to_bits() || (c.is_nan() && g.is_nan()) {
                 0.0
@@ -166,10 +176,10 @@ fn worst(pairs: &[[f32; 2]], gpu: &[f32]) -> f32 {
 #[test]
 fn the_shader_turns_the_line_into_the_coat_s_normal_depth_as_the_cpu_does() {
     let pairs = pairs();
-    let Some(gpu) = gpu_below(FUR_BCSDF_WGSL, &pairs) else {
+    let Some(gpu) = gpu_call(FUR_BCSDF_WGSL, BELOW, &pairs) else {
         return;
     };
-    let e = worst(&pairs, &gpu);
+    let e = worst(&pairs, &gpu, below_at_incidence);
     println!(
         "worst relative difference {e:.2e} over {} pairs",
         pairs.len()
@@ -188,7 +198,40 @@ fn the_shader_turns_the_line_into_the_coat_s_normal_depth_as_the_cpu_does() {
         "const FUR_DUAL_DIFFUSIVITY: f32 = 1.66;",
     );
     assert_ne!(wrong, FUR_BCSDF_WGSL, "the mutation applies");
-    let wrong_gpu = gpu_below(&wrong, &pairs).unwrap();
-    let e = worst(&pairs, &wrong_gpu);
+    let wrong_gpu = gpu_call(&wrong, BELOW, &pairs).unwrap();
+    let e = worst(&pairs, &wrong_gpu, below_at_incidence);
+    assert!(e > 1e-2, "the check missed the diffusivity 1.66 ({e})");
+}
+
+#[test]
+fn the_shader_scales_the_forward_density_by_the_incidence_as_the_cpu_does() {
+    // Density factors over the contract's range (and outside it: the term clamps them),
+    // against the same cosines.
+    let pairs: Vec<[f32; 2]> = pairs()
+        .into_iter()
+        .filter(|p| p[0] >= 0.0 && p[0] <= 40.0)
+        .map(|[d, c]| [d * 0.1, c])
+        .collect();
+    let Some(gpu) = gpu_call(FUR_BCSDF_WGSL, FORWARD, &pairs) else {
+        return;
+    };
+    let e = worst(&pairs, &gpu, forward_density_at_incidence);
+    println!(
+        "worst relative difference {e:.2e} over {} pairs",
+        pairs.len()
+    );
+    assert!(e <= 1e-6, "shader against CPU: {e}");
+    // The factor unchanged where the normal is unknown (NaN): bit for bit.
+    for (p, g) in pairs.iter().zip(&gpu) {
+        if p[1].is_nan() {
+            assert_eq!(g.to_bits(), p[0].to_bits(), "{p:?}");
+        }
+    }
+    let wrong = FUR_BCSDF_WGSL.replace(
+        "const FUR_DUAL_DIFFUSIVITY: f32 = 2.0;",
+        "const FUR_DUAL_DIFFUSIVITY: f32 = 1.66;",
+    );
+    let wrong_gpu = gpu_call(&wrong, FORWARD, &pairs).unwrap();
+    let e = worst(&pairs, &wrong_gpu, forward_density_at_incidence);
     assert!(e > 1e-2, "the check missed the diffusivity 1.66 ({e})");
 }

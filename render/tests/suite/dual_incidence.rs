@@ -198,9 +198,11 @@ fn sweep_the_diffusivity() {
 
 /// `dual` uses the root normals: with the key light alone and black surfaces (every pixel's
 /// light is the key's at a fiber), the fur whose skin faces the key (cos ≥ 0.8) is brighter
-/// with the normals than with the count along the line (2|cos ι|(m + 1) ≥ m + 1 layers below),
-/// the fur the key grazes (cos < 0.2) darker, and the rest of the term's inputs are the same
-/// (same random numbers).
+/// with the normals than with the count along the line (2|cos ι|(m + 1) ≥ m + 1 layers below,
+/// and the light through the fibers above at d_f·2|cos ι| ≥ d_f), the fur the key grazes
+/// (cos < 0.2) darker, and the rest of the term's inputs are the same (same random numbers).
+/// Measured: ×1.28 and ×0.62; with the coat below's rescale alone (d_f left as it is) ×1.08
+/// and ×0.93, which the bounds (×1.15, ×0.8) fail.
 #[test]
 fn dual_sees_the_coat_below_along_the_skin_normal() {
     let mut input = presets::find("dog").unwrap().input;
@@ -259,7 +261,7 @@ fn dual_sees_the_coat_below_along_the_skin_normal() {
         s.root_normals.clear();
         let without = sums(&s);
         assert!(
-            with[1] > 1.02 * without[1] && with[0] < 0.98 * without[0],
+            with[1] > 1.15 * without[1] && with[0] < 0.8 * without[0],
             "grazing, facing: with the normals {with:?}, without {without:?}"
         );
     });

@@ -270,8 +270,9 @@ fn density(d_f: f32, d_b: f32) -> Density {
 /// INFINITY when the depth is not known. That is the coat of the previous version of this
 /// function, which had no `fibers_below`; its values changed anyway, since every Gaussian
 /// is now normalised over the angles the caller can reach. `d_f` and `d_b` are the forward
-/// and backward density factors (1 and 1 is the shipped default; NaN or negative is 0; above
-/// 4 is 4). The result is the term to ADD to single scattering: shade with S * V + result,
+/// and backward density factors (1 and 0.8 is the shipped default, `Density::DEFAULT`; with
+/// the skin normal, pass `d_f` through `fur_dual_forward_density_at_incidence`; NaN or
+/// negative is 0; above 4 is 4). The result is the term to ADD to single scattering: shade with S * V + result,
 /// where S is `fur_eval_far`'s value and V = clamp(1 - fibers, 0, 1) the fraction of direct
 /// light; the result is in S's units (multiply it, like S, by cos(theta_i) and the light's
 /// radiance). Finite and >= 0. The value is `DualLut::eval` with

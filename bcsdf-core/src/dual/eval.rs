@@ -5,7 +5,7 @@
 use super::blob::DualColour;
 use super::blob::{A_F2, BACK, BETA_F, DELTA_B, FRONT, LOG2_DECAY, MEAN, SD, SIGMA_B0};
 use super::coat::{backscatter_factor, downward_flux, power_of_decay};
-use super::{theta_position, Density, DualLut, Fibers, MIN_VARIANCE, PHI_NODES, THETA_NODES};
+use super::{theta_position, Density, DualLut, Fibers, MIN_VARIANCE, PHI_NODES};
 use crate::absorption::Absorption;
 use crate::frame::{polynomial_angles, AngleError, Angles, Vec3};
 use crate::lobes::FAMILY_COUNT;
@@ -58,56 +58,51 @@ pub(super) fn gauss_reachable<const L: usize>(d: &[f32; L], v: &[f32; L], ti: f3
 }
 
 impl DualLut {
-    /// Field `f` at θ and the located colour (per channel: linear between the θ nodes,
-    /// clamped to the end nodes, NaN reads node 0; then linear between the channel's two
-    /// absorption nodes). Lane 3 is 0.
+    /// Per RGB channel, `at(node)` read at the channel's two absorption nodes of the located
+    /// colour and linear between them, v₀ + (v₁ − v₀)·w. Lane 3 is 0. The one place the
+    /// absorption axis is interpolated; [`DualLut::field`], [`DualLut::rho2`] and
+    /// [`DualLut::n_g`] say what is read at a node.
     #[inline(always)]
-    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
-    fn field(&self, col: &DualColour, (k, w): (usize, f32), f: usize) -> Lanes {
+    fn across_colour(&self, col: &DualColour, at: impl Fn(usize) -> f32) -> Lanes {
         let mut out = [0.0f32; 4];
-        for c in 0..3 {
+        for (c, o) in out.iter_mut().take(3).enumerate() {
             let (a, wa) = (col.node[c], col.w[c]);
-            let (lo, hi) = (&self.nodes[a], &self.nodes[a + 1]);
-            let v0 = lo[k][f] + (lo[k + 1][f] - lo[k][f]) * w;
-            let v1 = hi[k][f] + (hi[k + 1][f] - hi[k][f]) * w;
-            out[c] = v0 + (v1 - v0) * wa;
+            let (v0, v1) = (at(a), at(a + 1));
+            *o = v0 + (v1 - v0) * wa;
         }
         out
+    }
+
+    /// Field `f` at θ and the located colour (per channel: linear between the θ nodes,
+    /// clamped to the end nodes, NaN reads node 0; then along the absorption axis,
+    /// [`DualLut::across_colour`]). Lane 3 is 0.
+    #[inline(always)]
+    fn field(&self, col: &DualColour, (k, w): (usize, f32), f: usize) -> Lanes {
+        self.across_colour(col, |a| {
+            let n = &self.nodes[a];
+            n[k][f] + (n[k + 1][f] - n[k][f]) * w
+        })
     }
 
     /// The coat's ρ² at θ and the colour ([`super::coat::node_coat`], derived per node at
     /// decode), interpolated like [`DualLut::field`].
     #[inline(always)]
-    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
     fn rho2(&self, col: &DualColour, (k, w): (usize, f32)) -> Lanes {
-        let mut out = [0.0f32; 4];
-        for c in 0..3 {
-            let (a, wa) = (col.node[c], col.w[c]);
-            let (lo, hi) = (&self.coat[a], &self.coat[a + 1]);
-            let v0 = lo[k] + (lo[k + 1] - lo[k]) * w;
-            let v1 = hi[k] + (hi[k + 1] - hi[k]) * w;
-            out[c] = v0 + (v1 - v0) * wa;
-        }
-        out
+        self.across_colour(col, |a| {
+            let r = &self.coat[a];
+            r[k] + (r[k + 1] - r[k]) * w
+        })
     }
 
     /// N^G of family `g` at θ node `k` and |φ| node `j` (bilinear with the corner weights
-    /// `w`, which [`bilinear_weights`] computes once for the four families), then linear
-    /// between each channel's two absorption nodes.
+    /// `w`, which [`bilinear_weights`] computes once for the four families), then along the
+    /// absorption axis ([`DualLut::across_colour`]).
     #[inline(always)]
-    #[allow(clippy::needless_range_loop)] // c indexes the colour's nodes and weights too
     fn n_g(&self, col: &DualColour, g: usize, k: usize, j: usize, w: &[f32; 4]) -> Lanes {
-        let mut out = [0.0f32; 4];
-        for c in 0..3 {
-            let (a, wa) = (col.node[c], col.w[c]);
-            let at = |t: &[[f32; PHI_NODES]; THETA_NODES]| {
-                w[0] * t[k][j] + w[1] * t[k][j + 1] + w[2] * t[k + 1][j] + w[3] * t[k + 1][j + 1]
-            };
-            let v0 = at(&self.n_g[a][g]);
-            let v1 = at(&self.n_g[a + 1][g]);
-            out[c] = v0 + (v1 - v0) * wa;
-        }
-        out
+        self.across_colour(col, |a| {
+            let t = &self.n_g[a][g];
+            w[0] * t[k][j] + w[1] * t[k][j + 1] + w[2] * t[k + 1][j] + w[3] * t[k + 1][j + 1]
+        })
     }
 
     /// [`DualLut::eval_located`] at the preset's own colour ([`DualLut::absorption`]).

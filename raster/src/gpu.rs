@@ -39,15 +39,15 @@ pub struct Raster {
     fur: wgpu::RenderPipeline,
 }
 
-/// Bytes of the frame uniform (two matrices, eight vec4).
-const FRAME_BYTES: usize = 2 * 64 + 8 * 16;
+/// Bytes of the frame uniform (two matrices, nine vec4).
+const FRAME_BYTES: usize = 2 * 64 + 9 * 16;
 
 fn instance_layout() -> wgpu::VertexBufferLayout<'static> {
-    const ATTRS: [wgpu::VertexAttribute; 4] = wgpu::vertex_attr_array![
-        0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32x4
+    const ATTRS: [wgpu::VertexAttribute; 5] = wgpu::vertex_attr_array![
+        0 => Float32x4, 1 => Float32x4, 2 => Float32x4, 3 => Float32x4, 4 => Float32x4
     ];
     wgpu::VertexBufferLayout {
-        array_stride: 64,
+        array_stride: 80,
         step_mode: wgpu::VertexStepMode::Instance,
         attributes: &ATTRS,
     }

@@ -9,7 +9,8 @@
 //! method and its parameters.
 //!
 //! - [`Strands::from_scene`]: the scene's fiber segments as ribbon instances (colour and skin
-//!   normal per strand), its surfaces as triangles, its key light and sky;
+//!   normal per strand, the coat above each end from [`coat::coat_counts`]), its surfaces
+//!   as triangles, its key light and sky;
 //! - [`albedo_table`]: the fiber's directional albedo per θ_r, for the sky and floor light;
 //! - [`Raster`]: the device and pipelines; [`Raster::draw`] renders one [`Frame`] (RGB
 //!   radiance and the fur's coverage, per-pass times);
@@ -26,6 +27,7 @@ use render::surface::{orthonormal_basis, Shape};
 use std::fmt;
 use std::time::Instant;
 
+pub mod coat;
 mod gpu;
 
 pub use gpu::{Raster, PASS_NAMES};
@@ -175,8 +177,9 @@ impl Settings {
 }
 
 /// One fiber segment as the shader's instance: (p0, r0), (p1, r1), (σ_ca RGB, 0), (the skin
-/// normal under it, 0).
-pub type Instance = [[f32; 4]; 4];
+/// normal under it, the whole coat's count along it at the strand's root), and the coat
+/// above both ends ([`coat::coat_counts`]: above and across at p0, then at p1).
+pub type Instance = [[f32; 4]; 5];
 
 /// One surface vertex: position, normal, albedo.
 pub type Vertex = [[f32; 3]; 3];
@@ -193,6 +196,9 @@ pub struct Strands {
     pub sky: [f32; 3],
     /// The floor (a square, normal +y): centre, half side, albedo; `None` without one.
     pub floor: Option<(Vector3<f32>, f32, [f32; 3])>,
+    /// The albedo of the skin, the surface nearest the first strand's root (black without
+    /// surfaces).
+    pub skin_albedo: [f32; 3],
     /// The number of fibers (strands).
     pub strands: usize,
     /// World to camera clip space (column-major), for the image's aspect.
@@ -246,8 +252,9 @@ impl Strands {
             RasterError::Input("the scene has no distant light to cast the deep opacity map".into())
         })?;
         let segs = scene.fibers.segments();
-        let skin_normal = |p: &Vector3<f32>| -> Vector3<f32> {
-            let mut best = (f32::INFINITY, Vector3::y());
+        // The surface nearest a point: its normal there and its albedo.
+        let skin_at = |p: &Vector3<f32>| -> (Vector3<f32>, [f32; 3]) {
+            let mut best = (f32::INFINITY, Vector3::y(), [0.0; 3]);
             for s in &scene.surfaces {
                 let (d, n) = match s.shape {
                     Shape::Sphere { center, radius } => {
@@ -257,21 +264,32 @@ impl Strands {
                     Shape::Square { center, .. } => ((p.y - center.y).abs(), Vector3::y()),
                 };
                 if d < best.0 {
-                    best = (d, n);
+                    best = (d, n, s.albedo);
                 }
             }
-            best.1
+            (best.1, best.2)
         };
         let [r, g, b] = sigma_ca;
+        let normals: Vec<Vector3<f32>> = segs.iter().map(|s| skin_at(&s.p0).0).collect();
+        let skin_albedo = segs.first().map_or([0.0; 3], |s| skin_at(&s.p0).1);
+        let coat = coat::coat_counts(scene, &normals);
+        // The whole coat's count at each strand's root: `above` at its root segment's p0.
+        let fibers = segs.iter().map(|s| s.fiber as usize + 1).max().unwrap_or(0);
+        let mut root = vec![0.0f32; fibers];
+        for (s, c) in segs.iter().zip(&coat).filter(|(s, _)| s.v0 == 0.0) {
+            root[s.fiber as usize] = c[0];
+        }
         let instances = segs
             .iter()
-            .map(|s| {
-                let n = skin_normal(&s.p0);
+            .zip(&normals)
+            .zip(&coat)
+            .map(|((s, n), coat)| {
                 [
                     [s.p0.x, s.p0.y, s.p0.z, s.r0],
                     [s.p1.x, s.p1.y, s.p1.z, s.r1],
                     [r, g, b, 0.0],
-                    [n.x, n.y, n.z, 0.0],
+                    [n.x, n.y, n.z, root[s.fiber as usize]],
+                    *coat,
                 ]
             })
             .collect();
@@ -315,6 +333,7 @@ impl Strands {
             key,
             sky,
             floor,
+            skin_albedo,
             strands: strands.len(),
             view_proj: view_proj(&scene.camera, width, height),
             eye: scene.camera.eye(),

@@ -37,6 +37,8 @@ struct RasFrame {
     // x, y: the density factors d_f, d_b; z: the surfaces' shadow bias (world units); w: 1 to
     // write the fiber counts (n, m, total) instead of the fur's radiance.
     dual: vec4<f32>,
+    // rgb: the skin's albedo (the surface the strands grow from).
+    skin_albedo: vec4<f32>,
 }
 
 @group(1) @binding(0) var<uniform> ras: RasFrame;
@@ -47,12 +49,15 @@ struct RasFrame {
 // over [-pi/2, pi/2]), for the sky and floor light (docs/engines.md).
 @group(1) @binding(4) var<storage, read> ras_albedo: array<vec4<f32>>;
 
-// One fiber segment: (p0, r0), (p1, r1), (sigma_ca rgb, _), (skin normal at the root, _).
+// One fiber segment: (p0, r0), (p1, r1), (sigma_ca rgb, _), (skin normal at the root, the whole
+// coat's count along it at the strand's root), and the coat above both ends (raster::coat:
+// fibers above along the skin normal and across its tangent plane, at p0 then p1).
 struct RasSegment {
     @location(0) a: vec4<f32>,
     @location(1) b: vec4<f32>,
     @location(2) colour: vec4<f32>,
     @location(3) skin: vec4<f32>,
+    @location(4) coat: vec4<f32>,
 }
 
 // One surface vertex.
@@ -181,12 +186,13 @@ fn ras_light_at(p: vec3<f32>, bias: f32) -> RasLight {
 }
 
 // Radiance of a Lambertian surface point: the key light through the fibers in front of it
-// (all the map holds: the layers end at the first surface) with the fraction a shadow ray
-// finds clear, V = clamp(1 - n, 0, 1), and the sky over the hemisphere above the normal.
+// (all the map holds: the layers end at the first surface) with the fraction of light rays
+// through the texel that find it clear, exp(-n) for the texel's mean count n (fibers placed
+// independently), and the sky over the hemisphere above the normal.
 fn ras_surface_radiance(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     let l = ras_light_at(p, 0.0);
     let cos_key = max(dot(n, ras.light_axis.xyz), 0.0);
-    let key = ras.key.rgb * (cos_key * l.lit * clamp(1.0 - l.total, 0.0, 1.0));
+    let key = ras.key.rgb * (cos_key * l.lit * exp(-l.total));
     let sky = FUR_PI * ras.sky.rgb * (0.5 + 0.5 * n.y);
     return albedo / FUR_PI * (key + sky);
 }
@@ -222,6 +228,10 @@ struct RasFiberOut {
     @location(2) colour: vec3<f32>,
     @location(3) skin: vec3<f32>,
     @location(4) radius: f32,
+    // The coat above the point: fibers along the skin normal, and across its tangent plane.
+    @location(5) coat: vec2<f32>,
+    // The whole coat's count along the skin normal at the strand's root.
+    @location(6) root: f32,
 }
 
 // The fiber as a camera-facing ribbon of its own width (the MSAA samples give thin fibers
@@ -241,6 +251,8 @@ fn ras_fiber_camera(@builtin(vertex_index) v: u32, seg: RasSegment) -> RasFiberO
     out.colour = seg.colour.rgb;
     out.skin = seg.skin.xyz;
     out.radius = r;
+    out.coat = mix(seg.coat.xy, seg.coat.zw, k.x);
+    out.root = seg.skin.w;
     return out;
 }
 
@@ -253,10 +265,30 @@ fn ras_albedo_at(sin_theta_r: f32) -> vec3<f32> {
     return mix(ras_albedo[i].rgb, ras_albedo[i + 1u].rgb, x - f32(i));
 }
 
+// 8-point Gauss-Legendre on [0, 1]: nodes and weights.
+const RAS_GL_X = array<f32, 8>(0.019855072, 0.101666761, 0.237233795, 0.408282679, 0.591717321, 0.762766205, 0.898333239, 0.980144928);
+const RAS_GL_W = array<f32, 8>(0.050614268, 0.111190517, 0.156853323, 0.181341892, 0.181341892, 0.156853323, 0.111190517, 0.050614268);
+
+// The coat's diffuse transmittance from outside down to a point under `above` fibers along
+// the skin normal and `across` along its tangent plane (docs/model.md §13, "Indirect
+// light"): the mean, over the directions of the half sphere that faces away from the skin
+// (uniform in the cosine c to the normal, i.e. in solid angle), of the downward flux mu^k
+// after the k fibers on the way, k = above / c as in a flat coat, at most `across` (a curved
+// coat ends sooner); per channel, from log2 mu.
+fn ras_coat_transmittance(log2_mu: vec3<f32>, above: f32, across: f32) -> vec3<f32> {
+    var tau = vec3<f32>(0.0);
+    for (var i = 0u; i < 8u; i = i + 1u) {
+        let k = min(above / RAS_GL_X[i], max(across, 0.0));
+        tau = tau + RAS_GL_W[i] * fur_dual_power(log2_mu, k);
+    }
+    return tau;
+}
+
 // The fur fragment: the key light as S V + D (the shared shader's fur_eval_far_dirs and
 // fur_eval_dual_dirs, n and m from the deep opacity map) times cos theta_i and the
-// irradiance; the sky and the floor below as the fiber's albedo under the half of the sphere
-// of directions that faces away from the skin (docs/engines.md).
+// irradiance; the sky and the floor as the fiber's albedo under half the sphere of directions
+// lit by them through the coat above and the other half by what the coat below sends back
+// (docs/model.md §13, "Indirect light").
 @fragment
 fn ras_fiber_shade(in: RasFiberOut) -> @location(0) vec4<f32> {
     let t = normalize(in.tangent);
@@ -271,6 +303,16 @@ fn ras_fiber_shade(in: RasFiberOut) -> @location(0) vec4<f32> {
     l.above = max(counted - own * l.within, 0.0);
     let below = max(l.total - counted - own * (1.0 - l.within), 0.0);
     var rgb = vec3<f32>(0.0);
+    // The colour's place on the dual tables' absorption axis, for the coat below (set again
+    // by fur_eval_dual_dirs, to the same).
+    fur_dual_at = fur_dual_locate(in.colour);
+    let sin_theta_r = clamp(dot(wr, t), -1.0, 1.0);
+    let here = fur_dual_theta(asin(sin_theta_r));
+    let log2_mu = fur_dual_field(here, FUR_DUAL_LOG2_DECAY);
+    let rho2 = fur_dual_coat(here);
+    // The key's light on the skin under the coat (a Lambertian skin under the whole line's
+    // fibers, the layer stack's flux through them over the skin, T_n).
+    var skin = vec3<f32>(0.0);
     if (ras.dual.w > 0.5) {
         // n, or -1 where a surface shadows the fragment from the key light.
         return vec4<f32>(select(-1.0, l.above, l.lit > 0.0), below, l.total, 1.0);
@@ -288,6 +330,8 @@ fn ras_fiber_shade(in: RasFiberOut) -> @location(0) vec4<f32> {
         let ct = dot(wi, t);
         let cos_i = sqrt(max(1.0 - ct * ct, 0.0));
         rgb = ras.key.rgb * (s.total * clamp(1.0 - l.above, 0.0, 1.0) + d) * cos_i;
+        let t_n = fur_downward_flux(fur_dual_power(log2_mu, l.total), vec3<f32>(1.0), rho2);
+        skin = ras.skin_albedo.rgb / FUR_PI * ras.key.rgb * (max(cos_skin, 0.0) * t_n);
     }
     // The light from below: the floor's radiance under the fragment (the sky past its edge).
     var under = ras.sky.rgb;
@@ -298,6 +342,16 @@ fn ras_fiber_shade(in: RasFiberOut) -> @location(0) vec4<f32> {
     }
     let up = normalize(in.skin).y;
     let around = ras.sky.rgb * (0.5 + 0.5 * up) + under * (0.5 - 0.5 * up);
-    rgb = rgb + 0.5 * ras_albedo_at(dot(wr, t)) * around;
+    // The half facing away from the skin: `around` through the coat above (tau). The half
+    // facing the skin: what the coat below sends back up, as a semi-infinite coat does
+    // (R_inf = sqrt(rho^2) of `around` through the coat above), and the skin's key light
+    // through the coat below (the root's count less the count above). Both at the fragment's
+    // colour and theta_r.
+    let above = max(in.coat.x, 0.0);
+    let tau = ras_coat_transmittance(log2_mu, above, in.coat.y);
+    let tau_below = ras_coat_transmittance(log2_mu, max(in.root - above, 0.0), in.coat.y);
+    let r_inf = sqrt(max(rho2, vec3<f32>(0.0)));
+    let incident = around * tau * (1.0 + r_inf) + skin * tau_below;
+    rgb = rgb + 0.5 * ras_albedo_at(sin_theta_r) * incident;
     return vec4<f32>(rgb, 1.0);
 }

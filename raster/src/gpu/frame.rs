@@ -403,7 +403,8 @@ fn frame_uniform(s: &Strands, settings: &Settings) -> [f32; FRAME_BYTES / 4] {
         Some((c, h, a)) => (c, h, a, 1.0),
         None => (nalgebra::Vector3::zeros(), 0.0, [0.0; 3], 0.0),
     };
-    let rows: [[f32; 4]; 8] = [
+    let skin = s.skin_albedo;
+    let rows: [[f32; 4]; 9] = [
         [s.eye.x, s.eye.y, s.eye.z, 0.0],
         [axis.x, axis.y, axis.z, s.light_proj.1],
         [irradiance[0], irradiance[1], irradiance[2], map],
@@ -425,6 +426,7 @@ fn frame_uniform(s: &Strands, settings: &Settings) -> [f32; FRAME_BYTES / 4] {
                 crate::Output::Counts => 1.0,
             },
         ],
+        [skin[0], skin[1], skin[2], 0.0],
     ];
     for (k, r) in rows.iter().enumerate() {
         u[32 + 4 * k..36 + 4 * k].copy_from_slice(r);

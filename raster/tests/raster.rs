@@ -6,7 +6,11 @@
 //!   fully covered by fur whose light ray meets no surface; the mean counts agree within
 //!   [`MEAN_COUNT`] and the counts averaged over blocks of 8 × 8 pixels correlate (Pearson
 //!   ≥ [`CORRELATION`]);
-//! - the image itself: finite, non-negative, the fur's coverage in [0, 1] and present.
+//! - the image itself: finite, non-negative, the fur's coverage in [0, 1] and present;
+//! - the image against the path tracer (`render`'s `path`, [`PATH_SPP`] samples per pixel,
+//!   the same baked BCSDF) for a light and a dark preset, cat and deer: over the fur's pixels
+//!   the mean luminance within [`FUR_MEAN`] and the 16 × 16 tile RMSE at most [`FUR_TILES`],
+//!   `raster --compare`'s figures (docs/benchmarks.md "Raster pipeline") on a small image.
 //!
 //! Without an adapter the tests print "skipped: no GPU adapter" and pass, unless
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
@@ -18,7 +22,7 @@ use bcsdf_core::{presets, Absorption, Closure, FurParams, FurParamsInput, Rgb};
 use raster::{albedo_table, Frame, Output, Raster, RasterError, Settings, Strands};
 use render::light::LightShape;
 use render::scene::{HitKind, Scene};
-use render::{scenes, SceneKind, SceneOptions};
+use render::{compare, integrator, scatter, scenes, Method, SceneKind, SceneOptions};
 
 /// Largest relative difference of the mean counts (raster against exact).
 const MEAN_COUNT: f64 = 0.05;
@@ -29,6 +33,15 @@ const CORRELATION: f64 = 0.7;
 
 /// The side of the blocks of the correlation, in pixels.
 const BLOCK: u32 = 8;
+
+/// Largest relative difference of the fur's mean luminance from the path tracer's.
+const FUR_MEAN: f64 = 0.10;
+
+/// Largest tile RMSE over the fur (relative to its mean tile luminance).
+const FUR_TILES: f64 = 0.25;
+
+/// The path tracer's samples per pixel.
+const PATH_SPP: u32 = 16;
 
 const WIDTH: u32 = 160;
 const HEIGHT: u32 = 120;
@@ -222,4 +235,75 @@ fn the_image_is_finite_with_the_fur_coverage_in_alpha() {
         .fold(0.0f32, f32::max);
     assert!(lit > 0.0, "the fur is black");
     assert_eq!(frame.passes.len(), 6);
+}
+
+/// Preset `name`'s LUT (the fewest absorption nodes, its profiles generated or read from the
+/// shared cache) and its dual-scattering blob at a 32 × 16 quadrature.
+fn preset_lut_and_blob(name: &str) -> (Vec<u8>, Vec<u8>) {
+    let input = presets::find(name).unwrap().input;
+    let fur = FurParams::new(&input).unwrap();
+    let (model, _) =
+        bake::profiles::build_model(fur, &bake::profiles::ProfileOptions::default()).unwrap();
+    let res = LutResolution {
+        n_abs: bcsdf_core::lut::MIN_ABSORPTION_NODES,
+        ..LutResolution::DEFAULT
+    };
+    let lut = bake::tables::bake(&model, &input, res);
+    let baked = BakedBcsdf::from_bytes(&lut).unwrap();
+    let quadrature = Quadrature {
+        theta_steps: 32,
+        phi_steps: 16,
+    };
+    let blob = bake::pipeline::dual_blob(&lut, &baked, quadrature).to_vec();
+    (lut, blob)
+}
+
+/// The raster image of `scene` drawn with preset `name` against the path tracer's with the
+/// same LUT, over the fur's pixels: (mean error, tile RMSE).
+fn against_path(gpu: &Raster, scene: &Scene, name: &str) -> (f64, f64) {
+    let (lut, blob) = preset_lut_and_blob(name);
+    let baked = BakedBcsdf::from_bytes(&lut).unwrap();
+    let sigma = baked.absorption().sigma().0;
+    let strands = Strands::from_scene(scene, sigma, WIDTH, HEIGHT).unwrap();
+    let settings = Settings {
+        map_size: 1024,
+        ..Settings::new(WIDTH, HEIGHT)
+    };
+    let frame = gpu
+        .draw(&strands, &lut, &blob, &albedo_table(&baked), &settings)
+        .unwrap();
+    let path = integrator::render_method(
+        scene,
+        &scatter::One(&baked),
+        &render::Settings {
+            seed: 3,
+            progress: false,
+            ..render::Settings::new(WIDTH, HEIGHT, PATH_SPP)
+        },
+        &Method::Path,
+    )
+    .unwrap();
+    let mask = compare::fur_mask(scene, WIDTH, HEIGHT);
+    let fur = compare::metrics(&frame.image(), &path.image, compare::TILE_GRID, Some(&mask));
+    (fur.mean, fur.tiles)
+}
+
+#[test]
+fn the_fur_is_within_the_bounds_of_the_path_tracer_for_a_light_and_a_dark_preset() {
+    let Some(gpu) = or_skip(Raster::new()) else {
+        return;
+    };
+    let scene = scene();
+    for name in ["cat", "deer"] {
+        let t = std::time::Instant::now();
+        let (mean, tiles) = against_path(&gpu, &scene, name);
+        println!(
+            "{name}: fur mean {:+.1} %, tiles {:.1} % ({:.1} s)",
+            100.0 * mean,
+            100.0 * tiles,
+            t.elapsed().as_secs_f64()
+        );
+        assert!(mean.abs() <= FUR_MEAN, "{name}: fur mean {mean}");
+        assert!(tiles <= FUR_TILES, "{name}: fur tiles {tiles}");
+    }
 }

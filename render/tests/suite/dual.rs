@@ -153,7 +153,7 @@ fn with_tables<R>(name: &str, f: impl FnOnce(&FurBcsdf<'_>, &DualLut) -> R) -> R
     })
 }
 
-/// The shipped method and default: the coat's attenuation, d_f = d_b = 1.
+/// The shipped method and default: the coat's attenuation, `Density::DEFAULT`.
 const SHIPPED: (Density, Attenuation) = (Density::DEFAULT, Attenuation::Coat);
 
 fn rows(presets_: &[&'static str], scenes_: &[SceneKind], path_spp: u32) -> Vec<Row> {

@@ -3,7 +3,7 @@
 //! device, against the integral it stands for computed here independently: the mean over the
 //! cosine c ∈ (0, 1] of μ^min(N/c, N_t), by a 20 000-point midpoint rule in f64. Within 5e-3
 //! (its 8-point Gauss–Legendre rule on the integrand's kink at c = N/N_t measured at most
-//! 3.3e-3), and the same check catches the shader without the cap N_t or without the slant 1/c.
+//! 3.9e-3 over these cases), and the same check catches the shader without the cap N_t or without the slant 1/c.
 //!
 //! Without an adapter the test prints "skipped: no GPU adapter" and passes, unless
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`).

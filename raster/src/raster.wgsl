@@ -302,21 +302,21 @@ fn ras_fiber_shade(in: RasFiberOut) -> @location(0) vec4<f32> {
     let counted = l.above;
     l.above = max(counted - own * l.within, 0.0);
     let below = max(l.total - counted - own * (1.0 - l.within), 0.0);
-    var rgb = vec3<f32>(0.0);
-    // The colour's place on the dual tables' absorption axis, for the coat below (set again
-    // by fur_eval_dual_dirs, to the same).
+    if (ras.dual.w > 0.5) {
+        // n, or -1 where a surface shadows the fragment from the key light.
+        return vec4<f32>(select(-1.0, l.above, l.lit > 0.0), below, l.total, 1.0);
+    }
+    // The coat's decay mu and rho^2 at the fragment's colour and theta_r (the colour located
+    // on the dual tables' absorption axis; fur_eval_dual_dirs locates it again, the same).
     fur_dual_at = fur_dual_locate(in.colour);
     let sin_theta_r = clamp(dot(wr, t), -1.0, 1.0);
     let here = fur_dual_theta(asin(sin_theta_r));
     let log2_mu = fur_dual_field(here, FUR_DUAL_LOG2_DECAY);
     let rho2 = fur_dual_coat(here);
+    var rgb = vec3<f32>(0.0);
     // The key's light on the skin under the coat (a Lambertian skin under the whole line's
     // fibers, the layer stack's flux through them over the skin, T_n).
     var skin = vec3<f32>(0.0);
-    if (ras.dual.w > 0.5) {
-        // n, or -1 where a surface shadows the fragment from the key light.
-        return vec4<f32>(select(-1.0, l.above, l.lit > 0.0), below, l.total, 1.0);
-    }
     if (l.lit > 0.0) {
         let s = fur_eval_far_dirs(wi, wr, t, in.colour);
         // The coat below as the light scattered inside the coat sees it (the count along the

@@ -16,9 +16,9 @@
 //! `FUR_BCSDF_REQUIRE_GPU=1` (set by `.ci/run`), which makes a missing adapter a failure.
 
 use bcsdf_core::baked::BakedBcsdf;
-use bcsdf_core::dual::{encode_axis, Attenuation, DualTables, Quadrature, BLOB_LEN};
+use bcsdf_core::dual::Quadrature;
 use bcsdf_core::lut::LutResolution;
-use bcsdf_core::{presets, Absorption, Closure, FurParams, FurParamsInput, Rgb};
+use bcsdf_core::{presets, Closure, FurParams, FurParamsInput};
 use raster::{albedo_table, Frame, Output, Raster, RasterError, Settings, Strands};
 use render::light::LightShape;
 use render::scene::{HitKind, Scene};
@@ -62,40 +62,35 @@ fn or_skip(made: Result<Raster, RasterError>) -> Option<Raster> {
     }
 }
 
-/// Human hair's LUT (no medulla, reported closure: no profiles or residual to generate) at
-/// the fewest absorption nodes, and its dual-scattering blob at a 32 × 16 quadrature.
+/// `model`'s LUT at the fewest absorption nodes, and its dual-scattering blob at a 32 × 16
+/// quadrature (`bake::pipeline::dual_blob`, paired with the LUT).
+fn small_lut_and_blob(
+    model: &bake::profiles::OwnedModel,
+    input: &FurParamsInput,
+) -> (Vec<u8>, Vec<u8>) {
+    let res = LutResolution {
+        n_abs: bcsdf_core::lut::MIN_ABSORPTION_NODES,
+        ..LutResolution::DEFAULT
+    };
+    let lut = bake::tables::bake(model, input, res);
+    let baked = BakedBcsdf::from_bytes(&lut).unwrap();
+    let quadrature = Quadrature {
+        theta_steps: 32,
+        phi_steps: 16,
+    };
+    let blob = bake::pipeline::dual_blob(&lut, &baked, quadrature).to_vec();
+    (lut, blob)
+}
+
+/// Human hair's LUT and blob ([`small_lut_and_blob`]; no medulla, reported closure: no
+/// profiles or residual to generate).
 fn lut_and_blob() -> (Vec<u8>, Vec<u8>) {
     let input = FurParamsInput {
         closure: Closure::Report,
         ..presets::find("human-hair").unwrap().input
     };
     let model = bake::profiles::OwnedModel::new(FurParams::new(&input).unwrap(), None).unwrap();
-    let res = LutResolution {
-        n_abs: bcsdf_core::lut::MIN_ABSORPTION_NODES,
-        ..LutResolution::DEFAULT
-    };
-    let lut = bake::tables::bake(&model, &input, res);
-    let baked = BakedBcsdf::from_bytes(&lut).unwrap();
-    let mut tables = Box::new(DualTables::ZERO);
-    let mut blob = vec![0u8; BLOB_LEN];
-    encode_axis(
-        (&mut blob[..]).try_into().unwrap(),
-        &mut tables,
-        |sigma, t| {
-            let grey = Absorption::from_sigma(Rgb::splat(sigma)).unwrap();
-            t.compute(
-                &baked.at(&grey),
-                Quadrature {
-                    theta_steps: 32,
-                    phi_steps: 16,
-                },
-            );
-        },
-        Attenuation::Coat,
-        0,
-        baked.absorption(),
-    );
-    (lut, blob)
+    small_lut_and_blob(&model, &input)
 }
 
 fn scene() -> Scene {
@@ -237,25 +232,14 @@ fn the_image_is_finite_with_the_fur_coverage_in_alpha() {
     assert_eq!(frame.passes.len(), 6);
 }
 
-/// Preset `name`'s LUT (the fewest absorption nodes, its profiles generated or read from the
-/// shared cache) and its dual-scattering blob at a 32 × 16 quadrature.
+/// Preset `name`'s LUT and blob ([`small_lut_and_blob`], its profiles generated or read from
+/// the shared cache).
 fn preset_lut_and_blob(name: &str) -> (Vec<u8>, Vec<u8>) {
     let input = presets::find(name).unwrap().input;
     let fur = FurParams::new(&input).unwrap();
     let (model, _) =
         bake::profiles::build_model(fur, &bake::profiles::ProfileOptions::default()).unwrap();
-    let res = LutResolution {
-        n_abs: bcsdf_core::lut::MIN_ABSORPTION_NODES,
-        ..LutResolution::DEFAULT
-    };
-    let lut = bake::tables::bake(&model, &input, res);
-    let baked = BakedBcsdf::from_bytes(&lut).unwrap();
-    let quadrature = Quadrature {
-        theta_steps: 32,
-        phi_steps: 16,
-    };
-    let blob = bake::pipeline::dual_blob(&lut, &baked, quadrature).to_vec();
-    (lut, blob)
+    small_lut_and_blob(&model, &input)
 }
 
 /// The raster image of `scene` drawn with preset `name` against the path tracer's with the
